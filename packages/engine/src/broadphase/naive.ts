@@ -1,0 +1,23 @@
+import type { BroadPhase } from './broadphase.js';
+import type { BodyStore } from '../store/body-store.js';
+import type { PairSink } from '../store/pair-sink.js';
+import { TypeCode } from '../store/body-types.js';
+
+/** Every unordered pair of live bodies once: n(n-1)/2 candidates, the report's starting point (5.9). */
+export class NaiveBroadPhase implements BroadPhase {
+  readonly name = 'naive';
+
+  findPairs(bodies: BodyStore, out: PairSink): void {
+    const { type, slotCount } = bodies;
+    for (let i = 0; i < slotCount; i++) {
+      if (type[i] === TypeCode.free) continue;
+      for (let j = i + 1; j < slotCount; j++) {
+        if (type[j] !== TypeCode.free) out.push(i, j);
+      }
+    }
+  }
+
+  memoryBytes(): number {
+    return 0;
+  }
+}

@@ -1,0 +1,16 @@
+import type { BroadPhase } from './broadphase.js';
+import { NaiveBroadPhase } from './naive.js';
+import { SapBroadPhase } from './sap.js';
+import { SapXyBroadPhase } from './sap-xy.js';
+import { MaxGridBroadPhase } from './maxgrid.js';
+
+export const BROADPHASES = {
+  naive: () => new NaiveBroadPhase(),
+  sap: () => new SapBroadPhase(),
+  'sap-xy': () => new SapXyBroadPhase(),
+  maxgrid: () => new MaxGridBroadPhase(),
+} satisfies Record<string, () => BroadPhase>;
+
+export type BroadPhaseName = keyof typeof BROADPHASES;
+
+export const BROADPHASE_NAMES = Object.keys(BROADPHASES) as BroadPhaseName[];

@@ -1,0 +1,11 @@
+export { World } from './world.js';
+export type { CircleState, BodyViews } from './world.js';
+export type { WorldOptions, CircleOptions, Vector } from './options.js';
+export type { StepStats } from './step/stats.js';
+export type { BodyType } from './store/body-types.js';
+export { BODY_TYPES, TypeCode as BodyTypeCode } from './store/body-types.js';
+export type { BroadPhaseName } from './broadphase/registry.js';
+export { BROADPHASE_NAMES } from './broadphase/registry.js';
+export type { IntegratorName } from './integrate/integrator.js';
+export { INTEGRATOR_NAMES } from './integrate/integrator.js';
+export type { GridGeometry } from './broadphase/maxgrid.js';

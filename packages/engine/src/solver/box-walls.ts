@@ -1,0 +1,86 @@
+import type { BodyStore } from '../store/body-store.js';
+import { TypeCode } from '../store/body-types.js';
+import { mixRestitution } from './restitution.js';
+
+/** After this many bounces inside one step the rest of the path is folded in closed form. */
+const MAX_BOUNCES = 16;
+
+/**
+ * Box walls (report 5.7). A circle whose centre left [lo, hi] on an axis is mirrored back by its
+ * penetration depth scaled by restitution, and its normal velocity is reversed and scaled by
+ * restitution: it stands where it would be had it bounced at the moment of impact. At restitution
+ * 1 that is exactly the report's rule. A circle fast enough to cross the box several times in a
+ * step bounces repeatedly; past MAX_BOUNCES the remaining path is folded modulo the box, so no
+ * speed can leave a circle outside.
+ *
+ * Kinematic bodies are contained too, with restitution 1: they keep the speed they were given, but
+ * the box is the world's domain and nothing ends a step outside it.
+ */
+export function bounceOffBox(bodies: BodyStore, width: number, height: number, wallRestitution: number): void {
+  const { x, y, vx, vy, radius, restitution, type, slotCount } = bodies;
+  for (let i = 0; i < slotCount; i++) {
+    const t = type[i];
+    if (t !== TypeCode.dynamic && t !== TypeCode.kinematic) continue;
+    const r = radius[i];
+    const e = t === TypeCode.dynamic ? mixRestitution(restitution[i], wallRestitution) : 1;
+    const px = x[i];
+    if (px < r || px > width - r) {
+      fold(px, vx[i], r, width - r, e);
+      x[i] = foldedPosition;
+      vx[i] = foldedVelocity;
+    }
+    const py = y[i];
+    if (py < r || py > height - r) {
+      fold(py, vy[i], r, height - r, e);
+      y[i] = foldedPosition;
+      vy[i] = foldedVelocity;
+    }
+  }
+}
+
+/** Puts positions back inside the box after contact separation pushed them out; velocities stay. */
+export function clampIntoBox(bodies: BodyStore, width: number, height: number): void {
+  const { x, y, radius, type, slotCount } = bodies;
+  for (let i = 0; i < slotCount; i++) {
+    const t = type[i];
+    if (t !== TypeCode.dynamic && t !== TypeCode.kinematic) continue;
+    const r = radius[i];
+    const px = x[i];
+    if (px < r) x[i] = r;
+    else if (px > width - r) x[i] = width - r;
+    const py = y[i];
+    if (py < r) y[i] = r;
+    else if (py > height - r) y[i] = height - r;
+  }
+}
+
+// Results of `fold`, kept at module scope so the hot loop returns two numbers without allocating.
+let foldedPosition = 0;
+let foldedVelocity = 0;
+
+function fold(p: number, v: number, lo: number, hi: number, e: number): void {
+  for (let bounce = 0; bounce < MAX_BOUNCES; bounce++) {
+    if (p < lo) p = lo + (lo - p) * e;
+    else if (p > hi) p = hi - (p - hi) * e;
+    else break;
+    v = -v * e;
+  }
+  if (!(p >= lo && p <= hi)) {
+    // Still outside after many bounces: only near-elastic, absurdly fast bodies get here. Fold the
+    // leftover path over a period of two box lengths, reversing velocity on the way back.
+    const span = hi - lo;
+    if (!Number.isFinite(p) || span <= 0) {
+      p = lo + span / 2;
+    } else {
+      let u = (p - lo) % (2 * span);
+      if (u < 0) u += 2 * span;
+      if (u > span) {
+        u = 2 * span - u;
+        v = -v;
+      }
+      p = Math.min(hi, Math.max(lo, lo + u));
+    }
+  }
+  foldedPosition = p;
+  foldedVelocity = v;
+}

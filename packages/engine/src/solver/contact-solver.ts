@@ -1,0 +1,58 @@
+import type { BodyStore } from '../store/body-store.js';
+import type { ContactBuffer } from '../store/contact-buffer.js';
+import { mixRestitution } from './restitution.js';
+
+/**
+ * Resolves contacts one after another, in the buffer's canonical order (report 3.1.5, 5.10).
+ *
+ * For each pair, from the current positions (an earlier contact may have moved either body):
+ * 1. if the bodies approach along the normal, an impulse j = -(1 + e) vn / (1/ma + 1/mb) is applied
+ *    equal and opposite, which conserves momentum and, at e = 1, kinetic energy;
+ * 2. the overlap is removed by moving each body along the normal in proportion to its inverse mass,
+ *    so the pair ends tangent and the heavier body moves less (the report's mass-weighted split).
+ *
+ * Static and kinematic bodies have inverse mass 0: they neither change velocity nor move. Pairs
+ * that are already separating keep their velocities, so a pair is never pulled back together.
+ * Concentric circles, which have no normal, are pushed apart along +x.
+ */
+export function solveContacts(bodies: BodyStore, contacts: ContactBuffer): void {
+  const { x, y, vx, vy, radius, invMass, restitution } = bodies;
+  const { lo, hi, count } = contacts;
+  for (let k = 0; k < count; k++) {
+    const i = lo[k];
+    const j = hi[k];
+    const dx = x[j] - x[i];
+    const dy = y[j] - y[i];
+    const reach = radius[i] + radius[j];
+    const distSq = dx * dx + dy * dy;
+    if (distSq >= reach * reach) continue;
+    const wi = invMass[i];
+    const wj = invMass[j];
+    const w = wi + wj;
+    if (w === 0) continue;
+    let nx = 1;
+    let ny = 0;
+    const dist = Math.sqrt(distSq);
+    if (dist > 0) {
+      nx = dx / dist;
+      ny = dy / dist;
+    }
+    const vn = (vx[j] - vx[i]) * nx + (vy[j] - vy[i]) * ny;
+    if (vn < 0) {
+      const impulse = (-(1 + mixRestitution(restitution[i], restitution[j])) * vn) / w;
+      const pi = impulse * wi;
+      const pj = impulse * wj;
+      vx[i] -= pi * nx;
+      vy[i] -= pi * ny;
+      vx[j] += pj * nx;
+      vy[j] += pj * ny;
+    }
+    const overlap = reach - dist;
+    const si = (overlap * wi) / w;
+    const sj = (overlap * wj) / w;
+    x[i] -= si * nx;
+    y[i] -= si * ny;
+    x[j] += sj * nx;
+    y[j] += sj * ny;
+  }
+}

@@ -1,0 +1,40 @@
+/**
+ * What the last `step()` did. One object per world, overwritten by every step (copy it to keep
+ * it). Times are wall-clock milliseconds per stage, in the order the stages run.
+ */
+export interface StepStats {
+  /** Steps taken since the world was created. */
+  steps: number;
+  /** Live bodies during the last step. */
+  bodies: number;
+  /** Pairs the broad-phase reported, before the narrow-phase (n(n-1)/2 for `naive`). */
+  candidatePairs: number;
+  /** Pairs the narrow-phase found overlapping with at least one dynamic body. */
+  contacts: number;
+  integrateMs: number;
+  /** Box walls: bounce circles back into the box. */
+  boundaryMs: number;
+  broadphaseMs: number;
+  narrowphaseMs: number;
+  /** Canonical contact ordering plus impulses and separation. */
+  solveMs: number;
+  /** Keeping separated circles inside the box. */
+  correctMs: number;
+  totalMs: number;
+}
+
+export function emptyStats(): StepStats {
+  return {
+    steps: 0,
+    bodies: 0,
+    candidatePairs: 0,
+    contacts: 0,
+    integrateMs: 0,
+    boundaryMs: 0,
+    broadphaseMs: 0,
+    narrowphaseMs: 0,
+    solveMs: 0,
+    correctMs: 0,
+    totalMs: 0,
+  };
+}

@@ -1,0 +1,176 @@
+import { TypeCode, ShapeCode } from './body-types.js';
+import { grownCapacity, growFloat64, growInt32, growUint32, growUint8 } from '../util/grow.js';
+
+/**
+ * Handles pack a slot index and that slot's generation: `generation * SLOT_SPACE + slot`. The
+ * first body in a fresh world gets handle 0, later ones 1, 2, ...; when a slot is reused its
+ * generation goes up, so an old handle to it no longer matches and is rejected as stale.
+ * 2^24 slots (16.7M bodies) leaves 29 bits of generation inside a safe integer.
+ */
+export const SLOT_SPACE = 2 ** 24;
+const MAX_GENERATION = 2 ** 28;
+
+export interface NewBody {
+  x: number;
+  y: number;
+  vx: number;
+  vy: number;
+  radius: number;
+  mass: number;
+  restitution: number;
+  type: number;
+}
+
+/**
+ * Structure-of-arrays body storage indexed by slot. Slots are the engine's canonical body order:
+ * they never move while a body lives, so anything ordered by slot is independent of how a
+ * broad-phase happened to find it. Destroyed slots stay in place as holes (type FREE) and are
+ * reused last-freed-first, which is deterministic.
+ *
+ * Float64 everywhere on the hot state: the engine promises energy conservation to round-off and
+ * bit-identical results, and Float32 would spend that on 8 bytes per column.
+ */
+export class BodyStore {
+  capacity = 0;
+  /** One past the highest slot ever used: stages loop over [0, slotCount) and skip FREE. */
+  slotCount = 0;
+  liveCount = 0;
+
+  x = new Float64Array(0);
+  y = new Float64Array(0);
+  vx = new Float64Array(0);
+  vy = new Float64Array(0);
+  radius = new Float64Array(0);
+  mass = new Float64Array(0);
+  /** 1/mass for dynamic bodies, 0 for static and kinematic ones (infinitely massive). */
+  invMass = new Float64Array(0);
+  restitution = new Float64Array(0);
+  type = new Uint8Array(0);
+  shape = new Uint8Array(0);
+  generation = new Uint32Array(0);
+
+  private freeSlots = new Int32Array(0);
+  private freeCount = 0;
+
+  /** Largest radius among live bodies; Max Grid's cell size is twice this. */
+  private cachedMaxRadius = 0;
+  private maxRadiusStale = false;
+
+  constructor(initialCapacity = 0) {
+    if (initialCapacity > 0) this.grow(initialCapacity);
+  }
+
+  handleOf(slot: number): number {
+    return this.generation[slot] * SLOT_SPACE + slot;
+  }
+
+  /** The slot of a live body's handle, or -1 for an unknown or stale one. */
+  slotOf(handle: number): number {
+    if (!Number.isSafeInteger(handle) || handle < 0) return -1;
+    const slot = handle % SLOT_SPACE;
+    const gen = (handle - slot) / SLOT_SPACE;
+    if (slot >= this.slotCount || this.type[slot] === TypeCode.free || this.generation[slot] !== gen) return -1;
+    return slot;
+  }
+
+  /** Explains why `slotOf` refused a handle, for error messages. */
+  describeMissing(handle: number): string {
+    if (!Number.isSafeInteger(handle) || handle < 0) return 'is not a body handle';
+    const slot = handle % SLOT_SPACE;
+    if (slot >= this.slotCount) return 'is unknown to this world';
+    return 'is stale: its body was destroyed';
+  }
+
+  add(body: NewBody): number {
+    let slot: number;
+    if (this.freeCount > 0) {
+      slot = this.freeSlots[--this.freeCount];
+    } else {
+      if (this.slotCount === this.capacity) this.grow(this.slotCount + 1);
+      slot = this.slotCount++;
+    }
+    this.x[slot] = body.x;
+    this.y[slot] = body.y;
+    this.vx[slot] = body.vx;
+    this.vy[slot] = body.vy;
+    this.radius[slot] = body.radius;
+    this.mass[slot] = body.mass;
+    this.restitution[slot] = body.restitution;
+    this.shape[slot] = ShapeCode.circle;
+    this.setTypeCode(slot, body.type);
+    this.liveCount++;
+    if (body.radius > this.cachedMaxRadius) this.cachedMaxRadius = body.radius;
+    return slot;
+  }
+
+  remove(slot: number): void {
+    this.type[slot] = TypeCode.free;
+    this.vx[slot] = 0;
+    this.vy[slot] = 0;
+    this.invMass[slot] = 0;
+    this.liveCount--;
+    if (this.radius[slot] === this.cachedMaxRadius) this.maxRadiusStale = true;
+    const nextGeneration = this.generation[slot] + 1;
+    // A slot whose generation would overflow the handle encoding is retired rather than reused.
+    if (nextGeneration < MAX_GENERATION) {
+      this.generation[slot] = nextGeneration;
+      if (this.freeCount === this.freeSlots.length) {
+        this.freeSlots = growInt32(this.freeSlots, grownCapacity(this.freeSlots.length, this.freeCount + 1));
+      }
+      this.freeSlots[this.freeCount++] = slot;
+    }
+  }
+
+  setTypeCode(slot: number, code: number): void {
+    this.type[slot] = code;
+    this.invMass[slot] = code === TypeCode.dynamic ? 1 / this.mass[slot] : 0;
+    if (code === TypeCode.static) {
+      this.vx[slot] = 0;
+      this.vy[slot] = 0;
+    }
+  }
+
+  maxRadius(): number {
+    if (this.maxRadiusStale) {
+      let max = 0;
+      const { radius, type } = this;
+      for (let i = 0; i < this.slotCount; i++) {
+        if (type[i] !== TypeCode.free && radius[i] > max) max = radius[i];
+      }
+      this.cachedMaxRadius = max;
+      this.maxRadiusStale = false;
+    }
+    return this.cachedMaxRadius;
+  }
+
+  memoryBytes(): number {
+    return (
+      this.x.byteLength * 8 +
+      this.type.byteLength +
+      this.shape.byteLength +
+      this.generation.byteLength +
+      this.freeSlots.byteLength
+    );
+  }
+
+  /** Makes room for `needed` slots up front, so that adding them never reallocates. */
+  reserve(needed: number): void {
+    if (needed > this.capacity) this.grow(needed);
+  }
+
+  private grow(needed: number): void {
+    const capacity = grownCapacity(this.capacity, needed);
+    this.x = growFloat64(this.x, capacity);
+    this.y = growFloat64(this.y, capacity);
+    this.vx = growFloat64(this.vx, capacity);
+    this.vy = growFloat64(this.vy, capacity);
+    this.radius = growFloat64(this.radius, capacity);
+    this.mass = growFloat64(this.mass, capacity);
+    this.invMass = growFloat64(this.invMass, capacity);
+    this.restitution = growFloat64(this.restitution, capacity);
+    this.type = growUint8(this.type, capacity);
+    this.shape = growUint8(this.shape, capacity);
+    this.generation = growUint32(this.generation, capacity);
+    this.capacity = capacity;
+  }
+}

@@ -1,0 +1,72 @@
+import { grownCapacity, growInt32 } from '../util/grow.js';
+
+/**
+ * Touching pairs found by the narrow-phase, as (lo, hi) slots with lo < hi.
+ *
+ * `sortCanonical` puts them in ascending (lo, hi) order with two stable counting-sort passes
+ * (by hi, then by lo). The solver resolves contacts sequentially, so this order is what makes a
+ * step's result independent of the broad-phase that found the pairs. It costs O(slots + contacts)
+ * and allocates nothing once the scratch has grown.
+ */
+export class ContactBuffer {
+  lo = new Int32Array(64);
+  hi = new Int32Array(64);
+  count = 0;
+
+  private scratchLo = new Int32Array(64);
+  private scratchHi = new Int32Array(64);
+  private counts = new Int32Array(64);
+
+  clear(): void {
+    this.count = 0;
+  }
+
+  push(lo: number, hi: number): void {
+    if (this.count === this.lo.length) this.growPairs(this.count + 1);
+    this.lo[this.count] = lo;
+    this.hi[this.count] = hi;
+    this.count++;
+  }
+
+  memoryBytes(): number {
+    return (this.lo.byteLength + this.scratchLo.byteLength) * 2 + this.counts.byteLength;
+  }
+
+  sortCanonical(slotCount: number): void {
+    if (this.count < 2) return;
+    if (this.counts.length < slotCount + 1) this.counts = new Int32Array(grownCapacity(this.counts.length, slotCount + 1));
+    if (this.scratchLo.length < this.lo.length) {
+      this.scratchLo = new Int32Array(this.lo.length);
+      this.scratchHi = new Int32Array(this.lo.length);
+    }
+    // Pass 1 by hi into scratch, pass 2 by lo back into the live arrays: LSD order gives (lo, hi).
+    this.countingPass(this.hi, this.lo, this.hi, this.scratchLo, this.scratchHi, slotCount);
+    this.countingPass(this.scratchLo, this.scratchLo, this.scratchHi, this.lo, this.hi, slotCount);
+  }
+
+  private countingPass(
+    key: Int32Array,
+    srcLo: Int32Array,
+    srcHi: Int32Array,
+    dstLo: Int32Array,
+    dstHi: Int32Array,
+    slotCount: number,
+  ): void {
+    const counts = this.counts;
+    const n = this.count;
+    counts.fill(0, 0, slotCount + 1);
+    for (let k = 0; k < n; k++) counts[key[k] + 1]++;
+    for (let s = 0; s < slotCount; s++) counts[s + 1] += counts[s];
+    for (let k = 0; k < n; k++) {
+      const at = counts[key[k]]++;
+      dstLo[at] = srcLo[k];
+      dstHi[at] = srcHi[k];
+    }
+  }
+
+  private growPairs(needed: number): void {
+    const capacity = grownCapacity(this.lo.length, needed);
+    this.lo = growInt32(this.lo, capacity);
+    this.hi = growInt32(this.hi, capacity);
+  }
+}

@@ -1,0 +1,59 @@
+// Every public entry point validates its whole input before it touches any state, so a thrown
+// error always leaves the world exactly as it was.
+
+function show(value: unknown): string {
+  if (typeof value === 'string') return JSON.stringify(value);
+  if (typeof value === 'bigint') return `${value}n`;
+  if (typeof value === 'object' && value !== null) {
+    try {
+      return JSON.stringify(value);
+    } catch {
+      return Object.prototype.toString.call(value);
+    }
+  }
+  return String(value);
+}
+
+export function finiteNumber(field: string, value: unknown): number {
+  if (typeof value !== 'number' || !Number.isFinite(value)) {
+    throw new TypeError(`${field} must be a finite number, got ${show(value)}`);
+  }
+  return value;
+}
+
+export function positiveNumber(field: string, value: unknown): number {
+  const n = finiteNumber(field, value);
+  if (!(n > 0)) throw new RangeError(`${field} must be > 0, got ${show(value)}`);
+  return n;
+}
+
+export function nonNegativeNumber(field: string, value: unknown): number {
+  const n = finiteNumber(field, value);
+  if (!(n >= 0)) throw new RangeError(`${field} must be >= 0, got ${show(value)}`);
+  return n;
+}
+
+export function oneOf<T extends string>(field: string, value: unknown, allowed: readonly T[]): T {
+  if (typeof value !== 'string' || !(allowed as readonly string[]).includes(value)) {
+    throw new RangeError(`${field} must be one of ${allowed.map((a) => `'${a}'`).join(', ')}, got ${show(value)}`);
+  }
+  return value as T;
+}
+
+export function plainObject(field: string, value: unknown): Record<string, unknown> {
+  if (typeof value !== 'object' || value === null || Array.isArray(value)) {
+    throw new TypeError(`${field} must be an object, got ${show(value)}`);
+  }
+  return value as Record<string, unknown>;
+}
+
+/** Rejects misspelt option names, which would otherwise be ignored without a word. */
+export function knownKeys(field: string, value: Record<string, unknown>, allowed: readonly string[]): void {
+  for (const key of Object.keys(value)) {
+    if (!allowed.includes(key)) {
+      throw new TypeError(`${field} has unknown option '${key}'; known options: ${allowed.join(', ')}`);
+    }
+  }
+}
+
+export { show as describeValue };

@@ -1,0 +1,40 @@
+/** One numeric scene parameter: its default, its allowed range, and what it means. */
+export interface ParamSpec {
+  default: number;
+  min: number;
+  max: number;
+  integer?: boolean;
+  description: string;
+}
+
+export type ParamSpecs = Record<string, ParamSpec>;
+
+export type ParamValues<S extends ParamSpecs> = { [K in keyof S]: number };
+
+/** Fills defaults and rejects unknown names, non-numbers and out-of-range values by name. */
+export function resolveParams<S extends ParamSpecs>(
+  scene: string,
+  specs: S,
+  given: Partial<Record<string, number>> = {},
+): ParamValues<S> {
+  for (const key of Object.keys(given)) {
+    if (!(key in specs)) {
+      throw new TypeError(`scene '${scene}' has no parameter '${key}'; it has: ${Object.keys(specs).join(', ')}`);
+    }
+  }
+  const out: Record<string, number> = {};
+  for (const [key, spec] of Object.entries(specs)) {
+    const value = given[key] ?? spec.default;
+    if (typeof value !== 'number' || !Number.isFinite(value)) {
+      throw new TypeError(`${scene}.${key} must be a finite number, got ${String(value)}`);
+    }
+    if (value < spec.min || value > spec.max) {
+      throw new RangeError(`${scene}.${key} must be in [${spec.min}, ${spec.max}], got ${value}`);
+    }
+    if (spec.integer && !Number.isInteger(value)) {
+      throw new RangeError(`${scene}.${key} must be an integer, got ${value}`);
+    }
+    out[key] = value;
+  }
+  return out as ParamValues<S>;
+}

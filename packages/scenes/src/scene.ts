@@ -1,0 +1,60 @@
+import { World, type BroadPhaseName, type IntegratorName } from '@maxgrid/engine';
+
+/**
+ * A scene as plain data: every engine adapter in the lab builds from the same numbers, and the
+ * maxgrid world is just one more consumer (`buildWorld`). Coordinates are the report's canvas
+ * units (pixels, y pointing down, gravity positive downwards).
+ */
+export interface Scene {
+  name: string;
+  params: Readonly<Record<string, number>>;
+  bounds: { width: number; height: number };
+  gravity: { x: number; y: number };
+  /** Restitution of every circle and of the walls. */
+  restitution: number;
+  count: number;
+  x: Float64Array;
+  y: Float64Array;
+  vx: Float64Array;
+  vy: Float64Array;
+  radius: Float64Array;
+}
+
+export function allocateScene(
+  name: string,
+  params: Record<string, number>,
+  count: number,
+  world: Pick<Scene, 'bounds' | 'gravity' | 'restitution'>,
+): Scene {
+  return {
+    name,
+    params: Object.freeze({ ...params }),
+    ...world,
+    count,
+    x: new Float64Array(count),
+    y: new Float64Array(count),
+    vx: new Float64Array(count),
+    vy: new Float64Array(count),
+    radius: new Float64Array(count),
+  };
+}
+
+export interface BuildOptions {
+  broadphase?: BroadPhaseName;
+  integrator?: IntegratorName;
+}
+
+/** A maxgrid world holding the scene; circle k gets handle k. */
+export function buildWorld(scene: Scene, options: BuildOptions = {}): World {
+  const world = new World({
+    bounds: scene.bounds,
+    gravity: scene.gravity,
+    restitution: scene.restitution,
+    ...options,
+  });
+  world.reserve(scene.count);
+  for (let k = 0; k < scene.count; k++) {
+    world.createCircle({ x: scene.x[k], y: scene.y[k], vx: scene.vx[k], vy: scene.vy[k], radius: scene.radius[k] });
+  }
+  return world;
+}

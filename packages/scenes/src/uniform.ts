@@ -1,0 +1,56 @@
+import { Prng } from './prng.js';
+import { resolveParams, type ParamSpecs } from './params.js';
+import { allocateScene, type Scene } from './scene.js';
+
+export const uniformParams = {
+  n: { default: 1000, min: 0, max: 4_000_000, integer: true, description: 'number of circles' },
+  seed: { default: 1, min: 0, max: 2 ** 32 - 1, integer: true, description: 'PRNG seed' },
+  minRadius: { default: 4, min: 0.01, max: 1e4, description: 'smallest radius' },
+  maxRadius: { default: 8, min: 0.01, max: 1e4, description: 'largest radius' },
+  fill: { default: 0.25, min: 0.001, max: 0.6, description: "circles' total area over the box area" },
+  maxSpeed: { default: 100, min: 0, max: 1e6, description: 'speeds are uniform in [0, maxSpeed]' },
+} satisfies ParamSpecs;
+
+/**
+ * N circles with radius uniform in [minRadius, maxRadius] in a square box sized so that their total
+ * area is `fill` of it: density stays constant as N grows, which is what a per-body cost needs.
+ * No gravity, restitution 1. Circles start on a jittered lattice, one per lattice cell, so they do
+ * not overlap where the cell is wide enough (always, at the default sizes and fill).
+ */
+export function uniform(given?: Partial<Record<keyof typeof uniformParams, number>>): Scene {
+  const p = resolveParams('uniform', uniformParams, given);
+  if (p.minRadius > p.maxRadius) {
+    throw new RangeError(`uniform: minRadius ${p.minRadius} is larger than maxRadius ${p.maxRadius}`);
+  }
+  const rng = new Prng(p.seed);
+  const radius = new Float64Array(p.n);
+  let area = 0;
+  for (let k = 0; k < p.n; k++) {
+    radius[k] = rng.range(p.minRadius, p.maxRadius);
+    area += Math.PI * radius[k] * radius[k];
+  }
+  const side = Math.max(Math.sqrt(area / p.fill), 2 * p.maxRadius);
+  const scene = allocateScene('uniform', p, p.n, {
+    bounds: { width: side, height: side },
+    gravity: { x: 0, y: 0 },
+    restitution: 1,
+  });
+  scene.radius.set(radius);
+  const perRow = Math.max(1, Math.ceil(Math.sqrt(p.n)));
+  const cell = side / perRow;
+  for (let k = 0; k < p.n; k++) {
+    const r = radius[k];
+    const column = k % perRow;
+    const row = (k - column) / perRow;
+    const slack = Math.max(0, cell - 2 * r);
+    const x = column * cell + (cell - slack) / 2 + rng.next() * slack;
+    const y = row * cell + (cell - slack) / 2 + rng.next() * slack;
+    scene.x[k] = Math.min(side - r, Math.max(r, x));
+    scene.y[k] = Math.min(side - r, Math.max(r, y));
+    const speed = rng.range(0, p.maxSpeed);
+    const angle = rng.range(0, 2 * Math.PI);
+    scene.vx[k] = speed * Math.cos(angle);
+    scene.vy[k] = speed * Math.sin(angle);
+  }
+  return scene;
+}
