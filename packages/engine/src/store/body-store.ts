@@ -77,7 +77,8 @@ export class BodyStore {
   describeMissing(handle: number): string {
     if (!Number.isSafeInteger(handle) || handle < 0) return 'is not a body handle';
     const slot = handle % SLOT_SPACE;
-    if (slot >= this.slotCount) return 'is unknown to this world';
+    const gen = (handle - slot) / SLOT_SPACE;
+    if (slot >= this.slotCount || gen > this.generation[slot]) return 'is unknown to this world';
     return 'is stale: its body was destroyed';
   }
 

@@ -1,0 +1,111 @@
+import { describe, expect, it } from 'vitest';
+import fc from 'fast-check';
+import { BodyStore } from '../src/store/body-store.js';
+import { PairSink, type PairConsumer } from '../src/store/pair-sink.js';
+import { BROADPHASES, BROADPHASE_NAMES } from '../src/broadphase/registry.js';
+import { TypeCode } from '../src/store/body-types.js';
+
+/** Collects every candidate pair as "lo,hi" strings: test code, so strings are fine here. */
+class Collector implements PairConsumer {
+  readonly pairs: string[] = [];
+  consume(a: Int32Array, b: Int32Array, count: number): void {
+    for (let k = 0; k < count; k++) this.pairs.push(a[k] < b[k] ? `${a[k]},${b[k]}` : `${b[k]},${a[k]}`);
+  }
+}
+
+function candidates(store: BodyStore, name: (typeof BROADPHASE_NAMES)[number]): string[] {
+  const collector = new Collector();
+  const sink = new PairSink(collector, () => 0);
+  sink.begin();
+  BROADPHASES[name]().findPairs(store, sink);
+  sink.flush();
+  expect(sink.total).toBe(collector.pairs.length);
+  return collector.pairs;
+}
+
+const circles = fc.array(
+  fc.record({
+    x: fc.double({ min: -1000, max: 1000, noNaN: true }),
+    y: fc.double({ min: -1000, max: 1000, noNaN: true }),
+    r: fc.double({ min: 0.01, max: 100, noNaN: true }),
+  }),
+  { minLength: 0, maxLength: 150 },
+);
+
+function storeOf(list: { x: number; y: number; r: number }[], holes: number[] = []): BodyStore {
+  const store = new BodyStore();
+  for (const c of list) {
+    store.add({ x: c.x, y: c.y, vx: 0, vy: 0, radius: c.r, mass: 1, restitution: 1, type: TypeCode.dynamic });
+  }
+  for (const slot of holes) if (slot < store.slotCount && store.type[slot] !== TypeCode.free) store.remove(slot);
+  return store;
+}
+
+describe('broad-phase contract', () => {
+  it.each(BROADPHASE_NAMES)('%s is conservative, reports each pair once and never a free slot', (name) => {
+    fc.assert(
+      fc.property(circles, fc.array(fc.nat(150), { maxLength: 20 }), (list, holes) => {
+        const store = storeOf(list, holes);
+        const found = candidates(store, name);
+        const set = new Set(found);
+        expect(set.size).toBe(found.length);
+        for (const key of found) {
+          const [i, j] = key.split(',').map(Number);
+          expect(i).not.toBe(j);
+          expect(store.type[i]).not.toBe(TypeCode.free);
+          expect(store.type[j]).not.toBe(TypeCode.free);
+        }
+        for (let i = 0; i < store.slotCount; i++) {
+          if (store.type[i] === TypeCode.free) continue;
+          for (let j = i + 1; j < store.slotCount; j++) {
+            if (store.type[j] === TypeCode.free) continue;
+            const dx = store.x[j] - store.x[i];
+            const dy = store.y[j] - store.y[i];
+            const reach = store.radius[i] + store.radius[j];
+            if (dx * dx + dy * dy <= reach * reach) expect(set.has(`${i},${j}`)).toBe(true);
+          }
+        }
+      }),
+      { numRuns: 150, seed: 99 },
+    );
+  });
+
+  it.each(BROADPHASE_NAMES)('%s finds exactly tangent circles on both axes', (name) => {
+    const store = storeOf([
+      { x: 0, y: 0, r: 1 },
+      { x: 2, y: 0, r: 1 },
+      { x: 2, y: 2, r: 1 },
+      { x: 0.1, y: 10, r: 0.1 },
+      { x: 0.1, y: 10.3, r: 0.2 },
+    ]);
+    const found = new Set(candidates(store, name));
+    expect(found.has('0,1')).toBe(true);
+    expect(found.has('1,2')).toBe(true);
+    expect(found.has('3,4')).toBe(true);
+  });
+
+  it('naive reports n(n-1)/2 pairs', () => {
+    const store = storeOf(Array.from({ length: 37 }, (_, k) => ({ x: k * 100, y: 0, r: 1 })));
+    expect(candidates(store, 'naive').length).toBe((37 * 36) / 2);
+  });
+
+  it('sap-xy reports no more than sap, and maxgrid prunes far pairs that sap keeps', () => {
+    // A row of circles along x at the same y but far apart on y in pairs: sap (x only) keeps them.
+    const list = Array.from({ length: 50 }, (_, k) => ({ x: 10, y: k * 100, r: 5 }));
+    const store = storeOf(list);
+    expect(candidates(store, 'sap').length).toBe((50 * 49) / 2);
+    expect(candidates(store, 'sap-xy').length).toBe(0);
+    expect(candidates(store, 'maxgrid').length).toBe(0);
+  });
+
+  it('maxgrid copes with a far outlier without a huge grid', () => {
+    const list = Array.from({ length: 100 }, (_, k) => ({ x: (k % 10) * 3, y: Math.floor(k / 10) * 3, r: 1 }));
+    list.push({ x: 1e9, y: -1e9, r: 1 });
+    const store = storeOf(list);
+    const grid = BROADPHASES.maxgrid();
+    const sink = new PairSink(new Collector(), () => 0);
+    sink.begin();
+    grid.findPairs(store, sink);
+    expect(grid.geometry.columns * grid.geometry.rows).toBeLessThanOrEqual(4 * 101 + 64);
+  });
+});

@@ -1,0 +1,65 @@
+import { describe, expect, it } from 'vitest';
+import fc from 'fast-check';
+import { World, type World as WorldType } from '../src/index.js';
+import { BROADPHASE_NAMES, buildSpec, sceneArbitrary } from './helpers.js';
+
+function assertInside(world: WorldType, width: number, height: number): void {
+  const v = world.views();
+  for (let i = 0; i < v.slotCount; i++) {
+    if (v.type[i] === 0) continue;
+    const r = v.radius[i];
+    if (!(v.x[i] >= r && v.x[i] <= width - r && v.y[i] >= r && v.y[i] <= height - r)) {
+      throw new Error(`slot ${i} at (${v.x[i]}, ${v.y[i]}) radius ${r} is outside ${width} x ${height}`);
+    }
+  }
+}
+
+describe('containment: no circle ends a step outside the box', () => {
+  it('at extreme speeds that cross the box many times per step, for any restitution', () => {
+    for (const speed of [1e3, 1e6, 1e9, 1e15, 1e300]) {
+      for (const restitution of [1, 0.9, 0.5, 0]) {
+        const world = new World({ bounds: { width: 300, height: 200 }, restitution });
+        world.createCircle({ x: 150, y: 100, vx: speed, vy: -speed / 3, radius: 10 });
+        world.createCircle({ x: 40, y: 40, vx: -speed / 7, vy: speed, radius: 5 });
+        for (let s = 0; s < 20; s++) {
+          world.step(1 / 60);
+          assertInside(world, 300, 200);
+        }
+        for (const h of world.handles()) {
+          const c = world.getCircle(h);
+          expect(Number.isFinite(c.vx) && Number.isFinite(c.vy)).toBe(true);
+        }
+      }
+    }
+  });
+
+  it('on random crowded scenes with every broad-phase', () => {
+    fc.assert(
+      fc.property(sceneArbitrary, fc.constantFrom(...BROADPHASE_NAMES), (spec, broadphase) => {
+        const world = buildSpec(spec, { broadphase });
+        for (let s = 0; s < 30; s++) {
+          world.step(1 / 30);
+          assertInside(world, spec.width, spec.height);
+        }
+      }),
+      { numRuns: 40, seed: 7 },
+    );
+  });
+
+  it('kinematic bodies are contained too and keep their speed', () => {
+    const world = new World({ bounds: { width: 100, height: 100 }, restitution: 0.2 });
+    const k = world.createCircle({ x: 50, y: 50, vx: 1e5, vy: 0, radius: 5, type: 'kinematic' });
+    for (let s = 0; s < 10; s++) {
+      world.step(1 / 60);
+      assertInside(world, 100, 100);
+    }
+    expect(Math.abs(world.getCircle(k).vx)).toBe(1e5);
+  });
+
+  it('a circle whose speed overflows to infinity is still put back in the box', () => {
+    const world = new World({ bounds: { width: 100, height: 100 } });
+    world.createCircle({ x: 50, y: 50, vx: 1.7e308, vy: 0, radius: 5 });
+    world.step(10);
+    assertInside(world, 100, 100);
+  });
+});

@@ -1,0 +1,164 @@
+import { describe, expect, it } from 'vitest';
+import { World } from '../src/index.js';
+
+function populated(): { world: World; handle: number } {
+  const world = new World({ bounds: { width: 200, height: 100 }, gravity: { x: 0, y: 10 } });
+  const handle = world.createCircle({ x: 50, y: 50, vx: 3, vy: 4, radius: 5 });
+  world.createCircle({ x: 100, y: 50, radius: 8, type: 'static' });
+  world.step(1 / 60);
+  return { world, handle };
+}
+
+function snapshot(world: World) {
+  return {
+    hash: world.stateHash(),
+    count: world.bodyCount,
+    handles: world.handles(),
+    broadphase: world.broadphase,
+    integrator: world.integrator,
+    gravity: world.gravity,
+    circles: world.handles().map((h) => world.getCircle(h)),
+  };
+}
+
+/** Expects `action` to throw `kind` with a message naming `field` and `value`, changing nothing. */
+function rejects(action: (world: World, handle: number) => unknown, kind: typeof TypeError | typeof RangeError, field: string, value: string) {
+  const { world, handle } = populated();
+  const before = snapshot(world);
+  let error: unknown;
+  try {
+    action(world, handle);
+  } catch (e) {
+    error = e;
+  }
+  expect(error).toBeInstanceOf(kind);
+  const message = (error as Error).message;
+  expect(message).toContain(field);
+  expect(message).toContain(value);
+  expect(snapshot(world)).toEqual(before);
+}
+
+describe('bad input is rejected with a named error and leaves the world unchanged', () => {
+  it.each([
+    ['x', NaN, 'NaN'],
+    ['y', Infinity, 'Infinity'],
+    ['vx', -Infinity, '-Infinity'],
+    ['vy', NaN, 'NaN'],
+    ['radius', NaN, 'NaN'],
+    ['mass', Infinity, 'Infinity'],
+    ['restitution', NaN, 'NaN'],
+  ])('createCircle with %s = %s', (field, value, shown) => {
+    rejects((w) => w.createCircle({ x: 20, y: 20, radius: 3, [field]: value }), TypeError, field, shown);
+  });
+
+  it.each([
+    ['radius', 0],
+    ['radius', -2],
+    ['mass', -1],
+    ['mass', 0],
+    ['restitution', -0.5],
+    ['density', -1],
+  ])('createCircle with %s = %s', (field, value) => {
+    rejects((w) => w.createCircle({ x: 20, y: 20, radius: 3, [field]: value }), RangeError, field, String(value));
+  });
+
+  it('createCircle with a non-number', () => {
+    rejects((w) => w.createCircle({ x: '20' as unknown as number, y: 20, radius: 3 }), TypeError, 'x', '"20"');
+  });
+
+  it('createCircle with an unknown type', () => {
+    rejects((w) => w.createCircle({ x: 20, y: 20, radius: 3, type: 'ghost' as never }), RangeError, 'type', 'ghost');
+  });
+
+  it('createCircle with a misspelt option', () => {
+    rejects((w) => w.createCircle({ x: 20, y: 20, radius: 3, radus: 4 } as never), TypeError, 'radus', 'radus');
+  });
+
+  it.each([
+    [199, 50, 5],
+    [50, -1, 5],
+    [4, 50, 5],
+    [100, 50, 60],
+  ])('createCircle outside the box at (%s, %s) radius %s', (x, y, radius) => {
+    rejects((w) => w.createCircle({ x, y, radius }), RangeError, 'outside the box', `(${x}, ${y})`);
+  });
+
+  it.each([
+    [-1 / 60, RangeError, '-0.01666'],
+    [NaN, TypeError, 'NaN'],
+    [Infinity, TypeError, 'Infinity'],
+  ] as const)('step(%s)', (dt, kind, shown) => {
+    rejects((w) => w.step(dt), kind, 'dt', shown);
+  });
+
+  it('unknown broad-phase name', () => {
+    rejects((w) => w.setBroadphase('grid' as never), RangeError, 'broadphase', 'grid');
+  });
+
+  it('unknown integrator name', () => {
+    rejects((w) => w.setIntegrator('rk4' as never), RangeError, 'integrator', 'rk4');
+  });
+
+  it('unknown type in setType', () => {
+    rejects((w, h) => w.setType(h, 'frozen' as never), RangeError, 'type', 'frozen');
+  });
+
+  it('non-finite velocity and position', () => {
+    rejects((w, h) => w.setVelocity(h, NaN, 0), TypeError, 'vx', 'NaN');
+    rejects((w, h) => w.setPosition(h, 10, Infinity), TypeError, 'y', 'Infinity');
+    rejects((w, h) => w.setPosition(h, 1, 50), RangeError, 'outside the box', '(1, 50)');
+    rejects((w) => w.setGravity(0, NaN), TypeError, 'gravity.y', 'NaN');
+  });
+
+  it('a velocity for a static body', () => {
+    const { world } = populated();
+    const wall = world.handles()[1];
+    expect(() => world.setVelocity(wall, 1, 0)).toThrow(/static/);
+  });
+
+  it.each([12345, -1, 1.5, NaN, 2 ** 24 + 0])('unknown handle %s', (handle) => {
+    rejects((w) => w.getCircle(handle), RangeError, 'handle', String(handle));
+    rejects((w) => w.destroyBody(handle), RangeError, 'handle', String(handle));
+    rejects((w) => w.setVelocity(handle, 1, 1), RangeError, 'handle', String(handle));
+  });
+
+  it('stale handle', () => {
+    const { world, handle } = populated();
+    world.destroyBody(handle);
+    const before = snapshot(world);
+    expect(() => world.getCircle(handle)).toThrow(RangeError);
+    expect(() => world.getCircle(handle)).toThrow(/stale/);
+    expect(() => world.destroyBody(handle)).toThrow(/stale/);
+    expect(() => world.setType(handle, 'static')).toThrow(/stale/);
+    expect(snapshot(world)).toEqual(before);
+  });
+});
+
+describe('bad World options', () => {
+  it.each([
+    [{ gravity: { x: NaN, y: 0 } }, TypeError, 'gravity.x', 'NaN'],
+    [{ gravity: { x: 0, y: Infinity } }, TypeError, 'gravity.y', 'Infinity'],
+    [{ bounds: { width: 0, height: 10 } }, RangeError, 'bounds.width', '0'],
+    [{ bounds: { width: 10, height: -5 } }, RangeError, 'bounds.height', '-5'],
+    [{ bounds: { width: 10, height: NaN } }, TypeError, 'bounds.height', 'NaN'],
+    [{ restitution: -0.1 }, RangeError, 'restitution', '-0.1'],
+    [{ integrator: 'verlet' }, RangeError, 'integrator', 'verlet'],
+    [{ broadphase: 'bvh' }, RangeError, 'broadphase', 'bvh'],
+    [{ gravty: { x: 0, y: 1 } }, TypeError, 'gravty', 'gravty'],
+  ])('%o', (options, kind, field, shown) => {
+    expect(() => new World(options as never)).toThrow(kind);
+    expect(() => new World(options as never)).toThrow(field);
+    expect(() => new World(options as never)).toThrow(shown);
+  });
+
+  it('sensible defaults', () => {
+    const world = new World();
+    expect(world.broadphase).toBe('maxgrid');
+    expect(world.integrator).toBe('semi-implicit-euler');
+    expect(world.gravity).toEqual({ x: 0, y: 0 });
+    expect(world.restitution).toBe(1);
+    expect(world.box).toBeNull();
+    const h = world.createCircle({ x: 0, y: 0, radius: 2 });
+    expect(world.getCircle(h)).toEqual({ x: 0, y: 0, vx: 0, vy: 0, radius: 2, mass: Math.PI * 4, type: 'dynamic', restitution: 1 });
+  });
+});

@@ -1,0 +1,80 @@
+import { describe, expect, it } from 'vitest';
+import { SCENES, SCENE_NAMES, buildScene, buildWorld, Prng } from '../src/index.js';
+
+describe('scenes', () => {
+  it.each(SCENE_NAMES)('%s is deterministic for a seed and fits inside its box', (name) => {
+    const a = buildScene(name, {});
+    const b = buildScene(name, {});
+    expect(a.count).toBeGreaterThan(0);
+    for (const column of ['x', 'y', 'vx', 'vy', 'radius'] as const) expect(a[column]).toEqual(b[column]);
+    for (let k = 0; k < a.count; k++) {
+      const r = a.radius[k];
+      expect(a.x[k] - r).toBeGreaterThanOrEqual(0);
+      expect(a.y[k] - r).toBeGreaterThanOrEqual(0);
+      expect(a.x[k] + r).toBeLessThanOrEqual(a.bounds.width);
+      expect(a.y[k] + r).toBeLessThanOrEqual(a.bounds.height);
+    }
+    expect(buildWorld(a).bodyCount).toBe(a.count);
+  });
+
+  it('uniform: radii in [4, 8], 25% of the box filled, speeds in [0, 100], no overlaps, elastic, no gravity', () => {
+    const s = buildScene('uniform', { n: 5000, seed: 3 });
+    let area = 0;
+    for (let k = 0; k < s.count; k++) {
+      expect(s.radius[k]).toBeGreaterThanOrEqual(4);
+      expect(s.radius[k]).toBeLessThanOrEqual(8);
+      expect(Math.hypot(s.vx[k], s.vy[k])).toBeLessThanOrEqual(100);
+      area += Math.PI * s.radius[k] ** 2;
+    }
+    expect(area / (s.bounds.width * s.bounds.height)).toBeCloseTo(0.25, 10);
+    expect(s.bounds.width).toBe(s.bounds.height);
+    expect(s.gravity).toEqual({ x: 0, y: 0 });
+    expect(s.restitution).toBe(1);
+    const world = buildWorld(s);
+    world.step(0);
+    expect(world.stats.contacts).toBe(0);
+  });
+
+  it('seed-box: the report\'s 1600 x 900 box, with gravity and elasticity as parameters', () => {
+    const s = buildScene('seed-box', { n: 100, gravity: 250, elasticity: 0.8, seed: 5 });
+    expect(s.bounds).toEqual({ width: 1600, height: 900 });
+    expect(s.gravity).toEqual({ x: 0, y: 250 });
+    expect(s.restitution).toBe(0.8);
+    expect(s.count).toBe(100);
+    expect(buildScene('seed-box', { n: 100, seed: 6 }).x).not.toEqual(s.x);
+  });
+
+  it('bouncing-ball: one ball at rest, restitution 1', () => {
+    const s = buildScene('bouncing-ball');
+    expect(s.count).toBe(1);
+    expect([s.vx[0], s.vy[0], s.restitution]).toEqual([0, 0, 1]);
+  });
+
+  it('rejects unknown scenes and bad parameters by name', () => {
+    expect(() => buildScene('pinball')).toThrow(/unknown scene 'pinball'/);
+    expect(() => buildScene('uniform', { n: -1 })).toThrow(/uniform\.n.*-1/);
+    expect(() => buildScene('uniform', { n: 1.5 })).toThrow(/integer/);
+    expect(() => buildScene('uniform', { radius: 3 })).toThrow(/no parameter 'radius'/);
+    expect(() => buildScene('seed-box', { gravity: NaN })).toThrow(/gravity.*NaN/);
+    expect(() => buildScene('uniform', { minRadius: 9, maxRadius: 3 })).toThrow(/minRadius/);
+  });
+
+  it('every parameter default lies within its range', () => {
+    for (const def of Object.values(SCENES)) {
+      for (const spec of Object.values(def.params)) {
+        expect(spec.default).toBeGreaterThanOrEqual(spec.min);
+        expect(spec.default).toBeLessThanOrEqual(spec.max);
+      }
+    }
+  });
+
+  it('Prng is seeded: same seed, same sequence; values in [0, 1)', () => {
+    const a = new Prng(123);
+    const b = new Prng(123);
+    const xs = Array.from({ length: 1000 }, () => a.next());
+    expect(xs).toEqual(Array.from({ length: 1000 }, () => b.next()));
+    expect(Math.min(...xs)).toBeGreaterThanOrEqual(0);
+    expect(Math.max(...xs)).toBeLessThan(1);
+    expect(new Set(xs).size).toBe(1000);
+  });
+});
