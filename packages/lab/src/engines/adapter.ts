@@ -1,0 +1,135 @@
+import type { Scene } from '@maxgrid/scenes';
+
+/**
+ * One physics engine behind the lab's common interface. Every adapter builds from the same
+ * `Scene` data (report pixels, y down, gravity positive downwards), converts to its own units on
+ * the way in and back on the way out, so experiments only ever see scene units.
+ */
+export interface EngineInfo {
+  /** Registry id, e.g. `maxgrid:sap` or `box2d-wasm`. */
+  id: string;
+  /** npm package the engine comes from. */
+  package: string;
+  /** Version read from that package's package.json. */
+  version: string;
+  /** Storage precision of positions and velocities inside the engine. */
+  precision: 'f64' | 'f32';
+  /** Engine length units per scene pixel (1/50 means 1 m = 50 px). */
+  lengthScale: number;
+  /** The exact settings the adapter applies, as written into every output file. */
+  settings: Record<string, string | number | boolean>;
+}
+
+/** Caller-owned columns that `read` fills, in scene units, index k = scene body k. */
+export interface BodyState {
+  x: Float64Array;
+  y: Float64Array;
+  vx: Float64Array;
+  vy: Float64Array;
+}
+
+export interface Simulation {
+  readonly count: number;
+  step(dt: number): void;
+  read(out: BodyState): void;
+  /** Broad-phase candidates and true contacts of the last step, where the engine reports them. */
+  pairStats?(): { candidatePairs: number; contacts: number };
+  /** Engine memory, where the engine reports it. */
+  memoryBytes?(): number;
+  /** Exact-state digest, where the engine has one (maxgrid). */
+  stateHash?(): string;
+  /** Frees WASM memory; the simulation is unusable afterwards. */
+  dispose(): void;
+}
+
+export interface Engine {
+  info: EngineInfo;
+  create(scene: Scene): Simulation;
+}
+
+/**
+ * Environment hooks for box2d-wasm, whose Emscripten loader cannot find its .wasm by itself
+ * everywhere: the browser page says where Vite put the files, and Node passes the bytes (the
+ * loader would `fetch` a bare file path, which Node's fetch rejects).
+ */
+export interface LoadOptions {
+  box2dLocateFile?: (file: string, prefix: string) => string;
+  box2dWasmBinary?: Uint8Array;
+}
+
+export interface EngineProvider {
+  id: string;
+  load(options?: LoadOptions): Promise<Engine>;
+}
+
+export function allocateState(count: number): BodyState {
+  return {
+    x: new Float64Array(count),
+    y: new Float64Array(count),
+    vx: new Float64Array(count),
+    vy: new Float64Array(count),
+  };
+}
+
+/**
+ * Box2D and its relatives are tuned for bodies of 0.1 to 10 m, so scene pixels are scaled by
+ * 1/50 (1 m = 50 px): the scenes' radii of 2 to 12 px become 0.04 to 0.24 m and the 1600 x 900
+ * box 32 x 18 m. Matter.js is tuned for pixels and keeps scale 1.
+ */
+export const METERS_PER_PIXEL = 1 / 50;
+
+/** Mass convention for every engine's energy: density 1 per square scene unit, m = pi r^2. */
+export function sceneMasses(scene: Scene): Float64Array {
+  const m = new Float64Array(scene.count);
+  for (let k = 0; k < scene.count; k++) m[k] = Math.PI * scene.radius[k] * scene.radius[k];
+  return m;
+}
+
+export interface Energy {
+  kinetic: number;
+  potential: number;
+  total: number;
+}
+
+/**
+ * Energy from read-back state in scene units, identical for all engines. Potential energy is
+ * m g h with h measured from the wall gravity points at (the floor for the scenes' downward
+ * gravity), so it is never negative and the bouncing ball's total starts at m g (drop height).
+ */
+export function energyOf(scene: Scene, masses: Float64Array, state: BodyState): Energy {
+  const gx = scene.gravity.x;
+  const gy = scene.gravity.y;
+  const refX = gx > 0 ? scene.bounds.width : 0;
+  const refY = gy > 0 ? scene.bounds.height : 0;
+  let kinetic = 0;
+  let potential = 0;
+  for (let k = 0; k < scene.count; k++) {
+    const m = masses[k];
+    kinetic += 0.5 * m * (state.vx[k] * state.vx[k] + state.vy[k] * state.vy[k]);
+    potential += m * (gx * (refX - state.x[k]) + gy * (refY - state.y[k]));
+  }
+  return { kinetic, potential, total: kinetic + potential };
+}
+
+/** A static wall as an axis-aligned rectangle, centre and full size, in scene units. */
+export interface WallRect {
+  cx: number;
+  cy: number;
+  width: number;
+  height: number;
+}
+
+/**
+ * The scene's box as four thick static rectangles just outside it. Thick walls (a quarter of the
+ * larger side) stop fast circles tunnelling without CCD; top and bottom overlap the corners.
+ */
+export function boxWalls(bounds: { width: number; height: number }): WallRect[] {
+  const { width: w, height: h } = bounds;
+  const t = Math.max(w, h) / 4;
+  return [
+    { cx: w / 2, cy: -t / 2, width: w + 2 * t, height: t },
+    { cx: w / 2, cy: h + t / 2, width: w + 2 * t, height: t },
+    { cx: -t / 2, cy: h / 2, width: t, height: h },
+    { cx: w + t / 2, cy: h / 2, width: t, height: h },
+  ];
+}

@@ -1,0 +1,75 @@
+import { BROADPHASE_NAMES, type BroadPhaseName, type World } from '@maxgrid/engine';
+import { buildWorld, type Scene } from '@maxgrid/scenes';
+import type { BodyState, Engine, EngineProvider, Simulation } from './adapter.js';
+import { VERSIONS } from './versions.js';
+
+class MaxgridSimulation implements Simulation {
+  readonly count: number;
+
+  constructor(private readonly world: World) {
+    this.count = world.bodyCount;
+    // buildWorld gives circle k handle k in slot k; read() relies on that, so check it once.
+    for (const k of [0, this.count - 1]) {
+      if (this.count > 0 && world.handleAtSlot(k) !== k) throw new Error(`maxgrid: scene body ${k} is not in slot ${k}`);
+    }
+  }
+
+  step(dt: number): void {
+    this.world.step(dt);
+  }
+
+  read(out: BodyState): void {
+    const v = this.world.views();
+    out.x.set(v.x.subarray(0, this.count));
+    out.y.set(v.y.subarray(0, this.count));
+    out.vx.set(v.vx.subarray(0, this.count));
+    out.vy.set(v.vy.subarray(0, this.count));
+  }
+
+  pairStats(): { candidatePairs: number; contacts: number } {
+    const s = this.world.stats;
+    return { candidatePairs: s.candidatePairs, contacts: s.contacts };
+  }
+
+  memoryBytes(): number {
+    return this.world.memoryBytes();
+  }
+
+  stateHash(): string {
+    return this.world.stateHash();
+  }
+
+  dispose(): void {}
+}
+
+/** maxgrid with one broad-phase; everything else at the engine's defaults. */
+export function maxgridProvider(broadphase: BroadPhaseName): EngineProvider {
+  const id = `maxgrid:${broadphase}`;
+  return {
+    id,
+    async load(): Promise<Engine> {
+      return {
+        info: {
+          id,
+          package: '@maxgrid/engine',
+          version: VERSIONS.maxgrid,
+          precision: 'f64',
+          lengthScale: 1,
+          settings: {
+            broadphase,
+            integrator: 'semi-implicit-euler (engine default)',
+            iterations: 'one sequential impulse pass per contact in canonical order',
+            restitution: 'scene restitution (1), walls included',
+            friction: 'none (the engine has no friction)',
+            sleeping: 'none (the engine has no sleeping)',
+            ccd: 'none (discrete)',
+            walls: 'built-in box bounds',
+          },
+        },
+        create: (scene: Scene) => new MaxgridSimulation(buildWorld(scene, { broadphase })),
+      };
+    },
+  };
+}
+
+export const MAXGRID_PROVIDERS: EngineProvider[] = BROADPHASE_NAMES.map(maxgridProvider);
