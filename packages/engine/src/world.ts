@@ -228,7 +228,7 @@ export class World {
 
     this.contacts.clear();
     this.pairs.begin();
-    this.broad.findPairs(bodies, this.pairs);
+    const pairTests = this.broad.findPairs(bodies, this.pairs);
     this.pairs.flush();
     const t3 = nowMs();
 
@@ -241,6 +241,7 @@ export class World {
 
     stats.steps++;
     stats.bodies = bodies.liveCount;
+    stats.pairTests = pairTests;
     stats.candidatePairs = this.pairs.total;
     stats.contacts = this.contacts.count;
     stats.integrateMs = t1 - t0;

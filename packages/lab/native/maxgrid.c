@@ -12,7 +12,9 @@
  * Input (binary, little-endian): int32 n, f64 width, f64 height, f64 gravityY, f64 restitution,
  * then n records of f64 x, y, vx, vy, radius. Arguments: <scene.bin> <steps> <dt> <warmup>.
  * Output (one JSON line): per-step times in ms after warm-up, and the state hash.
- * Build: gcc -O3 -march=native -o maxgrid maxgrid.c -lm
+ * Build: gcc -O3 -march=native -ffp-contract=off -o maxgrid maxgrid.c -lm
+ * (-ffp-contract=off: GCC would otherwise fuse a*b+c into FMA instructions, which round once
+ * where JavaScript rounds twice, and the hashes would differ.)
  */
 #include <math.h>
 #include <stdint.h>

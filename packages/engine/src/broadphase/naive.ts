@@ -7,14 +7,15 @@ import { TypeCode } from '../store/body-types.js';
 export class NaiveBroadPhase implements BroadPhase {
   readonly name = 'naive';
 
-  findPairs(bodies: BodyStore, out: PairSink): void {
-    const { type, slotCount } = bodies;
+  findPairs(bodies: BodyStore, out: PairSink): number {
+    const { type, slotCount, liveCount } = bodies;
     for (let i = 0; i < slotCount; i++) {
       if (type[i] === TypeCode.free) continue;
       for (let j = i + 1; j < slotCount; j++) {
         if (type[j] !== TypeCode.free) out.push(i, j);
       }
     }
+    return (liveCount * (liveCount - 1)) / 2;
   }
 
   memoryBytes(): number {

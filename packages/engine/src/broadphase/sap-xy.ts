@@ -15,16 +15,19 @@ export class SapXyBroadPhase implements BroadPhase {
   private readonly sweepY = new AxisSweep();
   private readonly overlapsOnX = new PairSet();
 
-  findPairs(bodies: BodyStore, out: PairSink): void {
+  findPairs(bodies: BodyStore, out: PairSink): number {
     const set = this.overlapsOnX;
     set.clear();
+    let examined = 0;
     this.sweepX.build(bodies, 0);
     {
       const { low, high, slot, count } = this.sweepX;
       for (let k = 0; k < count; k++) {
         const end = high[k];
         const a = slot[k];
-        for (let m = k + 1; m < count && low[m] <= end; m++) set.add(a, slot[m]);
+        let m = k + 1;
+        for (; m < count && low[m] <= end; m++) set.add(a, slot[m]);
+        examined += m - k - 1;
       }
     }
     this.sweepY.build(bodies, 1);
@@ -33,12 +36,15 @@ export class SapXyBroadPhase implements BroadPhase {
       for (let k = 0; k < count; k++) {
         const end = high[k];
         const a = slot[k];
-        for (let m = k + 1; m < count && low[m] <= end; m++) {
+        let m = k + 1;
+        for (; m < count && low[m] <= end; m++) {
           const b = slot[m];
           if (set.has(a, b)) out.push(a, b);
         }
+        examined += m - k - 1;
       }
     }
+    return examined;
   }
 
   memoryBytes(): number {

@@ -12,15 +12,19 @@ export class SapBroadPhase implements BroadPhase {
   readonly name = 'sap';
   private readonly sweep = new AxisSweep();
 
-  findPairs(bodies: BodyStore, out: PairSink): void {
+  findPairs(bodies: BodyStore, out: PairSink): number {
     const sweep = this.sweep;
     sweep.build(bodies, 0);
     const { low, high, slot, count } = sweep;
+    let examined = 0;
     for (let k = 0; k < count; k++) {
       const end = high[k];
       const a = slot[k];
-      for (let m = k + 1; m < count && low[m] <= end; m++) out.push(a, slot[m]);
+      let m = k + 1;
+      for (; m < count && low[m] <= end; m++) out.push(a, slot[m]);
+      examined += m - k - 1;
     }
+    return examined;
   }
 
   memoryBytes(): number {

@@ -7,7 +7,12 @@ export interface StepStats {
   steps: number;
   /** Live bodies during the last step. */
   bodies: number;
-  /** Pairs the broad-phase reported, before the narrow-phase (n(n-1)/2 for `naive`). */
+  /**
+   * Pairs the broad-phase examined: its own work (n(n-1)/2 for `naive`, every pair in a 3x3
+   * neighbourhood for `maxgrid`, each axis's interval overlaps for the sweeps).
+   */
+  pairTests: number;
+  /** Pairs the broad-phase passed to the narrow-phase (n(n-1)/2 for `naive`). */
   candidatePairs: number;
   /** Pairs the narrow-phase found overlapping with at least one dynamic body. */
   contacts: number;
@@ -27,6 +32,7 @@ export function emptyStats(): StepStats {
   return {
     steps: 0,
     bodies: 0,
+    pairTests: 0,
     candidatePairs: 0,
     contacts: 0,
     integrateMs: 0,
