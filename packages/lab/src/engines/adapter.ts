@@ -34,6 +34,8 @@ export interface Simulation {
   read(out: BodyState): void;
   /** Broad-phase candidates and true contacts of the last step, where the engine reports them. */
   pairStats?(): { candidatePairs: number; contacts: number };
+  /** Broad- and narrow-phase time of the last step, where the engine reports them. */
+  phaseMs?(): { broadphaseMs: number; narrowphaseMs: number };
   /** Engine memory, where the engine reports it. */
   memoryBytes?(): number;
   /** Exact-state digest, where the engine has one (maxgrid). */

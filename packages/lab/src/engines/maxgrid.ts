@@ -31,6 +31,11 @@ class MaxgridSimulation implements Simulation {
     return { candidatePairs: s.candidatePairs, contacts: s.contacts };
   }
 
+  phaseMs(): { broadphaseMs: number; narrowphaseMs: number } {
+    const s = this.world.stats;
+    return { broadphaseMs: s.broadphaseMs, narrowphaseMs: s.narrowphaseMs };
+  }
+
   memoryBytes(): number {
     return this.world.memoryBytes();
   }

@@ -1,0 +1,138 @@
+import type { Engine, EngineInfo } from '../engines/adapter.js';
+
+export type Profile = 'quick' | 'full';
+
+/** Where the numbers came from; the caller fills it (Node and browsers know different things). */
+export interface Environment {
+  runtime: string;
+  [key: string]: string | number;
+}
+
+export interface Meta {
+  experiment: string;
+  generatedAt: string;
+  profile: Profile | 'custom';
+  environment: Environment;
+  engines: EngineInfo[];
+  options: Record<string, unknown>;
+  /** The command that reproduces this result, where the runner knows it. */
+  command?: string;
+}
+
+export interface Progress {
+  (done: number, total: number, label: string): void;
+}
+
+export interface RunContext {
+  engines: Engine[];
+  environment: Environment;
+  profile?: Profile | 'custom';
+  progress?: Progress;
+  /** Lets long loops give the browser's event loop a turn; Node passes nothing. */
+  yieldToHost?: () => Promise<void>;
+}
+
+export function makeMeta(experiment: string, ctx: RunContext, options: object): Meta {
+  return {
+    experiment,
+    generatedAt: new Date().toISOString(),
+    profile: ctx.profile ?? 'custom',
+    environment: ctx.environment,
+    engines: ctx.engines.map((e) => e.info),
+    options: { ...options },
+  };
+}
+
+export interface Spread {
+  median: number;
+  p25: number;
+  p75: number;
+  min: number;
+  max: number;
+  mean: number;
+}
+
+/** Quantiles by linear interpolation between order statistics (R's type 7). */
+export function quantile(sorted: readonly number[], q: number): number {
+  if (sorted.length === 0) return NaN;
+  const h = (sorted.length - 1) * q;
+  const lo = Math.floor(h);
+  const hi = Math.min(lo + 1, sorted.length - 1);
+  return sorted[lo] + (h - lo) * (sorted[hi] - sorted[lo]);
+}
+
+export function spread(values: readonly number[]): Spread {
+  if (values.length === 0) throw new RangeError('spread of no values');
+  const s = [...values].sort((a, b) => a - b);
+  return {
+    median: quantile(s, 0.5),
+    p25: quantile(s, 0.25),
+    p75: quantile(s, 0.75),
+    min: s[0],
+    max: s[s.length - 1],
+    mean: s.reduce((a, b) => a + b, 0) / s.length,
+  };
+}
+
+/** `engines` whose id starts with `maxgrid:`, as the maxgrid-only experiments need. */
+export function maxgridOnly(engines: Engine[], experiment: string): Engine[] {
+  const out = engines.filter((e) => e.info.id.startsWith('maxgrid:'));
+  if (out.length === 0) {
+    throw new RangeError(`${experiment} measures maxgrid broad-phases only; got engines ${engines.map((e) => e.info.id).join(', ')}`);
+  }
+  return out;
+}
+
+export function rotate<T>(items: readonly T[], by: number): T[] {
+  const k = ((by % items.length) + items.length) % items.length;
+  return [...items.slice(k), ...items.slice(0, k)];
+}
+
+/** A list of N values from start to end inclusive in steps, e.g. the report's 10..4200 by 10. */
+export function nRange(start: number, end: number, step: number): number[] {
+  const out: number[] = [];
+  for (let n = start; n <= end; n += step) out.push(n);
+  return out;
+}
+
+export const now: () => number = () => performance.now();
+
+// JSON Schema pieces shared by every experiment's schema.
+export const spreadSchema = {
+  type: 'object',
+  required: ['median', 'p25', 'p75', 'min', 'max', 'mean'],
+  properties: Object.fromEntries(['median', 'p25', 'p75', 'min', 'max', 'mean'].map((k) => [k, { type: 'number' }])),
+  additionalProperties: false,
+} as const;
+
+export const metaSchema = {
+  type: 'object',
+  required: ['experiment', 'generatedAt', 'profile', 'environment', 'engines', 'options'],
+  properties: {
+    experiment: { type: 'string' },
+    generatedAt: { type: 'string' },
+    profile: { enum: ['quick', 'full', 'custom'] },
+    environment: { type: 'object', required: ['runtime'], properties: { runtime: { type: 'string' } } },
+    engines: {
+      type: 'array',
+      minItems: 1,
+      items: {
+        type: 'object',
+        required: ['id', 'package', 'version', 'precision', 'lengthScale', 'settings'],
+        properties: {
+          id: { type: 'string' },
+          package: { type: 'string' },
+          version: { type: 'string', pattern: '^\\d+\\.\\d+\\.\\d+' },
+          precision: { enum: ['f32', 'f64'] },
+          lengthScale: { type: 'number', exclusiveMinimum: 0 },
+          settings: { type: 'object', minProperties: 1 },
+        },
+      },
+    },
+    options: { type: 'object' },
+  },
+} as const;
+
+export function csvLine(values: readonly (string | number)[]): string {
+  return values.map((v) => (typeof v === 'number' ? String(v) : /[",\n]/.test(v) ? `"${v.replace(/"/g, '""')}"` : v)).join(',');
+}

@@ -1,0 +1,131 @@
+import { SCENES } from '@maxgrid/scenes';
+import { ENGINE_IDS } from '../engines/registry.js';
+import type { ChartSpec } from '../report/charts.js';
+import type { Profile, RunContext } from './common.js';
+import { energyCharts, energyCsv, energyDefaults, energySchema, runEnergy, type EnergyOptions, type EnergyResult } from './energy.js';
+import {
+  falsePositiveCharts,
+  falsePositiveCsv,
+  falsePositiveDefaults,
+  falsePositiveSchema,
+  runFalsePositives,
+  type FalsePositiveOptions,
+  type FalsePositiveResult,
+} from './false-positives.js';
+import { runScale, scaleCharts, scaleCsv, scaleDefaults, scaleSchema, type ScaleOptions, type ScaleResult } from './scale.js';
+import { runStepTime, stepTimeCharts, stepTimeCsv, stepTimeDefaults, stepTimeSchema, type StepTimeOptions, type StepTimeResult } from './step-time.js';
+
+/** Command-line style overrides; each experiment takes the ones that mean something to it. */
+export interface Overrides {
+  ns?: number[];
+  runs?: number;
+  seconds?: number;
+  scenes?: string[];
+  dt?: number;
+}
+
+export interface Experiment<O extends object, R> {
+  name: string;
+  description: string;
+  schema: object;
+  defaultEngines: string[];
+  options(profile: Profile, overrides: Overrides): O;
+  run(options: O, ctx: RunContext): Promise<R>;
+  csv(result: R): string;
+  charts(result: R): ChartSpec[];
+}
+
+function reject(experiment: string, overrides: Overrides, allowed: (keyof Overrides)[]): void {
+  const flags: Record<keyof Overrides, string> = { ns: '--n', runs: '--runs', seconds: '--seconds', scenes: '--scene', dt: '--dt' };
+  for (const key of Object.keys(overrides) as (keyof Overrides)[]) {
+    if (overrides[key] !== undefined && !allowed.includes(key)) {
+      throw new RangeError(`option ${flags[key]} does not apply to experiment '${experiment}' (it takes ${allowed.map((k) => flags[k]).join(', ')})`);
+    }
+  }
+}
+
+const MAXGRID_IDS = ENGINE_IDS.filter((id) => id.startsWith('maxgrid:'));
+
+export const stepTime: Experiment<StepTimeOptions, StepTimeResult> = {
+  name: 'step-time',
+  description: 'Step time vs N per engine, scenes seed-box and uniform (report 5.13.2, 6.2)',
+  schema: stepTimeSchema,
+  defaultEngines: ENGINE_IDS,
+  options(profile, o) {
+    reject('step-time', o, ['ns', 'runs', 'seconds', 'scenes', 'dt']);
+    for (const scene of o.scenes ?? []) {
+      const params = SCENES[scene as keyof typeof SCENES]?.params as Record<string, unknown> | undefined;
+      if (!params) throw new RangeError(`--scene: unknown scene '${scene}'; scenes: ${Object.keys(SCENES).join(', ')}`);
+      if (!('n' in params) || !('seed' in params)) throw new RangeError(`--scene ${scene} has no parameters n and seed, so step-time cannot sweep it over N`);
+    }
+    const d = stepTimeDefaults(profile);
+    return { ...d, ns: o.ns ?? d.ns, runs: o.runs ?? d.runs, seconds: o.seconds ?? d.seconds, scenes: o.scenes ?? d.scenes, dt: o.dt ?? d.dt };
+  },
+  run: runStepTime,
+  csv: stepTimeCsv,
+  charts: stepTimeCharts,
+};
+
+export const energy: Experiment<EnergyOptions, EnergyResult> = {
+  name: 'energy',
+  description: 'Bouncing ball total energy over 5 simulated minutes, and KE(T)/KE(0) of the elastic uniform scene (report 5.13.1, 6.1)',
+  schema: energySchema,
+  defaultEngines: ENGINE_IDS,
+  options(profile, o) {
+    reject('energy', o, ['ns', 'seconds', 'dt']);
+    if (o.ns && o.ns.length !== 1) throw new RangeError(`option --n takes one value for experiment 'energy' (the uniform scene's N), got ${o.ns.join(',')}`);
+    const d = energyDefaults(profile);
+    return { ...d, n: o.ns?.[0] ?? d.n, seconds: o.seconds ?? d.seconds, dt: o.dt ?? d.dt };
+  },
+  run: runEnergy,
+  csv: energyCsv,
+  charts: energyCharts,
+};
+
+export const falsePositives: Experiment<FalsePositiveOptions, FalsePositiveResult> = {
+  name: 'false-positives',
+  description: 'Broad-phase candidate pairs vs true contacts, across N and radius spread 1:1..1:100 (report 7.4)',
+  schema: falsePositiveSchema,
+  defaultEngines: MAXGRID_IDS,
+  options(profile, o) {
+    reject('false-positives', o, ['ns', 'dt']);
+    const d = falsePositiveDefaults(profile);
+    return { ...d, ns: o.ns ?? d.ns, dt: o.dt ?? d.dt };
+  },
+  run: runFalsePositives,
+  csv: falsePositiveCsv,
+  charts: falsePositiveCharts,
+};
+
+export const scale: Experiment<ScaleOptions, ScaleResult> = {
+  name: 'scale',
+  description: 'maxgrid alone up to 1,000,000 circles: ns per body per step and bytes per body',
+  schema: scaleSchema,
+  defaultEngines: ['maxgrid:maxgrid'],
+  options(profile, o) {
+    reject('scale', o, ['ns', 'dt']);
+    const d = scaleDefaults(profile);
+    return { ...d, ns: o.ns ?? d.ns, dt: o.dt ?? d.dt };
+  },
+  run: runScale,
+  csv: scaleCsv,
+  charts: scaleCharts,
+};
+
+// The registry stores experiments of different option and result types side by side.
+// eslint-disable-next-line @typescript-eslint/no-explicit-any
+export type AnyExperiment = Experiment<any, any>;
+
+export const EXPERIMENTS: Record<string, AnyExperiment> = {
+  'step-time': stepTime,
+  energy,
+  'false-positives': falsePositives,
+  scale,
+};
+
+/** Every experiment; `results` (Node only) runs them all and writes docs/results.md. */
+export const EXPERIMENT_NAMES = [...Object.keys(EXPERIMENTS), 'results'];
+
+export interface AnyResult {
+  meta: { experiment: string };
+}

@@ -1,0 +1,126 @@
+import * as echarts from 'echarts';
+
+/** One chart: an ECharts option plus the file stem and title it is published under. */
+export interface ChartSpec {
+  id: string;
+  title: string;
+  option: echarts.EChartsCoreOption;
+  width?: number;
+  height?: number;
+}
+
+export interface Series {
+  name: string;
+  points: [number, number][];
+}
+
+export interface LineChartInput {
+  id: string;
+  title: string;
+  xName: string;
+  yName: string;
+  series: Series[];
+  xLog?: boolean;
+  yLog?: boolean;
+  /** Shaded band per series (e.g. p25..p75), drawn as thin dashed lines. */
+  bands?: { name: string; low: [number, number][]; high: [number, number][] }[];
+}
+
+const PALETTE = ['#d62728', '#ff7f0e', '#bcbd22', '#8c564b', '#1f77b4', '#2ca02c', '#9467bd', '#17becf', '#e377c2', '#7f7f7f'];
+
+export function lineChart(input: LineChartInput): ChartSpec {
+  const series: object[] = input.series.map((s, i) => ({
+    name: s.name,
+    type: 'line',
+    data: s.points,
+    showSymbol: s.points.length <= 40,
+    symbolSize: 5,
+    lineStyle: { width: 2 },
+    color: PALETTE[i % PALETTE.length],
+  }));
+  for (const band of input.bands ?? []) {
+    const i = input.series.findIndex((s) => s.name === band.name);
+    for (const data of [band.low, band.high]) {
+      series.push({
+        name: band.name,
+        type: 'line',
+        data,
+        showSymbol: false,
+        lineStyle: { width: 1, type: 'dashed', opacity: 0.6 },
+        color: PALETTE[i % PALETTE.length],
+        silent: true,
+      });
+    }
+  }
+  return {
+    id: input.id,
+    title: input.title,
+    option: {
+      backgroundColor: '#ffffff',
+      animation: false,
+      title: { text: input.title, left: 'center', textStyle: { fontSize: 15 } },
+      legend: { top: 34, data: input.series.map((s) => s.name) },
+      grid: { left: 80, right: 30, top: 90, bottom: 60 },
+      xAxis: { type: input.xLog ? 'log' : 'value', name: input.xName, nameLocation: 'middle', nameGap: 32, scale: !input.xLog },
+      yAxis: { type: input.yLog ? 'log' : 'value', name: input.yName, nameLocation: 'middle', nameGap: 60, scale: !input.yLog },
+      series,
+    },
+  };
+}
+
+export interface BarChartInput {
+  id: string;
+  title: string;
+  categories: string[];
+  yName: string;
+  series: { name: string; values: number[] }[];
+  yLog?: boolean;
+}
+
+export function barChart(input: BarChartInput): ChartSpec {
+  return {
+    id: input.id,
+    title: input.title,
+    option: {
+      backgroundColor: '#ffffff',
+      animation: false,
+      title: { text: input.title, left: 'center', textStyle: { fontSize: 15 } },
+      legend: { top: 34 },
+      grid: { left: 80, right: 30, top: 90, bottom: 60 },
+      xAxis: { type: 'category', data: input.categories },
+      yAxis: { type: input.yLog ? 'log' : 'value', name: input.yName, nameLocation: 'middle', nameGap: 60 },
+      series: input.series.map((s, i) => ({ name: s.name, type: 'bar', data: s.values, color: PALETTE[i % PALETTE.length] })),
+    },
+  };
+}
+
+// Without a DOM, ECharts estimates text widths too narrow for the DejaVu Sans that resvg draws
+// the PNGs with, and legend entries overlap. An average advance of 0.62 em matches that font.
+let measured = false;
+function useFontMetrics(): void {
+  if (measured || typeof document !== 'undefined') return;
+  measured = true;
+  echarts.setPlatformAPI({
+    measureText(text: string, font?: string) {
+      const size = Number(/(\d+(?:\.\d+)?)px/.exec(font ?? '')?.[1] ?? 12);
+      return { width: text.length * size * 0.62 };
+    },
+  });
+}
+
+/** Server-side (DOM-free) SVG rendering; the same call works in Node and in the browser. */
+export function renderSvg(chart: ChartSpec): string {
+  useFontMetrics();
+  const instance = echarts.init(null, null, {
+    renderer: 'svg',
+    ssr: true,
+    width: chart.width ?? 900,
+    height: chart.height ?? 500,
+  });
+  try {
+    instance.setOption(chart.option);
+    return instance.renderToSVGString();
+  } finally {
+    instance.dispose();
+  }
+}

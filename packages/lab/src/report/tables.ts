@@ -1,0 +1,140 @@
+import type { EngineInfo } from '../engines/adapter.js';
+import type { EnergyResult } from '../experiments/energy.js';
+import type { FalsePositiveResult } from '../experiments/false-positives.js';
+import type { ScaleResult } from '../experiments/scale.js';
+import { stepTimeRatio, type StepTimeResult } from '../experiments/step-time.js';
+
+export interface Table {
+  title: string;
+  headers: string[];
+  rows: string[][];
+  note?: string;
+}
+
+/** Three significant digits, without exponent noise for ordinary magnitudes. */
+export function fmt(x: number | null | undefined, digits = 3): string {
+  if (x === null || x === undefined || !Number.isFinite(x)) return '–';
+  if (x === 0) return '0';
+  const a = Math.abs(x);
+  if (a >= 1000) return Math.round(x).toLocaleString('en-US');
+  return Number(x.toPrecision(digits)).toString();
+}
+
+export function ratioText(x: number): string {
+  return Number.isFinite(x) ? `${fmt(x)}×` : '–';
+}
+
+export const BASELINE = 'maxgrid:maxgrid';
+
+export function engineTable(engines: EngineInfo[]): Table {
+  return {
+    title: 'Engines and settings',
+    headers: ['engine', 'package@version', 'precision', 'length scale', 'settings'],
+    rows: engines.map((e) => [
+      e.id,
+      `${e.package}@${e.version}`,
+      e.precision,
+      e.lengthScale === 1 ? 'scene px' : `1 px = ${e.lengthScale} m`,
+      Object.entries(e.settings)
+        .map(([k, v]) => `${k}=${String(v)}`)
+        .join('; '),
+    ]),
+  };
+}
+
+export function stepTimeTables(result: StepTimeResult): Table[] {
+  const tables: Table[] = [];
+  const scenes = [...new Set(result.rows.map((r) => r.scene))];
+  for (const scene of scenes) {
+    const rows = result.rows.filter((r) => r.scene === scene);
+    const engines = [...new Set(rows.map((r) => r.engine))];
+    const ns = [...new Set(rows.map((r) => r.n))].sort((a, b) => a - b);
+    const hasBaseline = engines.includes(BASELINE);
+    tables.push({
+      title: `Step time, scene ${scene}: median ms per step [p25–p75] over runs`,
+      headers: ['N', ...engines],
+      rows: ns.map((n) => [
+        String(n),
+        ...engines.map((e) => {
+          const r = rows.find((x) => x.n === n && x.engine === e);
+          return r ? `${fmt(r.ms.median)} [${fmt(r.ms.p25)}–${fmt(r.ms.p75)}]` : 'skipped';
+        }),
+      ]),
+    });
+    if (hasBaseline) {
+      tables.push({
+        title: `Step time ratio to ${BASELINE}, scene ${scene} (engine median / ${BASELINE} median at the same N)`,
+        headers: ['N', ...engines.filter((e) => e !== BASELINE)],
+        rows: ns.map((n) => [String(n), ...engines.filter((e) => e !== BASELINE).map((e) => ratioText(stepTimeRatio(result, scene, n, e, BASELINE)))]),
+      });
+    }
+  }
+  return tables;
+}
+
+export function energyTables(result: EnergyResult): Table[] {
+  return [
+    {
+      title: `Energy: bouncing ball for ${String(result.meta.options.ballSeconds)} s (E/E0), and uniform N=${String(result.meta.options.n)} for ${String(result.meta.options.seconds)} s (KE/KE0)`,
+      headers: ['engine', 'ball E(end)/E0', 'ball min', 'ball max', 'uniform KE(end)/KE0', 'uniform min', 'uniform max'],
+      rows: result.ball.map((b, i) => {
+        const u = result.uniform[i];
+        return [b.engine, fmt(b.final, 4), fmt(b.min, 4), fmt(b.max, 4), fmt(u.final, 4), fmt(u.min, 4), fmt(u.max, 4)];
+      }),
+    },
+  ];
+}
+
+export function falsePositiveTables(result: FalsePositiveResult): Table[] {
+  const engines = [...new Set(result.rows.map((r) => r.engine))];
+  const cell = (r: FalsePositiveResult['rows'][number] | undefined) =>
+    r ? `${fmt(r.candidatesPerContact)} (${fmt(r.candidatePairs)} / ${fmt(r.contacts)})` : 'skipped';
+  const ns = [...new Set(result.rows.filter((r) => r.sweep === 'n').map((r) => r.n))];
+  const ratios = [...new Set(result.rows.filter((r) => r.sweep === 'spread').map((r) => r.ratio))];
+  return [
+    {
+      title: 'False positives vs N (uniform, radii 4–8): candidates per contact (candidate pairs / contacts, per step)',
+      headers: ['N', ...engines],
+      rows: ns.map((n) => [String(n), ...engines.map((e) => cell(result.rows.find((r) => r.sweep === 'n' && r.n === n && r.engine === e)))]),
+    },
+    {
+      title: `False positives vs radius spread (uniform, N = ${String(result.meta.options.spreadN)}, radii ${String(result.meta.options.minRadius)} to ${String(result.meta.options.minRadius)}·ratio)`,
+      headers: ['radius ratio', ...engines],
+      rows: ratios.map((q) => [`1:${q}`, ...engines.map((e) => cell(result.rows.find((r) => r.sweep === 'spread' && r.ratio === q && r.engine === e)))]),
+    },
+  ];
+}
+
+export function scaleTables(result: ScaleResult): Table[] {
+  return [
+    {
+      title: 'Scale (uniform scene): median step, ns per body per step, engine bytes per body',
+      headers: ['N', 'engine', 'median ms [p25–p75]', 'ns / body / step', 'bytes / body'],
+      rows: result.rows.map((r) => [
+        r.n.toLocaleString('en-US'),
+        r.engine,
+        `${fmt(r.ms.median)} [${fmt(r.ms.p25)}–${fmt(r.ms.p75)}]`,
+        fmt(r.nsPerBody),
+        fmt(r.bytesPerBody),
+      ]),
+    },
+  ];
+}
+
+export function markdownTable(t: Table): string {
+  const esc = (s: string) => s.replace(/\|/g, '\\|');
+  const lines = [`**${t.title}**`, '', `| ${t.headers.map(esc).join(' | ')} |`, `|${t.headers.map(() => ' --- ').join('|')}|`];
+  for (const row of t.rows) lines.push(`| ${row.map(esc).join(' | ')} |`);
+  if (t.note) lines.push('', t.note);
+  return lines.join('\n');
+}
+
+export function escapeHtml(s: string): string {
+  return s.replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' })[c]!);
+}
+
+export function htmlTable(t: Table): string {
+  const head = t.headers.map((h) => `<th>${escapeHtml(h)}</th>`).join('');
+  const body = t.rows.map((r) => `<tr>${r.map((c) => `<td>${escapeHtml(c)}</td>`).join('')}</tr>`).join('\n');
+  return `<h3>${escapeHtml(t.title)}</h3>\n<table><thead><tr>${head}</tr></thead>\n<tbody>${body}</tbody></table>`;
+}
