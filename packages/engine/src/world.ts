@@ -7,6 +7,7 @@ import type { BroadPhase } from './broadphase/broadphase.js';
 import type { BroadPhaseName } from './broadphase/registry.js';
 import { BROADPHASES } from './broadphase/registry.js';
 import { MaxGridBroadPhase, type GridGeometry } from './broadphase/maxgrid.js';
+import { AutoBroadPhase } from './broadphase/auto.js';
 import { NarrowPhase } from './narrowphase/narrowphase.js';
 import { INTEGRATORS, type IntegratorName } from './integrate/integrator.js';
 import { bounceOffBox, clampIntoBox } from './solver/box-walls.js';
@@ -286,7 +287,8 @@ export class World {
 
   /** The Max Grid of the last step (for drawing it), or null with another broad-phase. */
   gridGeometry(): GridGeometry | null {
-    return this.broad instanceof MaxGridBroadPhase ? { ...this.broad.geometry } : null;
+    const used = this.broad instanceof AutoBroadPhase ? this.broad.current : this.broad;
+    return used instanceof MaxGridBroadPhase ? used.geometry : null;
   }
 
   /** Bytes held by the engine's typed arrays: body columns, broad-phase and contact scratch. */

@@ -109,3 +109,32 @@ describe('broad-phase contract', () => {
     expect(grid.geometry.columns * grid.geometry.rows).toBeLessThanOrEqual(4 * 101 + 64);
   });
 });
+
+describe('mixed sizes (report 3.2: Max Grid degrades when sizes differ by an order of magnitude)', () => {
+  it('hgrid examines far fewer pairs than maxgrid at a radius ratio of 1:100, and auto follows it', async () => {
+    const { buildScene, buildWorld } = await import('@maxgrid/scenes');
+    const scene = buildScene('mixed', { n: 4000, seed: 2, ratio: 100, largeFraction: 0.002 });
+    const tests: Record<string, number> = {};
+    const contacts: Record<string, number> = {};
+    for (const broadphase of ['maxgrid', 'hgrid', 'auto'] as const) {
+      const world = buildWorld(scene, { broadphase });
+      world.step(1 / 60);
+      tests[broadphase] = world.stats.pairTests;
+      contacts[broadphase] = world.stats.contacts;
+    }
+    expect(tests.hgrid * 10).toBeLessThan(tests.maxgrid);
+    expect(tests.auto).toBe(tests.hgrid);
+    expect(contacts.hgrid).toBe(contacts.maxgrid);
+  });
+
+  it('auto uses maxgrid when sizes are similar', async () => {
+    const { buildScene, buildWorld } = await import('@maxgrid/scenes');
+    const scene = buildScene('uniform', { n: 2000, seed: 2 });
+    const auto = buildWorld(scene, { broadphase: 'auto' });
+    const grid = buildWorld(scene, { broadphase: 'maxgrid' });
+    auto.step(1 / 60);
+    grid.step(1 / 60);
+    expect(auto.stats.pairTests).toBe(grid.stats.pairTests);
+    expect(auto.gridGeometry()).toEqual(grid.gridGeometry());
+  });
+});

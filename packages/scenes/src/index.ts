@@ -1,13 +1,14 @@
 import { seedBox, seedBoxParams } from './seed-box.js';
 import { uniform, uniformParams } from './uniform.js';
 import { bouncingBall, bouncingBallParams } from './bouncing-ball.js';
+import { mixed, mixedParams } from './mixed.js';
 import type { ParamSpecs } from './params.js';
 import type { Scene } from './scene.js';
 
 export { Prng } from './prng.js';
 export { buildWorld, type Scene, type BuildOptions } from './scene.js';
 export { resolveParams, type ParamSpec, type ParamSpecs } from './params.js';
-export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams };
+export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams };
 
 export interface SceneDefinition {
   description: string;
@@ -26,6 +27,11 @@ export const SCENES = {
     description: 'Constant density: radius uniform in [4, 8], 25% of a square box filled, elastic, no gravity',
     params: uniformParams,
     build: uniform,
+  },
+  mixed: {
+    description: "The report's worst case for Max Grid: many small circles and a few 100x larger ones",
+    params: mixedParams,
+    build: mixed,
   },
   'bouncing-ball': {
     description: "The report's accuracy test: one elastic ball dropped in a box",

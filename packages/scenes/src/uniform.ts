@@ -9,10 +9,19 @@ export const uniformParams = {
   maxRadius: { default: 8, min: 0.01, max: 1e4, description: 'largest radius' },
   fill: { default: 0.25, min: 0.001, max: 0.6, description: "circles' total area over the box area" },
   maxSpeed: { default: 100, min: 0, max: 1e6, description: 'speeds are uniform in [0, maxSpeed]' },
+  logRadius: {
+    default: 0,
+    min: 0,
+    max: 1,
+    integer: true,
+    description: '1: radii log-uniform (as many circles per size octave), 0: uniform in [minRadius, maxRadius]',
+  },
 } satisfies ParamSpecs;
 
 /**
- * N circles with radius uniform in [minRadius, maxRadius] in a square box sized so that their total
+ * N circles with radius uniform in [minRadius, maxRadius] (or log-uniform, for wide size spreads
+ * where small circles should outnumber large ones, as in the report's worst case for Max Grid) in a
+ * square box sized so that their total
  * area is `fill` of it: density stays constant as N grows, which is what a per-body cost needs.
  * No gravity, restitution 1. Circles start on a jittered lattice, one per lattice cell, so they do
  * not overlap where the cell is wide enough (always, at the default sizes and fill).
@@ -26,7 +35,9 @@ export function uniform(given?: Partial<Record<keyof typeof uniformParams, numbe
   const radius = new Float64Array(p.n);
   let area = 0;
   for (let k = 0; k < p.n; k++) {
-    radius[k] = rng.range(p.minRadius, p.maxRadius);
+    radius[k] = p.logRadius
+      ? p.minRadius * (p.maxRadius / p.minRadius) ** rng.next()
+      : rng.range(p.minRadius, p.maxRadius);
     area += Math.PI * radius[k] * radius[k];
   }
   const side = Math.max(Math.sqrt(area / p.fill), 2 * p.maxRadius);

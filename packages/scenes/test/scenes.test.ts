@@ -44,6 +44,23 @@ describe('scenes', () => {
     expect(buildScene('seed-box', { n: 100, seed: 6 }).x).not.toEqual(s.x);
   });
 
+  it('mixed: a few circles `ratio` times larger than the rest, none overlapping at the start', () => {
+    const s = buildScene('mixed', { n: 3000, seed: 4, ratio: 50, largeFraction: 0.003 });
+    const radii = Array.from(s.radius);
+    expect(radii.filter((r) => r === 200).length).toBe(9);
+    expect(radii.filter((r) => r !== 200).every((r) => r >= 4 && r <= 8)).toBe(true);
+    const world = buildWorld(s, { broadphase: 'hgrid' });
+    world.step(0);
+    expect(world.stats.contacts).toBe(0);
+  });
+
+  it('uniform with logRadius: as many circles per size octave', () => {
+    const s = buildScene('uniform', { n: 4000, seed: 1, minRadius: 1, maxRadius: 16, logRadius: 1 });
+    const perOctave = [0, 0, 0, 0];
+    for (const r of s.radius) perOctave[Math.min(3, Math.floor(Math.log2(r)))]++;
+    for (const count of perOctave) expect(count).toBeGreaterThan(900);
+  });
+
   it('bouncing-ball: one ball at rest, restitution 1', () => {
     const s = buildScene('bouncing-ball');
     expect(s.count).toBe(1);

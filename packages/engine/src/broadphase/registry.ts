@@ -3,12 +3,16 @@ import { NaiveBroadPhase } from './naive.js';
 import { SapBroadPhase } from './sap.js';
 import { SapXyBroadPhase } from './sap-xy.js';
 import { MaxGridBroadPhase } from './maxgrid.js';
+import { HierarchicalGridBroadPhase } from './hgrid.js';
+import { AutoBroadPhase } from './auto.js';
 
 export const BROADPHASES = {
   naive: () => new NaiveBroadPhase(),
   sap: () => new SapBroadPhase(),
   'sap-xy': () => new SapXyBroadPhase(),
   maxgrid: () => new MaxGridBroadPhase(),
+  hgrid: () => new HierarchicalGridBroadPhase(),
+  auto: () => new AutoBroadPhase(),
 } satisfies Record<string, () => BroadPhase>;
 
 export type BroadPhaseName = keyof typeof BROADPHASES;

@@ -52,9 +52,10 @@ export class BodyStore {
   private freeSlots = new Int32Array(0);
   private freeCount = 0;
 
-  /** Largest radius among live bodies; Max Grid's cell size is twice this. */
+  /** Radius range of live bodies, kept incrementally and recomputed lazily after removals. */
   private cachedMaxRadius = 0;
-  private maxRadiusStale = false;
+  private cachedMinRadius = Infinity;
+  private radiusRangeStale = false;
 
   constructor(initialCapacity = 0) {
     if (initialCapacity > 0) this.grow(initialCapacity);
@@ -101,6 +102,7 @@ export class BodyStore {
     this.setTypeCode(slot, body.type);
     this.liveCount++;
     if (body.radius > this.cachedMaxRadius) this.cachedMaxRadius = body.radius;
+    if (body.radius < this.cachedMinRadius) this.cachedMinRadius = body.radius;
     return slot;
   }
 
@@ -110,7 +112,8 @@ export class BodyStore {
     this.vy[slot] = 0;
     this.invMass[slot] = 0;
     this.liveCount--;
-    if (this.radius[slot] === this.cachedMaxRadius) this.maxRadiusStale = true;
+    const r = this.radius[slot];
+    if (r === this.cachedMaxRadius || r === this.cachedMinRadius) this.radiusRangeStale = true;
     const nextGeneration = this.generation[slot] + 1;
     // A slot whose generation would overflow the handle encoding is retired rather than reused.
     if (nextGeneration < MAX_GENERATION) {
@@ -131,17 +134,22 @@ export class BodyStore {
     }
   }
 
-  maxRadius(): number {
-    if (this.maxRadiusStale) {
+  /** Largest over smallest radius of live bodies (1 when empty): how mixed the sizes are. */
+  radiusSpread(): number {
+    if (this.radiusRangeStale) {
       let max = 0;
+      let min = Infinity;
       const { radius, type } = this;
       for (let i = 0; i < this.slotCount; i++) {
-        if (type[i] !== TypeCode.free && radius[i] > max) max = radius[i];
+        if (type[i] === TypeCode.free) continue;
+        if (radius[i] > max) max = radius[i];
+        if (radius[i] < min) min = radius[i];
       }
       this.cachedMaxRadius = max;
-      this.maxRadiusStale = false;
+      this.cachedMinRadius = min;
+      this.radiusRangeStale = false;
     }
-    return this.cachedMaxRadius;
+    return this.liveCount === 0 ? 1 : this.cachedMaxRadius / this.cachedMinRadius;
   }
 
   memoryBytes(): number {

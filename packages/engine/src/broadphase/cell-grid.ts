@@ -1,0 +1,183 @@
+import type { BodyStore } from '../store/body-store.js';
+import type { PairSink } from '../store/pair-sink.js';
+import { grownCapacity } from '../util/grow.js';
+import { RADIUS_PAD } from './fat-bounds.js';
+
+/**
+ * One uniform grid over a set of bodies, built by counting sort: count per cell, prefix sum,
+ * scatter. O(bodies + cells), nothing allocated per cell, and the scatter copies each body's x, y
+ * and (padded) radius into cell order so that scans read memory sequentially instead of chasing
+ * slots. Cells are row-major, so a run of cells in one row is one contiguous range of bodies.
+ *
+ * Correctness rests on one rule, kept by the callers: the cell size is at least the largest
+ * contact distance between a body in this grid and any body tested against it, so touching
+ * bodies are never more than one cell apart.
+ */
+export class CellGrid {
+  originX = 0;
+  originY = 0;
+  cellSize = 0;
+  columns = 0;
+  rows = 0;
+  count = 0;
+
+  cellStart = new Int32Array(2);
+  sortedSlot = new Int32Array(0);
+  sortedCell = new Int32Array(0);
+  sortedX = new Float64Array(0);
+  sortedY = new Float64Array(0);
+  sortedR = new Float64Array(0);
+  /** 1 / cellSize, shared by sizing and binning so both round identically. */
+  private inverse = 0;
+  private binOf = new Int32Array(0);
+
+  /**
+   * Sizes the grid over the extent [minX, maxX] x [minY, maxY] with cells of at least
+   * `minCellSize`, enlarged until there are at most `cellBudget` cells, and bins `slots[0..n)`.
+   */
+  build(
+    bodies: BodyStore,
+    slots: Int32Array,
+    n: number,
+    minX: number,
+    minY: number,
+    maxX: number,
+    maxY: number,
+    minCellSize: number,
+    cellBudget: number,
+  ): void {
+    let cellSize = minCellSize;
+    let inv = 1 / cellSize;
+    let columns = Math.floor((maxX - minX) * inv) + 1;
+    let rows = Math.floor((maxY - minY) * inv) + 1;
+    while (columns * rows > cellBudget) {
+      cellSize *= 1.5;
+      inv = 1 / cellSize;
+      columns = Math.floor((maxX - minX) * inv) + 1;
+      rows = Math.floor((maxY - minY) * inv) + 1;
+    }
+    this.originX = minX;
+    this.originY = minY;
+    this.cellSize = cellSize;
+    this.inverse = inv;
+    this.columns = columns;
+    this.rows = rows;
+    this.count = n;
+    this.ensure(n, columns * rows);
+
+    const cells = columns * rows;
+    const { x, y, radius } = bodies;
+    const { cellStart, binOf, sortedSlot, sortedCell, sortedX, sortedY, sortedR } = this;
+    cellStart.fill(0, 0, cells + 2);
+    for (let k = 0; k < n; k++) {
+      const i = slots[k];
+      const c = Math.floor((y[i] - minY) * inv) * columns + Math.floor((x[i] - minX) * inv);
+      binOf[k] = c;
+      cellStart[c + 1]++;
+    }
+    for (let c = 0; c <= cells; c++) cellStart[c + 1] += cellStart[c];
+    // Scatter from the back so that, counting down from each cell's end, slots stay ascending.
+    for (let k = n - 1; k >= 0; k--) {
+      const c = binOf[k];
+      const at = --cellStart[c + 1];
+      const i = slots[k];
+      sortedSlot[at] = i;
+      sortedCell[at] = c;
+      sortedX[at] = x[i];
+      sortedY[at] = y[i];
+      sortedR[at] = radius[i] * (1 + RADIUS_PAD);
+    }
+    // The scatter left cellStart[c + 1] at the start of cell c: shift back to [start, end) form.
+    for (let c = 0; c <= cells; c++) cellStart[c] = cellStart[c + 1];
+    cellStart[cells] = n;
+    cellStart[cells + 1] = n;
+  }
+
+  /**
+   * Examines every pair inside this grid once: from each body, the rest of its cell and the east
+   * cell (one range), then the three cells of the next row (another range); the other four
+   * neighbours are covered from their side. Pushes pairs whose padded boxes overlap; returns the
+   * number of pairs examined.
+   */
+  scanSelf(out: PairSink, pad: number): number {
+    const { cellStart, sortedSlot, sortedCell, sortedX, sortedY, sortedR, columns, rows, count } = this;
+    let examined = 0;
+    for (let k = 0; k < count; k++) {
+      const c = sortedCell[k];
+      const row = (c / columns) | 0;
+      const column = c - row * columns;
+      const sameRowEnd = column + 1 < columns ? cellStart[c + 2] : cellStart[c + 1];
+      examined += pushOverlaps(this, k + 1, sameRowEnd, sortedX[k], sortedY[k], sortedR[k] + pad, sortedSlot[k], out);
+      if (row + 1 < rows) {
+        const below = c + columns;
+        const from = cellStart[column > 0 ? below - 1 : below];
+        const to = cellStart[column + 1 < columns ? below + 2 : below + 1];
+        examined += pushOverlaps(this, from, to, sortedX[k], sortedY[k], sortedR[k] + pad, sortedSlot[k], out);
+      }
+    }
+    return examined;
+  }
+
+  /**
+   * Examines a body of another grid against the full 3x3 neighbourhood of the cell holding its
+   * centre here: three row ranges. Used across hierarchy levels, where each pair is found from
+   * the finer side only. Returns the number of pairs examined.
+   */
+  scanAround(px: number, py: number, reach: number, slot: number, out: PairSink): number {
+    const { columns, rows, cellStart } = this;
+    const column = Math.floor((px - this.originX) * this.inverse);
+    const row = Math.floor((py - this.originY) * this.inverse);
+    // A foreign body may lie outside this grid's extent: clamp the window, not the body.
+    const c0 = Math.max(column - 1, 0);
+    const c1 = Math.min(column + 1, columns - 1);
+    const r0 = Math.max(row - 1, 0);
+    const r1 = Math.min(row + 1, rows - 1);
+    if (c0 > c1 || r0 > r1) return 0;
+    let examined = 0;
+    for (let r = r0; r <= r1; r++) {
+      examined += pushOverlaps(this, cellStart[r * columns + c0], cellStart[r * columns + c1 + 1], px, py, reach, slot, out);
+    }
+    return examined;
+  }
+
+  memoryBytes(): number {
+    return (
+      this.cellStart.byteLength +
+      this.sortedSlot.byteLength * 3 +
+      this.sortedX.byteLength * 3
+    );
+  }
+
+  private ensure(n: number, cells: number): void {
+    if (this.cellStart.length < cells + 2) this.cellStart = new Int32Array(grownCapacity(this.cellStart.length, cells + 2));
+    if (this.sortedSlot.length >= n) return;
+    const capacity = grownCapacity(this.sortedSlot.length, n);
+    this.binOf = new Int32Array(capacity);
+    this.sortedSlot = new Int32Array(capacity);
+    this.sortedCell = new Int32Array(capacity);
+    this.sortedX = new Float64Array(capacity);
+    this.sortedY = new Float64Array(capacity);
+    this.sortedR = new Float64Array(capacity);
+  }
+}
+
+/** Pushes (slot, other) for each body in [from, to) whose padded box overlaps the given one. */
+function pushOverlaps(
+  grid: CellGrid,
+  from: number,
+  to: number,
+  ax: number,
+  ay: number,
+  ar: number,
+  slot: number,
+  out: PairSink,
+): number {
+  const { sortedX, sortedY, sortedR, sortedSlot } = grid;
+  for (let m = from; m < to; m++) {
+    const reach = ar + sortedR[m];
+    const dx = sortedX[m] - ax;
+    const dy = sortedY[m] - ay;
+    if (dx <= reach && dx >= -reach && dy <= reach && dy >= -reach) out.push(slot, sortedSlot[m]);
+  }
+  return to - from;
+}
