@@ -4,8 +4,6 @@ import { SCENE_NAMES } from '@maxgrid/scenes';
 import { ENGINE_IDS } from './engines/registry.js';
 import { nRange } from './experiments/common.js';
 import { EXPERIMENTS, EXPERIMENT_NAMES, type Overrides } from './experiments/registry.js';
-import { runExperiment, writeExperiment } from './node/run.js';
-import { runResults } from './node/results.js';
 
 // Every parser names the option and the value it rejects; commander prefixes "error: option ...".
 function positiveInteger(flag: string) {
@@ -88,11 +86,15 @@ const program = new Command()
       if (Object.values(overrides).some((v) => v !== undefined) || o.engines) {
         throw new InvalidArgumentError('results takes only --quick or --full and --out: it runs every experiment with its profile.');
       }
+      const { runResults } = await import('./node/results.js');
       const written = await runResults({ profile, docsDir: resolve(o.out ?? 'docs'), command });
       console.log(written.join('\n'));
       return;
     }
     const experiment = EXPERIMENTS[name];
+    // Validate before loading engines, ECharts and resvg, so a bad option fails at once.
+    experiment.options(profile, overrides);
+    const { runExperiment, writeExperiment } = await import('./node/run.js');
     const output = await runExperiment({ experiment, profile, overrides, engineIds: o.engines, command });
     const files = writeExperiment(resolve(o.out ?? `out/lab/${name}`), experiment, output, command);
     console.log(files.join('\n'));

@@ -32,6 +32,8 @@ export interface Simulation {
   readonly count: number;
   step(dt: number): void;
   read(out: BodyState): void;
+  /** Radii as the engine stores them, in scene units, for checking the build. */
+  readRadii(out: Float64Array): void;
   /** Broad-phase candidates and true contacts of the last step, where the engine reports them. */
   pairStats?(): { candidatePairs: number; contacts: number };
   /** Broad- and narrow-phase time of the last step, where the engine reports them. */
@@ -95,8 +97,8 @@ export interface Energy {
 
 /**
  * Energy from read-back state in scene units, identical for all engines. Potential energy is
- * m g h with h measured from the wall gravity points at (the floor for the scenes' downward
- * gravity), so it is never negative and the bouncing ball's total starts at m g (drop height).
+ * m g h with h the centre's distance from the wall gravity points at (the floor, for the scenes'
+ * downward gravity), so it is never negative; the bouncing ball starts at m g (drop + radius).
  */
 export function energyOf(scene: Scene, masses: Float64Array, state: BodyState): Energy {
   const gx = scene.gravity.x;

@@ -78,6 +78,10 @@ class Box2DSimulation implements Simulation {
     }
   }
 
+  readRadii(out: Float64Array): void {
+    for (let k = 0; k < this.count; k++) out[k] = this.bodies[k].GetFixtureList().GetShape().get_m_radius() / S;
+  }
+
   dispose(): void {
     this.b2.destroy(this.world);
   }

@@ -57,6 +57,10 @@ class MatterSimulation implements Simulation {
     }
   }
 
+  readRadii(out: Float64Array): void {
+    for (let k = 0; k < this.count; k++) out[k] = this.bodies[k].circleRadius ?? NaN;
+  }
+
   dispose(): void {
     this.M.Engine.clear(this.engine);
   }

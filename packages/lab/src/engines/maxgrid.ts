@@ -26,6 +26,10 @@ class MaxgridSimulation implements Simulation {
     out.vy.set(v.vy.subarray(0, this.count));
   }
 
+  readRadii(out: Float64Array): void {
+    out.set(this.world.views().radius.subarray(0, this.count));
+  }
+
   pairStats(): { candidatePairs: number; contacts: number } {
     const s = this.world.stats;
     return { candidatePairs: s.candidatePairs, contacts: s.contacts };

@@ -60,6 +60,10 @@ class P2Simulation implements Simulation {
     }
   }
 
+  readRadii(out: Float64Array): void {
+    for (let k = 0; k < this.count; k++) out[k] = (this.bodies[k].shapes[0] as { radius?: number }).radius! / S;
+  }
+
   dispose(): void {
     this.world.clear();
   }

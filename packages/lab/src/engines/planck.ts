@@ -57,6 +57,10 @@ class PlanckSimulation implements Simulation {
     }
   }
 
+  readRadii(out: Float64Array): void {
+    for (let k = 0; k < this.count; k++) out[k] = this.bodies[k].getFixtureList()!.getShape().getRadius() / S;
+  }
+
   dispose(): void {}
 }
 

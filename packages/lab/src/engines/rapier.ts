@@ -65,6 +65,10 @@ class RapierSimulation implements Simulation {
     }
   }
 
+  readRadii(out: Float64Array): void {
+    for (let k = 0; k < this.count; k++) out[k] = this.bodies[k].collider(0).radius() / S;
+  }
+
   dispose(): void {
     this.world.free();
   }

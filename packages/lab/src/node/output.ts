@@ -1,7 +1,8 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { Resvg } from '@resvg/resvg-js';
-import { renderSvg, type ChartSpec } from '../report/charts.js';
+import type { ChartSpec } from '../report/charts.js';
+import { renderSvg } from '../report/render.js';
 
 export function svgToPng(svg: string, width = 1350): Buffer {
   const resvg = new Resvg(svg, {

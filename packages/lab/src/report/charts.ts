@@ -1,10 +1,10 @@
-import * as echarts from 'echarts';
+import type { EChartsCoreOption } from 'echarts';
 
 /** One chart: an ECharts option plus the file stem and title it is published under. */
 export interface ChartSpec {
   id: string;
   title: string;
-  option: echarts.EChartsCoreOption;
+  option: EChartsCoreOption;
   width?: number;
   height?: number;
 }
@@ -92,35 +92,4 @@ export function barChart(input: BarChartInput): ChartSpec {
       series: input.series.map((s, i) => ({ name: s.name, type: 'bar', data: s.values, color: PALETTE[i % PALETTE.length] })),
     },
   };
-}
-
-// Without a DOM, ECharts estimates text widths too narrow for the DejaVu Sans that resvg draws
-// the PNGs with, and legend entries overlap. An average advance of 0.62 em matches that font.
-let measured = false;
-function useFontMetrics(): void {
-  if (measured || typeof document !== 'undefined') return;
-  measured = true;
-  echarts.setPlatformAPI({
-    measureText(text: string, font?: string) {
-      const size = Number(/(\d+(?:\.\d+)?)px/.exec(font ?? '')?.[1] ?? 12);
-      return { width: text.length * size * 0.62 };
-    },
-  });
-}
-
-/** Server-side (DOM-free) SVG rendering; the same call works in Node and in the browser. */
-export function renderSvg(chart: ChartSpec): string {
-  useFontMetrics();
-  const instance = echarts.init(null, null, {
-    renderer: 'svg',
-    ssr: true,
-    width: chart.width ?? 900,
-    height: chart.height ?? 500,
-  });
-  try {
-    instance.setOption(chart.option);
-    return instance.renderToSVGString();
-  } finally {
-    instance.dispose();
-  }
 }

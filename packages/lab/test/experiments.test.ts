@@ -1,0 +1,169 @@
+import { beforeAll, describe, expect, it } from 'vitest';
+import { Ajv } from 'ajv';
+import type { Engine } from '../src/engines/adapter.js';
+import { ENGINE_IDS } from '../src/engines/registry.js';
+import type { RunContext } from '../src/experiments/common.js';
+import { spread } from '../src/experiments/common.js';
+import { EXPERIMENTS, energy, falsePositives, scale, stepTime } from '../src/experiments/registry.js';
+import { renderSvg } from '../src/report/render.js';
+import { htmlReport, tablesFor } from '../src/report/html.js';
+import { markdownTable } from '../src/report/tables.js';
+import { loadEnginesNode } from '../src/node/engines.js';
+
+let engines: Engine[] = [];
+const ajv = new Ajv({ allErrors: true, strict: false });
+
+beforeAll(async () => {
+  engines = await loadEnginesNode(ENGINE_IDS);
+});
+
+function ctx(ids: string[] = ENGINE_IDS): RunContext {
+  return { engines: engines.filter((e) => ids.includes(e.info.id)), environment: { runtime: 'vitest' }, profile: 'custom' };
+}
+
+/** Validates through a JSON round trip, so NaN (written as null) fails as it would on disk. */
+function expectValid(schema: object, result: unknown): void {
+  const validate = ajv.compile(schema);
+  const ok = validate(JSON.parse(JSON.stringify(result)));
+  expect(validate.errors ?? [], JSON.stringify(validate.errors)).toEqual([]);
+  expect(ok).toBe(true);
+}
+
+function expectPublishable(name: string, result: unknown): void {
+  const experiment = EXPERIMENTS[name];
+  const csv = experiment.csv(result).trim().split('\n');
+  expect(csv.length).toBeGreaterThan(1);
+  const columns = csv[0].split(',').length;
+  for (const line of csv) expect(line.split(',').length).toBe(columns);
+  for (const chart of experiment.charts(result)) expect(renderSvg(chart)).toMatch(/^<svg[\s\S]*<\/svg>$/);
+  const tables = tablesFor(name, result);
+  expect(tables.length).toBeGreaterThan(0);
+  for (const t of tables) expect(markdownTable(t)).toContain('| ---');
+}
+
+describe('step-time', () => {
+  it('measures every engine at every N of both scenes, and its JSON validates', async () => {
+    const options = { ...stepTime.options('quick', {}), ns: [40, 80], runs: 2, seconds: 3 / 60, warmupSteps: 1 };
+    const result = await stepTime.run(options, ctx());
+    expectValid(stepTime.schema, result);
+    expect(result.rows).toHaveLength(2 * 2 * ENGINE_IDS.length);
+    for (const row of result.rows) {
+      expect(row.runMs).toHaveLength(2);
+      expect(row.ms.p25).toBeLessThanOrEqual(row.ms.median);
+      expect(row.ms.median).toBeLessThanOrEqual(row.ms.p75);
+      expect(row.stepsPerRun).toBe(3);
+    }
+    expect(new Set(result.rows.map((r) => r.engine))).toEqual(new Set(ENGINE_IDS));
+    expect(result.meta.engines.map((e) => e.id)).toEqual(ENGINE_IDS);
+    expectPublishable('step-time', result);
+  });
+
+  it('drops an engine at larger N once its median passes the cutoff', async () => {
+    const options = { ...stepTime.options('quick', {}), scenes: ['uniform'], ns: [30, 60], runs: 1, seconds: 1 / 60, warmupSteps: 0, cutoffMs: 0 };
+    const result = await stepTime.run(options, ctx(['maxgrid:naive']));
+    expect(result.rows.map((r) => r.n)).toEqual([30]);
+    expect(result.skipped).toEqual([{ scene: 'uniform', engine: 'maxgrid:naive', fromN: 60 }]);
+  });
+
+  it("rejects scenes that cannot be swept over N and options it doesn't take", () => {
+    expect(() => stepTime.options('quick', { scenes: ['bouncing-ball'] })).toThrow(/bouncing-ball.*sweep/);
+    expect(() => stepTime.options('quick', { scenes: ['nowhere'] })).toThrow(/unknown scene 'nowhere'/);
+    expect(() => energy.options('quick', { runs: 3 })).toThrow(/--runs does not apply to experiment 'energy'/);
+    expect(() => scale.options('quick', { scenes: ['uniform'] })).toThrow(/--scene does not apply/);
+  });
+
+  it("expresses the report's full protocol: N from 10 to 4200 by 10, 10 s, 10 runs", () => {
+    const full = stepTime.options('full', {});
+    expect(full.ns).toHaveLength(420);
+    expect([full.ns[0], full.ns[419], full.runs, full.seconds]).toEqual([10, 4200, 10, 10]);
+  });
+});
+
+describe('energy', () => {
+  it('traces every engine; maxgrid broad-phases give identical series; JSON validates', async () => {
+    const options = { ...energy.options('quick', {}), ballSeconds: 3, n: 60, seconds: 1, samples: 12 };
+    const result = await energy.run(options, ctx());
+    expectValid(energy.schema, result);
+    expect(result.ball.map((s) => s.engine)).toEqual(ENGINE_IDS);
+    for (const s of [...result.ball, ...result.uniform]) {
+      expect(s.ratio[0]).toBe(1);
+      expect(s.t.length).toBe(s.ratio.length);
+    }
+    const maxgrid = result.uniform.filter((s) => s.engine.startsWith('maxgrid:'));
+    for (const s of maxgrid) expect(s.ratio).toEqual(maxgrid[0].ratio);
+    // m g h with h the centre's height above the floor: drop height 700 plus radius 20.
+    expect(result.ballInitialEnergy).toBeCloseTo(Math.PI * 20 * 20 * 500 * 720, 6);
+    expectPublishable('energy', result);
+  });
+});
+
+describe('false-positives', () => {
+  it('counts candidates and contacts per broad-phase; naive sees every pair; JSON validates', async () => {
+    const options = { ...falsePositives.options('quick', {}), ns: [100, 300], ratios: [1, 10], spreadN: 200, steps: 3, warmupSteps: 2 };
+    const result = await falsePositives.run(options, ctx());
+    expectValid(falsePositives.schema, result);
+    const maxgridIds = ENGINE_IDS.filter((id) => id.startsWith('maxgrid:'));
+    expect(result.rows).toHaveLength(4 * maxgridIds.length);
+    for (const row of result.rows) {
+      expect(row.candidatePairs).toBeGreaterThanOrEqual(row.contacts);
+      if (row.engine === 'maxgrid:naive') expect(row.candidatePairs).toBe((row.n * (row.n - 1)) / 2);
+      const same = result.rows.filter((r) => r.sweep === row.sweep && r.n === row.n && r.ratio === row.ratio);
+      // Bit-identical worlds find the same contacts whatever the broad-phase.
+      for (const other of same) expect(other.contacts).toBe(row.contacts);
+    }
+    expect(result.rows.filter((r) => r.sweep === 'n').every((r) => r.ratio === 2)).toBe(true);
+    expectPublishable('false-positives', result);
+  });
+
+  it('refuses engines other than maxgrid', async () => {
+    const options = { ...falsePositives.options('quick', {}), ns: [10], ratios: [1], spreadN: 10, steps: 1, warmupSteps: 0 };
+    await expect(falsePositives.run(options, ctx(['rapier']))).rejects.toThrow(/maxgrid broad-phases only; got engines rapier/);
+  });
+});
+
+describe('scale', () => {
+  it('reports ns per body and bytes per body; JSON validates', async () => {
+    const options = { ...scale.options('quick', {}), ns: [200, 2000], steps: 2, warmupSteps: 1 };
+    const result = await scale.run(options, ctx(['maxgrid:maxgrid']));
+    expectValid(scale.schema, result);
+    expect(result.rows.map((r) => r.n)).toEqual([200, 2000]);
+    for (const r of result.rows) {
+      expect(r.bytesPerBody).toBeCloseTo(r.memoryBytes / r.n, 9);
+      expect(r.nsPerBody).toBeCloseTo((r.ms.median * 1e6) / r.n, 6);
+    }
+    expectPublishable('scale', result);
+  });
+});
+
+describe('schemas and reports', () => {
+  it('a schema rejects a result with a missing field or a non-number', async () => {
+    const options = { ...scale.options('quick', {}), ns: [50], steps: 1, warmupSteps: 0 };
+    const result = await scale.run(options, ctx(['maxgrid:maxgrid']));
+    const validate = ajv.compile(scale.schema);
+    const broken = JSON.parse(JSON.stringify(result));
+    broken.rows[0].nsPerBody = null;
+    expect(validate(broken)).toBe(false);
+    delete broken.meta.engines[0].version;
+    expect(validate(broken)).toBe(false);
+  });
+
+  it('the HTML report is self-contained and carries its data', async () => {
+    const options = { ...scale.options('quick', {}), ns: [50], steps: 1, warmupSteps: 0 };
+    const result = await scale.run(options, ctx(['maxgrid:maxgrid']));
+    const html = htmlReport({
+      title: 't',
+      command: 'npm run lab -- scale',
+      environment: { runtime: 'vitest' },
+      engines: result.meta.engines,
+      sections: [{ experiment: 'scale', tables: tablesFor('scale', result), svgs: scale.charts(result).map(renderSvg) }],
+      results: { scale: result },
+    });
+    expect(html).not.toMatch(/<(script|link|img)[^>]+(src|href)=/);
+    const data = /<script type="application\/json" id="lab-data">([\s\S]*?)<\/script>/.exec(html)![1];
+    expect(JSON.parse(data).scale.rows[0].n).toBe(50);
+  });
+
+  it('spread gives quantiles of the values', () => {
+    expect(spread([4, 1, 3, 2])).toEqual({ median: 2.5, p25: 1.75, p75: 3.25, min: 1, max: 4, mean: 2.5 });
+  });
+});
