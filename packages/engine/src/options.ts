@@ -12,6 +12,7 @@ import {
   oneOf,
   plainObject,
   positiveNumber,
+  describeValue,
 } from './util/validate.js';
 
 export interface Vector {
@@ -26,10 +27,31 @@ export interface WorldOptions {
   gravity?: Vector;
   /** Restitution of the box walls and default restitution of new bodies. Default 1 (elastic). */
   restitution?: number;
+  /**
+   * Collisions approaching slower than this are inelastic, as Box2D's restitution threshold:
+   * lets bodies come to rest (and sleep) under gravity. Default 0, so elastic scenes stay exact.
+   */
+  restitutionThreshold?: number;
   /** Default 'maxgrid'. */
   broadphase?: BroadPhaseName;
   /** Default 'semi-implicit-euler'; 'explicit-euler' is the report's exact method. */
   integrator?: IntegratorName;
+  /**
+   * Let dynamic bodies that stay slower than `sleepSpeed` for `sleepTime` seconds fall asleep.
+   * Default false: the report's scenes are all motion, and sleeping changes results.
+   */
+  sleeping?: boolean;
+  /**
+   * Speed below which a body counts as still, in length units per second. Default 1. In stacks
+   * under gravity keep it above |g| dt: one pass of impulses leaves resting bodies about that fast.
+   */
+  sleepSpeed?: number;
+  /** Seconds a body must stay still before it sleeps. Default 0.5. */
+  sleepTime?: number;
+  /** Record begin and end touch events each step (see `world.contactEvents()`). Default false. */
+  contactEvents?: boolean;
+  /** Record a hit event for each collision whose approach speed is at least this. Default: none. */
+  hitEventThreshold?: number;
 }
 
 export interface CircleOptions {
@@ -46,18 +68,58 @@ export interface CircleOptions {
   mass?: number;
   /** Mass per unit area when `mass` is not given. Default 1. */
   density?: number;
+  /** Collision layers this body belongs to, a 32-bit set. Default 1. */
+  category?: number;
+  /** Layers this body collides with, a 32-bit set. Default 0xffffffff (all). */
+  mask?: number;
+  /** Multiplies the world's gravity for this body. Default 1. */
+  gravityScale?: number;
+  /** Velocity decays as v / (1 + dt * linearDamping) each step, as in Box2D. Default 0. */
+  linearDamping?: number;
 }
 
 export interface ResolvedWorldOptions {
   bounds: { width: number; height: number } | null;
   gravity: Vector;
   restitution: number;
+  restitutionThreshold: number;
   broadphase: BroadPhaseName;
   integrator: IntegratorName;
+  sleeping: boolean;
+  sleepSpeed: number;
+  sleepTime: number;
+  contactEvents: boolean;
+  hitEventThreshold: number;
 }
 
-const WORLD_KEYS = ['bounds', 'gravity', 'restitution', 'broadphase', 'integrator'];
-const CIRCLE_KEYS = ['x', 'y', 'vx', 'vy', 'radius', 'type', 'restitution', 'mass', 'density'];
+const WORLD_KEYS = [
+  'bounds',
+  'gravity',
+  'restitution',
+  'restitutionThreshold',
+  'broadphase',
+  'integrator',
+  'sleeping',
+  'sleepSpeed',
+  'sleepTime',
+  'contactEvents',
+  'hitEventThreshold',
+];
+const CIRCLE_KEYS = [
+  'x',
+  'y',
+  'vx',
+  'vy',
+  'radius',
+  'type',
+  'restitution',
+  'mass',
+  'density',
+  'category',
+  'mask',
+  'gravityScale',
+  'linearDamping',
+];
 
 export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
   const options = plainObject('World options', input ?? {});
@@ -72,9 +134,35 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
     bounds,
     gravity: options.gravity === undefined ? { x: 0, y: 0 } : vector('gravity', options.gravity),
     restitution: options.restitution === undefined ? 1 : nonNegativeNumber('restitution', options.restitution),
+    restitutionThreshold:
+      options.restitutionThreshold === undefined ? 0 : nonNegativeNumber('restitutionThreshold', options.restitutionThreshold),
     broadphase: options.broadphase === undefined ? 'maxgrid' : broadphaseName(options.broadphase),
     integrator: options.integrator === undefined ? 'semi-implicit-euler' : integratorName(options.integrator),
+    sleeping: options.sleeping === undefined ? false : flag('sleeping', options.sleeping),
+    sleepSpeed: options.sleepSpeed === undefined ? 1 : nonNegativeNumber('sleepSpeed', options.sleepSpeed),
+    sleepTime: options.sleepTime === undefined ? 0.5 : nonNegativeNumber('sleepTime', options.sleepTime),
+    contactEvents: options.contactEvents === undefined ? false : flag('contactEvents', options.contactEvents),
+    hitEventThreshold:
+      options.hitEventThreshold === undefined ? Infinity : nonNegativeNumber('hitEventThreshold', options.hitEventThreshold),
   };
+}
+
+export function nonNegative(field: string, value: unknown): number {
+  return nonNegativeNumber(field, value);
+}
+
+export function flag(field: string, value: unknown): boolean {
+  if (typeof value !== 'boolean') throw new TypeError(`${field} must be true or false, got ${describeValue(value)}`);
+  return value;
+}
+
+/** A 32-bit layer set: an integer in [0, 2^32). */
+export function layerBits(field: string, value: unknown): number {
+  const n = finiteNumber(field, value);
+  if (!Number.isInteger(n) || n < 0 || n > 0xffffffff) {
+    throw new RangeError(`${field} must be an integer in [0, 0xffffffff], got ${describeValue(value)}`);
+  }
+  return n;
 }
 
 export function vector(field: string, input: unknown): Vector {
@@ -118,5 +206,9 @@ export function resolveCircle(input: unknown, defaultRestitution: number): NewBo
     mass,
     restitution: o.restitution === undefined ? defaultRestitution : nonNegativeNumber('restitution', o.restitution),
     type: TypeCode[o.type === undefined ? 'dynamic' : bodyType(o.type)],
+    category: o.category === undefined ? 1 : layerBits('category', o.category),
+    mask: o.mask === undefined ? 0xffffffff : layerBits('mask', o.mask),
+    gravityScale: o.gravityScale === undefined ? 1 : finiteNumber('gravityScale', o.gravityScale),
+    linearDamping: o.linearDamping === undefined ? 0 : nonNegativeNumber('linearDamping', o.linearDamping),
   };
 }

@@ -1,24 +1,24 @@
 import { BodyStore } from './store/body-store.js';
 import type { BodyType } from './store/body-types.js';
 import { TypeCode, typeName } from './store/body-types.js';
-import { ContactBuffer } from './store/contact-buffer.js';
-import { PairSink } from './store/pair-sink.js';
-import type { BroadPhase } from './broadphase/broadphase.js';
 import type { BroadPhaseName } from './broadphase/registry.js';
 import { BROADPHASES } from './broadphase/registry.js';
 import { MaxGridBroadPhase, type GridGeometry } from './broadphase/maxgrid.js';
 import { AutoBroadPhase } from './broadphase/auto.js';
-import { NarrowPhase } from './narrowphase/narrowphase.js';
-import { INTEGRATORS, type IntegratorName } from './integrate/integrator.js';
-import { bounceOffBox, clampIntoBox } from './solver/box-walls.js';
-import { solveContacts } from './solver/contact-solver.js';
-import { emptyStats, type StepStats } from './step/stats.js';
+import { ContactEvents, type ContactEventsView } from './store/contact-events.js';
+import { Queries, type RayHit } from './query/queries.js';
+import { queryMask, rayArguments } from './query/query-args.js';
+import type { CircleState, BodyViews, QueryOptions } from './world-types.js';
 import * as analytics from './analytics.js';
-import { nowMs } from './util/timer.js';
+import { StepPipeline } from './step/pipeline.js';
+import type { StepStats } from './step/stats.js';
+import type { IntegratorName } from './integrate/integrator.js';
 import { finiteNumber } from './util/validate.js';
 import {
   bodyType,
   broadphaseName,
+  layerBits,
+  nonNegative,
   integratorName,
   resolveCircle,
   resolveWorldOptions,
@@ -28,33 +28,6 @@ import {
   type WorldOptions,
 } from './options.js';
 
-export interface CircleState {
-  x: number;
-  y: number;
-  vx: number;
-  vy: number;
-  radius: number;
-  mass: number;
-  type: BodyType;
-  restitution: number;
-}
-
-/**
- * Read-only, zero-copy views of the body columns for renderers, indexed by slot. Walk slots
- * [0, slotCount) and skip those whose `type` is `BodyTypeCode.free`. The arrays are replaced when
- * the world grows, so fetch the views again after adding bodies rather than keeping them.
- */
-export interface BodyViews {
-  readonly slotCount: number;
-  readonly liveCount: number;
-  readonly x: Readonly<Float64Array>;
-  readonly y: Readonly<Float64Array>;
-  readonly vx: Readonly<Float64Array>;
-  readonly vy: Readonly<Float64Array>;
-  readonly radius: Readonly<Float64Array>;
-  readonly type: Readonly<Uint8Array>;
-}
-
 /**
  * A 2D world of circles. A step is a fixed sequence of stages, each in its own module:
  * integrate, boundary (box walls), broad-phase, narrow-phase, solve (canonical order, impulses,
@@ -62,15 +35,12 @@ export interface BodyViews {
  */
 export class World {
   private readonly bodies = new BodyStore();
-  private readonly contacts = new ContactBuffer();
-  private readonly narrowPhase = new NarrowPhase(this.bodies, this.contacts);
-  private readonly pairs = new PairSink(this.narrowPhase, nowMs);
-  private broad: BroadPhase;
-  private integratorName: IntegratorName;
+  private readonly pipeline: StepPipeline;
   private readonly bounds: { width: number; height: number } | null;
-  private readonly gravityVector: Vector;
   private readonly defaultRestitution: number;
-  private readonly statsRecord: StepStats = emptyStats();
+  private readonly queries = new Queries(this.bodies);
+  /** Bumped whenever positions or the body set change, so cached query grids know to rebuild. */
+  private geometryVersion = 0;
   private readonly viewsRecord = {
     slotCount: 0,
     liveCount: 0,
@@ -85,10 +55,21 @@ export class World {
   constructor(options: WorldOptions = {}) {
     const resolved = resolveWorldOptions(options);
     this.bounds = resolved.bounds;
-    this.gravityVector = resolved.gravity;
     this.defaultRestitution = resolved.restitution;
-    this.broad = BROADPHASES[resolved.broadphase]();
-    this.integratorName = resolved.integrator;
+    const events = resolved.contactEvents || resolved.hitEventThreshold < Infinity ? new ContactEvents() : null;
+    this.pipeline = new StepPipeline(
+      this.bodies,
+      BROADPHASES[resolved.broadphase](),
+      resolved.integrator,
+      {
+        gravity: resolved.gravity,
+        box: resolved.bounds,
+        wallRestitution: resolved.restitution,
+        solver: { restitutionThreshold: resolved.restitutionThreshold, hitThreshold: resolved.hitEventThreshold },
+        sleeping: { enabled: resolved.sleeping, speed: resolved.sleepSpeed, time: resolved.sleepTime },
+      },
+      events,
+    );
   }
 
   get bodyCount(): number {
@@ -96,15 +77,16 @@ export class World {
   }
 
   get broadphase(): BroadPhaseName {
-    return this.broad.name as BroadPhaseName;
+    return this.pipeline.broadPhase.name as BroadPhaseName;
   }
 
   get integrator(): IntegratorName {
-    return this.integratorName;
+    return this.pipeline.integrator;
   }
 
   get gravity(): Vector {
-    return { x: this.gravityVector.x, y: this.gravityVector.y };
+    const g = this.pipeline.settings.gravity;
+    return { x: g.x, y: g.y };
   }
 
   get restitution(): number {
@@ -117,17 +99,19 @@ export class World {
 
   /** Statistics of the last step; the same object is updated in place by every step. */
   get stats(): Readonly<StepStats> {
-    return this.statsRecord;
+    return this.pipeline.stats;
   }
 
   createCircle(options: CircleOptions): number {
     const body = resolveCircle(options, this.defaultRestitution);
     this.assertInBox(body.x, body.y, body.radius);
+    this.geometryVersion++;
     return this.bodies.handleOf(this.bodies.add(body));
   }
 
   destroyBody(handle: number): void {
     this.bodies.remove(this.slot(handle));
+    this.geometryVersion++;
   }
 
   hasBody(handle: number): boolean {
@@ -146,6 +130,11 @@ export class World {
       mass: b.mass[s],
       type: typeName(b.type[s]),
       restitution: b.restitution[s],
+      category: b.category[s],
+      mask: b.mask[s],
+      gravityScale: b.gravityScale[s],
+      linearDamping: b.linearDamping[s],
+      awake: b.asleep[s] === 0,
     };
   }
 
@@ -173,6 +162,7 @@ export class World {
     }
     this.bodies.vx[s] = vx;
     this.bodies.vy[s] = vy;
+    this.bodies.wake(s);
   }
 
   setPosition(handle: number, x: number, y: number): void {
@@ -182,27 +172,80 @@ export class World {
     this.assertInBox(x, y, this.bodies.radius[s]);
     this.bodies.x[s] = x;
     this.bodies.y[s] = y;
+    this.bodies.wake(s);
+    this.geometryVersion++;
+  }
+
+  /** Adds a force (mass x length / s^2) to a dynamic body for the next step only; wakes it. */
+  applyForce(handle: number, fx: number, fy: number): void {
+    const s = this.dynamicSlot(handle, 'a force', fx, fy);
+    this.bodies.forceX[s] += fx;
+    this.bodies.forceY[s] += fy;
+    this.bodies.forcesPending = true;
+    this.bodies.wake(s);
+  }
+
+  /** Changes a dynamic body's velocity by impulse / mass at once; wakes it. */
+  applyImpulse(handle: number, ix: number, iy: number): void {
+    const s = this.dynamicSlot(handle, 'an impulse', ix, iy);
+    this.bodies.vx[s] += ix * this.bodies.invMass[s];
+    this.bodies.vy[s] += iy * this.bodies.invMass[s];
+    this.bodies.wake(s);
+  }
+
+  setGravityScale(handle: number, scale: number): void {
+    const s = this.slot(handle);
+    this.bodies.setMotion(s, finiteNumber('gravityScale', scale), this.bodies.linearDamping[s]);
+    this.bodies.wake(s);
+  }
+
+  setLinearDamping(handle: number, damping: number): void {
+    const s = this.slot(handle);
+    this.bodies.setMotion(s, this.bodies.gravityScale[s], nonNegative('linearDamping', damping));
+  }
+
+  /** Collision layers: bodies a and b collide only if (a.category & b.mask) and (b.category & a.mask). */
+  setCollisionFilter(handle: number, category: number, mask: number): void {
+    const s = this.slot(handle);
+    const c = layerBits('category', category);
+    const m = layerBits('mask', mask);
+    this.bodies.category[s] = c;
+    this.bodies.mask[s] = m;
+    this.bodies.wake(s);
+  }
+
+  isAwake(handle: number): boolean {
+    return this.bodies.asleep[this.slot(handle)] === 0;
+  }
+
+  /** Wakes a body, or puts a dynamic body to sleep at once (its velocity becomes zero). */
+  setAwake(handle: number, awake: boolean): void {
+    const s = this.slot(handle);
+    if (typeof awake !== 'boolean') throw new TypeError(`awake must be true or false, got ${String(awake)}`);
+    if (awake) this.bodies.wake(s);
+    else if (this.bodies.type[s] === TypeCode.dynamic) this.bodies.fallAsleep(s);
   }
 
   /** Changes a body's motion type at run time (the report's mutable object types, 3.2). */
   setType(handle: number, type: BodyType): void {
     const s = this.slot(handle);
     this.bodies.setTypeCode(s, TypeCode[bodyType(type)]);
+    this.geometryVersion++;
   }
 
   setBroadphase(name: BroadPhaseName): void {
     const checked = broadphaseName(name);
-    if (checked !== this.broad.name) this.broad = BROADPHASES[checked]();
+    if (checked !== this.pipeline.broadPhase.name) this.pipeline.broadPhase = BROADPHASES[checked]();
   }
 
   setIntegrator(name: IntegratorName): void {
-    this.integratorName = integratorName(name);
+    this.pipeline.integrator = integratorName(name);
   }
 
   setGravity(x: number, y: number): void {
     const g = vector('gravity', { x, y });
-    this.gravityVector.x = g.x;
-    this.gravityVector.y = g.y;
+    this.pipeline.settings.gravity.x = g.x;
+    this.pipeline.settings.gravity.y = g.y;
   }
 
   /** Pre-sizes body storage for `count` bodies, so that creating them never reallocates. */
@@ -215,43 +258,8 @@ export class World {
   step(dt: number): void {
     finiteNumber('dt', dt);
     if (dt < 0) throw new RangeError(`dt must be >= 0, got ${dt}`);
-    const bodies = this.bodies;
-    const stats = this.statsRecord;
-    const g = this.gravityVector;
-    const box = this.bounds;
-    const t0 = nowMs();
-
-    INTEGRATORS[this.integratorName](bodies, g.x, g.y, dt);
-    const t1 = nowMs();
-
-    if (box) bounceOffBox(bodies, box.width, box.height, this.defaultRestitution);
-    const t2 = nowMs();
-
-    this.contacts.clear();
-    this.pairs.begin();
-    const pairTests = this.broad.findPairs(bodies, this.pairs);
-    this.pairs.flush();
-    const t3 = nowMs();
-
-    this.contacts.sortCanonical(bodies.slotCount);
-    solveContacts(bodies, this.contacts);
-    const t4 = nowMs();
-
-    if (box) clampIntoBox(bodies, box.width, box.height);
-    const t5 = nowMs();
-
-    stats.steps++;
-    stats.bodies = bodies.liveCount;
-    stats.pairTests = pairTests;
-    stats.candidatePairs = this.pairs.total;
-    stats.contacts = this.contacts.count;
-    stats.integrateMs = t1 - t0;
-    stats.boundaryMs = t2 - t1;
-    stats.narrowphaseMs = this.pairs.consumerMs;
-    stats.broadphaseMs = t3 - t2 - this.pairs.consumerMs;
-    stats.solveMs = t4 - t3;
-    stats.correctMs = t5 - t4;
-    stats.totalMs = t5 - t0;
+    this.pipeline.run(dt);
+    this.geometryVersion++;
   }
 
   kineticEnergy(): number {
@@ -259,7 +267,8 @@ export class World {
   }
 
   potentialEnergy(): number {
-    return analytics.potentialEnergy(this.bodies, this.gravityVector.x, this.gravityVector.y);
+    const g = this.pipeline.settings.gravity;
+    return analytics.potentialEnergy(this.bodies, g.x, g.y);
   }
 
   momentum(): Vector {
@@ -269,6 +278,44 @@ export class World {
   /** 16 hex digits identifying the exact bits of every body's state; equal across runtimes. */
   stateHash(): string {
     return analytics.stateHash(this.bodies);
+  }
+
+  /**
+   * Touch events of the last step, when the world was created with `contactEvents: true` (begin
+   * and end) or a `hitEventThreshold` (hits). The object and its arrays are reused by every step.
+   */
+  contactEvents(): ContactEventsView {
+    const events = this.pipeline.events;
+    if (!events) throw new RangeError('contact events are off: create the World with contactEvents: true or a hitEventThreshold');
+    return events;
+  }
+
+  /** Handles of the circles containing the point (boundary included), ascending. */
+  queryPoint(x: number, y: number, options: QueryOptions = {}): number[] {
+    const mask = queryMask(options);
+    return this.queries.point(this.geometryVersion, finiteNumber('x', x), finiteNumber('y', y), mask, []);
+  }
+
+  /** Handles of the circles overlapping the box (touching included), ascending. */
+  queryAABB(minX: number, minY: number, maxX: number, maxY: number, options: QueryOptions = {}): number[] {
+    const mask = queryMask(options);
+    for (const [field, value] of [['minX', minX], ['minY', minY], ['maxX', maxX], ['maxY', maxY]] as const) finiteNumber(field, value);
+    if (minX > maxX || minY > maxY) throw new RangeError(`queryAABB needs min <= max, got (${minX}, ${minY})..(${maxX}, ${maxY})`);
+    return this.queries.box(this.geometryVersion, minX, minY, maxX, maxY, mask, []);
+  }
+
+  /** The first circle the segment from (x1, y1) to (x2, y2) enters, or null. Circles containing (x1, y1) are ignored. */
+  rayCast(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = {}): RayHit | null {
+    const mask = queryMask(options);
+    rayArguments(x1, y1, x2, y2);
+    return this.queries.ray(this.geometryVersion, x1, y1, x2, y2, mask, false, [])[0] ?? null;
+  }
+
+  /** Every circle the segment enters, nearest first. */
+  rayCastAll(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = {}): RayHit[] {
+    const mask = queryMask(options);
+    rayArguments(x1, y1, x2, y2);
+    return this.queries.ray(this.geometryVersion, x1, y1, x2, y2, mask, true, []);
   }
 
   views(): BodyViews {
@@ -287,22 +334,33 @@ export class World {
 
   /** The Max Grid of the last step (for drawing it), or null with another broad-phase. */
   gridGeometry(): GridGeometry | null {
-    const used = this.broad instanceof AutoBroadPhase ? this.broad.current : this.broad;
+    const broad = this.pipeline.broadPhase;
+    const used = broad instanceof AutoBroadPhase ? broad.current : broad;
     return used instanceof MaxGridBroadPhase ? used.geometry : null;
   }
 
   /** Bytes held by the engine's typed arrays: body columns, broad-phase and contact scratch. */
   memoryBytes(): number {
-    return this.bodies.memoryBytes() + this.broad.memoryBytes() + this.contacts.memoryBytes() + this.pairs.memoryBytes();
+    return this.bodies.memoryBytes() + this.pipeline.memoryBytes();
   }
 
   /** Capacities of internal buffers, for tests that check nothing grows after warm-up. */
   internalCapacities(): Record<string, number> {
     return {
       bodies: this.bodies.capacity,
-      contacts: this.contacts.lo.length,
-      broadphaseBytes: this.broad.memoryBytes(),
+      contacts: this.pipeline.contacts.lo.length,
+      broadphaseBytes: this.pipeline.broadPhase.memoryBytes(),
     };
+  }
+
+  private dynamicSlot(handle: number, what: string, ax: number, ay: number): number {
+    const s = this.slot(handle);
+    finiteNumber('x component', ax);
+    finiteNumber('y component', ay);
+    if (this.bodies.type[s] !== TypeCode.dynamic) {
+      throw new RangeError(`body ${handle} is ${typeName(this.bodies.type[s])}: only dynamic bodies take ${what}, got (${ax}, ${ay})`);
+    }
+    return s;
   }
 
   private slot(handle: number): number {
@@ -321,3 +379,4 @@ export class World {
     }
   }
 }
+

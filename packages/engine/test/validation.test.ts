@@ -110,6 +110,45 @@ describe('bad input is rejected with a named error and leaves the world unchange
     rejects((w) => w.setGravity(0, NaN), TypeError, 'gravity.y', 'NaN');
   });
 
+  it.each([
+    ['category', -1],
+    ['category', 2 ** 32],
+    ['mask', 1.5],
+    ['linearDamping', -0.1],
+  ])('createCircle with %s = %s', (field, value) => {
+    rejects((w) => w.createCircle({ x: 20, y: 20, radius: 3, [field]: value }), RangeError, field, String(value));
+  });
+
+  it('forces, impulses, filters and queries with bad values', () => {
+    rejects((w, h) => w.applyForce(h, NaN, 0), TypeError, 'x component', 'NaN');
+    rejects((w, h) => w.applyImpulse(h, 0, Infinity), TypeError, 'y component', 'Infinity');
+    rejects((w, h) => w.setCollisionFilter(h, 1, -2), RangeError, 'mask', '-2');
+    rejects((w, h) => w.setGravityScale(h, NaN), TypeError, 'gravityScale', 'NaN');
+    rejects((w, h) => w.setLinearDamping(h, -1), RangeError, 'linearDamping', '-1');
+    rejects((w) => w.queryAABB(10, 0, 5, 10), RangeError, 'min <= max', '(10, 0)');
+    rejects((w) => w.queryPoint(NaN, 0), TypeError, 'x', 'NaN');
+    rejects((w) => w.rayCast(0, 0, 1, Infinity), TypeError, 'y2', 'Infinity');
+    rejects((w) => w.queryPoint(0, 0, { mask: -1 }), RangeError, 'mask', '-1');
+  });
+
+  it('forces and impulses on a static body', () => {
+    const { world } = populated();
+    const wall = world.handles()[1];
+    expect(() => world.applyForce(wall, 1, 0)).toThrow(/static: only dynamic bodies take a force, got \(1, 0\)/);
+    expect(() => world.applyImpulse(wall, 0, 2)).toThrow(/static: only dynamic bodies take an impulse/);
+  });
+
+  it.each([
+    [{ sleeping: 'yes' }, TypeError, 'sleeping', '"yes"'],
+    [{ sleepSpeed: -1 }, RangeError, 'sleepSpeed', '-1'],
+    [{ hitEventThreshold: NaN }, TypeError, 'hitEventThreshold', 'NaN'],
+    [{ contactEvents: 1 }, TypeError, 'contactEvents', '1'],
+  ])('World option %o', (options, kind, field, shown) => {
+    expect(() => new World(options as never)).toThrow(kind);
+    expect(() => new World(options as never)).toThrow(field);
+    expect(() => new World(options as never)).toThrow(shown);
+  });
+
   it('a velocity for a static body', () => {
     const { world } = populated();
     const wall = world.handles()[1];
@@ -159,6 +198,20 @@ describe('bad World options', () => {
     expect(world.restitution).toBe(1);
     expect(world.box).toBeNull();
     const h = world.createCircle({ x: 0, y: 0, radius: 2 });
-    expect(world.getCircle(h)).toEqual({ x: 0, y: 0, vx: 0, vy: 0, radius: 2, mass: Math.PI * 4, type: 'dynamic', restitution: 1 });
+    expect(world.getCircle(h)).toEqual({
+      x: 0,
+      y: 0,
+      vx: 0,
+      vy: 0,
+      radius: 2,
+      mass: Math.PI * 4,
+      type: 'dynamic',
+      restitution: 1,
+      category: 1,
+      mask: 0xffffffff,
+      gravityScale: 1,
+      linearDamping: 0,
+      awake: true,
+    });
   });
 });

@@ -27,8 +27,8 @@ export class CellGrid {
   sortedX = new Float64Array(0);
   sortedY = new Float64Array(0);
   sortedR = new Float64Array(0);
-  /** 1 / cellSize, shared by sizing and binning so both round identically. */
-  private inverse = 0;
+  /** 1 / cellSize, shared by sizing, binning and lookups so all round identically. */
+  inverse = 0;
   private binOf = new Int32Array(0);
 
   /**
@@ -125,8 +125,8 @@ export class CellGrid {
    */
   scanAround(px: number, py: number, reach: number, slot: number, out: PairSink): number {
     const { columns, rows, cellStart } = this;
-    const column = Math.floor((px - this.originX) * this.inverse);
-    const row = Math.floor((py - this.originY) * this.inverse);
+    const column = this.columnOf(px);
+    const row = this.rowOf(py);
     // A foreign body may lie outside this grid's extent: clamp the window, not the body.
     const c0 = Math.max(column - 1, 0);
     const c1 = Math.min(column + 1, columns - 1);
@@ -138,6 +138,15 @@ export class CellGrid {
       examined += pushOverlaps(this, cellStart[r * columns + c0], cellStart[r * columns + c1 + 1], px, py, reach, slot, out);
     }
     return examined;
+  }
+
+  /** Column of an x coordinate; may lie outside [0, columns) for points outside the extent. */
+  columnOf(px: number): number {
+    return Math.floor((px - this.originX) * this.inverse);
+  }
+
+  rowOf(py: number): number {
+    return Math.floor((py - this.originY) * this.inverse);
   }
 
   memoryBytes(): number {

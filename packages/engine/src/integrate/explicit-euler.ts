@@ -1,12 +1,14 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
+import { needsGeneralMotion } from './motion.js';
 
 /**
  * The report's method (3.1.3, 5.6): position advances with the velocity from before the step,
  * then velocity advances by the acceleration. Kinematic bodies move with the velocity they were
- * given and ignore gravity; static and free slots do not move.
+ * given and ignore gravity and forces; static and free slots do not move.
  */
 export function integrateExplicitEuler(bodies: BodyStore, gx: number, gy: number, dt: number): void {
+  if (needsGeneralMotion(bodies)) return general(bodies, gx, gy, dt);
   const { x, y, vx, vy, type, slotCount } = bodies;
   const dvx = gx * dt;
   const dvy = gy * dt;
@@ -17,6 +19,25 @@ export function integrateExplicitEuler(bodies: BodyStore, gx: number, gy: number
       y[i] += vy[i] * dt;
       vx[i] += dvx;
       vy[i] += dvy;
+    } else if (t === TypeCode.kinematic) {
+      x[i] += vx[i] * dt;
+      y[i] += vy[i] * dt;
+    }
+  }
+}
+
+/** With per-body gravity scale, pending forces, damping or sleepers. */
+function general(bodies: BodyStore, gx: number, gy: number, dt: number): void {
+  const { x, y, vx, vy, type, invMass, gravityScale, linearDamping, forceX, forceY, asleep, slotCount } = bodies;
+  for (let i = 0; i < slotCount; i++) {
+    const t = type[i];
+    if (t === TypeCode.dynamic) {
+      if (asleep[i]) continue;
+      x[i] += vx[i] * dt;
+      y[i] += vy[i] * dt;
+      const damping = 1 / (1 + dt * linearDamping[i]);
+      vx[i] = (vx[i] + (gx * gravityScale[i] + forceX[i] * invMass[i]) * dt) * damping;
+      vy[i] = (vy[i] + (gy * gravityScale[i] + forceY[i] * invMass[i]) * dt) * damping;
     } else if (t === TypeCode.kinematic) {
       x[i] += vx[i] * dt;
       y[i] += vy[i] * dt;

@@ -1,5 +1,6 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
+import { needsGeneralMotion } from './motion.js';
 
 /**
  * Symplectic (semi-implicit) Euler, as Box2D and Rapier use: velocity first, then position with
@@ -7,6 +8,7 @@ import { TypeCode } from '../store/body-types.js';
  * report's bouncing-ball test.
  */
 export function integrateSemiImplicitEuler(bodies: BodyStore, gx: number, gy: number, dt: number): void {
+  if (needsGeneralMotion(bodies)) return general(bodies, gx, gy, dt);
   const { x, y, vx, vy, type, slotCount } = bodies;
   const dvx = gx * dt;
   const dvy = gy * dt;
@@ -15,6 +17,25 @@ export function integrateSemiImplicitEuler(bodies: BodyStore, gx: number, gy: nu
     if (t === TypeCode.dynamic) {
       vx[i] += dvx;
       vy[i] += dvy;
+      x[i] += vx[i] * dt;
+      y[i] += vy[i] * dt;
+    } else if (t === TypeCode.kinematic) {
+      x[i] += vx[i] * dt;
+      y[i] += vy[i] * dt;
+    }
+  }
+}
+
+/** With per-body gravity scale, pending forces, damping or sleepers. */
+function general(bodies: BodyStore, gx: number, gy: number, dt: number): void {
+  const { x, y, vx, vy, type, invMass, gravityScale, linearDamping, forceX, forceY, asleep, slotCount } = bodies;
+  for (let i = 0; i < slotCount; i++) {
+    const t = type[i];
+    if (t === TypeCode.dynamic) {
+      if (asleep[i]) continue;
+      const damping = 1 / (1 + dt * linearDamping[i]);
+      vx[i] = (vx[i] + (gx * gravityScale[i] + forceX[i] * invMass[i]) * dt) * damping;
+      vy[i] = (vy[i] + (gy * gravityScale[i] + forceY[i] * invMass[i]) * dt) * damping;
       x[i] += vx[i] * dt;
       y[i] += vy[i] * dt;
     } else if (t === TypeCode.kinematic) {

@@ -13,10 +13,18 @@ const MAX_BOUNCES = 16;
  * step bounces repeatedly; past MAX_BOUNCES the remaining path is folded modulo the box, so no
  * speed can leave a circle outside.
  *
+ * Normal speeds under `restitutionThreshold` bounce with restitution 0, as between bodies.
+ *
  * Kinematic bodies are contained too, with restitution 1: they keep the speed they were given, but
  * the box is the world's domain and nothing ends a step outside it.
  */
-export function bounceOffBox(bodies: BodyStore, width: number, height: number, wallRestitution: number): void {
+export function bounceOffBox(
+  bodies: BodyStore,
+  width: number,
+  height: number,
+  wallRestitution: number,
+  restitutionThreshold: number,
+): void {
   const { x, y, vx, vy, radius, restitution, type, slotCount } = bodies;
   for (let i = 0; i < slotCount; i++) {
     const t = type[i];
@@ -25,13 +33,13 @@ export function bounceOffBox(bodies: BodyStore, width: number, height: number, w
     const e = t === TypeCode.dynamic ? mixRestitution(restitution[i], wallRestitution) : 1;
     const px = x[i];
     if (px < r || px > width - r) {
-      fold(px, vx[i], r, width - r, e);
+      fold(px, vx[i], r, width - r, Math.abs(vx[i]) < restitutionThreshold ? 0 : e);
       x[i] = foldedPosition;
       vx[i] = foldedVelocity;
     }
     const py = y[i];
     if (py < r || py > height - r) {
-      fold(py, vy[i], r, height - r, e);
+      fold(py, vy[i], r, height - r, Math.abs(vy[i]) < restitutionThreshold ? 0 : e);
       y[i] = foldedPosition;
       vy[i] = foldedVelocity;
     }

@@ -1,6 +1,7 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { ContactBuffer } from '../store/contact-buffer.js';
 import { mixRestitution } from './restitution.js';
+import type { ContactEvents } from '../store/contact-events.js';
 
 /**
  * Resolves contacts one after another, in the buffer's canonical order (report 3.1.5, 5.10).
@@ -14,9 +15,22 @@ import { mixRestitution } from './restitution.js';
  * Static and kinematic bodies have inverse mass 0: they neither change velocity nor move. Pairs
  * that are already separating keep their velocities, so a pair is never pulled back together.
  * Concentric circles, which have no normal, are pushed apart along +x.
+ *
+ * Approach speeds under `restitutionThreshold` bounce with restitution 0 (Box2D's threshold).
+ * A sleeping body touched by a moving one wakes here, before its contact is solved, so waking
+ * follows the canonical order too. Hits at or above `hitThreshold` approach speed are recorded.
  */
-export function solveContacts(bodies: BodyStore, contacts: ContactBuffer): void {
-  const { x, y, vx, vy, radius, invMass, restitution } = bodies;
+export interface SolverSettings {
+  /** Approach speeds below this bounce with restitution 0. */
+  restitutionThreshold: number;
+  /** Approach speeds at or above this are recorded as hit events. */
+  hitThreshold: number;
+}
+
+export function solveContacts(bodies: BodyStore, contacts: ContactBuffer, events: ContactEvents | null, settings: SolverSettings): void {
+  const { restitutionThreshold, hitThreshold } = settings;
+  const { x, y, vx, vy, radius, invMass, restitution, asleep } = bodies;
+  const anyAsleep = bodies.sleepingCount > 0;
   const { lo, hi, count } = contacts;
   for (let k = 0; k < count; k++) {
     const i = lo[k];
@@ -26,6 +40,10 @@ export function solveContacts(bodies: BodyStore, contacts: ContactBuffer): void 
     const reach = radius[i] + radius[j];
     const distSq = dx * dx + dy * dy;
     if (distSq >= reach * reach) continue;
+    if (anyAsleep) {
+      if (asleep[i]) bodies.wake(i);
+      if (asleep[j]) bodies.wake(j);
+    }
     const wi = invMass[i];
     const wj = invMass[j];
     const w = wi + wj;
@@ -39,7 +57,9 @@ export function solveContacts(bodies: BodyStore, contacts: ContactBuffer): void 
     }
     const vn = (vx[j] - vx[i]) * nx + (vy[j] - vy[i]) * ny;
     if (vn < 0) {
-      const impulse = (-(1 + mixRestitution(restitution[i], restitution[j])) * vn) / w;
+      if (-vn >= hitThreshold && events) events.recordHit(bodies, i, j, -vn);
+      const e = -vn < restitutionThreshold ? 0 : mixRestitution(restitution[i], restitution[j]);
+      const impulse = (-(1 + e) * vn) / w;
       const pi = impulse * wi;
       const pj = impulse * wj;
       vx[i] -= pi * nx;

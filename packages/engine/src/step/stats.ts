@@ -14,8 +14,12 @@ export interface StepStats {
   pairTests: number;
   /** Pairs the broad-phase passed to the narrow-phase (n(n-1)/2 for `naive`). */
   candidatePairs: number;
-  /** Pairs the narrow-phase found overlapping with at least one dynamic body. */
+  /** Pairs the narrow-phase found overlapping with at least one awake dynamic body. */
   contacts: number;
+  /** Candidate pairs dropped by collision layers. */
+  filteredPairs: number;
+  /** Dynamic bodies asleep after the step. */
+  sleepingBodies: number;
   integrateMs: number;
   /** Box walls: bounce circles back into the box. */
   boundaryMs: number;
@@ -25,6 +29,8 @@ export interface StepStats {
   solveMs: number;
   /** Keeping separated circles inside the box. */
   correctMs: number;
+  /** Contact events, clearing forces, and sleep timers. */
+  reportMs: number;
   totalMs: number;
 }
 
@@ -35,12 +41,15 @@ export function emptyStats(): StepStats {
     pairTests: 0,
     candidatePairs: 0,
     contacts: 0,
+    filteredPairs: 0,
+    sleepingBodies: 0,
     integrateMs: 0,
     boundaryMs: 0,
     broadphaseMs: 0,
     narrowphaseMs: 0,
     solveMs: 0,
     correctMs: 0,
+    reportMs: 0,
     totalMs: 0,
   };
 }

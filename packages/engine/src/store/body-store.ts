@@ -1,5 +1,5 @@
 import { TypeCode, ShapeCode } from './body-types.js';
-import { grownCapacity, growFloat64, growInt32, growUint32, growUint8 } from '../util/grow.js';
+import { grownCapacity, growFloat32, growFloat64, growInt32, growUint32, growUint8 } from '../util/grow.js';
 
 /**
  * Handles pack a slot index and that slot's generation: `generation * SLOT_SPACE + slot`. The
@@ -19,6 +19,10 @@ export interface NewBody {
   mass: number;
   restitution: number;
   type: number;
+  category: number;
+  mask: number;
+  gravityScale: number;
+  linearDamping: number;
 }
 
 /**
@@ -48,6 +52,27 @@ export class BodyStore {
   type = new Uint8Array(0);
   shape = new Uint8Array(0);
   generation = new Uint32Array(0);
+
+  // Colder columns: read by the general integrator, the narrow-phase filter and the sleep stage.
+  /** Collision layers: a pair collides only if each body's category is in the other's mask. */
+  category = new Uint32Array(0);
+  mask = new Uint32Array(0);
+  gravityScale = new Float64Array(0);
+  linearDamping = new Float64Array(0);
+  /** Forces accumulated by applyForce until the next step, which applies and clears them. */
+  forceX = new Float64Array(0);
+  forceY = new Float64Array(0);
+  /** Seconds a dynamic body has been slower than the sleep speed. */
+  sleepTime = new Float32Array(0);
+  /** 1 while a dynamic body sleeps: it is not integrated and pairs of sleepers are skipped. */
+  asleep = new Uint8Array(0);
+
+  /** Bodies whose gravity scale or damping differ from the defaults: they need the general integrator. */
+  customMotionCount = 0;
+  /** Bodies currently asleep. */
+  sleepingCount = 0;
+  /** True between applyForce and the next step. */
+  forcesPending = false;
 
   private freeSlots = new Int32Array(0);
   private freeCount = 0;
@@ -99,6 +124,15 @@ export class BodyStore {
     this.mass[slot] = body.mass;
     this.restitution[slot] = body.restitution;
     this.shape[slot] = ShapeCode.circle;
+    this.category[slot] = body.category;
+    this.mask[slot] = body.mask;
+    this.gravityScale[slot] = body.gravityScale;
+    this.linearDamping[slot] = body.linearDamping;
+    this.forceX[slot] = 0;
+    this.forceY[slot] = 0;
+    this.sleepTime[slot] = 0;
+    this.asleep[slot] = 0;
+    if (body.gravityScale !== 1 || body.linearDamping !== 0) this.customMotionCount++;
     this.setTypeCode(slot, body.type);
     this.liveCount++;
     if (body.radius > this.cachedMaxRadius) this.cachedMaxRadius = body.radius;
@@ -107,6 +141,8 @@ export class BodyStore {
   }
 
   remove(slot: number): void {
+    if (this.gravityScale[slot] !== 1 || this.linearDamping[slot] !== 0) this.customMotionCount--;
+    this.wake(slot);
     this.type[slot] = TypeCode.free;
     this.vx[slot] = 0;
     this.vy[slot] = 0;
@@ -125,7 +161,32 @@ export class BodyStore {
     }
   }
 
+  setMotion(slot: number, gravityScale: number, linearDamping: number): void {
+    const wasCustom = this.gravityScale[slot] !== 1 || this.linearDamping[slot] !== 0;
+    const isCustom = gravityScale !== 1 || linearDamping !== 0;
+    this.customMotionCount += Number(isCustom) - Number(wasCustom);
+    this.gravityScale[slot] = gravityScale;
+    this.linearDamping[slot] = linearDamping;
+  }
+
+  wake(slot: number): void {
+    this.sleepTime[slot] = 0;
+    if (this.asleep[slot]) {
+      this.asleep[slot] = 0;
+      this.sleepingCount--;
+    }
+  }
+
+  fallAsleep(slot: number): void {
+    if (this.asleep[slot]) return;
+    this.asleep[slot] = 1;
+    this.sleepingCount++;
+    this.vx[slot] = 0;
+    this.vy[slot] = 0;
+  }
+
   setTypeCode(slot: number, code: number): void {
+    this.wake(slot);
     this.type[slot] = code;
     this.invMass[slot] = code === TypeCode.dynamic ? 1 / this.mass[slot] : 0;
     if (code === TypeCode.static) {
@@ -154,10 +215,10 @@ export class BodyStore {
 
   memoryBytes(): number {
     return (
-      this.x.byteLength * 8 +
-      this.type.byteLength +
-      this.shape.byteLength +
-      this.generation.byteLength +
+      this.x.byteLength * 12 +
+      this.type.byteLength * 3 +
+      this.generation.byteLength * 3 +
+      this.sleepTime.byteLength +
       this.freeSlots.byteLength
     );
   }
@@ -180,6 +241,14 @@ export class BodyStore {
     this.type = growUint8(this.type, capacity);
     this.shape = growUint8(this.shape, capacity);
     this.generation = growUint32(this.generation, capacity);
+    this.category = growUint32(this.category, capacity);
+    this.mask = growUint32(this.mask, capacity);
+    this.gravityScale = growFloat64(this.gravityScale, capacity);
+    this.linearDamping = growFloat64(this.linearDamping, capacity);
+    this.forceX = growFloat64(this.forceX, capacity);
+    this.forceY = growFloat64(this.forceY, capacity);
+    this.sleepTime = growFloat32(this.sleepTime, capacity);
+    this.asleep = growUint8(this.asleep, capacity);
     this.capacity = capacity;
   }
 }

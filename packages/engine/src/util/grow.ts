@@ -28,3 +28,9 @@ export function growUint8(old: Uint8Array, capacity: number) {
   next.set(old.subarray(0, Math.min(old.length, capacity)));
   return next;
 }
+
+export function growFloat32(old: Float32Array, capacity: number) {
+  const next = new Float32Array(capacity);
+  next.set(old.subarray(0, Math.min(old.length, capacity)));
+  return next;
+}

@@ -1,0 +1,187 @@
+import type { BodyStore } from '../store/body-store.js';
+import { CellGrid } from '../broadphase/cell-grid.js';
+import { LiveExtent } from '../broadphase/live-extent.js';
+import { RADIUS_PAD } from '../broadphase/fat-bounds.js';
+import { rayCircle } from './ray-circle.js';
+
+export interface RayHit {
+  handle: number;
+  /** Where along the segment from (x1, y1) to (x2, y2) the ray enters the circle, in [0, 1]. */
+  fraction: number;
+  x: number;
+  y: number;
+  normalX: number;
+  normalY: number;
+}
+
+/**
+ * Point, box and ray queries over a Max Grid of the current positions. The grid is rebuilt only
+ * when the world's geometry changed since the last query (`version`), so many queries between
+ * two steps share one build. Cell size is the largest diameter, so a circle that contains a point,
+ * or is crossed by a ray at a point, has its centre within one cell of that point.
+ */
+export class Queries {
+  private readonly live = new LiveExtent();
+  private readonly grid = new CellGrid();
+  private builtVersion = -1;
+  private stamp = new Uint32Array(0);
+  private epoch = 0;
+
+  constructor(private readonly bodies: BodyStore) {}
+
+  point(version: number, px: number, py: number, mask: number, out: number[]): number[] {
+    if (!this.prepare(version)) return out;
+    const { grid, bodies } = this;
+    const column = grid.columnOf(px);
+    const row = grid.rowOf(py);
+    for (let r = Math.max(row - 1, 0); r <= Math.min(row + 1, grid.rows - 1); r++) {
+      const c0 = Math.max(column - 1, 0);
+      const c1 = Math.min(column + 1, grid.columns - 1);
+      if (c0 > c1) continue;
+      for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
+        const slot = grid.sortedSlot[m];
+        if ((bodies.category[slot] & mask) === 0) continue;
+        const dx = px - bodies.x[slot];
+        const dy = py - bodies.y[slot];
+        if (dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot]) out.push(bodies.handleOf(slot));
+      }
+    }
+    return out.sort((a, b) => a - b);
+  }
+
+  box(version: number, minX: number, minY: number, maxX: number, maxY: number, mask: number, out: number[]): number[] {
+    if (!this.prepare(version)) return out;
+    const { grid, bodies } = this;
+    const c0 = Math.max(grid.columnOf(minX) - 1, 0);
+    const c1 = Math.min(grid.columnOf(maxX) + 1, grid.columns - 1);
+    const r0 = Math.max(grid.rowOf(minY) - 1, 0);
+    const r1 = Math.min(grid.rowOf(maxY) + 1, grid.rows - 1);
+    if (c0 > c1) return out;
+    for (let r = r0; r <= r1; r++) {
+      for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
+        const slot = grid.sortedSlot[m];
+        if ((bodies.category[slot] & mask) === 0) continue;
+        const cx = bodies.x[slot];
+        const cy = bodies.y[slot];
+        const dx = cx - Math.min(Math.max(cx, minX), maxX);
+        const dy = cy - Math.min(Math.max(cy, minY), maxY);
+        if (dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot]) out.push(bodies.handleOf(slot));
+      }
+    }
+    return out.sort((a, b) => a - b);
+  }
+
+  /**
+   * Walks the cells the segment crosses (Amanatides & Woo) over a grid widened by one cell on each
+   * side, testing the 3x3 cells around each; a stamp per body avoids testing one twice. With
+   * `all` false it stops once the next cell starts beyond the best hit found.
+   */
+  ray(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, all: boolean, out: RayHit[]): RayHit[] {
+    if (!this.prepare(version)) return out;
+    const { grid, bodies } = this;
+    const dx = x2 - x1;
+    const dy = y2 - y1;
+    const cs = grid.cellSize;
+    // Clip the segment to the widened grid: columns -1..columns, rows -1..rows.
+    const loX = grid.originX - cs;
+    const loY = grid.originY - cs;
+    const hiX = grid.originX + (grid.columns + 1) * cs;
+    const hiY = grid.originY + (grid.rows + 1) * cs;
+    let tEnter = 0;
+    let tExit = 1;
+    for (const [p, d, lo, hi] of [[x1, dx, loX, hiX], [y1, dy, loY, hiY]]) {
+      if (d === 0) {
+        if (p < lo || p > hi) return out;
+      } else {
+        const ta = (lo - p) / d;
+        const tb = (hi - p) / d;
+        tEnter = Math.max(tEnter, Math.min(ta, tb));
+        tExit = Math.min(tExit, Math.max(ta, tb));
+      }
+    }
+    if (tEnter > tExit) return out;
+    this.epoch++;
+    let column = clamp(grid.columnOf(x1 + dx * tEnter), -1, grid.columns);
+    let row = clamp(grid.rowOf(y1 + dy * tEnter), -1, grid.rows);
+    const stepX = dx > 0 ? 1 : -1;
+    const stepY = dy > 0 ? 1 : -1;
+    const deltaX = dx === 0 ? Infinity : cs / Math.abs(dx);
+    const deltaY = dy === 0 ? Infinity : cs / Math.abs(dy);
+    const boundaryX = grid.originX + (column + (dx > 0 ? 1 : 0)) * cs;
+    const boundaryY = grid.originY + (row + (dy > 0 ? 1 : 0)) * cs;
+    let nextX = dx === 0 ? Infinity : (boundaryX - x1) / dx;
+    let nextY = dy === 0 ? Infinity : (boundaryY - y1) / dy;
+    let best = Infinity;
+    let cellEnter = tEnter;
+    const guard = grid.columns + grid.rows + 8;
+    for (let visited = 0; visited <= guard * 2; visited++) {
+      if (cellEnter > tExit) break;
+      if (!all && cellEnter > best) break;
+      best = Math.min(best, this.testWindow(column, row, x1, y1, dx, dy, mask, all, out));
+      if (nextX < nextY) {
+        cellEnter = nextX;
+        nextX += deltaX;
+        column += stepX;
+      } else {
+        cellEnter = nextY;
+        nextY += deltaY;
+        row += stepY;
+      }
+      if (column < -1 || column > grid.columns || row < -1 || row > grid.rows) break;
+    }
+    out.sort((a, b) => a.fraction - b.fraction || a.handle - b.handle);
+    if (!all && out.length > 1) out.length = 1;
+    return out;
+  }
+
+  private testWindow(column: number, row: number, x1: number, y1: number, dx: number, dy: number, mask: number, all: boolean, out: RayHit[]): number {
+    const { grid, bodies, stamp, epoch } = this;
+    let best = Infinity;
+    const c0 = Math.max(column - 1, 0);
+    const c1 = Math.min(column + 1, grid.columns - 1);
+    if (c0 > c1) return best;
+    for (let r = Math.max(row - 1, 0); r <= Math.min(row + 1, grid.rows - 1); r++) {
+      for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
+        if (stamp[m] === epoch) continue;
+        stamp[m] = epoch;
+        const slot = grid.sortedSlot[m];
+        if ((bodies.category[slot] & mask) === 0) continue;
+        const cx = bodies.x[slot];
+        const cy = bodies.y[slot];
+        const r0 = bodies.radius[slot];
+        const t = rayCircle(x1, y1, dx, dy, cx, cy, r0);
+        if (t < 0) continue;
+        if (!all && out.length > 0 && t > out[0].fraction) continue;
+        const hx = x1 + dx * t;
+        const hy = y1 + dy * t;
+        const hit = { handle: bodies.handleOf(slot), fraction: t, x: hx, y: hy, normalX: (hx - cx) / r0, normalY: (hy - cy) / r0 };
+        if (all) out.push(hit);
+        else if (out.length === 0 || t < out[0].fraction || (t === out[0].fraction && hit.handle < out[0].handle)) out[0] = hit;
+        best = Math.min(best, t);
+      }
+    }
+    return best;
+  }
+
+  private prepare(version: number): boolean {
+    const { live, bodies } = this;
+    if (this.builtVersion !== version) {
+      live.measure(bodies);
+      if (live.count > 0) {
+        const cellSize = 2 * live.maxRadius * (1 + RADIUS_PAD) + live.coordPad;
+        this.grid.build(bodies, live.slots, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
+        if (this.stamp.length < live.count) this.stamp = new Uint32Array(Math.max(live.count, 2 * this.stamp.length));
+      }
+      this.builtVersion = version;
+    }
+    if (this.epoch > 0xfffffff0) {
+      this.stamp.fill(0);
+      this.epoch = 0;
+    }
+    return live.count > 0;
+  }
+}
+
+function clamp(v: number, lo: number, hi: number): number {
+  return v < lo ? lo : v > hi ? hi : v;
+}

@@ -1,0 +1,100 @@
+import type { BodyStore } from '../store/body-store.js';
+import { ContactBuffer } from '../store/contact-buffer.js';
+import { PairSink } from '../store/pair-sink.js';
+import type { ContactEvents } from '../store/contact-events.js';
+import type { BroadPhase } from '../broadphase/broadphase.js';
+import { NarrowPhase } from '../narrowphase/narrowphase.js';
+import { INTEGRATORS, type IntegratorName } from '../integrate/integrator.js';
+import { clearForces } from '../integrate/motion.js';
+import { bounceOffBox, clampIntoBox } from '../solver/box-walls.js';
+import { solveContacts, type SolverSettings } from '../solver/contact-solver.js';
+import { updateSleep } from '../solver/sleep.js';
+import { emptyStats, type StepStats } from './stats.js';
+import { nowMs } from '../util/timer.js';
+
+export interface StepSettings {
+  gravity: { x: number; y: number };
+  box: { width: number; height: number } | null;
+  wallRestitution: number;
+  solver: SolverSettings;
+  sleeping: { enabled: boolean; speed: number; time: number };
+}
+
+/**
+ * One step, as a fixed sequence of named stages, each in its own module and timed into `stats`:
+ *
+ *   integrate -> boundary -> broad-phase -> narrow-phase -> solve -> correct -> report
+ *
+ * The broad-phase hands candidates to the narrow-phase in chunks (see PairSink), so those two
+ * interleave; their times are separated by timing the narrow-phase inside the sink. Everything
+ * here works on buffers that persist between steps: a warm step allocates nothing.
+ */
+export class StepPipeline {
+  readonly contacts = new ContactBuffer();
+  readonly narrowPhase: NarrowPhase;
+  readonly pairs: PairSink;
+  readonly stats: StepStats = emptyStats();
+
+  constructor(
+    private readonly bodies: BodyStore,
+    public broadPhase: BroadPhase,
+    public integrator: IntegratorName,
+    readonly settings: StepSettings,
+    readonly events: ContactEvents | null,
+  ) {
+    this.narrowPhase = new NarrowPhase(bodies, this.contacts);
+    this.pairs = new PairSink(this.narrowPhase, nowMs);
+  }
+
+  run(dt: number): void {
+    const { bodies, settings, stats, contacts, pairs, events } = this;
+    const box = settings.box;
+    const t0 = nowMs();
+
+    INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
+    const t1 = nowMs();
+
+    if (box) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
+    const t2 = nowMs();
+
+    contacts.clear();
+    pairs.begin();
+    this.narrowPhase.begin();
+    const pairTests = this.broadPhase.findPairs(bodies, pairs);
+    pairs.flush();
+    const t3 = nowMs();
+
+    contacts.sortCanonical(bodies.slotCount);
+    events?.clear();
+    solveContacts(bodies, contacts, events, settings.solver);
+    const t4 = nowMs();
+
+    if (box) clampIntoBox(bodies, box.width, box.height);
+    const t5 = nowMs();
+
+    events?.update(bodies, contacts);
+    clearForces(bodies);
+    if (settings.sleeping.enabled) updateSleep(bodies, dt, settings.sleeping.speed, settings.sleeping.time);
+    const t6 = nowMs();
+
+    stats.steps++;
+    stats.bodies = bodies.liveCount;
+    stats.pairTests = pairTests;
+    stats.candidatePairs = pairs.total;
+    stats.contacts = contacts.count;
+    stats.filteredPairs = this.narrowPhase.filtered;
+    stats.sleepingBodies = bodies.sleepingCount;
+    stats.integrateMs = t1 - t0;
+    stats.boundaryMs = t2 - t1;
+    stats.narrowphaseMs = pairs.consumerMs;
+    stats.broadphaseMs = t3 - t2 - pairs.consumerMs;
+    stats.solveMs = t4 - t3;
+    stats.correctMs = t5 - t4;
+    stats.reportMs = t6 - t5;
+    stats.totalMs = t6 - t0;
+  }
+
+  memoryBytes(): number {
+    return this.broadPhase.memoryBytes() + this.contacts.memoryBytes() + this.pairs.memoryBytes() + (this.events?.memoryBytes() ?? 0);
+  }
+}

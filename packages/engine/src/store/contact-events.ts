@@ -1,0 +1,138 @@
+import type { BodyStore } from './body-store.js';
+import type { ContactBuffer } from './contact-buffer.js';
+import { grownCapacity, growFloat64, growInt32 } from '../util/grow.js';
+
+/** Event lists of the last step; the arrays are reused and replaced only when they grow. */
+export interface ContactEventsView {
+  /** Pairs that started touching this step: handles beginA[k], beginB[k] for k < beginCount. */
+  readonly beginCount: number;
+  readonly beginA: Readonly<Float64Array>;
+  readonly beginB: Readonly<Float64Array>;
+  /** Pairs that stopped touching (or whose body was destroyed). */
+  readonly endCount: number;
+  readonly endA: Readonly<Float64Array>;
+  readonly endB: Readonly<Float64Array>;
+  /** Collisions at or above the world's hitEventThreshold, with their approach speed. */
+  readonly hitCount: number;
+  readonly hitA: Readonly<Float64Array>;
+  readonly hitB: Readonly<Float64Array>;
+  readonly hitSpeed: Readonly<Float64Array>;
+}
+
+/**
+ * Begin and end touch events come from comparing this step's contacts with the last step's. Both
+ * lists are in canonical (lo, hi) slot order, so one merge finds the differences in linear time
+ * with no hashing. A pair whose slot was reused by a new body in between has a different handle,
+ * and counts as one end and one begin.
+ */
+export class ContactEvents implements ContactEventsView {
+  beginCount = 0;
+  beginA = new Float64Array(16);
+  beginB = new Float64Array(16);
+  endCount = 0;
+  endA = new Float64Array(16);
+  endB = new Float64Array(16);
+  hitCount = 0;
+  hitA = new Float64Array(16);
+  hitB = new Float64Array(16);
+  hitSpeed = new Float64Array(16);
+
+  private prevCount = 0;
+  private prevLo = new Int32Array(16);
+  private prevHi = new Int32Array(16);
+  private prevHandleLo = new Float64Array(16);
+  private prevHandleHi = new Float64Array(16);
+
+  clear(): void {
+    this.beginCount = 0;
+    this.endCount = 0;
+    this.hitCount = 0;
+  }
+
+  recordHit(bodies: BodyStore, i: number, j: number, speed: number): void {
+    if (this.hitCount === this.hitA.length) {
+      const capacity = grownCapacity(this.hitA.length, this.hitCount + 1);
+      this.hitA = growFloat64(this.hitA, capacity);
+      this.hitB = growFloat64(this.hitB, capacity);
+      this.hitSpeed = growFloat64(this.hitSpeed, capacity);
+    }
+    this.hitA[this.hitCount] = bodies.handleOf(i);
+    this.hitB[this.hitCount] = bodies.handleOf(j);
+    this.hitSpeed[this.hitCount++] = speed;
+  }
+
+  /** Diffs the step's canonical contacts against the previous step's, then keeps them. */
+  update(bodies: BodyStore, contacts: ContactBuffer): void {
+    const { lo, hi, count } = contacts;
+    const { prevLo, prevHi, prevHandleLo, prevHandleHi, prevCount } = this;
+    let p = 0;
+    let c = 0;
+    while (p < prevCount || c < count) {
+      let order: number;
+      if (p === prevCount) order = 1;
+      else if (c === count) order = -1;
+      else order = prevLo[p] !== lo[c] ? prevLo[p] - lo[c] : prevHi[p] - hi[c];
+      if (order < 0) {
+        this.pushEnd(prevHandleLo[p], prevHandleHi[p]);
+        p++;
+      } else if (order > 0) {
+        this.pushBegin(bodies.handleOf(lo[c]), bodies.handleOf(hi[c]));
+        c++;
+      } else {
+        const a = bodies.handleOf(lo[c]);
+        const b = bodies.handleOf(hi[c]);
+        if (a !== prevHandleLo[p] || b !== prevHandleHi[p]) {
+          this.pushEnd(prevHandleLo[p], prevHandleHi[p]);
+          this.pushBegin(a, b);
+        }
+        p++;
+        c++;
+      }
+    }
+    this.keep(bodies, contacts);
+  }
+
+  memoryBytes(): number {
+    return (this.beginA.byteLength + this.endA.byteLength + this.prevLo.byteLength + this.prevHandleLo.byteLength) * 2 + this.hitA.byteLength * 3;
+  }
+
+  private keep(bodies: BodyStore, contacts: ContactBuffer): void {
+    const n = contacts.count;
+    if (this.prevLo.length < n) {
+      const capacity = grownCapacity(this.prevLo.length, n);
+      this.prevLo = growInt32(this.prevLo, capacity);
+      this.prevHi = growInt32(this.prevHi, capacity);
+      this.prevHandleLo = growFloat64(this.prevHandleLo, capacity);
+      this.prevHandleHi = growFloat64(this.prevHandleHi, capacity);
+    }
+    for (let k = 0; k < n; k++) {
+      const i = contacts.lo[k];
+      const j = contacts.hi[k];
+      this.prevLo[k] = i;
+      this.prevHi[k] = j;
+      this.prevHandleLo[k] = bodies.handleOf(i);
+      this.prevHandleHi[k] = bodies.handleOf(j);
+    }
+    this.prevCount = n;
+  }
+
+  private pushBegin(a: number, b: number): void {
+    if (this.beginCount === this.beginA.length) {
+      const capacity = grownCapacity(this.beginA.length, this.beginCount + 1);
+      this.beginA = growFloat64(this.beginA, capacity);
+      this.beginB = growFloat64(this.beginB, capacity);
+    }
+    this.beginA[this.beginCount] = a;
+    this.beginB[this.beginCount++] = b;
+  }
+
+  private pushEnd(a: number, b: number): void {
+    if (this.endCount === this.endA.length) {
+      const capacity = grownCapacity(this.endA.length, this.endCount + 1);
+      this.endA = growFloat64(this.endA, capacity);
+      this.endB = growFloat64(this.endB, capacity);
+    }
+    this.endA[this.endCount] = a;
+    this.endB[this.endCount++] = b;
+  }
+}

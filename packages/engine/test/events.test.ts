@@ -1,0 +1,77 @@
+import { describe, expect, it } from 'vitest';
+import { World } from '../src/index.js';
+
+function pairsOf(count: number, a: Readonly<Float64Array>, b: Readonly<Float64Array>): string[] {
+  return Array.from({ length: count }, (_, k) => `${a[k]}-${b[k]}`);
+}
+
+describe('contact events', () => {
+  it('begin when a pair starts touching, end when it stops or a body is destroyed', () => {
+    const world = new World({ contactEvents: true, restitution: 0 });
+    const a = world.createCircle({ x: 0, y: 0, vx: 60, radius: 5 });
+    const b = world.createCircle({ x: 12, y: 0, radius: 5, type: 'static' });
+    const c = world.createCircle({ x: 0, y: 30, radius: 5 });
+    const d = world.createCircle({ x: 8, y: 30, radius: 5 });
+    world.step(0.1);
+    const events = world.contactEvents();
+    expect(pairsOf(events.beginCount, events.beginA, events.beginB).sort()).toEqual([`${a}-${b}`, `${c}-${d}`].sort());
+    expect(events.endCount).toBe(0);
+    world.destroyBody(d);
+    world.step(0.1);
+    expect(pairsOf(events.endCount, events.endA, events.endB)).toContain(`${c}-${d}`);
+  });
+
+  it('a pair that keeps touching produces one begin and no repeats', () => {
+    const world = new World({ contactEvents: true, gravity: { x: 0, y: 100 }, bounds: { width: 100, height: 100 }, restitution: 0 });
+    world.createCircle({ x: 50, y: 90, radius: 10, type: 'static' });
+    world.createCircle({ x: 50, y: 60, radius: 10 });
+    let begins = 0;
+    let ends = 0;
+    for (let s = 0; s < 300; s++) {
+      world.step(1 / 60);
+      begins += world.contactEvents().beginCount;
+      ends += world.contactEvents().endCount;
+    }
+    expect(begins).toBeGreaterThan(0);
+    expect(begins - ends).toBeGreaterThanOrEqual(0);
+    expect(begins - ends).toBeLessThanOrEqual(1);
+  });
+
+  it('hit events carry the approach speed and respect the threshold', () => {
+    const world = new World({ hitEventThreshold: 15 });
+    const slow = world.createCircle({ x: 0, y: 0, vx: 5, radius: 5 });
+    world.createCircle({ x: 9, y: 0, vx: -5, radius: 5 });
+    const fast = world.createCircle({ x: 0, y: 50, vx: 10, radius: 5 });
+    const target = world.createCircle({ x: 9, y: 50, vx: -10, radius: 5 });
+    world.step(0);
+    const events = world.contactEvents();
+    expect(events.hitCount).toBe(1);
+    expect([events.hitA[0], events.hitB[0]]).toEqual([fast, target]);
+    expect(events.hitSpeed[0]).toBeCloseTo(20, 12);
+    expect(slow).toBe(0);
+  });
+
+  it('events are off unless asked for', () => {
+    expect(() => new World().contactEvents()).toThrow(/contactEvents: true/);
+  });
+
+  it('event buffers stop growing after warm-up', async () => {
+    const { buildScene, buildWorld } = await import('@maxgrid/scenes');
+    const scene = buildScene('uniform', { n: 2000, seed: 3 });
+    const world = new World({ bounds: scene.bounds, contactEvents: true, hitEventThreshold: 0 });
+    for (let k = 0; k < scene.count; k++) world.createCircle({ x: scene.x[k], y: scene.y[k], vx: scene.vx[k], vy: scene.vy[k], radius: scene.radius[k] });
+    void buildWorld;
+    for (let s = 0; s < 200; s++) world.step(1 / 60);
+    const events = world.contactEvents();
+    const arrays = [events.beginA, events.endA, events.hitA];
+    const before = world.memoryBytes();
+    let begins = 0;
+    for (let s = 0; s < 300; s++) {
+      world.step(1 / 60);
+      begins += events.beginCount;
+    }
+    expect(begins).toBeGreaterThan(1000);
+    expect(world.memoryBytes()).toBe(before);
+    expect([events.beginA, events.endA, events.hitA]).toEqual(arrays);
+  });
+});

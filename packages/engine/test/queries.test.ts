@@ -1,0 +1,102 @@
+import { describe, expect, it } from 'vitest';
+import fc from 'fast-check';
+import { World } from '../src/index.js';
+
+const worldArbitrary = fc
+  .array(
+    fc.record({
+      x: fc.double({ min: -500, max: 500, noNaN: true }),
+      y: fc.double({ min: -500, max: 500, noNaN: true }),
+      r: fc.double({ min: 0.5, max: 60, noNaN: true }),
+      category: fc.constantFrom(1, 2, 4),
+    }),
+    { minLength: 1, maxLength: 80 },
+  )
+  .map((circles) => {
+    const world = new World();
+    for (const c of circles) world.createCircle({ x: c.x, y: c.y, radius: c.r, category: c.category });
+    return world;
+  });
+
+const coordinate = fc.double({ min: -700, max: 700, noNaN: true });
+
+function bruteRay(world: World, x1: number, y1: number, x2: number, y2: number) {
+  const hits: { handle: number; fraction: number }[] = [];
+  for (const h of world.handles()) {
+    const c = world.getCircle(h);
+    const fx = x1 - c.x;
+    const fy = y1 - c.y;
+    const dx = x2 - x1;
+    const dy = y2 - y1;
+    const cc = fx * fx + fy * fy - c.radius * c.radius;
+    const a = dx * dx + dy * dy;
+    const b = fx * dx + fy * dy;
+    if (cc <= 0 || a === 0 || b >= 0 || b * b - a * cc < 0) continue;
+    const t = (-b - Math.sqrt(b * b - a * cc)) / a;
+    if (t <= 1) hits.push({ handle: h, fraction: t });
+  }
+  return hits.sort((p, q) => p.fraction - q.fraction || p.handle - q.handle);
+}
+
+describe('queries agree with brute force', () => {
+  it('point query', () => {
+    fc.assert(
+      fc.property(worldArbitrary, coordinate, coordinate, fc.constantFrom(0xffffffff, 1, 6), (world, px, py, mask) => {
+        const expected = world.handles().filter((h) => {
+          const c = world.getCircle(h);
+          return (c.category & mask) !== 0 && (px - c.x) ** 2 + (py - c.y) ** 2 <= c.radius ** 2;
+        });
+        expect(world.queryPoint(px, py, { mask })).toEqual(expected);
+      }),
+      { numRuns: 300, seed: 1 },
+    );
+  });
+
+  it('AABB query', () => {
+    fc.assert(
+      fc.property(worldArbitrary, coordinate, coordinate, coordinate, coordinate, (world, ax, ay, bx, by) => {
+        const [minX, maxX] = [Math.min(ax, bx), Math.max(ax, bx)];
+        const [minY, maxY] = [Math.min(ay, by), Math.max(ay, by)];
+        const expected = world.handles().filter((h) => {
+          const c = world.getCircle(h);
+          const dx = c.x - Math.min(Math.max(c.x, minX), maxX);
+          const dy = c.y - Math.min(Math.max(c.y, minY), maxY);
+          return dx * dx + dy * dy <= c.radius * c.radius;
+        });
+        expect(world.queryAABB(minX, minY, maxX, maxY)).toEqual(expected);
+      }),
+      { numRuns: 300, seed: 2 },
+    );
+  });
+
+  it('ray cast: all hits in order, and the first hit', () => {
+    fc.assert(
+      fc.property(worldArbitrary, coordinate, coordinate, coordinate, coordinate, (world, x1, y1, x2, y2) => {
+        const expected = bruteRay(world, x1, y1, x2, y2);
+        const all = world.rayCastAll(x1, y1, x2, y2);
+        expect(all.map((h) => h.handle)).toEqual(expected.map((h) => h.handle));
+        const first = world.rayCast(x1, y1, x2, y2);
+        expect(first?.handle ?? null).toBe(expected[0]?.handle ?? null);
+        if (first) {
+          const c = world.getCircle(first.handle);
+          expect(Math.hypot(first.x - c.x, first.y - c.y)).toBeCloseTo(c.radius, 6);
+          expect(Math.hypot(first.normalX, first.normalY)).toBeCloseTo(1, 9);
+        }
+      }),
+      { numRuns: 400, seed: 3 },
+    );
+  });
+
+  it('queries see the world as it is after steps and edits', () => {
+    const world = new World();
+    const a = world.createCircle({ x: 0, y: 0, vx: 100, radius: 2 });
+    expect(world.queryPoint(0, 0)).toEqual([a]);
+    world.step(1);
+    expect(world.queryPoint(0, 0)).toEqual([]);
+    expect(world.queryPoint(100, 0)).toEqual([a]);
+    world.setPosition(a, -50, 0);
+    expect(world.rayCast(-100, 0, 0, 0)?.handle).toBe(a);
+    world.destroyBody(a);
+    expect(world.rayCast(-100, 0, 0, 0)).toBeNull();
+  });
+});

@@ -1,0 +1,82 @@
+import { describe, expect, it } from 'vitest';
+import { World } from '../src/index.js';
+
+function restingPile(sleeping: boolean): World {
+  const world = new World({ sleeping, gravity: { x: 0, y: 200 }, bounds: { width: 200, height: 100 }, restitution: 0, sleepTime: 0.25 });
+  for (let k = 0; k < 10; k++) world.createCircle({ x: 10 + k * 20, y: 90, radius: 9.5 });
+  return world;
+}
+
+describe('sleeping (report 3.1.4.1, 5.3.3)', () => {
+  it('bodies that stay still fall asleep, stop moving, and cost no integration', () => {
+    const world = restingPile(true);
+    for (let s = 0; s < 120; s++) world.step(1 / 60);
+    expect(world.stats.sleepingBodies).toBe(10);
+    expect(world.handles().every((h) => !world.isAwake(h))).toBe(true);
+    const hash = world.stateHash();
+    for (let s = 0; s < 60; s++) world.step(1 / 60);
+    expect(world.stateHash()).toBe(hash);
+    expect(world.stats.contacts).toBe(0);
+  });
+
+  it('is off by default, and a world without it never sleeps', () => {
+    const world = restingPile(false);
+    for (let s = 0; s < 120; s++) world.step(1 / 60);
+    expect(world.stats.sleepingBodies).toBe(0);
+  });
+
+  it('a moving body that touches a sleeper wakes it (the Matter.js never-wakes bug, #1112 / #875)', () => {
+    const world = restingPile(true);
+    for (let s = 0; s < 120; s++) world.step(1 / 60);
+    const sleeper = world.handles()[4];
+    expect(world.isAwake(sleeper)).toBe(false);
+    const ball = world.createCircle({ x: 90, y: 20, vy: 300, radius: 5 });
+    let woke = false;
+    for (let s = 0; s < 60 && !woke; s++) {
+      world.step(1 / 60);
+      woke = world.handles().slice(0, 10).some((h) => world.isAwake(h));
+    }
+    expect(woke).toBe(true);
+    expect(world.isAwake(ball) || world.stats.sleepingBodies < 11).toBe(true);
+  });
+
+  it('user changes wake a body: velocity, position, type, force, impulse', () => {
+    const actions: ((w: World, h: number) => void)[] = [
+      (w, h) => w.setVelocity(h, 1, 0),
+      (w, h) => w.setPosition(h, 50, 50),
+      (w, h) => w.setType(h, 'dynamic'),
+      (w, h) => w.applyForce(h, 1, 0),
+      (w, h) => w.applyImpulse(h, 1, 0),
+      (w, h) => w.setAwake(h, true),
+    ];
+    for (const action of actions) {
+      const world = restingPile(true);
+      for (let s = 0; s < 120; s++) world.step(1 / 60);
+      const h = world.handles()[3];
+      expect(world.isAwake(h)).toBe(false);
+      action(world, h);
+      expect(world.isAwake(h)).toBe(true);
+    }
+  });
+
+  it('sleeping and waking give the same result with every broad-phase', async () => {
+    const { BROADPHASE_NAMES } = await import('../src/index.js');
+    const runs = BROADPHASE_NAMES.map((broadphase) => {
+      const world = new World({ broadphase, sleeping: true, gravity: { x: 0, y: 300 }, bounds: { width: 320, height: 200 }, restitution: 0, sleepTime: 0.2, sleepSpeed: 8 });
+      // Balls fall straight onto row circles: a vertical normal, so nothing slides sideways.
+      for (let k = 0; k < 30; k++) world.createCircle({ x: 6 + k * 10.5, y: 196, radius: 4 });
+      for (let k = 0; k < 15; k++) world.createCircle({ x: 6 + 2 * k * 10.5, y: 20 + ((k * 37) % 60), radius: 3 });
+      let wakeUps = 0;
+      let asleep = world.stats.sleepingBodies;
+      for (let s = 0; s < 400; s++) {
+        world.step(1 / 60);
+        if (world.stats.sleepingBodies < asleep) wakeUps++;
+        asleep = world.stats.sleepingBodies;
+      }
+      return { hash: world.stateHash(), asleep, wakeUps };
+    });
+    expect(new Set(runs.map((r) => r.hash)).size).toBe(1);
+    expect(runs[0].asleep).toBeGreaterThan(20);
+    expect(runs[0].wakeUps).toBeGreaterThan(0);
+  });
+});
