@@ -48,6 +48,9 @@ describe('the 3D page', { retry: 1 }, () => {
 
   beforeEach(async () => {
     ({ page, errors } = await openPage(browser, '/3d.html'));
+    // A smaller window than openPage's: software WebGL's frame time grows with the pixel count,
+    // and the live simulation advances at most a few fixed steps per frame.
+    await page.setViewportSize({ width: 1100, height: 720 });
   });
 
   afterEach(async () => {
@@ -115,7 +118,7 @@ describe('the 3D page', { retry: 1 }, () => {
     await page.getByLabel('Drop interval (steps)').fill('45');
     await page.getByLabel('Settle steps after the last layer').fill('180');
     await page.getByRole('button', { name: 'Run the layered-drop experiment' }).click();
-    await page.waitForSelector('#layered-drop-results[data-status="done"]', { timeout: 30_000 });
+    await page.waitForSelector('#layered-drop-results[data-status="done"]', { state: 'attached', timeout: 30_000 });
 
     const cells = await page.$$eval('#layered-drop-results td[data-metric]', (tds) =>
       tds.map((td) => {
