@@ -16,7 +16,7 @@ describe('package exports', () => {
       console.log(JSON.stringify({ names: BROADPHASE_NAMES, bodies: w.bodyCount, isWorld: w instanceof World }));
     `;
     const out = execFileSync(process.execPath, ['--input-type=module', '-e', script], { cwd: root }).toString();
-    expect(JSON.parse(out)).toEqual({ names: ['naive', 'sap', 'sap-xy', 'maxgrid', 'hgrid', 'auto'], bodies: 50, isWorld: true });
+    expect(JSON.parse(out)).toEqual({ names: ['naive', 'sap', 'sap-xy', 'sap-persistent', 'maxgrid', 'hgrid', 'auto'], bodies: 50, isWorld: true });
     expect(existsSync(`${root}packages/engine/dist/index.d.ts`)).toBe(true);
   });
 });

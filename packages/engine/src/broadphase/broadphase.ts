@@ -8,7 +8,7 @@ import type { PairSink } from '../store/pair-sink.js';
  *   radii) is pushed. False positives are allowed; a false negative is a bug.
  * - Each unordered pair at most once, as two slot indices in either order.
  * - Never pushes a FREE slot; pairs of non-dynamic bodies may be pushed (the narrow-phase drops
- *   them), so the candidate count means the same thing for every algorithm.
+ *   them). Pairs of two sleeping bodies may be skipped: nothing happens between them.
  * - The order of pushed pairs is free: the step sorts contacts canonically afterwards.
  * - No allocation once warm: scratch grows geometrically and is kept between steps.
  *

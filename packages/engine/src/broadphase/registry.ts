@@ -2,6 +2,7 @@ import type { BroadPhase } from './broadphase.js';
 import { NaiveBroadPhase } from './naive.js';
 import { SapBroadPhase } from './sap.js';
 import { SapXyBroadPhase } from './sap-xy.js';
+import { PersistentSapBroadPhase } from './sap-persistent.js';
 import { MaxGridBroadPhase } from './maxgrid.js';
 import { HierarchicalGridBroadPhase } from './hgrid.js';
 import { AutoBroadPhase } from './auto.js';
@@ -10,6 +11,7 @@ export const BROADPHASES = {
   naive: () => new NaiveBroadPhase(),
   sap: () => new SapBroadPhase(),
   'sap-xy': () => new SapXyBroadPhase(),
+  'sap-persistent': () => new PersistentSapBroadPhase(),
   maxgrid: () => new MaxGridBroadPhase(),
   hgrid: () => new HierarchicalGridBroadPhase(),
   auto: () => new AutoBroadPhase(),

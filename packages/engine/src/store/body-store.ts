@@ -73,6 +73,8 @@ export class BodyStore {
   sleepingCount = 0;
   /** True between applyForce and the next step. */
   forcesPending = false;
+  /** Bumped whenever the set of live bodies changes, for structures that persist between steps. */
+  membershipVersion = 0;
 
   private freeSlots = new Int32Array(0);
   private freeCount = 0;
@@ -135,6 +137,7 @@ export class BodyStore {
     if (body.gravityScale !== 1 || body.linearDamping !== 0) this.customMotionCount++;
     this.setTypeCode(slot, body.type);
     this.liveCount++;
+    this.membershipVersion++;
     if (body.radius > this.cachedMaxRadius) this.cachedMaxRadius = body.radius;
     if (body.radius < this.cachedMinRadius) this.cachedMinRadius = body.radius;
     return slot;
@@ -148,6 +151,7 @@ export class BodyStore {
     this.vy[slot] = 0;
     this.invMass[slot] = 0;
     this.liveCount--;
+    this.membershipVersion++;
     const r = this.radius[slot];
     if (r === this.cachedMaxRadius || r === this.cachedMinRadius) this.radiusRangeStale = true;
     const nextGeneration = this.generation[slot] + 1;

@@ -1,0 +1,25 @@
+import { defineConfig } from 'vite';
+import { fileURLToPath } from 'node:url';
+import { workspaceAliases } from '../../vitest.shared.js';
+
+const page = (name: string) => fileURLToPath(new URL(`./${name}`, import.meta.url));
+
+// Three pages: the 2D sandbox (index), the report's three.js + cannon-es exploration (3d), and the
+// lab's browser runner (lab). The workspace packages are served from source, so edits to the
+// engine show up without a rebuild.
+export default defineConfig({
+  root: fileURLToPath(new URL('.', import.meta.url)),
+  resolve: { alias: workspaceAliases },
+  // Pre-bundle every third-party module the pages load, including the lab's lazily imported peer
+  // engines: otherwise Vite discovers them on first use, re-optimises and reloads the page, which
+  // cuts a running experiment (or a test) short.
+  optimizeDeps: {
+    include: ['three', 'cannon-es', 'echarts', 'matter-js', 'planck', 'p2-es', '@dimforge/rapier2d-simd-compat'],
+  },
+  server: { host: '127.0.0.1', port: 5173 },
+  preview: { host: '127.0.0.1', port: 4173 },
+  build: {
+    target: 'es2022',
+    rollupOptions: { input: { index: page('index.html'), '3d': page('3d.html'), lab: page('lab.html') } },
+  },
+});
