@@ -2,9 +2,7 @@ import type { Scene } from '@maxgrid/scenes';
 import { boxWalls, METERS_PER_PIXEL, type BodyState, type Engine, type EngineProvider, type Simulation } from './adapter.js';
 import { VERSIONS } from './versions.js';
 
-type P2 = typeof import('p2-es');
-type P2World = InstanceType<P2['World']>;
-type P2Body = InstanceType<P2['Body']>;
+import { loadP2, type P2Api as P2, type P2Body, type P2World } from './p2-loader.js';
 
 const S = METERS_PER_PIXEL;
 // p2 has one Gauss-Seidel solver pass count (no separate position pass): 1 is the nearest match.
@@ -72,7 +70,7 @@ class P2Simulation implements Simulation {
 export const p2Provider: EngineProvider = {
   id: 'p2-es',
   async load(): Promise<Engine> {
-    const p2 = await import('p2-es');
+    const p2 = await loadP2();
     return {
       info: {
         id: 'p2-es',

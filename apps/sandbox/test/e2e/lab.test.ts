@@ -1,0 +1,89 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import type { Browser, Page } from 'playwright-core';
+import { BROADPHASE_NAMES } from '@maxgrid/engine';
+import { buildScene, buildWorld, type Scene } from '@maxgrid/scenes';
+import { Ajv } from 'ajv';
+import { ARTIFACTS, launchBrowser, openPage } from './browser.js';
+import { DETERMINISM, sceneDigest, toPlainScene } from '../../src/lab-page/runs.js';
+import type { LabPageResults } from '../../src/lab-page/main.js';
+import { EXPERIMENTS, ENGINE_IDS } from '../../../../packages/lab/src/browser.js';
+
+let browser: Browser;
+let page: Page;
+let errors: string[];
+let results: LabPageResults;
+
+/** A scene stepped in Node with every broad-phase, the same way the page steps it in Chromium. */
+function nodeHashes(scene: Scene): Record<string, string> {
+  const hashes: Record<string, string> = {};
+  for (const broadphase of BROADPHASE_NAMES) {
+    const world = buildWorld(scene, { broadphase });
+    for (let i = 0; i < DETERMINISM.steps; i++) world.step(DETERMINISM.dt);
+    hashes[broadphase] = world.stateHash();
+  }
+  return hashes;
+}
+
+const golden = buildScene(DETERMINISM.scene, DETERMINISM.params);
+let goldenHashes: Record<string, string>;
+
+describe('lab page in Chromium', () => {
+  beforeAll(async () => {
+    goldenHashes = nodeHashes(golden);
+    browser = await launchBrowser();
+    ({ page, errors } = await openPage(browser, '/lab.html?auto=1'));
+    await page.waitForFunction(() => window.__labResults?.done === true, undefined, { timeout: 170_000, polling: 500 });
+    results = (await page.evaluate(() => window.__labResults)) as LabPageResults;
+    await page.screenshot({ path: `${ARTIFACTS}lab.png`, fullPage: true });
+  }, 180_000);
+
+  afterAll(async () => {
+    await browser?.close();
+  });
+
+  it('runs every quick experiment without errors', () => {
+    expect(results.errors).toEqual([]);
+    expect(errors).toEqual([]);
+    expect(Object.keys(results.experiments).sort()).toEqual(Object.keys(EXPERIMENTS).sort());
+    expect(results.environment.runtime).toMatch(/^Chromium \d+/);
+  });
+
+  it("produces results that validate against each experiment's schema", () => {
+    const ajv = new Ajv({ strict: false });
+    for (const [name, result] of Object.entries(results.experiments)) {
+      const validate = ajv.compile(EXPERIMENTS[name].schema);
+      expect(validate(result), `${name}: ${JSON.stringify(validate.errors)}`).toBe(true);
+    }
+  });
+
+  it('loads and measures every engine, the WASM ones included', () => {
+    const stepTime = results.experiments['step-time'] as { rows: { engine: string }[] };
+    expect(new Set(stepTime.rows.map((r) => r.engine))).toEqual(new Set(ENGINE_IDS));
+  });
+
+  it('shows charts and tables on the page', async () => {
+    expect(await page.locator('#experiments figure svg').count()).toBeGreaterThanOrEqual(7);
+    expect(await page.locator('#experiments table').count()).toBeGreaterThanOrEqual(6);
+    const json = JSON.parse((await page.locator('#lab-json').textContent()) ?? '{}');
+    expect(json.done).toBe(true);
+  });
+
+  // Determinism across runtimes, in three steps so that a failure says where bits diverge.
+  it('builds the golden scene to the same bits in Node and in Chromium', () => {
+    // Differing vx/vy here means the scene builder's Math.cos/Math.sin round differently in the
+    // two V8 versions: the scene, not the engine, breaks cross-runtime determinism.
+    expect(results.determinism?.sceneDigest).toEqual(sceneDigest(golden));
+  });
+
+  it('steps identical scene data to the same state hash in Node and in Chromium, with every broad-phase', async () => {
+    const inBrowser = await page.evaluate((scene) => window.__labDeterminismOf!(scene), toPlainScene(golden));
+    expect(inBrowser.sceneDigest).toEqual(sceneDigest(golden));
+    expect(inBrowser.hashes).toEqual(goldenHashes);
+  });
+
+  it('steps the golden scene (built in each runtime) to the same state hash in Node and in Chromium, with every broad-phase', () => {
+    expect(new Set(Object.values(goldenHashes)).size).toBe(1);
+    expect(Object.keys(goldenHashes)).toEqual([...BROADPHASE_NAMES]);
+    expect(results.determinism?.hashes).toEqual(goldenHashes);
+  });
+});

@@ -1,0 +1,47 @@
+/**
+ * The slice of p2-es the adapter uses, declared by hand. p2-es's own declarations define ambient
+ * modules ("world/World", "objects/Body", ...) with the same names as cannon-es's, so any
+ * TypeScript program that sees both (the sandbox, which hosts the lab page and the 3D page)
+ * fails to type-check. Loading p2-es through this untyped .js shim keeps its declarations out.
+ */
+export type Vec2 = Float32Array | number[];
+
+export interface P2Body {
+  position: Vec2;
+  velocity: Vec2;
+  shapes: object[];
+  addShape(shape: object): void;
+}
+
+export interface P2World {
+  sleepMode: number;
+  defaultContactMaterial: { restitution: number; friction: number };
+  addBody(body: P2Body): void;
+  step(dt: number): void;
+  clear(): void;
+}
+
+export interface P2Api {
+  World: {
+    new (options: { gravity: [number, number]; solver: object; islandSplit: boolean }): P2World;
+    NO_SLEEPING: number;
+  };
+  Body: {
+    new (options: {
+      mass: number;
+      type?: number;
+      position: [number, number];
+      velocity?: [number, number];
+      fixedRotation?: boolean;
+      damping?: number;
+      angularDamping?: number;
+      allowSleep?: boolean;
+    }): P2Body;
+    STATIC: number;
+  };
+  Circle: new (options: { radius: number }) => object;
+  Box: new (options: { width: number; height: number }) => object;
+  GSSolver: new (options: { iterations: number }) => object;
+}
+
+export function loadP2(): Promise<P2Api>;
