@@ -5,6 +5,7 @@ import { BROADPHASE_NAMES } from './broadphase/registry.js';
 import type { IntegratorName } from './integrate/integrator.js';
 import { INTEGRATOR_NAMES } from './integrate/integrator.js';
 import type { NewBody } from './store/body-store.js';
+import type { NewSegment } from './store/segment-store.js';
 import {
   finiteNumber,
   knownKeys,
@@ -48,6 +49,12 @@ export interface WorldOptions {
   sleepSpeed?: number;
   /** Seconds a body must stay still before it sleeps. Default 0.5. */
   sleepTime?: number;
+  /**
+   * Sweep dynamic bodies that move more than their radius in a step against static circles and
+   * segments, so that none tunnels through them. Default true; the lab turns it off to match the
+   * report's discrete Unity settings.
+   */
+  continuous?: boolean;
   /** Record begin and end touch events each step (see `world.contactEvents()`). Default false. */
   contactEvents?: boolean;
   /** Record a hit event for each collision whose approach speed is at least this. Default: none. */
@@ -90,6 +97,20 @@ export interface ResolvedWorldOptions {
   sleepTime: number;
   contactEvents: boolean;
   hitEventThreshold: number;
+  continuous: boolean;
+}
+
+export interface SegmentOptions {
+  x1: number;
+  y1: number;
+  x2: number;
+  y2: number;
+  /** Half the wall's width: the segment acts as a capsule of this radius. Default 0. */
+  thickness?: number;
+  /** Default: the world's `restitution`. */
+  restitution?: number;
+  category?: number;
+  mask?: number;
 }
 
 const WORLD_KEYS = [
@@ -104,6 +125,7 @@ const WORLD_KEYS = [
   'sleepTime',
   'contactEvents',
   'hitEventThreshold',
+  'continuous',
 ];
 const CIRCLE_KEYS = [
   'x',
@@ -144,6 +166,7 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
     contactEvents: options.contactEvents === undefined ? false : flag('contactEvents', options.contactEvents),
     hitEventThreshold:
       options.hitEventThreshold === undefined ? Infinity : nonNegativeNumber('hitEventThreshold', options.hitEventThreshold),
+    continuous: options.continuous === undefined ? true : flag('continuous', options.continuous),
   };
 }
 
@@ -211,4 +234,23 @@ export function resolveCircle(input: unknown, defaultRestitution: number): NewBo
     gravityScale: o.gravityScale === undefined ? 1 : finiteNumber('gravityScale', o.gravityScale),
     linearDamping: o.linearDamping === undefined ? 0 : nonNegativeNumber('linearDamping', o.linearDamping),
   };
+}
+
+export function resolveSegment(input: unknown, defaultRestitution: number): NewSegment {
+  const o = plainObject('segment options', input);
+  knownKeys('segment options', o, ['x1', 'y1', 'x2', 'y2', 'thickness', 'restitution', 'category', 'mask']);
+  const segment = {
+    ax: finiteNumber('x1', o.x1),
+    ay: finiteNumber('y1', o.y1),
+    bx: finiteNumber('x2', o.x2),
+    by: finiteNumber('y2', o.y2),
+    thickness: o.thickness === undefined ? 0 : nonNegativeNumber('thickness', o.thickness),
+    restitution: o.restitution === undefined ? defaultRestitution : nonNegativeNumber('restitution', o.restitution),
+    category: o.category === undefined ? 1 : layerBits('category', o.category),
+    mask: o.mask === undefined ? 0xffffffff : layerBits('mask', o.mask),
+  };
+  if (segment.ax === segment.bx && segment.ay === segment.by && segment.thickness === 0) {
+    throw new RangeError(`a segment from (${segment.ax}, ${segment.ay}) to itself needs a thickness > 0`);
+  }
+  return segment;
 }

@@ -1,4 +1,5 @@
 import { BodyStore } from './store/body-store.js';
+import { SegmentStore } from './store/segment-store.js';
 import type { BodyType } from './store/body-types.js';
 import { TypeCode, typeName } from './store/body-types.js';
 import type { BroadPhaseName } from './broadphase/registry.js';
@@ -22,6 +23,8 @@ import {
   integratorName,
   resolveCircle,
   resolveWorldOptions,
+  resolveSegment,
+  type SegmentOptions,
   vector,
   type CircleOptions,
   type Vector,
@@ -35,6 +38,7 @@ import {
  */
 export class World {
   private readonly bodies = new BodyStore();
+  private readonly segments = new SegmentStore();
   private readonly pipeline: StepPipeline;
   private readonly bounds: { width: number; height: number } | null;
   private readonly defaultRestitution: number;
@@ -59,6 +63,7 @@ export class World {
     const events = resolved.contactEvents || resolved.hitEventThreshold < Infinity ? new ContactEvents() : null;
     this.pipeline = new StepPipeline(
       this.bodies,
+      this.segments,
       BROADPHASES[resolved.broadphase](),
       resolved.integrator,
       {
@@ -67,6 +72,7 @@ export class World {
         wallRestitution: resolved.restitution,
         solver: { restitutionThreshold: resolved.restitutionThreshold, hitThreshold: resolved.hitEventThreshold },
         sleeping: { enabled: resolved.sleeping, speed: resolved.sleepSpeed, time: resolved.sleepTime },
+        continuous: resolved.continuous,
       },
       events,
     );
@@ -112,6 +118,25 @@ export class World {
   destroyBody(handle: number): void {
     this.bodies.remove(this.slot(handle));
     this.geometryVersion++;
+  }
+
+  /** A static wall from (x1, y1) to (x2, y2), at any angle, optionally thick. Segment handles are their own space. */
+  createSegment(options: SegmentOptions): number {
+    return this.segments.add(resolveSegment(options, this.defaultRestitution));
+  }
+
+  destroySegment(handle: number): void {
+    this.segments.remove(this.segmentSlot(handle));
+  }
+
+  getSegment(handle: number): Required<Omit<SegmentOptions, never>> {
+    const s = this.segmentSlot(handle);
+    const g = this.segments;
+    return { x1: g.ax[s], y1: g.ay[s], x2: g.bx[s], y2: g.by[s], thickness: g.thickness[s], restitution: g.restitution[s], category: g.category[s], mask: g.mask[s] };
+  }
+
+  get segmentCount(): number {
+    return this.segments.count;
   }
 
   hasBody(handle: number): boolean {
@@ -341,7 +366,7 @@ export class World {
 
   /** Bytes held by the engine's typed arrays: body columns, broad-phase and contact scratch. */
   memoryBytes(): number {
-    return this.bodies.memoryBytes() + this.pipeline.memoryBytes();
+    return this.bodies.memoryBytes() + this.segments.memoryBytes() + this.pipeline.memoryBytes();
   }
 
   /** Capacities of internal buffers, for tests that check nothing grows after warm-up. */
@@ -360,6 +385,12 @@ export class World {
     if (this.bodies.type[s] !== TypeCode.dynamic) {
       throw new RangeError(`body ${handle} is ${typeName(this.bodies.type[s])}: only dynamic bodies take ${what}, got (${ax}, ${ay})`);
     }
+    return s;
+  }
+
+  private segmentSlot(handle: number): number {
+    const s = this.segments.slotOf(handle);
+    if (s < 0) throw new RangeError(`segment handle ${String(handle)} is unknown or destroyed`);
     return s;
   }
 

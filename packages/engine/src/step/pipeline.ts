@@ -9,6 +9,9 @@ import { clearForces } from '../integrate/motion.js';
 import { bounceOffBox, clampIntoBox } from '../solver/box-walls.js';
 import { solveContacts, type SolverSettings } from '../solver/contact-solver.js';
 import { updateSleep } from '../solver/sleep.js';
+import { ContinuousCollision } from '../solver/continuous.js';
+import { solveSegmentContacts } from '../solver/segment-contacts.js';
+import { SegmentGrid, type SegmentStore } from '../store/segment-store.js';
 import { emptyStats, type StepStats } from './stats.js';
 import { nowMs } from '../util/timer.js';
 
@@ -18,12 +21,17 @@ export interface StepSettings {
   wallRestitution: number;
   solver: SolverSettings;
   sleeping: { enabled: boolean; speed: number; time: number };
+  /** Sweep fast bodies against static shapes (continuous collision). */
+  continuous: boolean;
 }
 
 /**
  * One step, as a fixed sequence of named stages, each in its own module and timed into `stats`:
  *
  *   integrate -> boundary -> broad-phase -> narrow-phase -> solve -> correct -> report
+ *
+ * `boundary` is everything static: continuous sweeps against static shapes, then the box walls.
+ * `solve` resolves circle-circle contacts, then circle-segment ones.
  *
  * The broad-phase hands candidates to the narrow-phase in chunks (see PairSink), so those two
  * interleave; their times are separated by timing the narrow-phase inside the sink. Everything
@@ -34,9 +42,12 @@ export class StepPipeline {
   readonly narrowPhase: NarrowPhase;
   readonly pairs: PairSink;
   readonly stats: StepStats = emptyStats();
+  readonly continuous = new ContinuousCollision();
+  readonly segmentGrid = new SegmentGrid();
 
   constructor(
     private readonly bodies: BodyStore,
+    private readonly segments: SegmentStore,
     public broadPhase: BroadPhase,
     public integrator: IntegratorName,
     readonly settings: StepSettings,
@@ -50,10 +61,13 @@ export class StepPipeline {
     const { bodies, settings, stats, contacts, pairs, events } = this;
     const box = settings.box;
     const t0 = nowMs();
+    const sweep = settings.continuous && this.continuous.needed(bodies, this.segments);
+    if (sweep) this.continuous.rememberPositions(bodies);
 
     INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
 
+    if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold);
     if (box) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
     const t2 = nowMs();
 
@@ -67,6 +81,7 @@ export class StepPipeline {
     contacts.sortCanonical(bodies.slotCount);
     events?.clear();
     solveContacts(bodies, contacts, events, settings.solver);
+    const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver.restitutionThreshold);
     const t4 = nowMs();
 
     if (box) clampIntoBox(bodies, box.width, box.height);
@@ -82,6 +97,8 @@ export class StepPipeline {
     stats.pairTests = pairTests;
     stats.candidatePairs = pairs.total;
     stats.contacts = contacts.count;
+    stats.segmentContacts = segmentContacts;
+    stats.sweptBodies = sweep ? this.continuous.swept : 0;
     stats.filteredPairs = this.narrowPhase.filtered;
     stats.sleepingBodies = bodies.sleepingCount;
     stats.integrateMs = t1 - t0;
@@ -95,6 +112,12 @@ export class StepPipeline {
   }
 
   memoryBytes(): number {
-    return this.broadPhase.memoryBytes() + this.contacts.memoryBytes() + this.pairs.memoryBytes() + (this.events?.memoryBytes() ?? 0);
+    return (
+      this.broadPhase.memoryBytes() +
+      this.contacts.memoryBytes() +
+      this.pairs.memoryBytes() +
+      this.continuous.memoryBytes() +
+      (this.events?.memoryBytes() ?? 0)
+    );
   }
 }

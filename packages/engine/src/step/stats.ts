@@ -16,12 +16,16 @@ export interface StepStats {
   candidatePairs: number;
   /** Pairs the narrow-phase found overlapping with at least one awake dynamic body. */
   contacts: number;
+  /** Circle-segment contacts resolved. */
+  segmentContacts: number;
+  /** Fast bodies swept against static shapes by continuous collision. */
+  sweptBodies: number;
   /** Candidate pairs dropped by collision layers. */
   filteredPairs: number;
   /** Dynamic bodies asleep after the step. */
   sleepingBodies: number;
   integrateMs: number;
-  /** Box walls: bounce circles back into the box. */
+  /** Continuous collision against static shapes, then the box walls. */
   boundaryMs: number;
   broadphaseMs: number;
   narrowphaseMs: number;
@@ -41,6 +45,8 @@ export function emptyStats(): StepStats {
     pairTests: 0,
     candidatePairs: 0,
     contacts: 0,
+    segmentContacts: 0,
+    sweptBodies: 0,
     filteredPairs: 0,
     sleepingBodies: 0,
     integrateMs: 0,

@@ -71,6 +71,8 @@ export class BodyStore {
   customMotionCount = 0;
   /** Bodies currently asleep. */
   sleepingCount = 0;
+  /** Static bodies: continuous collision sweeps fast bodies against them. */
+  staticCount = 0;
   /** True between applyForce and the next step. */
   forcesPending = false;
   /** Bumped whenever the set of live bodies changes, for structures that persist between steps. */
@@ -146,6 +148,7 @@ export class BodyStore {
   remove(slot: number): void {
     if (this.gravityScale[slot] !== 1 || this.linearDamping[slot] !== 0) this.customMotionCount--;
     this.wake(slot);
+    if (this.type[slot] === TypeCode.static) this.staticCount--;
     this.type[slot] = TypeCode.free;
     this.vx[slot] = 0;
     this.vy[slot] = 0;
@@ -191,6 +194,8 @@ export class BodyStore {
 
   setTypeCode(slot: number, code: number): void {
     this.wake(slot);
+    if (this.type[slot] === TypeCode.static) this.staticCount--;
+    if (code === TypeCode.static) this.staticCount++;
     this.type[slot] = code;
     this.invMass[slot] = code === TypeCode.dynamic ? 1 / this.mass[slot] : 0;
     if (code === TypeCode.static) {

@@ -1,0 +1,68 @@
+import type { BodyStore } from '../store/body-store.js';
+import type { SegmentStore, SegmentGrid } from '../store/segment-store.js';
+import { TypeCode } from '../store/body-types.js';
+import { closestOnSegment } from '../narrowphase/circle-segment.js';
+import { mixRestitution } from './restitution.js';
+
+const closest = { x: 0, y: 0 };
+
+/**
+ * Dynamic circles against static segments, after the circle-circle contacts. Bodies in slot order,
+ * and for each its segments in slot order, so the result does not depend on the broad-phase.
+ * A segment is a capsule of radius `thickness`; a touching circle is pushed out along the normal
+ * from the closest point, and its velocity reflected with the pair's restitution if it approaches.
+ * A circle whose centre lies exactly on the segment is pushed along the segment's left normal.
+ * Returns the number of circle-segment contacts.
+ */
+export function solveSegmentContacts(
+  bodies: BodyStore,
+  segments: SegmentStore,
+  grid: SegmentGrid,
+  restitutionThreshold: number,
+): number {
+  if (segments.count === 0) return 0;
+  const { x, y, vx, vy, radius, restitution, type, asleep, category, mask, slotCount } = bodies;
+  let contacts = 0;
+  for (let i = 0; i < slotCount; i++) {
+    if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
+    const r = radius[i];
+    const found = grid.query(segments, x[i] - r, y[i] - r, x[i] + r, y[i] + r);
+    for (let k = 0; k < found; k++) {
+      const s = grid.found[k];
+      if ((category[i] & segments.mask[s]) === 0 || (segments.category[s] & mask[i]) === 0) continue;
+      const ax = segments.ax[s];
+      const ay = segments.ay[s];
+      const bx = segments.bx[s];
+      const by = segments.by[s];
+      closestOnSegment(x[i], y[i], ax, ay, bx, by, closest);
+      const dx = x[i] - closest.x;
+      const dy = y[i] - closest.y;
+      const reach = r + segments.thickness[s];
+      const distSq = dx * dx + dy * dy;
+      if (distSq >= reach * reach) continue;
+      contacts++;
+      const dist = Math.sqrt(distSq);
+      let nx: number;
+      let ny: number;
+      if (dist > 0) {
+        nx = dx / dist;
+        ny = dy / dist;
+      } else {
+        const ex = bx - ax;
+        const ey = by - ay;
+        const length = Math.sqrt(ex * ex + ey * ey);
+        nx = length > 0 ? -ey / length : 1;
+        ny = length > 0 ? ex / length : 0;
+      }
+      const vn = vx[i] * nx + vy[i] * ny;
+      if (vn < 0) {
+        const e = -vn < restitutionThreshold ? 0 : mixRestitution(restitution[i], segments.restitution[s]);
+        vx[i] -= (1 + e) * vn * nx;
+        vy[i] -= (1 + e) * vn * ny;
+      }
+      x[i] += (reach - dist) * nx;
+      y[i] += (reach - dist) * ny;
+    }
+  }
+  return contacts;
+}

@@ -1,0 +1,203 @@
+import { SLOT_SPACE } from './body-store.js';
+import { grownCapacity, growFloat64, growInt32, growUint32, growUint8 } from '../util/grow.js';
+
+export interface NewSegment {
+  ax: number;
+  ay: number;
+  bx: number;
+  by: number;
+  thickness: number;
+  restitution: number;
+  category: number;
+  mask: number;
+}
+
+/**
+ * Static line segments (walls at any angle, thick or not), stored apart from bodies: they never
+ * move, so they get a grid of their own that is rebuilt only when segments are added or removed.
+ * Handles work as body handles do (generation x 2^24 + slot), in a space of their own.
+ */
+export class SegmentStore {
+  count = 0;
+  slotCount = 0;
+  ax = new Float64Array(0);
+  ay = new Float64Array(0);
+  bx = new Float64Array(0);
+  by = new Float64Array(0);
+  /** Half the wall's width: the segment is a capsule of this radius. */
+  thickness = new Float64Array(0);
+  restitution = new Float64Array(0);
+  category = new Uint32Array(0);
+  mask = new Uint32Array(0);
+  live = new Uint8Array(0);
+  generation = new Uint32Array(0);
+  /** Bumped on every add and remove, so the segment grid knows to rebuild. */
+  version = 0;
+  private freeSlots: number[] = [];
+
+  add(segment: NewSegment): number {
+    let slot = this.freeSlots.pop();
+    if (slot === undefined) {
+      if (this.slotCount === this.ax.length) this.grow(this.slotCount + 1);
+      slot = this.slotCount++;
+    }
+    this.ax[slot] = segment.ax;
+    this.ay[slot] = segment.ay;
+    this.bx[slot] = segment.bx;
+    this.by[slot] = segment.by;
+    this.thickness[slot] = segment.thickness;
+    this.restitution[slot] = segment.restitution;
+    this.category[slot] = segment.category;
+    this.mask[slot] = segment.mask;
+    this.live[slot] = 1;
+    this.count++;
+    this.version++;
+    return this.generation[slot] * SLOT_SPACE + slot;
+  }
+
+  remove(slot: number): void {
+    this.live[slot] = 0;
+    this.generation[slot]++;
+    this.freeSlots.push(slot);
+    this.count--;
+    this.version++;
+  }
+
+  slotOf(handle: number): number {
+    if (!Number.isSafeInteger(handle) || handle < 0) return -1;
+    const slot = handle % SLOT_SPACE;
+    const gen = (handle - slot) / SLOT_SPACE;
+    return slot < this.slotCount && this.live[slot] === 1 && this.generation[slot] === gen ? slot : -1;
+  }
+
+  memoryBytes(): number {
+    return this.ax.byteLength * 6 + this.category.byteLength * 3 + this.live.byteLength;
+  }
+
+  private grow(needed: number): void {
+    const capacity = grownCapacity(this.ax.length, needed);
+    this.ax = growFloat64(this.ax, capacity);
+    this.ay = growFloat64(this.ay, capacity);
+    this.bx = growFloat64(this.bx, capacity);
+    this.by = growFloat64(this.by, capacity);
+    this.thickness = growFloat64(this.thickness, capacity);
+    this.restitution = growFloat64(this.restitution, capacity);
+    this.category = growUint32(this.category, capacity);
+    this.mask = growUint32(this.mask, capacity);
+    this.live = growUint8(this.live, capacity);
+    this.generation = growUint32(this.generation, capacity);
+  }
+}
+
+/**
+ * A uniform grid over the segments' bounding boxes, each segment listed in every cell its box
+ * touches; about 64 cells across the segments' extent. Queries by a box return each segment
+ * once (a stamp per segment), in ascending slot order for determinism.
+ */
+export class SegmentGrid {
+  private builtFor = -1;
+  private originX = 0;
+  private originY = 0;
+  private inverse = 0;
+  private columns = 0;
+  private rows = 0;
+  private cellStart = new Int32Array(1);
+  private entries = new Int32Array(0);
+  private stamp = new Uint32Array(0);
+  private epoch = 0;
+  /** Segment slots found by the last query, ascending. */
+  found = new Int32Array(16);
+  foundCount = 0;
+
+  query(segments: SegmentStore, minX: number, minY: number, maxX: number, maxY: number): number {
+    if (this.builtFor !== segments.version) this.build(segments);
+    this.foundCount = 0;
+    if (segments.count === 0) return 0;
+    const c0 = Math.max(0, Math.floor((minX - this.originX) * this.inverse));
+    const c1 = Math.min(this.columns - 1, Math.floor((maxX - this.originX) * this.inverse));
+    const r0 = Math.max(0, Math.floor((minY - this.originY) * this.inverse));
+    const r1 = Math.min(this.rows - 1, Math.floor((maxY - this.originY) * this.inverse));
+    if (c0 > c1 || r0 > r1) return 0;
+    if (++this.epoch === 0xffffffff) {
+      this.stamp.fill(0);
+      this.epoch = 1;
+    }
+    for (let r = r0; r <= r1; r++) {
+      for (let c = c0; c <= c1; c++) {
+        const cell = r * this.columns + c;
+        for (let k = this.cellStart[cell]; k < this.cellStart[cell + 1]; k++) {
+          const s = this.entries[k];
+          if (this.stamp[s] === this.epoch) continue;
+          this.stamp[s] = this.epoch;
+          this.push(s);
+        }
+      }
+    }
+    // Cells list segments in slot order, but a query spans several cells: restore slot order.
+    const found = this.found;
+    for (let i = 1; i < this.foundCount; i++) {
+      const v = found[i];
+      let j = i - 1;
+      while (j >= 0 && found[j] > v) {
+        found[j + 1] = found[j];
+        j--;
+      }
+      found[j + 1] = v;
+    }
+    return this.foundCount;
+  }
+
+  private push(s: number): void {
+    if (this.foundCount === this.found.length) this.found = growInt32(this.found, this.found.length * 2);
+    this.found[this.foundCount++] = s;
+  }
+
+  private build(segments: SegmentStore): void {
+    this.builtFor = segments.version;
+    let minX = Infinity;
+    let minY = Infinity;
+    let maxX = -Infinity;
+    let maxY = -Infinity;
+    const { ax, ay, bx, by, thickness, live, slotCount } = segments;
+    for (let s = 0; s < slotCount; s++) {
+      if (!live[s]) continue;
+      const t = thickness[s];
+      minX = Math.min(minX, ax[s] - t, bx[s] - t);
+      minY = Math.min(minY, ay[s] - t, by[s] - t);
+      maxX = Math.max(maxX, ax[s] + t, bx[s] + t);
+      maxY = Math.max(maxY, ay[s] + t, by[s] + t);
+    }
+    if (segments.count === 0) return;
+    const cell = Math.max(maxX - minX, maxY - minY, 1e-9) / 64;
+    this.originX = minX;
+    this.originY = minY;
+    this.inverse = 1 / cell;
+    this.columns = Math.floor((maxX - minX) * this.inverse) + 1;
+    this.rows = Math.floor((maxY - minY) * this.inverse) + 1;
+    const cells = this.columns * this.rows;
+    this.cellStart = new Int32Array(cells + 1);
+    // Two passes over each segment's cells: count, then fill (a counting sort by cell).
+    for (let pass = 0; pass < 2; pass++) {
+      const cursor = pass === 0 ? this.cellStart : Int32Array.from(this.cellStart);
+      for (let s = 0; s < slotCount; s++) {
+        if (!live[s]) continue;
+        const t = thickness[s];
+        const c0 = Math.floor((Math.min(ax[s], bx[s]) - t - minX) * this.inverse);
+        const c1 = Math.floor((Math.max(ax[s], bx[s]) + t - minX) * this.inverse);
+        const r0 = Math.floor((Math.min(ay[s], by[s]) - t - minY) * this.inverse);
+        const r1 = Math.floor((Math.max(ay[s], by[s]) + t - minY) * this.inverse);
+        for (let r = r0; r <= r1; r++) {
+          for (let c = c0; c <= c1; c++) {
+            if (pass === 0) this.cellStart[r * this.columns + c + 1]++;
+            else this.entries[cursor[r * this.columns + c]++] = s;
+          }
+        }
+      }
+      if (pass === 0) {
+        for (let c = 0; c < cells; c++) this.cellStart[c + 1] += this.cellStart[c];
+        this.entries = new Int32Array(this.cellStart[cells]);
+      }
+    }
+    if (this.stamp.length < slotCount) this.stamp = new Uint32Array(grownCapacity(this.stamp.length, slotCount));
+  }
+}

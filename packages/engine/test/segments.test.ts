@@ -1,0 +1,126 @@
+import { describe, expect, it } from 'vitest';
+import fc from 'fast-check';
+import { World, BROADPHASE_NAMES } from '../src/index.js';
+
+function distanceToSegment(px: number, py: number, s: { x1: number; y1: number; x2: number; y2: number }): number {
+  const ex = s.x2 - s.x1;
+  const ey = s.y2 - s.y1;
+  const t = Math.max(0, Math.min(1, ((px - s.x1) * ex + (py - s.y1) * ey) / (ex * ex + ey * ey)));
+  return Math.hypot(px - (s.x1 + t * ex), py - (s.y1 + t * ey));
+}
+
+describe('static segments', () => {
+  it('a ball dropped on a ramp bounces off it along its normal and never ends a step inside it', () => {
+    const world = new World({ gravity: { x: 0, y: 500 }, bounds: { width: 400, height: 400 }, restitution: 1 });
+    const ramp = { x1: 50, y1: 200, x2: 350, y2: 300, thickness: 3 };
+    world.createSegment(ramp);
+    const ball = world.createCircle({ x: 200, y: 100, radius: 10 });
+    let touched = 0;
+    for (let s = 0; s < 240; s++) {
+      world.step(1 / 60);
+      touched += world.stats.segmentContacts;
+      const c = world.getCircle(ball);
+      expect(distanceToSegment(c.x, c.y, ramp)).toBeGreaterThanOrEqual(10 + 3 - 1e-9);
+    }
+    expect(touched).toBeGreaterThan(0);
+    // The ramp slopes down to the right: bouncing off it sends the ball right.
+    expect(world.getCircle(ball).x).toBeGreaterThan(210);
+  });
+
+  it('a funnel of two segments lets small balls through and stops big ones', () => {
+    const world = new World({ gravity: { x: 0, y: 400 }, bounds: { width: 200, height: 300 }, restitution: 0.2 });
+    world.createSegment({ x1: 10, y1: 50, x2: 90, y2: 150 });
+    world.createSegment({ x1: 190, y1: 50, x2: 110, y2: 150 });
+    const small = world.createCircle({ x: 60, y: 20, radius: 5 });
+    const big = world.createCircle({ x: 140, y: 20, radius: 15 });
+    for (let s = 0; s < 300; s++) world.step(1 / 60);
+    expect(world.getCircle(small).y).toBeGreaterThan(200);
+    expect(world.getCircle(big).y).toBeLessThan(150);
+  });
+
+  it('layers filter segments too', () => {
+    const world = new World({ gravity: { x: 0, y: 400 }, bounds: { width: 100, height: 300 } });
+    world.createSegment({ x1: 0, y1: 100, x2: 100, y2: 100, category: 2, mask: 0xffffffff });
+    const ghost = world.createCircle({ x: 50, y: 50, radius: 5, mask: 1 });
+    for (let s = 0; s < 60; s++) world.step(1 / 60);
+    expect(world.getCircle(ghost).y).toBeGreaterThan(150);
+  });
+
+  it('results do not depend on the broad-phase', () => {
+    const hashes = BROADPHASE_NAMES.map((broadphase) => {
+      const world = new World({ broadphase, gravity: { x: 0, y: 300 }, bounds: { width: 300, height: 300 } });
+      world.createSegment({ x1: 0, y1: 150, x2: 200, y2: 250, thickness: 2 });
+      world.createSegment({ x1: 300, y1: 120, x2: 120, y2: 200 });
+      for (let k = 0; k < 120; k++) world.createCircle({ x: 8 + (k % 24) * 12, y: 8 + Math.floor(k / 24) * 12, vx: (k * 29) % 60 - 30, radius: 5 });
+      for (let s = 0; s < 200; s++) world.step(1 / 60);
+      return world.stateHash();
+    });
+    expect(new Set(hashes).size).toBe(1);
+  });
+
+  it('segment handles: create, read, destroy, stale', () => {
+    const world = new World();
+    const h = world.createSegment({ x1: 0, y1: 0, x2: 10, y2: 0, thickness: 1 });
+    expect(world.getSegment(h)).toMatchObject({ x1: 0, y1: 0, x2: 10, y2: 0, thickness: 1 });
+    expect(world.segmentCount).toBe(1);
+    world.destroySegment(h);
+    expect(world.segmentCount).toBe(0);
+    expect(() => world.getSegment(h)).toThrow(/segment handle/);
+    expect(() => world.createSegment({ x1: 1, y1: 1, x2: 1, y2: 1 })).toThrow(/thickness > 0/);
+    expect(() => world.createSegment({ x1: NaN, y1: 0, x2: 1, y2: 0 })).toThrow(/x1 must be a finite number, got NaN/);
+    expect(() => world.createSegment({ x1: 0, y1: 0, x2: 1, y2: 0, thickness: -1 })).toThrow(/thickness must be >= 0, got -1/);
+  });
+});
+
+describe('continuous collision against static shapes (report 3.1.6)', () => {
+  function shoot(continuous: boolean, speed: number, target: 'segment' | 'circle') {
+    const world = new World({ continuous, bounds: { width: 1000, height: 200 } });
+    if (target === 'segment') world.createSegment({ x1: 500, y1: 0, x2: 500, y2: 200 });
+    else world.createCircle({ x: 500, y: 100, radius: 2, type: 'static' });
+    const ball = world.createCircle({ x: 100, y: 100, vx: speed, radius: 3 });
+    let crossed = false;
+    for (let s = 0; s < 30; s++) {
+      world.step(1 / 60);
+      if (world.getCircle(ball).x > 500) crossed = true;
+    }
+    return crossed;
+  }
+
+  it('negative control: without it a fast ball tunnels through a thin wall and a small static circle', () => {
+    expect(shoot(false, 60_000, 'segment')).toBe(true);
+    expect(shoot(false, 60_000, 'circle')).toBe(true);
+  });
+
+  it('with it, no speed gets through', () => {
+    for (const speed of [600, 6_000, 60_000, 6e6, 6e12]) {
+      expect(shoot(true, speed, 'segment')).toBe(false);
+      expect(shoot(true, speed, 'circle')).toBe(false);
+    }
+  });
+
+  it('random fast shots never cross a closed ring of segments', () => {
+    fc.assert(
+      fc.property(
+        fc.double({ min: 0, max: 2 * Math.PI, noNaN: true }),
+        fc.double({ min: 1e3, max: 1e7, noNaN: true }),
+        fc.constantFrom(0, 0.5, 1),
+        (angle, speed, restitution) => {
+          const world = new World({ restitution, bounds: { width: 400, height: 400 } });
+          const sides = 7;
+          for (let k = 0; k < sides; k++) {
+            const a = (2 * Math.PI * k) / sides;
+            const b = (2 * Math.PI * (k + 1)) / sides;
+            world.createSegment({ x1: 200 + 100 * Math.cos(a), y1: 200 + 100 * Math.sin(a), x2: 200 + 100 * Math.cos(b), y2: 200 + 100 * Math.sin(b), thickness: 1 });
+          }
+          const ball = world.createCircle({ x: 200, y: 200, vx: speed * Math.cos(angle), vy: speed * Math.sin(angle), radius: 4 });
+          for (let s = 0; s < 10; s++) {
+            world.step(1 / 60);
+            const c = world.getCircle(ball);
+            expect(Math.hypot(c.x - 200, c.y - 200)).toBeLessThan(100);
+          }
+        },
+      ),
+      { numRuns: 100, seed: 11 },
+    );
+  });
+});
