@@ -1,0 +1,157 @@
+import { Controls } from './controls.js';
+import { download, toCsv, toJson } from './data-export.js';
+import { attachPointer } from './interaction.js';
+import { MonitorPanel } from './monitor/panel.js';
+import { Canvas2DRenderer } from './render/canvas2d.js';
+import { Overlay } from './render/overlay.js';
+import type { Renderer } from './render/renderer.js';
+import { WebGLRenderer } from './render/webgl.js';
+import { NAIVE_LIMIT, parseSettings, serializeSettings, usableBroadphase, type RendererName, type Settings } from './settings.js';
+import { DT, Simulation } from './simulation.js';
+import { ViewTransform } from './view.js';
+
+function byId<T extends HTMLElement>(id: string): T {
+  const el = document.getElementById(id);
+  if (!el) throw new Error(`sandbox page is missing #${id}`);
+  return el as T;
+}
+
+const stage = byId<HTMLDivElement>('stage');
+const canvas2d = byId<HTMLCanvasElement>('canvas-2d');
+const canvasGl = byId<HTMLCanvasElement>('canvas-webgl');
+const overlay = new Overlay(byId<HTMLCanvasElement>('overlay'));
+const notice = byId<HTMLParagraphElement>('notice');
+const pauseButton = byId<HTMLButtonElement>('pause');
+
+const sim = new Simulation();
+const view = new ViewTransform();
+const monitor = new MonitorPanel(sim.recorder);
+const renderers: Partial<Record<RendererName, Renderer>> = { canvas: new Canvas2DRenderer(canvas2d) };
+let renderer: Renderer = renderers.canvas as Renderer;
+
+let settings: Settings = parseSettings(location.search);
+// A scene change waits for the next frame, so dragging a slider rebuilds once per frame at most.
+let pendingScene: Settings | null = null;
+let forceStats = true;
+
+const controls = new Controls(settings, {
+  scene(next) {
+    pendingScene = next;
+  },
+  live(next) {
+    applyLive(next);
+  },
+});
+
+function say(message: string): void {
+  notice.textContent = message;
+}
+
+function engineFor(s: Settings): Settings {
+  const broadphase = usableBroadphase(s.broadphase, s.n);
+  if (broadphase !== s.broadphase) say(`The naive broad-phase is offered up to ${NAIVE_LIMIT.toLocaleString('en-US')} bodies; using maxgrid.`);
+  return { ...s, broadphase };
+}
+
+function rebuild(next: Settings): void {
+  settings = engineFor(next);
+  sim.rebuild(settings);
+  controls.show(settings);
+  saveUrl();
+  forceStats = true;
+}
+
+function applyLive(next: Settings): void {
+  say('');
+  settings = engineFor({ ...next, n: settings.n });
+  sim.setBroadphase(settings.broadphase);
+  sim.setIntegrator(settings.integrator);
+  settings.renderer = selectRenderer(settings.renderer);
+  controls.show(settings);
+  saveUrl();
+}
+
+/** Switches the visible canvas; WebGL is created on first use and falls back to canvas 2D. */
+function selectRenderer(name: RendererName): RendererName {
+  if (name === 'webgl' && !renderers.webgl) {
+    try {
+      renderers.webgl = new WebGLRenderer(canvasGl);
+    } catch (error) {
+      controls.disableRenderer('webgl', String(error));
+      say(`WebGL is not available here (${String(error)}); drawing with canvas 2D.`);
+      name = 'canvas';
+    }
+  }
+  renderer = renderers[name] as Renderer;
+  canvas2d.hidden = name !== 'canvas';
+  canvasGl.hidden = name !== 'webgl';
+  view.width = 0; // Forces the new canvas to be sized on the next frame.
+  return name;
+}
+
+function saveUrl(): void {
+  history.replaceState(null, '', serializeSettings(settings) + location.hash);
+}
+
+function resize(): void {
+  const box = sim.box;
+  const dpr = Math.min(window.devicePixelRatio || 1, 2);
+  if (!view.fit(stage.clientWidth, stage.clientHeight, dpr, box.width, box.height)) return;
+  for (const c of [renderer.canvas, overlay.canvas]) {
+    c.width = view.width;
+    c.height = view.height;
+  }
+}
+
+// Buttons and clicks refresh the numbers at once, so what is on screen matches what was done.
+function refreshStats(): void {
+  monitor.update(performance.now(), sim.world, sim.time, true);
+}
+
+pauseButton.addEventListener('click', () => {
+  sim.paused = !sim.paused;
+  pauseButton.setAttribute('aria-pressed', String(sim.paused));
+  refreshStats();
+});
+byId('step').addEventListener('click', () => {
+  sim.stepOnce();
+  refreshStats();
+});
+byId('reset').addEventListener('click', () => {
+  rebuild(controls.settings);
+  refreshStats();
+});
+byId('download').addEventListener('click', () => {
+  const format = byId<HTMLSelectElement>('format').value;
+  const base = `maxgrid-seed-box-n${settings.n}-seed${settings.seed}`;
+  const world = sim.world;
+  if (format === 'json') download(`${base}.json`, 'application/json', toJson(sim.recorder, settings, DT, world.broadphase, world.integrator));
+  else download(`${base}.csv`, 'text/csv', toCsv(sim.recorder));
+});
+attachPointer(overlay.canvas, sim, view, () => settings.size, refreshStats);
+
+rebuild(settings);
+settings.renderer = selectRenderer(settings.renderer);
+controls.show(settings);
+saveUrl();
+
+let last = performance.now();
+function frame(now: number): void {
+  requestAnimationFrame(frame);
+  // A hidden tab or a debugger pause can make one frame seconds long; the simulation caps it too.
+  const elapsed = Math.min(Math.max(0, (now - last) / 1000), 0.25);
+  last = now;
+  if (elapsed > 0) monitor.fps.push(1 / elapsed);
+  if (pendingScene) {
+    const next = pendingScene;
+    pendingScene = null;
+    rebuild(next);
+  }
+  sim.advance(elapsed);
+  resize();
+  renderer.draw(sim.world.views(), sim.colors, view, sim.box);
+  overlay.draw(sim.world, view, { grid: settings.grid, aabb: settings.aabb, held: sim.dragging });
+  monitor.update(now, sim.world, sim.time, forceStats);
+  forceStats = false;
+}
+requestAnimationFrame(frame);

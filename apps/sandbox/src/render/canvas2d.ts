@@ -1,0 +1,53 @@
+import { BodyTypeCode, type BodyViews } from '@maxgrid/engine';
+import { PALETTE_SIZE, type BodyColors } from '../colors.js';
+import type { ViewTransform } from '../view.js';
+import { BACKGROUND, BOX_FILL, type Renderer } from './renderer.js';
+
+const TAU = 2 * Math.PI;
+
+/**
+ * The report's renderer (5.5): canvas 2D arcs. Bodies are filled one palette colour at a time, so
+ * a frame costs PALETTE_SIZE fill calls rather than one per circle; circles under a pixel wide
+ * become squares, which look the same and skip the arc tessellation.
+ */
+export class Canvas2DRenderer implements Renderer {
+  private readonly ctx: CanvasRenderingContext2D;
+
+  constructor(readonly canvas: HTMLCanvasElement) {
+    const ctx = canvas.getContext('2d', { alpha: false });
+    if (!ctx) throw new Error('this browser gives no canvas 2D context');
+    this.ctx = ctx;
+  }
+
+  draw(v: BodyViews, colors: BodyColors, view: ViewTransform, box: { width: number; height: number }): void {
+    const ctx = this.ctx;
+    ctx.setTransform(1, 0, 0, 1, 0, 0);
+    ctx.fillStyle = BACKGROUND;
+    ctx.fillRect(0, 0, view.width, view.height);
+    ctx.setTransform(view.scale, 0, 0, view.scale, view.offsetX, view.offsetY);
+    ctx.fillStyle = BOX_FILL;
+    ctx.fillRect(0, 0, box.width, box.height);
+
+    const { x, y, radius, type, slotCount } = v;
+    const { order, start } = colors;
+    const tiny = 0.75 / view.scale;
+    for (let p = 0; p < PALETTE_SIZE; p++) {
+      const end = start[p + 1];
+      if (end === start[p]) continue;
+      ctx.beginPath();
+      for (let k = start[p]; k < end; k++) {
+        const s = order[k];
+        if (s >= slotCount || type[s] === BodyTypeCode.free) continue;
+        const r = radius[s];
+        if (r < tiny) {
+          ctx.rect(x[s] - tiny, y[s] - tiny, 2 * tiny, 2 * tiny);
+        } else {
+          ctx.moveTo(x[s] + r, y[s]);
+          ctx.arc(x[s], y[s], r, 0, TAU);
+        }
+      }
+      ctx.fillStyle = colors.css[p];
+      ctx.fill();
+    }
+  }
+}

@@ -1,0 +1,182 @@
+import { World, BodyTypeCode, type BroadPhaseName, type IntegratorName } from '@maxgrid/engine';
+import { buildScene, buildWorld } from '@maxgrid/scenes';
+import { sceneParams, type Settings } from './settings.js';
+import { BodyColors } from './colors.js';
+import { Recorder } from './monitor/recorder.js';
+
+/** The fixed physics step: rendering runs at whatever rate the display gives. */
+export const DT = 1 / 60;
+/** At most this many steps per frame, so one slow frame cannot make the next one slower still. */
+const MAX_STEPS_PER_FRAME = 4;
+/** ...and no more catching up once a frame has spent this long stepping. */
+const STEP_BUDGET_MS = 40;
+
+/**
+ * The world plus everything that runs it: the fixed-step accumulator, the recorded series and the
+ * pointer drag. A rebuild replaces the world; switching broad-phase or integrator does not.
+ */
+export class Simulation {
+  world!: World;
+  readonly colors = new BodyColors();
+  readonly recorder = new Recorder();
+  time = 0;
+  paused = false;
+  /** Steps dropped because a frame ran out of budget: shown so a slowed-down run is visible. */
+  droppedSteps = 0;
+  private accumulator = 0;
+  /** Total mass of dynamic bodies: moves the potential energy's zero to the floor (see below). */
+  private dynamicMass = 0;
+  private boxWidth = 1600;
+  private boxHeight = 900;
+  private dragHandle = -1;
+  private dragX = 0;
+  private dragY = 0;
+
+  constructor(private readonly now: () => number = () => performance.now()) {}
+
+  get box(): { width: number; height: number } {
+    return { width: this.boxWidth, height: this.boxHeight };
+  }
+
+  /** Rebuilds the seed-box scene from the settings: the same settings always give the same bodies. */
+  rebuild(settings: Settings): void {
+    const scene = buildScene('seed-box', sceneParams(settings));
+    this.world = buildWorld(scene, { broadphase: settings.broadphase, integrator: settings.integrator });
+    this.boxWidth = scene.bounds.width;
+    this.boxHeight = scene.bounds.height;
+    this.colors.reset(settings.seed, this.world.views().slotCount);
+    this.dynamicMass = 0;
+    for (let k = 0; k < scene.count; k++) this.dynamicMass += this.world.getCircle(k).mass;
+    this.recorder.clear();
+    this.time = 0;
+    this.accumulator = 0;
+    this.droppedSteps = 0;
+    this.dragHandle = -1;
+  }
+
+  setBroadphase(name: BroadPhaseName): void {
+    this.world.setBroadphase(name);
+  }
+
+  setIntegrator(name: IntegratorName): void {
+    this.world.setIntegrator(name);
+  }
+
+  /** Advances by the real time elapsed since the last frame, in whole fixed steps. */
+  advance(elapsedSeconds: number): number {
+    if (this.paused) return 0;
+    this.accumulator += elapsedSeconds;
+    const start = this.now();
+    let steps = 0;
+    while (this.accumulator >= DT) {
+      if (steps >= MAX_STEPS_PER_FRAME || this.now() - start > STEP_BUDGET_MS) {
+        // Behind real time: drop the backlog and run slow rather than spiral.
+        this.droppedSteps += Math.floor(this.accumulator / DT);
+        this.accumulator = 0;
+        break;
+      }
+      this.stepOnce();
+      this.accumulator -= DT;
+      steps++;
+    }
+    return steps;
+  }
+
+  stepOnce(): void {
+    const world = this.world;
+    this.applyDrag();
+    world.step(DT);
+    this.time += DT;
+    const stats = world.stats;
+    this.recorder.record(this.time, stats.totalMs, world.kineticEnergy(), this.potentialEnergy(), stats.candidatePairs, stats.contacts);
+  }
+
+  /**
+   * The report's E_P = m g h with h the height above the floor the bodies fall towards. The engine
+   * measures from y = 0 (the top of the box), which gives large negative numbers that swamp the
+   * kinetic energy on a graph; the difference is a constant, g H times the dynamic mass.
+   */
+  potentialEnergy(): number {
+    const g = this.world.gravity.y;
+    return this.world.potentialEnergy() + (g > 0 ? g * this.boxHeight * this.dynamicMass : 0);
+  }
+
+  /** The handle of the topmost body under a world point, or -1. Scans every body: per click only. */
+  bodyAt(x: number, y: number): number {
+    const v = this.world.views();
+    let found = -1;
+    for (let s = 0; s < v.slotCount; s++) {
+      if (v.type[s] === BodyTypeCode.free) continue;
+      const dx = v.x[s] - x;
+      const dy = v.y[s] - y;
+      const r = Math.max(v.radius[s], 3);
+      if (dx * dx + dy * dy <= r * r) found = s;
+    }
+    return found < 0 ? -1 : this.world.handleAtSlot(found);
+  }
+
+  /**
+   * Holds a body at the pointer. It becomes kinematic while held, so it pushes others without being
+   * pushed back or pulled by gravity, and is thrown with the pointer's velocity when released.
+   */
+  beginDrag(handle: number, x: number, y: number): void {
+    this.dragHandle = handle;
+    this.dynamicMass -= this.world.getCircle(handle).mass;
+    this.world.setType(handle, 'kinematic');
+    this.dragX = x;
+    this.dragY = y;
+  }
+
+  moveDrag(x: number, y: number): void {
+    this.dragX = x;
+    this.dragY = y;
+    // While paused nothing steps, so move the body now for the user to see it follow.
+    if (this.paused && this.dragHandle >= 0) this.placeDragged(x, y);
+  }
+
+  endDrag(): void {
+    const h = this.dragHandle;
+    this.dragHandle = -1;
+    if (h < 0 || !this.world.hasBody(h)) return;
+    const c = this.world.getCircle(h);
+    this.world.setType(h, 'dynamic');
+    this.dynamicMass += c.mass;
+    this.world.setVelocity(h, c.vx, c.vy);
+  }
+
+  get dragging(): number {
+    return this.dragHandle;
+  }
+
+  /** Adds a circle of the current mean size at a world point, clamped into the box. */
+  spawn(x: number, y: number, radius: number): number {
+    const r = Math.min(radius, this.boxWidth / 2, this.boxHeight / 2);
+    const cx = Math.min(this.boxWidth - r, Math.max(r, x));
+    const cy = Math.min(this.boxHeight - r, Math.max(r, y));
+    const handle = this.world.createCircle({ x: cx, y: cy, radius: r });
+    this.dynamicMass += this.world.getCircle(handle).mass;
+    this.colors.ensure(this.world.views().slotCount);
+    return handle;
+  }
+
+  // The held body is steered by velocity, not teleported: the step then carries it exactly onto
+  // the pointer, and the solver sees a real velocity for the bodies it pushes.
+  private applyDrag(): void {
+    const h = this.dragHandle;
+    if (h < 0) return;
+    if (!this.world.hasBody(h)) {
+      this.dragHandle = -1;
+      return;
+    }
+    const c = this.world.getCircle(h);
+    const x = Math.min(this.boxWidth - c.radius, Math.max(c.radius, this.dragX));
+    const y = Math.min(this.boxHeight - c.radius, Math.max(c.radius, this.dragY));
+    this.world.setVelocity(h, (x - c.x) / DT, (y - c.y) / DT);
+  }
+
+  private placeDragged(px: number, py: number): void {
+    const h = this.dragHandle;
+    const r = this.world.getCircle(h).radius;
+    this.world.setPosition(h, Math.min(this.boxWidth - r, Math.max(r, px)), Math.min(this.boxHeight - r, Math.max(r, py)));
+  }
+}
