@@ -117,7 +117,7 @@ static void broadphase(void) {
   if (cells + 2 > cell_cap) { cell_cap = 2 * (cells + 2); cell_start = realloc(cell_start, cell_cap * sizeof *cell_start); }
   memset(cell_start, 0, (cells + 2) * sizeof *cell_start);
   for (int i = 0; i < n; i++) {
-    int c = (int)floor((y[i] - miny) * inv) * columns + (int)floor((x[i] - minx) * inv);
+    int c = (int)((y[i] - miny) * inv) * columns + (int)((x[i] - minx) * inv);
     live_cell[i] = c;
     cell_start[c + 1]++;
   }
@@ -130,8 +130,10 @@ static void broadphase(void) {
   for (int c = 0; c <= cells; c++) cell_start[c] = cell_start[c + 1];
   cell_start[cells] = n; cell_start[cells + 1] = n;
   double pad = reach * COORD_PAD;
-  for (int k = 0; k < n; k++) {
-    int c = sorted_cell[k], row = c / columns, column = c - row * columns, a = sorted_slot[k];
+  for (int row = 0, k = 0; row < rows; row++) {
+   int row_start = row * columns, row_end = cell_start[row_start + columns];
+   for (; k < row_end; k++) {
+    int c = sorted_cell[k], column = c - row_start, a = sorted_slot[k];
     double ax = sx[k], ay = sy[k], ar = sr[k] + pad;
     int end = column + 1 < columns ? cell_start[c + 2] : cell_start[c + 1];
     for (int m = k + 1; m < end; m++) {
@@ -146,6 +148,7 @@ static void broadphase(void) {
         if (dx <= rr && dx >= -rr && dy <= rr && dy >= -rr) candidate(a, sorted_slot[m]);
       }
     }
+   }
   }
 }
 
@@ -156,11 +159,33 @@ static void counting_pass(const int32_t *key, const int32_t *slo, const int32_t 
   for (int k = 0; k < ncontacts; k++) { int at = counts[key[k]]++; dlo[at] = slo[k]; dhi[at] = shi[k]; }
 }
 
-static void solve(void) {
-  if (ncontacts >= 2) {
-    counting_pass(chi, clo, chi, tlo, thi);
-    counting_pass(tlo, tlo, thi, clo, chi);
+static void radix_pass(const int32_t *key, int shift, const int32_t *slo, const int32_t *shi, int32_t *dlo, int32_t *dhi) {
+  int32_t buckets[256] = {0};
+  for (int k = 0; k < ncontacts; k++) buckets[(key[k] >> shift) & 255]++;
+  for (int b = 0, sum = 0; b < 256; b++) { int c = buckets[b]; buckets[b] = sum; sum += c; }
+  for (int k = 0; k < ncontacts; k++) { int at = buckets[(key[k] >> shift) & 255]++; dlo[at] = slo[k]; dhi[at] = shi[k]; }
+}
+
+/* Same choice as contact-buffer.ts: radix over the contacts when few, counting by slot when many. */
+static void sort_contacts(void) {
+  if (ncontacts < 2) return;
+  if ((long)ncontacts * 8 < n) {
+    int bytes = 1;
+    while (bytes < 4 && n > (1L << (8 * bytes))) bytes++;
+    int32_t *slo = clo, *shi = chi, *dlo = tlo, *dhi = thi;
+    for (int pass = 0; pass < 2 * bytes; pass++) {
+      int key_is_hi = pass < bytes, shift = 8 * (key_is_hi ? pass : pass - bytes);
+      radix_pass(key_is_hi ? shi : slo, shift, slo, shi, dlo, dhi);
+      int32_t *t = slo; slo = dlo; dlo = t; t = shi; shi = dhi; dhi = t;
+    }
+    return;
   }
+  counting_pass(chi, clo, chi, tlo, thi);
+  counting_pass(tlo, tlo, thi, clo, chi);
+}
+
+static void solve(void) {
+  sort_contacts();
   for (int k = 0; k < ncontacts; k++) {
     int i = clo[k], j = chi[k];
     double dx = x[j] - x[i], dy = y[j] - y[i], reach = rad[i] + rad[j], d2 = dx * dx + dy * dy;

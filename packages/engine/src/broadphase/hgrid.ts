@@ -88,12 +88,12 @@ export class HierarchicalGridBroadPhase implements BroadPhase {
       this.levelSlots = new Int32Array(capacity);
     }
     const { radius } = bodies;
-    const { slots, minRadius } = this.live;
+    const { slots, minRadius, dense } = this.live;
     const { levelOf, levelStart } = this;
     levelStart.fill(0);
     let levels = 1;
     for (let k = 0; k < n; k++) {
-      const r = radius[slots[k]];
+      const r = radius[dense ? k : slots[k]];
       let level = 0;
       let limit = minRadius;
       while (limit < r && level < MAX_LEVELS - 1) {
@@ -106,7 +106,7 @@ export class HierarchicalGridBroadPhase implements BroadPhase {
     }
     for (let level = 0; level < MAX_LEVELS; level++) levelStart[level + 1] += levelStart[level];
     // Scatter from the back, decrementing each level's end: slots stay ascending within a level.
-    for (let k = n - 1; k >= 0; k--) this.levelSlots[--levelStart[levelOf[k] + 1]] = slots[k];
+    for (let k = n - 1; k >= 0; k--) this.levelSlots[--levelStart[levelOf[k] + 1]] = dense ? k : slots[k];
     for (let level = 0; level < MAX_LEVELS; level++) levelStart[level] = levelStart[level + 1];
     levelStart[MAX_LEVELS] = n;
     return levels;

@@ -7,6 +7,7 @@ import { COORD_PAD } from './fat-bounds.js';
  * their smallest and largest radius. Grids are laid over this extent, so they need no world box.
  */
 export class LiveExtent {
+  /** Live slots in ascending order; filled only when the slots have holes (see `dense`). */
   slots = new Int32Array(0);
   count = 0;
   minX = 0;
@@ -18,37 +19,47 @@ export class LiveExtent {
   /** Absolute padding for boxes far from the origin (see fat-bounds.ts). */
   coordPad = 0;
 
+  /** True when every slot below slotCount is live: then slot k is live body k, and `slots` is unused. */
+  dense = false;
+
   measure(bodies: BodyStore): void {
-    if (this.slots.length < bodies.liveCount) this.slots = new Int32Array(Math.max(bodies.liveCount, 2 * this.slots.length));
-    const { x, y, radius, type, slotCount } = bodies;
-    const slots = this.slots;
+    const { x, y, type, slotCount, liveCount } = bodies;
     let minX = Infinity;
     let minY = Infinity;
     let maxX = -Infinity;
     let maxY = -Infinity;
-    let minR = Infinity;
-    let maxR = 0;
-    let n = 0;
-    for (let i = 0; i < slotCount; i++) {
-      if (type[i] === TypeCode.free) continue;
-      const px = x[i];
-      const py = y[i];
-      const r = radius[i];
-      if (px < minX) minX = px;
-      if (px > maxX) maxX = px;
-      if (py < minY) minY = py;
-      if (py > maxY) maxY = py;
-      if (r < minR) minR = r;
-      if (r > maxR) maxR = r;
-      slots[n++] = i;
+    this.dense = liveCount === slotCount;
+    if (this.dense) {
+      for (let i = 0; i < slotCount; i++) {
+        const px = x[i];
+        const py = y[i];
+        if (px < minX) minX = px;
+        if (px > maxX) maxX = px;
+        if (py < minY) minY = py;
+        if (py > maxY) maxY = py;
+      }
+    } else {
+      if (this.slots.length < liveCount) this.slots = new Int32Array(Math.max(liveCount, 2 * this.slots.length));
+      const slots = this.slots;
+      let n = 0;
+      for (let i = 0; i < slotCount; i++) {
+        if (type[i] === TypeCode.free) continue;
+        const px = x[i];
+        const py = y[i];
+        if (px < minX) minX = px;
+        if (px > maxX) maxX = px;
+        if (py < minY) minY = py;
+        if (py > maxY) maxY = py;
+        slots[n++] = i;
+      }
     }
-    this.count = n;
+    this.count = liveCount;
     this.minX = minX;
     this.minY = minY;
     this.maxX = maxX;
     this.maxY = maxY;
-    this.minRadius = minR;
-    this.maxRadius = maxR;
+    this.minRadius = bodies.minRadius();
+    this.maxRadius = bodies.maxRadius();
     this.coordPad = Math.max(Math.abs(minX), Math.abs(maxX), Math.abs(minY), Math.abs(maxY)) * COORD_PAD;
   }
 

@@ -39,7 +39,7 @@ export class MaxGridBroadPhase implements BroadPhase {
     live.measure(bodies);
     if (live.count < 2) return 0;
     const cellSize = 2 * live.maxRadius * (1 + RADIUS_PAD) + live.coordPad;
-    this.grid.build(bodies, live.slots, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
+    this.grid.build(bodies, live.dense ? null : live.slots, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
     return this.grid.scanSelf(out, live.coordPad);
   }
 

@@ -169,7 +169,7 @@ export class Queries {
       live.measure(bodies);
       if (live.count > 0) {
         const cellSize = 2 * live.maxRadius * (1 + RADIUS_PAD) + live.coordPad;
-        this.grid.build(bodies, live.slots, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
+        this.grid.build(bodies, live.dense ? null : live.slots, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
         if (this.stamp.length < live.count) this.stamp = new Uint32Array(Math.max(live.count, 2 * this.stamp.length));
       }
       this.builtVersion = version;

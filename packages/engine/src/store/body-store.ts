@@ -206,20 +206,34 @@ export class BodyStore {
 
   /** Largest over smallest radius of live bodies (1 when empty): how mixed the sizes are. */
   radiusSpread(): number {
-    if (this.radiusRangeStale) {
-      let max = 0;
-      let min = Infinity;
-      const { radius, type } = this;
-      for (let i = 0; i < this.slotCount; i++) {
-        if (type[i] === TypeCode.free) continue;
-        if (radius[i] > max) max = radius[i];
-        if (radius[i] < min) min = radius[i];
-      }
-      this.cachedMaxRadius = max;
-      this.cachedMinRadius = min;
-      this.radiusRangeStale = false;
-    }
+    this.refreshRadiusRange();
     return this.liveCount === 0 ? 1 : this.cachedMaxRadius / this.cachedMinRadius;
+  }
+
+  minRadius(): number {
+    this.refreshRadiusRange();
+    return this.cachedMinRadius;
+  }
+
+  maxRadius(): number {
+    this.refreshRadiusRange();
+    return this.cachedMaxRadius;
+  }
+
+  /** Radii never change while a body lives, so only removals can make the cached range stale. */
+  private refreshRadiusRange(): void {
+    if (!this.radiusRangeStale) return;
+    let max = 0;
+    let min = Infinity;
+    const { radius, type } = this;
+    for (let i = 0; i < this.slotCount; i++) {
+      if (type[i] === TypeCode.free) continue;
+      if (radius[i] > max) max = radius[i];
+      if (radius[i] < min) min = radius[i];
+    }
+    this.cachedMaxRadius = max;
+    this.cachedMinRadius = min;
+    this.radiusRangeStale = false;
   }
 
   memoryBytes(): number {

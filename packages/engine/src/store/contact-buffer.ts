@@ -3,10 +3,13 @@ import { grownCapacity, growInt32 } from '../util/grow.js';
 /**
  * Touching pairs found by the narrow-phase, as (lo, hi) slots with lo < hi.
  *
- * `sortCanonical` puts them in ascending (lo, hi) order with two stable counting-sort passes
- * (by hi, then by lo). The solver resolves contacts sequentially, so this order is what makes a
- * step's result independent of the broad-phase that found the pairs. It costs O(slots + contacts)
- * and allocates nothing once the scratch has grown.
+ * `sortCanonical` puts them in ascending (lo, hi) order. The solver resolves contacts
+ * sequentially, so this order is what makes a step's result independent of the broad-phase that
+ * found the pairs. Pairs are unique, so any correct sort gives the same order; which one runs is a
+ * matter of cost. With many contacts per slot, two stable counting passes keyed by slot (by hi,
+ * then by lo): O(slots + contacts). With few, as in sparse elastic scenes, byte-wise LSD radix
+ * passes over the contacts alone: O(contacts x bytes), independent of the world's size.
+ * Nothing is allocated once the scratch has grown.
  */
 export class ContactBuffer {
   lo = new Int32Array(64);
@@ -16,6 +19,7 @@ export class ContactBuffer {
   private scratchLo = new Int32Array(64);
   private scratchHi = new Int32Array(64);
   private counts = new Int32Array(64);
+  private readonly buckets = new Int32Array(256);
 
   clear(): void {
     this.count = 0;
@@ -39,9 +43,52 @@ export class ContactBuffer {
       this.scratchLo = new Int32Array(this.lo.length);
       this.scratchHi = new Int32Array(this.lo.length);
     }
+    if (this.count * 8 < slotCount) {
+      this.radixSort(slotCount);
+      return;
+    }
     // Pass 1 by hi into scratch, pass 2 by lo back into the live arrays: LSD order gives (lo, hi).
     this.countingPass(this.hi, this.lo, this.hi, this.scratchLo, this.scratchHi, slotCount);
     this.countingPass(this.scratchLo, this.scratchLo, this.scratchHi, this.lo, this.hi, slotCount);
+  }
+
+  /** LSD radix by bytes: hi's bytes, then lo's, least significant first; ends in the live arrays. */
+  private radixSort(slotCount: number): void {
+    let bytes = 1;
+    while (bytes < 4 && slotCount > 2 ** (8 * bytes)) bytes++;
+    let srcLo = this.lo;
+    let srcHi = this.hi;
+    let dstLo = this.scratchLo;
+    let dstHi = this.scratchHi;
+    for (let pass = 0; pass < 2 * bytes; pass++) {
+      const keyIsHi = pass < bytes;
+      const shift = 8 * (keyIsHi ? pass : pass - bytes);
+      this.radixPass(keyIsHi ? srcHi : srcLo, shift, srcLo, srcHi, dstLo, dstHi);
+      const tl = srcLo;
+      srcLo = dstLo;
+      dstLo = tl;
+      const th = srcHi;
+      srcHi = dstHi;
+      dstHi = th;
+    }
+    // An even number of passes always ends back in the live arrays.
+  }
+
+  private radixPass(key: Int32Array, shift: number, srcLo: Int32Array, srcHi: Int32Array, dstLo: Int32Array, dstHi: Int32Array): void {
+    const buckets = this.buckets;
+    const n = this.count;
+    buckets.fill(0);
+    for (let k = 0; k < n; k++) buckets[(key[k] >>> shift) & 255]++;
+    for (let b = 0, sum = 0; b < 256; b++) {
+      const c = buckets[b];
+      buckets[b] = sum;
+      sum += c;
+    }
+    for (let k = 0; k < n; k++) {
+      const at = buckets[(key[k] >>> shift) & 255]++;
+      dstLo[at] = srcLo[k];
+      dstHi[at] = srcHi[k];
+    }
   }
 
   private countingPass(
