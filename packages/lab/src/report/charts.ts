@@ -26,7 +26,12 @@ export interface LineChartInput {
   bands?: { name: string; low: [number, number][]; high: [number, number][] }[];
 }
 
-const PALETTE = ['#d62728', '#ff7f0e', '#bcbd22', '#8c564b', '#1f77b4', '#2ca02c', '#9467bd', '#17becf', '#e377c2', '#7f7f7f'];
+// Distinct colours for up to 16 engines (maxgrid per broad-phase plus five peers), so no two
+// series in one chart share a colour.
+const PALETTE = [
+  '#e6194b', '#f58231', '#bfa300', '#9a6324', '#3cb44b', '#008080', '#4363d8', '#911eb4',
+  '#f032e6', '#42d4f4', '#800000', '#000075', '#808000', '#a9a9a9', '#469990', '#dcbeff',
+];
 
 export function lineChart(input: LineChartInput): ChartSpec {
   const series: object[] = input.series.map((s, i) => ({
