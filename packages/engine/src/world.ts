@@ -59,6 +59,7 @@ export class World {
   constructor(options: WorldOptions = {}) {
     const resolved = resolveWorldOptions(options);
     this.bounds = resolved.bounds;
+    this.bodies.box = resolved.bounds;
     this.defaultRestitution = resolved.restitution;
     const events = resolved.contactEvents || resolved.hitEventThreshold < Infinity ? new ContactEvents() : null;
     this.pipeline = new StepPipeline(

@@ -75,9 +75,9 @@ static void fold(double *pp, double *vp, double lo, double hi, double e) {
 
 static void walls(void) {
   for (int i = 0; i < n; i++) {
-    double r = rad[i], e = rest[i] > wall_e ? rest[i] : wall_e;
-    if (x[i] < r || x[i] > width - r) fold(&x[i], &vx[i], r, width - r, e);
-    if (y[i] < r || y[i] > height - r) fold(&y[i], &vy[i], r, height - r, e);
+    double r = rad[i];
+    if (x[i] < r || x[i] > width - r) fold(&x[i], &vx[i], r, width - r, rest[i] > wall_e ? rest[i] : wall_e);
+    if (y[i] < r || y[i] > height - r) fold(&y[i], &vy[i], r, height - r, rest[i] > wall_e ? rest[i] : wall_e);
   }
 }
 
@@ -98,13 +98,8 @@ static inline void candidate(int i, int j) {
 }
 
 static void broadphase(void) {
-  double minx = INFINITY, miny = INFINITY, maxx = -INFINITY, maxy = -INFINITY;
-  for (int i = 0; i < n; i++) {
-    if (x[i] < minx) minx = x[i];
-    if (x[i] > maxx) maxx = x[i];
-    if (y[i] < miny) miny = y[i];
-    if (y[i] > maxy) maxy = y[i];
-  }
+  /* Like the engine in a boxed world: after the walls every centre is inside the box. */
+  double minx = 0, miny = 0, maxx = width, maxy = height;
   double reach = fmax(fmax(fabs(minx), fabs(maxx)), fmax(fabs(miny), fabs(maxy)));
   double cs = 2 * max_radius * (1 + RADIUS_PAD) + reach * COORD_PAD;
   double inv = 1 / cs;
@@ -119,15 +114,14 @@ static void broadphase(void) {
   for (int i = 0; i < n; i++) {
     int c = (int)((y[i] - miny) * inv) * columns + (int)((x[i] - minx) * inv);
     live_cell[i] = c;
-    cell_start[c + 1]++;
+    cell_start[c]++;
   }
-  for (int c = 0; c <= cells; c++) cell_start[c + 1] += cell_start[c];
+  for (int c = 1; c < cells; c++) cell_start[c] += cell_start[c - 1];
   for (int k = n - 1; k >= 0; k--) {
-    int c = live_cell[k], at = --cell_start[c + 1];
+    int c = live_cell[k], at = --cell_start[c];
     sorted_slot[at] = k; sorted_cell[at] = c;
     sx[at] = x[k]; sy[at] = y[k]; sr[at] = rad[k] * (1 + RADIUS_PAD);
   }
-  for (int c = 0; c <= cells; c++) cell_start[c] = cell_start[c + 1];
   cell_start[cells] = n; cell_start[cells + 1] = n;
   double pad = reach * COORD_PAD;
   for (int row = 0, k = 0; row < rows; row++) {

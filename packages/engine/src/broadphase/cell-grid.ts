@@ -75,13 +75,14 @@ export class CellGrid {
       const i = slots === null ? k : slots[k];
       const c = ((y[i] - minY) * inv | 0) * columns + ((x[i] - minX) * inv | 0);
       binOf[k] = c;
-      cellStart[c + 1]++;
+      cellStart[c]++;
     }
-    for (let c = 0; c <= cells; c++) cellStart[c + 1] += cellStart[c];
-    // Scatter from the back so that, counting down from each cell's end, slots stay ascending.
+    // Inclusive prefix sums make cellStart[c] the end of cell c; scattering from the back with
+    // pre-decrement then leaves it at the start of cell c, with slots ascending inside each cell.
+    for (let c = 1; c < cells; c++) cellStart[c] += cellStart[c - 1];
     for (let k = n - 1; k >= 0; k--) {
       const c = binOf[k];
-      const at = --cellStart[c + 1];
+      const at = --cellStart[c];
       const i = slots === null ? k : slots[k];
       sortedSlot[at] = i;
       sortedCell[at] = c;
@@ -89,8 +90,6 @@ export class CellGrid {
       sortedY[at] = y[i];
       sortedR[at] = radius[i] * (1 + RADIUS_PAD);
     }
-    // The scatter left cellStart[c + 1] at the start of cell c: shift back to [start, end) form.
-    for (let c = 0; c <= cells; c++) cellStart[c] = cellStart[c + 1];
     cellStart[cells] = n;
     cellStart[cells + 1] = n;
   }

@@ -22,6 +22,7 @@ export class LiveExtent {
   /** True when every slot below slotCount is live: then slot k is live body k, and `slots` is unused. */
   dense = false;
 
+  /** Call after the boundary stage, when a boxed world's bodies are all inside its box. */
   measure(bodies: BodyStore): void {
     const { x, y, type, slotCount, liveCount } = bodies;
     let minX = Infinity;
@@ -29,7 +30,13 @@ export class LiveExtent {
     let maxX = -Infinity;
     let maxY = -Infinity;
     this.dense = liveCount === slotCount;
-    if (this.dense) {
+    const box = bodies.box;
+    if (this.dense && box) {
+      minX = 0;
+      minY = 0;
+      maxX = box.width;
+      maxY = box.height;
+    } else if (this.dense) {
       for (let i = 0; i < slotCount; i++) {
         const px = x[i];
         const py = y[i];

@@ -30,15 +30,16 @@ export function bounceOffBox(
     const t = type[i];
     if (t !== TypeCode.dynamic && t !== TypeCode.kinematic) continue;
     const r = radius[i];
-    const e = t === TypeCode.dynamic ? mixRestitution(restitution[i], wallRestitution) : 1;
     const px = x[i];
     if (px < r || px > width - r) {
+      const e = t === TypeCode.dynamic ? mixRestitution(restitution[i], wallRestitution) : 1;
       fold(px, vx[i], r, width - r, Math.abs(vx[i]) < restitutionThreshold ? 0 : e);
       x[i] = foldedPosition;
       vx[i] = foldedVelocity;
     }
     const py = y[i];
     if (py < r || py > height - r) {
+      const e = t === TypeCode.dynamic ? mixRestitution(restitution[i], wallRestitution) : 1;
       fold(py, vy[i], r, height - r, Math.abs(vy[i]) < restitutionThreshold ? 0 : e);
       y[i] = foldedPosition;
       vy[i] = foldedVelocity;

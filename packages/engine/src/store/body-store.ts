@@ -75,6 +75,11 @@ export class BodyStore {
   staticCount = 0;
   /** True between applyForce and the next step. */
   forcesPending = false;
+  /**
+   * The world's box, when it has one: from the boundary stage on, every live centre lies inside
+   * it, so grids can be laid over it without measuring the bodies' extent.
+   */
+  box: { width: number; height: number } | null = null;
   /** Bumped whenever the set of live bodies changes, for structures that persist between steps. */
   membershipVersion = 0;
 
