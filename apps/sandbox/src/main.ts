@@ -139,9 +139,10 @@ let last = performance.now();
 function frame(now: number): void {
   requestAnimationFrame(frame);
   // A hidden tab or a debugger pause can make one frame seconds long; the simulation caps it too.
-  const elapsed = Math.min(Math.max(0, (now - last) / 1000), 0.25);
+  const frameSeconds = (now - last) / 1000;
+  const elapsed = Math.min(Math.max(0, frameSeconds), 0.25);
   last = now;
-  if (elapsed > 0) monitor.fps.push(1 / elapsed);
+  if (frameSeconds > 0) monitor.fps.push(1 / frameSeconds);
   if (pendingScene) {
     const next = pendingScene;
     pendingScene = null;

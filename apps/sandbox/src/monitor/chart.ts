@@ -19,7 +19,7 @@ export class LineChart {
     /** Keep zero on the axis (times, rates); energies float. */
     private readonly fromZero = true,
   ) {
-    const ctx = canvas.getContext('2d');
+    const ctx = canvas.getContext('2d', { willReadFrequently: true });
     if (!ctx) throw new Error('this browser gives no canvas 2D context');
     this.ctx = ctx;
   }
@@ -57,7 +57,9 @@ export class LineChart {
     // A short history fills the chart rather than hugging its right edge; a long one scrolls.
     const span = Math.min(this.window, Math.max(count, 120));
     const sx = (w - 2 * pad) / (span - 1);
-    const sy = (h - 2 * pad) / (hi - lo);
+    // Room at the top for the scale label, so the highest line never runs through it.
+    const top = 14 * dpr;
+    const sy = (h - pad - top) / (hi - lo);
 
     ctx.lineWidth = 1.25 * dpr;
     for (const line of this.lines) {

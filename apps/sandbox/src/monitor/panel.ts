@@ -19,6 +19,15 @@ function recentMean(ring: Ring): number {
   return sum / n;
 }
 
+/** Frames per second over the last frames: frames over their total time, not a mean of rates. */
+function recentRate(ring: Ring): number {
+  const n = Math.min(ring.length, MEAN_OVER);
+  if (n === 0) return NaN;
+  let seconds = 0;
+  for (let i = ring.length - n; i < ring.length; i++) seconds += 1 / ring.at(i);
+  return n / seconds;
+}
+
 const integer = (v: number) => v.toLocaleString('en-US');
 
 /**
@@ -72,7 +81,7 @@ export class MonitorPanel {
       o.time.textContent = `${time.toFixed(2)} s`;
       const stepMs = recentMean(this.recorder.series.step_ms);
       o.stepMs.textContent = Number.isFinite(stepMs) ? `${stepMs.toFixed(2)} ms` : '–';
-      const fps = recentMean(this.fps);
+      const fps = recentRate(this.fps);
       o.fps.textContent = Number.isFinite(fps) ? `${fps.toFixed(0)} fps` : '–';
       o.candidates.textContent = integer(st.candidatePairs);
       o.contacts.textContent = integer(st.contacts);

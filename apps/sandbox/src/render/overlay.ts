@@ -18,7 +18,7 @@ export class Overlay {
   private wasEmpty = false;
 
   constructor(readonly canvas: HTMLCanvasElement) {
-    const ctx = canvas.getContext('2d');
+    const ctx = canvas.getContext('2d', { willReadFrequently: true });
     if (!ctx) throw new Error('this browser gives no canvas 2D context');
     this.ctx = ctx;
   }
