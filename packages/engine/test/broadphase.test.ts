@@ -159,14 +159,14 @@ describe('sap-persistent (Tracy, Buss & Woods 2009)', () => {
 
   it('pairs of sleepers are not passed on', async () => {
     const { World } = await import('../src/index.js');
-    const build = (broadphase: 'sap' | 'sap-persistent') => {
+    const build = (broadphase: 'naive' | 'sap-persistent') => {
       const world = new World({ broadphase, sleeping: true, gravity: { x: 0, y: 100 }, bounds: { width: 400, height: 50 }, restitution: 0, sleepTime: 0.1 });
       for (let k = 0; k < 50; k++) world.createCircle({ x: 4 + k * 7.9, y: 46, radius: 4 });
       for (let s = 0; s < 60; s++) world.step(1 / 60);
       return world;
     };
     const persistent = build('sap-persistent');
-    const plain = build('sap');
+    const plain = build('naive');
     expect(persistent.stats.sleepingBodies).toBe(50);
     expect(persistent.stats.candidatePairs).toBe(0);
     expect(plain.stats.candidatePairs).toBeGreaterThan(40);

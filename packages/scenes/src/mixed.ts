@@ -79,9 +79,9 @@ export function mixed(given?: Partial<Record<keyof typeof mixedParams, number>>)
   }
   for (let k = 0; k < p.n; k++) {
     const speed = rng.range(0, p.maxSpeed);
-    const angle = rng.range(0, 2 * Math.PI);
-    scene.vx[k] = speed * Math.cos(angle);
-    scene.vy[k] = speed * Math.sin(angle);
+    const [dx, dy] = rng.direction();
+    scene.vx[k] = speed * dx;
+    scene.vy[k] = speed * dy;
   }
   return scene;
 }

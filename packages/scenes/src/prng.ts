@@ -23,6 +23,44 @@ export class Prng {
     return min + (max - min) * this.next();
   }
 
+  /**
+   * A direction uniform on the circle, as [x, y] with x^2 + y^2 = 1 to round-off. Drawn by
+   * rejection from the unit disc and normalised with Math.sqrt, never with Math.sin/cos: those
+   * round differently across JavaScript engines (Node 20 and Chromium 156 disagree), and a scene
+   * must be the same bits everywhere so that runs can be compared across runtimes.
+   */
+  direction(): [number, number] {
+    for (;;) {
+      const x = 2 * this.next() - 1;
+      const y = 2 * this.next() - 1;
+      const lengthSq = x * x + y * y;
+      if (lengthSq > 1e-12 && lengthSq <= 1) {
+        const length = Math.sqrt(lengthSq);
+        return [x / length, y / length];
+      }
+    }
+  }
+
+  /**
+   * Log-uniform in [min, max): min * (max / min)^u. The power is built from u's first 30 binary
+   * digits and repeated square roots, because Math.pow, like sin and cos, may round differently
+   * from one JavaScript engine to another while Math.sqrt may not.
+   */
+  logRange(min: number, max: number): number {
+    let u = this.next();
+    let factor = 1;
+    let root = max / min;
+    for (let bit = 0; bit < 30; bit++) {
+      root = Math.sqrt(root);
+      u *= 2;
+      if (u >= 1) {
+        factor *= root;
+        u -= 1;
+      }
+    }
+    return min * factor;
+  }
+
   /** `mean` varied by up to +-`noise` of itself, as the report's sliders do (5.8). */
   noisy(mean: number, noise: number): number {
     return mean * (1 + noise * (2 * this.next() - 1));

@@ -35,12 +35,12 @@ export function seedBox(given?: Partial<Record<keyof typeof seedBoxParams, numbe
   for (let k = 0; k < p.n; k++) {
     const r = rng.noisy(p.size, p.sizeNoise);
     const speed = rng.noisy(p.velocity, p.velocityNoise);
-    const angle = rng.range(0, 2 * Math.PI);
+    const [dx, dy] = rng.direction();
     scene.radius[k] = r;
     scene.x[k] = rng.range(r, p.width - r);
     scene.y[k] = rng.range(r, p.height - r);
-    scene.vx[k] = speed * Math.cos(angle);
-    scene.vy[k] = speed * Math.sin(angle);
+    scene.vx[k] = speed * dx;
+    scene.vy[k] = speed * dy;
   }
   return scene;
 }

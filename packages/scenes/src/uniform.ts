@@ -36,7 +36,7 @@ export function uniform(given?: Partial<Record<keyof typeof uniformParams, numbe
   let area = 0;
   for (let k = 0; k < p.n; k++) {
     radius[k] = p.logRadius
-      ? p.minRadius * (p.maxRadius / p.minRadius) ** rng.next()
+      ? rng.logRange(p.minRadius, p.maxRadius)
       : rng.range(p.minRadius, p.maxRadius);
     area += Math.PI * radius[k] * radius[k];
   }
@@ -59,9 +59,9 @@ export function uniform(given?: Partial<Record<keyof typeof uniformParams, numbe
     scene.x[k] = Math.min(side - r, Math.max(r, x));
     scene.y[k] = Math.min(side - r, Math.max(r, y));
     const speed = rng.range(0, p.maxSpeed);
-    const angle = rng.range(0, 2 * Math.PI);
-    scene.vx[k] = speed * Math.cos(angle);
-    scene.vy[k] = speed * Math.sin(angle);
+    const [dx, dy] = rng.direction();
+    scene.vx[k] = speed * dx;
+    scene.vy[k] = speed * dy;
   }
   return scene;
 }

@@ -95,3 +95,28 @@ describe('scenes', () => {
     expect(new Set(xs).size).toBe(1000);
   });
 });
+
+describe('portable randomness', () => {
+  it('directions are unit vectors spread over the whole circle', () => {
+    const rng = new Prng(9);
+    const quadrants = [0, 0, 0, 0];
+    for (let k = 0; k < 4000; k++) {
+      const [x, y] = rng.direction();
+      expect(Math.abs(x * x + y * y - 1)).toBeLessThan(1e-15);
+      quadrants[(x >= 0 ? 0 : 1) + (y >= 0 ? 0 : 2)]++;
+    }
+    for (const q of quadrants) expect(q).toBeGreaterThan(900);
+  });
+
+  it('logRange stays in [min, max) and matches min * (max/min)^u', () => {
+    const a = new Prng(4);
+    const b = new Prng(4);
+    for (let k = 0; k < 1000; k++) {
+      const r = a.logRange(2, 200);
+      expect(r).toBeGreaterThanOrEqual(2);
+      expect(r).toBeLessThan(200);
+      // u is taken to 30 bits: a relative error up to ln(100) 2^-30, about 4e-9.
+      expect(Math.abs(r / (2 * 100 ** b.next()) - 1)).toBeLessThan(1e-8);
+    }
+  });
+});

@@ -1,4 +1,5 @@
 import type { BodyStore } from '../store/body-store.js';
+import type { PairSink } from '../store/pair-sink.js';
 import { TypeCode } from '../store/body-types.js';
 import { sortByKey } from '../util/sort-by-key.js';
 import { grownCapacity } from '../util/grow.js';
@@ -55,4 +56,31 @@ export class AxisSweep {
     this.scratchKeys = new Float64Array(capacity);
     this.scratchSlots = new Int32Array(capacity);
   }
+}
+
+/**
+ * Sweeps intervals sorted by start: pushes each pair whose intervals overlap (closed, so tangent
+ * circles count), skipping pairs of two sleepers when `asleep` is given. Returns pairs examined.
+ */
+export function sweepSorted(
+  low: Float64Array,
+  high: Float64Array,
+  slot: Int32Array,
+  count: number,
+  out: PairSink,
+  asleep: Uint8Array | null,
+): number {
+  let examined = 0;
+  for (let k = 0; k < count; k++) {
+    const end = high[k];
+    const a = slot[k];
+    const aSleeps = asleep !== null && asleep[a] === 1;
+    let m = k + 1;
+    for (; m < count && low[m] <= end; m++) {
+      if (aSleeps && asleep[slot[m]] === 1) continue;
+      out.push(a, slot[m]);
+    }
+    examined += m - k - 1;
+  }
+  return examined;
 }

@@ -5,6 +5,7 @@ import { TypeCode } from '../store/body-types.js';
 import { sortByKey } from '../util/sort-by-key.js';
 import { grownCapacity } from '../util/grow.js';
 import { paddedRadius } from './fat-bounds.js';
+import { sweepSorted } from './axis-sweep.js';
 
 /**
  * Persistent sweep-and-prune on x (report 3.1.4.1; Tracy, Buss & Woods 2009). The sorted order of
@@ -41,22 +42,7 @@ export class PersistentSapBroadPhase implements BroadPhase {
       const s = slot[k];
       high[k] = x[s] + paddedRadius(radius[s], x[s]);
     }
-    const asleep = bodies.asleep;
-    const anyAsleep = bodies.sleepingCount > 0;
-    let examined = 0;
-    for (let k = 0; k < count; k++) {
-      const end = high[k];
-      const a = slot[k];
-      const aSleeps = anyAsleep && asleep[a] === 1;
-      let m = k + 1;
-      for (; m < count && low[m] <= end; m++) {
-        const b = slot[m];
-        if (aSleeps && asleep[b] === 1) continue;
-        out.push(a, b);
-      }
-      examined += m - k - 1;
-    }
-    return examined;
+    return sweepSorted(low, high, slot, count, out, bodies.sleepingCount > 0 ? bodies.asleep : null);
   }
 
   memoryBytes(): number {

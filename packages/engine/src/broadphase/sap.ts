@@ -1,7 +1,7 @@
 import type { BroadPhase } from './broadphase.js';
 import type { BodyStore } from '../store/body-store.js';
 import type { PairSink } from '../store/pair-sink.js';
-import { AxisSweep } from './axis-sweep.js';
+import { AxisSweep, sweepSorted } from './axis-sweep.js';
 
 /**
  * Sweep-and-prune on x (report 3.1.4.1, 5.11.1): sort intervals by their start, then for each
@@ -15,16 +15,7 @@ export class SapBroadPhase implements BroadPhase {
   findPairs(bodies: BodyStore, out: PairSink): number {
     const sweep = this.sweep;
     sweep.build(bodies, 0);
-    const { low, high, slot, count } = sweep;
-    let examined = 0;
-    for (let k = 0; k < count; k++) {
-      const end = high[k];
-      const a = slot[k];
-      let m = k + 1;
-      for (; m < count && low[m] <= end; m++) out.push(a, slot[m]);
-      examined += m - k - 1;
-    }
-    return examined;
+    return sweepSorted(sweep.low, sweep.high, sweep.slot, sweep.count, out, bodies.sleepingCount > 0 ? bodies.asleep : null);
   }
 
   memoryBytes(): number {

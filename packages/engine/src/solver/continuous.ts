@@ -5,7 +5,7 @@ import { rayCircle } from '../query/ray-circle.js';
 import { rayCapsule } from '../query/ray-capsule.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
 import { mixRestitution } from './restitution.js';
-import { grownCapacity, growFloat64, growInt32 } from '../util/grow.js';
+import { grownCapacity, grow } from '../util/grow.js';
 
 const MAX_BOUNCES = 4;
 const closest = { x: 0, y: 0 };
@@ -74,8 +74,8 @@ export class ContinuousCollision {
   rememberPositions(bodies: BodyStore): void {
     if (this.previousX.length < bodies.slotCount) {
       const capacity = grownCapacity(this.previousX.length, bodies.slotCount);
-      this.previousX = growFloat64(this.previousX, capacity);
-      this.previousY = growFloat64(this.previousY, capacity);
+      this.previousX = grow(this.previousX, capacity);
+      this.previousY = grow(this.previousY, capacity);
     }
     this.previousX.set(bodies.x.subarray(0, bodies.slotCount));
     this.previousY.set(bodies.y.subarray(0, bodies.slotCount));
@@ -112,7 +112,7 @@ export class ContinuousCollision {
   }
 
   private gatherStatics(bodies: BodyStore): void {
-    if (this.statics.length < bodies.staticCount) this.statics = growInt32(this.statics, grownCapacity(this.statics.length, bodies.staticCount));
+    if (this.statics.length < bodies.staticCount) this.statics = grow(this.statics, grownCapacity(this.statics.length, bodies.staticCount));
     let n = 0;
     for (let s = 0; s < bodies.slotCount; s++) if (bodies.type[s] === TypeCode.static) this.statics[n++] = s;
   }

@@ -1,5 +1,5 @@
 import { TypeCode, ShapeCode } from './body-types.js';
-import { grownCapacity, growFloat32, growFloat64, growInt32, growUint32, growUint8 } from '../util/grow.js';
+import { grownCapacity, grow } from '../util/grow.js';
 
 /**
  * Handles pack a slot index and that slot's generation: `generation * SLOT_SPACE + slot`. The
@@ -167,7 +167,7 @@ export class BodyStore {
     if (nextGeneration < MAX_GENERATION) {
       this.generation[slot] = nextGeneration;
       if (this.freeCount === this.freeSlots.length) {
-        this.freeSlots = growInt32(this.freeSlots, grownCapacity(this.freeSlots.length, this.freeCount + 1));
+        this.freeSlots = grow(this.freeSlots, grownCapacity(this.freeSlots.length, this.freeCount + 1));
       }
       this.freeSlots[this.freeCount++] = slot;
     }
@@ -258,25 +258,25 @@ export class BodyStore {
 
   private grow(needed: number): void {
     const capacity = grownCapacity(this.capacity, needed);
-    this.x = growFloat64(this.x, capacity);
-    this.y = growFloat64(this.y, capacity);
-    this.vx = growFloat64(this.vx, capacity);
-    this.vy = growFloat64(this.vy, capacity);
-    this.radius = growFloat64(this.radius, capacity);
-    this.mass = growFloat64(this.mass, capacity);
-    this.invMass = growFloat64(this.invMass, capacity);
-    this.restitution = growFloat64(this.restitution, capacity);
-    this.type = growUint8(this.type, capacity);
-    this.shape = growUint8(this.shape, capacity);
-    this.generation = growUint32(this.generation, capacity);
-    this.category = growUint32(this.category, capacity);
-    this.mask = growUint32(this.mask, capacity);
-    this.gravityScale = growFloat64(this.gravityScale, capacity);
-    this.linearDamping = growFloat64(this.linearDamping, capacity);
-    this.forceX = growFloat64(this.forceX, capacity);
-    this.forceY = growFloat64(this.forceY, capacity);
-    this.sleepTime = growFloat32(this.sleepTime, capacity);
-    this.asleep = growUint8(this.asleep, capacity);
+    this.x = grow(this.x, capacity);
+    this.y = grow(this.y, capacity);
+    this.vx = grow(this.vx, capacity);
+    this.vy = grow(this.vy, capacity);
+    this.radius = grow(this.radius, capacity);
+    this.mass = grow(this.mass, capacity);
+    this.invMass = grow(this.invMass, capacity);
+    this.restitution = grow(this.restitution, capacity);
+    this.type = grow(this.type, capacity);
+    this.shape = grow(this.shape, capacity);
+    this.generation = grow(this.generation, capacity);
+    this.category = grow(this.category, capacity);
+    this.mask = grow(this.mask, capacity);
+    this.gravityScale = grow(this.gravityScale, capacity);
+    this.linearDamping = grow(this.linearDamping, capacity);
+    this.forceX = grow(this.forceX, capacity);
+    this.forceY = grow(this.forceY, capacity);
+    this.sleepTime = grow(this.sleepTime, capacity);
+    this.asleep = grow(this.asleep, capacity);
     this.capacity = capacity;
   }
 }

@@ -1,4 +1,4 @@
-import { grownCapacity, growInt32 } from '../util/grow.js';
+import { grownCapacity, grow } from '../util/grow.js';
 
 /**
  * Touching pairs found by the narrow-phase, as (lo, hi) slots with lo < hi.
@@ -113,7 +113,7 @@ export class ContactBuffer {
 
   private growPairs(needed: number): void {
     const capacity = grownCapacity(this.lo.length, needed);
-    this.lo = growInt32(this.lo, capacity);
-    this.hi = growInt32(this.hi, capacity);
+    this.lo = grow(this.lo, capacity);
+    this.hi = grow(this.hi, capacity);
   }
 }

@@ -1,6 +1,6 @@
 import type { BodyStore } from './body-store.js';
 import type { ContactBuffer } from './contact-buffer.js';
-import { grownCapacity, growFloat64, growInt32 } from '../util/grow.js';
+import { grownCapacity, grow } from '../util/grow.js';
 
 /** Event lists of the last step; the arrays are reused and replaced only when they grow. */
 export interface ContactEventsView {
@@ -52,9 +52,9 @@ export class ContactEvents implements ContactEventsView {
   recordHit(bodies: BodyStore, i: number, j: number, speed: number): void {
     if (this.hitCount === this.hitA.length) {
       const capacity = grownCapacity(this.hitA.length, this.hitCount + 1);
-      this.hitA = growFloat64(this.hitA, capacity);
-      this.hitB = growFloat64(this.hitB, capacity);
-      this.hitSpeed = growFloat64(this.hitSpeed, capacity);
+      this.hitA = grow(this.hitA, capacity);
+      this.hitB = grow(this.hitB, capacity);
+      this.hitSpeed = grow(this.hitSpeed, capacity);
     }
     this.hitA[this.hitCount] = bodies.handleOf(i);
     this.hitB[this.hitCount] = bodies.handleOf(j);
@@ -100,10 +100,10 @@ export class ContactEvents implements ContactEventsView {
     const n = contacts.count;
     if (this.prevLo.length < n) {
       const capacity = grownCapacity(this.prevLo.length, n);
-      this.prevLo = growInt32(this.prevLo, capacity);
-      this.prevHi = growInt32(this.prevHi, capacity);
-      this.prevHandleLo = growFloat64(this.prevHandleLo, capacity);
-      this.prevHandleHi = growFloat64(this.prevHandleHi, capacity);
+      this.prevLo = grow(this.prevLo, capacity);
+      this.prevHi = grow(this.prevHi, capacity);
+      this.prevHandleLo = grow(this.prevHandleLo, capacity);
+      this.prevHandleHi = grow(this.prevHandleHi, capacity);
     }
     for (let k = 0; k < n; k++) {
       const i = contacts.lo[k];
@@ -119,8 +119,8 @@ export class ContactEvents implements ContactEventsView {
   private pushBegin(a: number, b: number): void {
     if (this.beginCount === this.beginA.length) {
       const capacity = grownCapacity(this.beginA.length, this.beginCount + 1);
-      this.beginA = growFloat64(this.beginA, capacity);
-      this.beginB = growFloat64(this.beginB, capacity);
+      this.beginA = grow(this.beginA, capacity);
+      this.beginB = grow(this.beginB, capacity);
     }
     this.beginA[this.beginCount] = a;
     this.beginB[this.beginCount++] = b;
@@ -129,8 +129,8 @@ export class ContactEvents implements ContactEventsView {
   private pushEnd(a: number, b: number): void {
     if (this.endCount === this.endA.length) {
       const capacity = grownCapacity(this.endA.length, this.endCount + 1);
-      this.endA = growFloat64(this.endA, capacity);
-      this.endB = growFloat64(this.endB, capacity);
+      this.endA = grow(this.endA, capacity);
+      this.endB = grow(this.endB, capacity);
     }
     this.endA[this.endCount] = a;
     this.endB[this.endCount++] = b;

@@ -1,5 +1,5 @@
 import { SLOT_SPACE } from './body-store.js';
-import { grownCapacity, growFloat64, growInt32, growUint32, growUint8 } from '../util/grow.js';
+import { grownCapacity, grow } from '../util/grow.js';
 
 export interface NewSegment {
   ax: number;
@@ -76,16 +76,16 @@ export class SegmentStore {
 
   private grow(needed: number): void {
     const capacity = grownCapacity(this.ax.length, needed);
-    this.ax = growFloat64(this.ax, capacity);
-    this.ay = growFloat64(this.ay, capacity);
-    this.bx = growFloat64(this.bx, capacity);
-    this.by = growFloat64(this.by, capacity);
-    this.thickness = growFloat64(this.thickness, capacity);
-    this.restitution = growFloat64(this.restitution, capacity);
-    this.category = growUint32(this.category, capacity);
-    this.mask = growUint32(this.mask, capacity);
-    this.live = growUint8(this.live, capacity);
-    this.generation = growUint32(this.generation, capacity);
+    this.ax = grow(this.ax, capacity);
+    this.ay = grow(this.ay, capacity);
+    this.bx = grow(this.bx, capacity);
+    this.by = grow(this.by, capacity);
+    this.thickness = grow(this.thickness, capacity);
+    this.restitution = grow(this.restitution, capacity);
+    this.category = grow(this.category, capacity);
+    this.mask = grow(this.mask, capacity);
+    this.live = grow(this.live, capacity);
+    this.generation = grow(this.generation, capacity);
   }
 }
 
@@ -148,7 +148,7 @@ export class SegmentGrid {
   }
 
   private push(s: number): void {
-    if (this.foundCount === this.found.length) this.found = growInt32(this.found, this.found.length * 2);
+    if (this.foundCount === this.found.length) this.found = grow(this.found, this.found.length * 2);
     this.found[this.foundCount++] = s;
   }
 

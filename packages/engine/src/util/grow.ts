@@ -1,36 +1,17 @@
-/** Capacity after geometric growth: at least `needed`, at least double the current one. */
+/**
+ * Capacity after geometric growth: at least double the current one, so that adding bodies one at
+ * a time reallocates O(log n) times; exactly `needed` when that is more, so that a large reserve
+ * or a first build of a big scene does not round up to the next power of two (up to 2x memory).
+ */
 export function grownCapacity(current: number, needed: number): number {
-  let capacity = Math.max(current, 16);
-  while (capacity < needed) capacity *= 2;
-  return capacity;
+  return Math.max(needed, 2 * current, 16);
 }
 
-export function growFloat64(old: Float64Array, capacity: number) {
-  const next = new Float64Array(capacity);
-  next.set(old.subarray(0, Math.min(old.length, capacity)));
-  return next;
-}
+type Column = Float64Array | Float32Array | Int32Array | Uint32Array | Uint8Array | Int8Array;
 
-export function growInt32(old: Int32Array, capacity: number) {
-  const next = new Int32Array(capacity);
-  next.set(old.subarray(0, Math.min(old.length, capacity)));
-  return next;
-}
-
-export function growUint32(old: Uint32Array, capacity: number) {
-  const next = new Uint32Array(capacity);
-  next.set(old.subarray(0, Math.min(old.length, capacity)));
-  return next;
-}
-
-export function growUint8(old: Uint8Array, capacity: number) {
-  const next = new Uint8Array(capacity);
-  next.set(old.subarray(0, Math.min(old.length, capacity)));
-  return next;
-}
-
-export function growFloat32(old: Float32Array, capacity: number) {
-  const next = new Float32Array(capacity);
-  next.set(old.subarray(0, Math.min(old.length, capacity)));
+/** A new array of the same kind with `capacity` elements, holding as much of `old` as fits. */
+export function grow<T extends Column>(old: T, capacity: number): T {
+  const next = new (old.constructor as new (length: number) => T)(capacity);
+  next.set(old.subarray(0, Math.min(old.length, capacity)) as never);
   return next;
 }
