@@ -28,15 +28,14 @@ export class Simulation {
   private dynamicMass = 0;
   private boxWidth = 1600;
   private boxHeight = 900;
+  private gravityY = 0;
+  /** Read every frame by the renderers, so one object kept up to date rather than a new one. */
+  readonly box = { width: 1600, height: 900 };
   private dragHandle = -1;
   private dragX = 0;
   private dragY = 0;
 
   constructor(private readonly now: () => number = () => performance.now()) {}
-
-  get box(): { width: number; height: number } {
-    return { width: this.boxWidth, height: this.boxHeight };
-  }
 
   /** Rebuilds the seed-box scene from the settings: the same settings always give the same bodies. */
   rebuild(settings: Settings): void {
@@ -44,6 +43,9 @@ export class Simulation {
     this.world = buildWorld(scene, { broadphase: settings.broadphase, integrator: settings.integrator });
     this.boxWidth = scene.bounds.width;
     this.boxHeight = scene.bounds.height;
+    this.box.width = this.boxWidth;
+    this.box.height = this.boxHeight;
+    this.gravityY = scene.gravity.y;
     this.colors.reset(settings.seed, this.world.views().slotCount);
     this.dynamicMass = 0;
     for (let k = 0; k < scene.count; k++) this.dynamicMass += this.world.getCircle(k).mass;
@@ -97,7 +99,7 @@ export class Simulation {
    * kinetic energy on a graph; the difference is a constant, g H times the dynamic mass.
    */
   potentialEnergy(): number {
-    const g = this.world.gravity.y;
+    const g = this.gravityY;
     return this.world.potentialEnergy() + (g > 0 ? g * this.boxHeight * this.dynamicMass : 0);
   }
 
