@@ -34,5 +34,8 @@ export interface BodyViews {
   readonly vx: Readonly<Float64Array>;
   readonly vy: Readonly<Float64Array>;
   readonly radius: Readonly<Float64Array>;
+  readonly mass: Readonly<Float64Array>;
   readonly type: Readonly<Uint8Array>;
+  /** 1 while a body sleeps. */
+  readonly asleep: Readonly<Uint8Array>;
 }

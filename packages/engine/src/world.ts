@@ -53,7 +53,9 @@ export class World {
     vx: new Float64Array(0),
     vy: new Float64Array(0),
     radius: new Float64Array(0),
+    mass: new Float64Array(0),
     type: new Uint8Array(0),
+    asleep: new Uint8Array(0),
   };
 
   constructor(options: WorldOptions = {}) {
@@ -354,7 +356,9 @@ export class World {
     v.vx = b.vx;
     v.vy = b.vy;
     v.radius = b.radius;
+    v.mass = b.mass;
     v.type = b.type;
+    v.asleep = b.asleep;
     return v;
   }
 
