@@ -30,7 +30,7 @@
 static int n;
 static double width, height, gravity_y, wall_e;
 static double *x, *y, *vx, *vy, *rad, *mass, *inv_mass, *rest;
-static int32_t *cell_start, *live_cell, *sorted_slot, *sorted_cell;
+static int32_t *cell_start, *live_cell, *sorted_slot;
 static double *sx, *sy, *sr;
 static int32_t *clo, *chi, *tlo, *thi, *counts;
 static int ncontacts, contact_cap, cell_cap;
@@ -119,30 +119,36 @@ static void broadphase(void) {
   for (int c = 1; c < cells; c++) cell_start[c] += cell_start[c - 1];
   for (int k = n - 1; k >= 0; k--) {
     int c = live_cell[k], at = --cell_start[c];
-    sorted_slot[at] = k; sorted_cell[at] = c;
+    sorted_slot[at] = k;
     sx[at] = x[k]; sy[at] = y[k]; sr[at] = rad[k] * (1 + RADIUS_PAD);
   }
   cell_start[cells] = n; cell_start[cells + 1] = n;
   double pad = reach * COORD_PAD;
-  for (int row = 0, k = 0; row < rows; row++) {
-   int row_start = row * columns, row_end = cell_start[row_start + columns];
-   for (; k < row_end; k++) {
-    int c = sorted_cell[k], column = c - row_start, a = sorted_slot[k];
-    double ax = sx[k], ay = sy[k], ar = sr[k] + pad;
-    int end = column + 1 < columns ? cell_start[c + 2] : cell_start[c + 1];
-    for (int m = k + 1; m < end; m++) {
-      double rr = ar + sr[m], dx = sx[m] - ax, dy = sy[m] - ay;
-      if (dx <= rr && dx >= -rr && dy <= rr && dy >= -rr) candidate(a, sorted_slot[m]);
-    }
-    if (row + 1 < rows) {
-      int below = c + columns;
-      int from = cell_start[column > 0 ? below - 1 : below], to = cell_start[column + 1 < columns ? below + 2 : below + 1];
-      for (int m = from; m < to; m++) {
-        double rr = ar + sr[m], dx = sx[m] - ax, dy = sy[m] - ay;
-        if (dx <= rr && dx >= -rr && dy <= rr && dy >= -rr) candidate(a, sorted_slot[m]);
+  /* Cell by cell, as cell-grid.ts scanSelf: neighbour ranges once per cell. */
+  for (int row = 0; row < rows; row++) {
+    int row_start = row * columns, has_below = row + 1 < rows;
+    for (int column = 0; column < columns; column++) {
+      int c = row_start + column, first = cell_start[c], last = cell_start[c + 1];
+      if (first == last) continue;
+      int same_end = cell_start[column + 1 < columns ? c + 2 : c + 1], from = 0, to = 0;
+      if (has_below) {
+        int below = c + columns;
+        from = cell_start[column > 0 ? below - 1 : below];
+        to = cell_start[column + 1 < columns ? below + 2 : below + 1];
+      }
+      for (int k = first; k < last; k++) {
+        double ax = sx[k], ay = sy[k], ar = sr[k] + pad;
+        int a = sorted_slot[k];
+        for (int m = k + 1; m < same_end; m++) {
+          double rr = ar + sr[m], dx = sx[m] - ax, dy = sy[m] - ay;
+          if (fabs(dx) <= rr && fabs(dy) <= rr) candidate(a, sorted_slot[m]);
+        }
+        for (int m = from; m < to; m++) {
+          double rr = ar + sr[m], dx = sx[m] - ax, dy = sy[m] - ay;
+          if (fabs(dx) <= rr && fabs(dy) <= rr) candidate(a, sorted_slot[m]);
+        }
       }
     }
-   }
   }
 }
 
@@ -235,7 +241,7 @@ int main(int argc, char **argv) {
       fread(&gravity_y, 8, 1, f) != 1 || fread(&wall_e, 8, 1, f) != 1) { fprintf(stderr, "bad header\n"); return 1; }
   double **cols[] = {&x, &y, &vx, &vy, &rad, &mass, &inv_mass, &rest, &sx, &sy, &sr};
   for (size_t c = 0; c < sizeof cols / sizeof *cols; c++) *cols[c] = xmalloc((n + 1) * sizeof(double));
-  int32_t **icols[] = {&live_cell, &sorted_slot, &sorted_cell, &counts};
+  int32_t **icols[] = {&live_cell, &sorted_slot, &counts};
   for (size_t c = 0; c < sizeof icols / sizeof *icols; c++) *icols[c] = xmalloc((n + 2) * sizeof(int32_t));
   contact_cap = 1024;
   clo = xmalloc(contact_cap * 4); chi = xmalloc(contact_cap * 4); tlo = xmalloc(contact_cap * 4); thi = xmalloc(contact_cap * 4);

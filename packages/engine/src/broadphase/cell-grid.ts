@@ -23,7 +23,6 @@ export class CellGrid {
 
   cellStart = new Int32Array(2);
   sortedSlot = new Int32Array(0);
-  sortedCell = new Int32Array(0);
   sortedX = new Float64Array(0);
   sortedY = new Float64Array(0);
   sortedR = new Float64Array(0);
@@ -68,7 +67,7 @@ export class CellGrid {
 
     const cells = columns * rows;
     const { x, y, radius } = bodies;
-    const { cellStart, binOf, sortedSlot, sortedCell, sortedX, sortedY, sortedR } = this;
+    const { cellStart, binOf, sortedSlot, sortedX, sortedY, sortedR } = this;
     cellStart.fill(0, 0, cells + 2);
     // Offsets are >= 0 and below 2^31, so `| 0` truncates exactly as Math.floor would, faster.
     for (let k = 0; k < n; k++) {
@@ -85,7 +84,6 @@ export class CellGrid {
       const at = --cellStart[c];
       const i = slots === null ? k : slots[k];
       sortedSlot[at] = i;
-      sortedCell[at] = c;
       sortedX[at] = x[i];
       sortedY[at] = y[i];
       sortedR[at] = radius[i] * (1 + RADIUS_PAD);
@@ -101,28 +99,44 @@ export class CellGrid {
    * number of pairs examined.
    */
   scanSelf(out: PairSink, pad: number): number {
-    const { cellStart, sortedSlot, sortedCell, sortedX, sortedY, sortedR, columns, rows } = this;
+    const { cellStart, sortedSlot, sortedX, sortedY, sortedR, columns, rows } = this;
     let examined = 0;
-    // Bodies are in row-major cell order: walking row by row gives each body's row without a
-    // division, and its column as cell - rowStart.
-    for (let row = 0, k = 0; row < rows; row++) {
+    // Cell by cell, row-major: each cell's two neighbour ranges are found once for all its bodies,
+    // and no per-body cell index is needed. Empty cells cost one comparison.
+    for (let row = 0; row < rows; row++) {
       const rowStart = row * columns;
-      const rowEnd = cellStart[rowStart + columns];
       const hasBelow = row + 1 < rows;
-      for (; k < rowEnd; k++) {
-        const c = sortedCell[k];
-        const column = c - rowStart;
-        const ax = sortedX[k];
-        const ay = sortedY[k];
-        const ar = sortedR[k] + pad;
-        const a = sortedSlot[k];
-        const sameRowEnd = column + 1 < columns ? cellStart[c + 2] : cellStart[c + 1];
-        examined += pushOverlaps(this, k + 1, sameRowEnd, ax, ay, ar, a, out);
+      for (let column = 0; column < columns; column++) {
+        const c = rowStart + column;
+        const first = cellStart[c];
+        const last = cellStart[c + 1];
+        if (first === last) continue;
+        const sameRowEnd = cellStart[column + 1 < columns ? c + 2 : c + 1];
+        let from = 0;
+        let to = 0;
         if (hasBelow) {
           const below = c + columns;
-          const from = cellStart[column > 0 ? below - 1 : below];
-          const to = cellStart[column + 1 < columns ? below + 2 : below + 1];
-          examined += pushOverlaps(this, from, to, ax, ay, ar, a, out);
+          from = cellStart[column > 0 ? below - 1 : below];
+          to = cellStart[column + 1 < columns ? below + 2 : below + 1];
+        }
+        for (let k = first; k < last; k++) {
+          const ax = sortedX[k];
+          const ay = sortedY[k];
+          const ar = sortedR[k] + pad;
+          const a = sortedSlot[k];
+          for (let m = k + 1; m < sameRowEnd; m++) {
+            const reach = ar + sortedR[m];
+            const dx = sortedX[m] - ax;
+            const dy = sortedY[m] - ay;
+            if (Math.abs(dx) <= reach && Math.abs(dy) <= reach) out.push(a, sortedSlot[m]);
+          }
+          for (let m = from; m < to; m++) {
+            const reach = ar + sortedR[m];
+            const dx = sortedX[m] - ax;
+            const dy = sortedY[m] - ay;
+            if (Math.abs(dx) <= reach && Math.abs(dy) <= reach) out.push(a, sortedSlot[m]);
+          }
+          examined += sameRowEnd - k - 1 + (to - from);
         }
       }
     }
@@ -163,7 +177,7 @@ export class CellGrid {
   memoryBytes(): number {
     return (
       this.cellStart.byteLength +
-      this.sortedSlot.byteLength * 3 +
+      this.sortedSlot.byteLength * 2 +
       this.sortedX.byteLength * 3
     );
   }
@@ -174,7 +188,6 @@ export class CellGrid {
     const capacity = grownCapacity(this.sortedSlot.length, n);
     this.binOf = new Int32Array(capacity);
     this.sortedSlot = new Int32Array(capacity);
-    this.sortedCell = new Int32Array(capacity);
     this.sortedX = new Float64Array(capacity);
     this.sortedY = new Float64Array(capacity);
     this.sortedR = new Float64Array(capacity);

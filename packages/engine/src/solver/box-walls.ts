@@ -1,6 +1,7 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { mixRestitution } from './restitution.js';
+import type { ContactBuffer } from '../store/contact-buffer.js';
 
 /** After this many bounces inside one step the rest of the path is folded in closed form. */
 const MAX_BOUNCES = 16;
@@ -47,20 +48,35 @@ export function bounceOffBox(
   }
 }
 
-/** Puts positions back inside the box after contact separation pushed them out; velocities stay. */
-export function clampIntoBox(bodies: BodyStore, width: number, height: number): void {
-  const { x, y, radius, type, slotCount } = bodies;
-  for (let i = 0; i < slotCount; i++) {
-    const t = type[i];
-    if (t !== TypeCode.dynamic && t !== TypeCode.kinematic) continue;
-    const r = radius[i];
-    const px = x[i];
-    if (px < r) x[i] = r;
-    else if (px > width - r) x[i] = width - r;
-    const py = y[i];
-    if (py < r) y[i] = r;
-    else if (py > height - r) y[i] = height - r;
+/**
+ * Puts positions back inside the box after contact separation pushed them out; velocities stay.
+ * Only bodies the solver moved can be outside, so with `contacts` given only their bodies are
+ * checked: O(contacts) rather than O(bodies). Without it (segment contacts moved bodies too),
+ * every body is.
+ */
+export function clampIntoBox(bodies: BodyStore, width: number, height: number, contacts: ContactBuffer | null): void {
+  if (contacts) {
+    const { lo, hi, count } = contacts;
+    for (let k = 0; k < count; k++) {
+      clampBody(bodies, lo[k], width, height);
+      clampBody(bodies, hi[k], width, height);
+    }
+    return;
   }
+  for (let i = 0; i < bodies.slotCount; i++) clampBody(bodies, i, width, height);
+}
+
+function clampBody(bodies: BodyStore, i: number, width: number, height: number): void {
+  const t = bodies.type[i];
+  if (t !== TypeCode.dynamic && t !== TypeCode.kinematic) return;
+  const { x, y } = bodies;
+  const r = bodies.radius[i];
+  const px = x[i];
+  if (px < r) x[i] = r;
+  else if (px > width - r) x[i] = width - r;
+  const py = y[i];
+  if (py < r) y[i] = r;
+  else if (py > height - r) y[i] = height - r;
 }
 
 // Results of `fold`, kept at module scope so the hot loop returns two numbers without allocating.

@@ -84,7 +84,7 @@ export class StepPipeline {
     const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver.restitutionThreshold);
     const t4 = nowMs();
 
-    if (box) clampIntoBox(bodies, box.width, box.height);
+    if (box) clampIntoBox(bodies, box.width, box.height, segmentContacts > 0 ? null : contacts);
     const t5 = nowMs();
 
     events?.update(bodies, contacts);
