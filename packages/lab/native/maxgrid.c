@@ -141,11 +141,11 @@ static void broadphase(void) {
         int a = sorted_slot[k];
         for (int m = k + 1; m < same_end; m++) {
           double rr = ar + sr[m], dx = sx[m] - ax, dy = sy[m] - ay;
-          if (fabs(dx) <= rr && fabs(dy) <= rr) candidate(a, sorted_slot[m]);
+          if (dx * dx + dy * dy <= rr * rr) candidate(a, sorted_slot[m]);
         }
         for (int m = from; m < to; m++) {
           double rr = ar + sr[m], dx = sx[m] - ax, dy = sy[m] - ay;
-          if (fabs(dx) <= rr && fabs(dy) <= rr) candidate(a, sorted_slot[m]);
+          if (dx * dx + dy * dy <= rr * rr) candidate(a, sorted_slot[m]);
         }
       }
     }

@@ -17,7 +17,7 @@ export interface GridGeometry {
  * The report's Max Grid (3.2, 5.11.2): one grid whose cell size is the largest diameter, each
  * circle stored only in the cell of its centre, the 3x3 neighbourhood searched, each pair once
  * (see CellGrid.scanSelf). Every neighbourhood pair counts as examined, which is the report's
- * false-positive measure; only pairs whose padded boxes overlap go on to the narrow-phase.
+ * false-positive measure; only pairs whose padded circles overlap go on to the narrow-phase.
  *
  * The grid spans the live bodies' extent, so it also works without a box, and its cell count is
  * capped at about 4 per body by enlarging cells, so a sparse world cannot make it explode.
