@@ -2,13 +2,14 @@ import { seedBox, seedBoxParams } from './seed-box.js';
 import { uniform, uniformParams } from './uniform.js';
 import { bouncingBall, bouncingBallParams } from './bouncing-ball.js';
 import { mixed, mixedParams } from './mixed.js';
+import { funnel, funnelParams } from './funnel.js';
 import type { ParamSpecs } from './params.js';
 import type { Scene } from './scene.js';
 
 export { Prng } from './prng.js';
-export { buildWorld, type Scene, type BuildOptions } from './scene.js';
+export { buildWorld, type Scene, type SceneSegment, type BuildOptions } from './scene.js';
 export { resolveParams, type ParamSpec, type ParamSpecs } from './params.js';
-export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams };
+export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams, funnel, funnelParams };
 
 export interface SceneDefinition {
   description: string;
@@ -32,6 +33,11 @@ export const SCENES = {
     description: "The report's worst case for Max Grid: many small circles and a few 100x larger ones",
     params: mixedParams,
     build: mixed,
+  },
+  funnel: {
+    description: 'Static shapes: circles fall through a funnel of segments and a field of static pegs',
+    params: funnelParams,
+    build: funnel,
   },
   'bouncing-ball': {
     description: "The report's accuracy test: one elastic ball dropped in a box",

@@ -18,6 +18,21 @@ export interface Scene {
   vx: Float64Array;
   vy: Float64Array;
   radius: Float64Array;
+  /**
+   * 1 where circle k is static (pegs, obstacles), or null when every circle is dynamic. Peer
+   * engines in the lab only take scenes without static circles or segments.
+   */
+  fixed: Uint8Array | null;
+  /** Static walls at any angle, besides the box. */
+  segments: SceneSegment[];
+}
+
+export interface SceneSegment {
+  x1: number;
+  y1: number;
+  x2: number;
+  y2: number;
+  thickness: number;
 }
 
 export function allocateScene(
@@ -36,12 +51,17 @@ export function allocateScene(
     vx: new Float64Array(count),
     vy: new Float64Array(count),
     radius: new Float64Array(count),
+    fixed: null,
+    segments: [],
   };
 }
 
 export interface BuildOptions {
   broadphase?: BroadPhaseName;
   integrator?: IntegratorName;
+  sleeping?: boolean;
+  continuous?: boolean;
+  restitutionThreshold?: number;
 }
 
 /** A maxgrid world holding the scene; circle k gets handle k. */
@@ -54,7 +74,16 @@ export function buildWorld(scene: Scene, options: BuildOptions = {}): World {
   });
   world.reserve(scene.count);
   for (let k = 0; k < scene.count; k++) {
-    world.createCircle({ x: scene.x[k], y: scene.y[k], vx: scene.vx[k], vy: scene.vy[k], radius: scene.radius[k] });
+    const isStatic = scene.fixed !== null && scene.fixed[k] === 1;
+    world.createCircle({
+      x: scene.x[k],
+      y: scene.y[k],
+      vx: isStatic ? 0 : scene.vx[k],
+      vy: isStatic ? 0 : scene.vy[k],
+      radius: scene.radius[k],
+      type: isStatic ? 'static' : 'dynamic',
+    });
   }
+  for (const s of scene.segments) world.createSegment(s);
   return world;
 }

@@ -120,3 +120,30 @@ describe('portable randomness', () => {
     }
   });
 });
+
+describe('funnel (static shapes)', () => {
+  it('builds pegs as static circles and walls as segments, with nothing overlapping at the start', () => {
+    const s = buildScene('funnel', { n: 300 });
+    expect(s.segments.length).toBe(3);
+    const pegs = Array.from(s.fixed!).filter((f) => f === 1).length;
+    expect(pegs).toBeGreaterThan(40);
+    const world = buildWorld(s);
+    expect(world.segmentCount).toBe(3);
+    world.step(0);
+    expect(world.stats.contacts).toBe(0);
+    expect(world.stats.segmentContacts).toBe(0);
+  });
+
+  it('circles fall through it and pile up at the bottom, without tunnelling out of the box', () => {
+    const world = buildWorld(buildScene('funnel', { n: 200, seed: 3 }));
+    for (let s = 0; s < 600; s++) world.step(1 / 60);
+    const v = world.views();
+    let low = 0;
+    for (let i = 0; i < v.slotCount; i++) if (v.type[i] === 3 && v.y[i] > 450) low++;
+    expect(low).toBeGreaterThan(150);
+  });
+
+  it('refuses more circles than fit above the funnel, by name', () => {
+    expect(() => buildScene('funnel', { n: 20_000 })).toThrow(/funnel: only \d+ circles/);
+  });
+});
