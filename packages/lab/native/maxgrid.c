@@ -205,12 +205,15 @@ static void solve(void) {
   }
 }
 
+static void clamp_body(int i) {
+  double r = rad[i];
+  if (x[i] < r) x[i] = r; else if (x[i] > width - r) x[i] = width - r;
+  if (y[i] < r) y[i] = r; else if (y[i] > height - r) y[i] = height - r;
+}
+
+/* As box-walls.ts clampIntoBox: only bodies the solver moved can have left the box. */
 static void clamp_box(void) {
-  for (int i = 0; i < n; i++) {
-    double r = rad[i];
-    if (x[i] < r) x[i] = r; else if (x[i] > width - r) x[i] = width - r;
-    if (y[i] < r) y[i] = r; else if (y[i] > height - r) y[i] = height - r;
-  }
+  for (int k = 0; k < ncontacts; k++) { clamp_body(clo[k]); clamp_body(chi[k]); }
 }
 
 /* Same digest as analytics.ts stateHash (all bodies dynamic, slots 0..n-1). */
