@@ -98,15 +98,17 @@ describe('energy', () => {
 });
 
 describe('false-positives', () => {
-  it('counts candidates and contacts per broad-phase; naive sees every pair; JSON validates', async () => {
+  it('counts pairs examined, candidates and contacts per broad-phase over N, mixed and log-uniform spreads; JSON validates', async () => {
     const options = { ...falsePositives.options('quick', {}), ns: [100, 300], ratios: [1, 10], spreadN: 200, steps: 3, warmupSteps: 2 };
     const result = await falsePositives.run(options, ctx());
     expectValid(falsePositives.schema, result);
     const maxgridIds = ENGINE_IDS.filter((id) => id.startsWith('maxgrid:'));
-    expect(result.rows).toHaveLength(4 * maxgridIds.length);
+    expect(result.rows).toHaveLength(6 * maxgridIds.length);
+    expect(new Set(result.rows.map((r) => `${r.sweep} ${r.scene}`))).toEqual(new Set(['n uniform', 'mixed mixed', 'log uniform']));
     for (const row of result.rows) {
+      expect(row.pairTests).toBeGreaterThanOrEqual(row.candidatePairs);
       expect(row.candidatePairs).toBeGreaterThanOrEqual(row.contacts);
-      if (row.engine === 'maxgrid:naive') expect(row.candidatePairs).toBe((row.n * (row.n - 1)) / 2);
+      if (row.engine === 'maxgrid:naive') expect(row.pairTests).toBe((row.n * (row.n - 1)) / 2);
       const same = result.rows.filter((r) => r.sweep === row.sweep && r.n === row.n && r.ratio === row.ratio);
       // Bit-identical worlds find the same contacts whatever the broad-phase.
       for (const other of same) expect(other.contacts).toBe(row.contacts);

@@ -11,7 +11,7 @@ import {
   type Engine,
   type Environment,
 } from '../../../../packages/lab/src/browser.js';
-import { BROWSER_QUICK, browserEnvironment, determinism, fromPlainScene, type DeterminismResult, type PlainScene } from './runs.js';
+import { BROWSER_QUICK, browserEnvironment, determinism, fromPlainScene, pageWorlds, type DeterminismResult, type PageWorlds, type PlainScene } from './runs.js';
 
 /** What the page exposes to tests and to anyone who wants the numbers (also printed as JSON). */
 export interface LabPageResults {
@@ -29,6 +29,8 @@ declare global {
     __labResults?: LabPageResults;
     /** Steps a scene built elsewhere (in Node) with every broad-phase: isolates the engine. */
     __labDeterminismOf?: (scene: PlainScene) => DeterminismResult;
+    /** Worlds stepped on request: the lab's Node-vs-Chromium parity target drives these. */
+    __labWorlds?: PageWorlds;
   }
 }
 
@@ -96,6 +98,7 @@ async function runAll(): Promise<void> {
     });
     $('environment').insertAdjacentHTML('beforeend', htmlTable(engineTable(engines.map((e) => e.info))));
     const only = new URLSearchParams(location.search).get('experiments');
+    // Node-only experiments (the C baseline, the targets that drive this page) are not in BROWSER_QUICK.
     const chosen = only === null ? Object.keys(BROWSER_QUICK) : only.split(',').filter((n) => n in BROWSER_QUICK);
     for (const name of chosen) {
       const sizes = BROWSER_QUICK[name];
@@ -131,5 +134,6 @@ async function runAll(): Promise<void> {
 }
 
 window.__labDeterminismOf = (scene) => determinism(fromPlainScene(scene));
+window.__labWorlds = pageWorlds();
 $('run').addEventListener('click', () => void runAll());
 if (new URLSearchParams(location.search).get('auto') === '1') void runAll();

@@ -1,6 +1,6 @@
-import { BROADPHASE_NAMES } from '@maxgrid/engine';
+import { BROADPHASE_NAMES, type BroadPhaseName, type World } from '@maxgrid/engine';
 import { buildScene, buildWorld, type Scene } from '@maxgrid/scenes';
-import type { Environment } from '../../../../packages/lab/src/browser.js';
+import { maxgridBuildOptions, type Environment } from '../../../../packages/lab/src/browser.js';
 
 /**
  * The engine's golden-hash scene, stepped here and in Node by the lab's browser test: equal
@@ -87,5 +87,46 @@ export function browserEnvironment(): Environment {
     userAgent: navigator.userAgent,
     cores: navigator.hardwareConcurrency,
     crossOriginIsolated: String(globalThis.crossOriginIsolated ?? false),
+  };
+}
+
+/**
+ * Worlds built and stepped on request from outside the page: the lab's browser-parity target
+ * (issue 5, T6) drives the same maxgrid step here and in Node, round by round, and compares.
+ */
+export interface PageWorlds {
+  create(scene: string, params: Record<string, number>, broadphase: string): number;
+  /** Steps `count` times; each step's time in ms (Chromium's clock is coarse, ~0.1 ms). */
+  step(id: number, count: number, dt: number): number[];
+  hash(id: number): string;
+  dispose(id: number): void;
+}
+
+export function pageWorlds(): PageWorlds {
+  const worlds = new Map<number, World>();
+  let next = 1;
+  const get = (id: number): World => {
+    const world = worlds.get(id);
+    if (!world) throw new RangeError(`no world with id ${id}`);
+    return world;
+  };
+  return {
+    create(scene, params, broadphase) {
+      if (!(BROADPHASE_NAMES as readonly string[]).includes(broadphase)) throw new RangeError(`unknown broadphase '${broadphase}'`);
+      worlds.set(next, buildWorld(buildScene(scene, params), maxgridBuildOptions(broadphase as BroadPhaseName)));
+      return next++;
+    },
+    step(id, count, dt) {
+      const world = get(id);
+      const times: number[] = [];
+      for (let i = 0; i < count; i++) {
+        const t0 = performance.now();
+        world.step(dt);
+        times.push(performance.now() - t0);
+      }
+      return times;
+    },
+    hash: (id) => get(id).stateHash(),
+    dispose: (id) => void worlds.delete(id),
   };
 }

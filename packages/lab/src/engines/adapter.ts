@@ -35,7 +35,11 @@ export interface Simulation {
   /** Radii as the engine stores them, in scene units, for checking the build. */
   readRadii(out: Float64Array): void;
   /** Broad-phase candidates and true contacts of the last step, where the engine reports them. */
-  pairStats?(): { candidatePairs: number; contacts: number };
+  /**
+   * Broad-phase work of the last step, where the engine reports it: pairs examined (pairTests),
+   * pairs passed on to the narrow-phase (candidatePairs) and true contacts.
+   */
+  pairStats?(): { pairTests: number; candidatePairs: number; contacts: number };
   /** Broad- and narrow-phase time of the last step, where the engine reports them. */
   phaseMs?(): { broadphaseMs: number; narrowphaseMs: number };
   /** Engine memory, where the engine reports it. */
@@ -136,4 +140,17 @@ export function boxWalls(bounds: { width: number; height: number }): WallRect[] 
     { cx: -t / 2, cy: h / 2, width: t, height: h },
     { cx: w + t / 2, cy: h / 2, width: t, height: h },
   ];
+}
+
+/**
+ * Peer adapters build only dynamic circles in the scene's box; a scene with static circles or
+ * segments would silently lose them, so they refuse it by name instead (maxgrid builds them).
+ */
+export function requirePeerScene(scene: Scene, engineId: string): void {
+  const statics = scene.fixed === null ? 0 : scene.fixed.reduce((a, f) => a + f, 0);
+  if (statics > 0 || scene.segments.length > 0) {
+    throw new RangeError(
+      `engine '${engineId}' cannot build scene '${scene.name}': it has ${statics} static circles and ${scene.segments.length} segments, and the lab's peer adapters take only dynamic circles in a box (use a maxgrid engine)`,
+    );
+  }
 }

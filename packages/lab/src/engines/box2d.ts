@@ -1,5 +1,5 @@
 import type { Scene } from '@maxgrid/scenes';
-import { boxWalls, METERS_PER_PIXEL, type BodyState, type Engine, type EngineProvider, type LoadOptions, type Simulation } from './adapter.js';
+import { boxWalls, METERS_PER_PIXEL, type BodyState, type Engine, type EngineProvider, type LoadOptions, type Simulation, requirePeerScene } from './adapter.js';
 import { VERSIONS } from './versions.js';
 
 type Box2DModule = typeof Box2D & EmscriptenModule;
@@ -14,6 +14,7 @@ class Box2DSimulation implements Simulation {
   private readonly bodies: Box2D.b2Body[] = [];
 
   constructor(private readonly b2: Box2DModule, scene: Scene) {
+    requirePeerScene(scene, 'box2d-wasm');
     this.count = scene.count;
     const vec = new b2.b2Vec2(scene.gravity.x * S, scene.gravity.y * S);
     this.world = new b2.b2World(vec);

@@ -1,6 +1,6 @@
 import type { Scene } from '@maxgrid/scenes';
 import type * as MatterTypes from 'matter-js';
-import { boxWalls, type BodyState, type Engine, type EngineProvider, type Simulation } from './adapter.js';
+import { boxWalls, type BodyState, type Engine, type EngineProvider, type Simulation, requirePeerScene } from './adapter.js';
 import { VERSIONS } from './versions.js';
 
 type Matter = typeof MatterTypes;
@@ -17,6 +17,7 @@ class MatterSimulation implements Simulation {
   private readonly bodies: MatterTypes.Body[] = [];
 
   constructor(private readonly M: Matter, scene: Scene) {
+    requirePeerScene(scene, 'matter-js');
     this.count = scene.count;
     this.engine = M.Engine.create({
       gravity: { x: scene.gravity.x, y: scene.gravity.y, scale: GRAVITY_SCALE },

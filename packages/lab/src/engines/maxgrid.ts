@@ -1,5 +1,5 @@
 import { BROADPHASE_NAMES, type BroadPhaseName, type World } from '@maxgrid/engine';
-import { buildWorld, type Scene } from '@maxgrid/scenes';
+import { buildWorld, type BuildOptions, type Scene } from '@maxgrid/scenes';
 import type { BodyState, Engine, EngineProvider, Simulation } from './adapter.js';
 import { VERSIONS } from './versions.js';
 
@@ -30,9 +30,9 @@ class MaxgridSimulation implements Simulation {
     out.set(this.world.views().radius.subarray(0, this.count));
   }
 
-  pairStats(): { candidatePairs: number; contacts: number } {
+  pairStats(): { pairTests: number; candidatePairs: number; contacts: number } {
     const s = this.world.stats;
-    return { candidatePairs: s.candidatePairs, contacts: s.contacts };
+    return { pairTests: s.pairTests, candidatePairs: s.candidatePairs, contacts: s.contacts };
   }
 
   phaseMs(): { broadphaseMs: number; narrowphaseMs: number } {
@@ -49,6 +49,14 @@ class MaxgridSimulation implements Simulation {
   }
 
   dispose(): void {}
+}
+
+/**
+ * The lab's maxgrid settings, shared by the adapter, the C comparison and the browser page so
+ * that all three step the same world: the report's Unity configuration (no sleeping, discrete).
+ */
+export function maxgridBuildOptions(broadphase: BroadPhaseName): BuildOptions {
+  return { broadphase, sleeping: false, continuous: false, restitutionThreshold: 0 };
 }
 
 /** maxgrid with one broad-phase; everything else at the engine's defaults. */
@@ -70,12 +78,13 @@ export function maxgridProvider(broadphase: BroadPhaseName): EngineProvider {
             iterations: 'one sequential impulse pass per contact in canonical order',
             restitution: 'scene restitution (1), walls included',
             friction: 'none (the engine has no friction)',
-            sleeping: 'none (the engine has no sleeping)',
-            ccd: 'none (discrete)',
+            sleeping: false,
+            continuous: 'false (discrete, as the report configured Unity)',
+            restitutionThreshold: 0,
             walls: 'built-in box bounds',
           },
         },
-        create: (scene: Scene) => new MaxgridSimulation(buildWorld(scene, { broadphase })),
+        create: (scene: Scene) => new MaxgridSimulation(buildWorld(scene, maxgridBuildOptions(broadphase))),
       };
     },
   };

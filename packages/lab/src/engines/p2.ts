@@ -1,5 +1,5 @@
 import type { Scene } from '@maxgrid/scenes';
-import { boxWalls, METERS_PER_PIXEL, type BodyState, type Engine, type EngineProvider, type Simulation } from './adapter.js';
+import { boxWalls, METERS_PER_PIXEL, type BodyState, type Engine, type EngineProvider, type Simulation, requirePeerScene } from './adapter.js';
 import { VERSIONS } from './versions.js';
 
 import { loadP2, type P2Api as P2, type P2Body, type P2World } from './p2-loader.js';
@@ -14,6 +14,7 @@ class P2Simulation implements Simulation {
   private readonly bodies: P2Body[] = [];
 
   constructor(p2: P2, scene: Scene) {
+    requirePeerScene(scene, 'p2-es');
     this.count = scene.count;
     const solver = new p2.GSSolver({ iterations: SOLVER_ITERATIONS });
     this.world = new p2.World({ gravity: [scene.gravity.x * S, scene.gravity.y * S], solver, islandSplit: false });

@@ -1,5 +1,5 @@
 import type { Scene } from '@maxgrid/scenes';
-import { boxWalls, METERS_PER_PIXEL, type BodyState, type Engine, type EngineProvider, type Simulation } from './adapter.js';
+import { boxWalls, METERS_PER_PIXEL, type BodyState, type Engine, type EngineProvider, type Simulation, requirePeerScene } from './adapter.js';
 import { VERSIONS } from './versions.js';
 
 type Planck = typeof import('planck');
@@ -15,6 +15,7 @@ class PlanckSimulation implements Simulation {
   private readonly bodies: PlanckBody[] = [];
 
   constructor(pl: Planck, scene: Scene) {
+    requirePeerScene(scene, 'planck');
     this.count = scene.count;
     this.world = new pl.World({
       gravity: { x: scene.gravity.x * S, y: scene.gravity.y * S },

@@ -1,5 +1,5 @@
 import type { Scene } from '@maxgrid/scenes';
-import { boxWalls, METERS_PER_PIXEL, type BodyState, type Engine, type EngineProvider, type Simulation } from './adapter.js';
+import { boxWalls, METERS_PER_PIXEL, type BodyState, type Engine, type EngineProvider, type Simulation, requirePeerScene } from './adapter.js';
 import { VERSIONS } from './versions.js';
 
 type Rapier = typeof import('@dimforge/rapier2d-simd-compat').default;
@@ -18,6 +18,7 @@ class RapierSimulation implements Simulation {
   private readonly bodies: RapierBody[] = [];
 
   constructor(R: Rapier, scene: Scene) {
+    requirePeerScene(scene, 'rapier');
     this.count = scene.count;
     this.world = new R.World({ x: scene.gravity.x * S, y: scene.gravity.y * S });
     const params = this.world.integrationParameters;

@@ -1,3 +1,4 @@
+import type { Scene } from '@maxgrid/scenes';
 import type { Engine, EngineInfo } from '../engines/adapter.js';
 
 export type Profile = 'quick' | 'full';
@@ -30,6 +31,47 @@ export interface RunContext {
   progress?: Progress;
   /** Lets long loops give the browser's event loop a turn; Node passes nothing. */
   yieldToHost?: () => Promise<void>;
+  /** What only Node can do (a C compiler, a headless Chromium); absent in the browser. */
+  host?: Host;
+}
+
+/** One run of the C baseline: per-step times after warm-up and the final state hash. */
+export interface CRun {
+  stepMs: number[];
+  hash: string;
+}
+
+export interface CBaseline {
+  /** The exact compile command, for the outputs. */
+  command: string;
+  compiler: string;
+  run(scene: Scene, steps: number, warmupSteps: number, dt: number): Promise<CRun>;
+}
+
+/** A maxgrid world living in a browser tab, stepped on request. */
+export interface RemoteWorld {
+  /** Steps `count` times; returns each step's time in ms as the browser measured it. */
+  step(count: number, dt: number): Promise<number[]>;
+  hash(): Promise<string>;
+  dispose(): Promise<void>;
+}
+
+export interface BrowserHost {
+  /** e.g. "Chromium 156.0.1.2 (headless, Debian /usr/bin/chromium)". */
+  runtime: string;
+  settings: Record<string, string>;
+  /** Builds the scene in the page with the lab's maxgrid options (`maxgridBuildOptions`). */
+  world(scene: string, params: Record<string, number>, broadphase: string): Promise<RemoteWorld>;
+  close(): Promise<void>;
+}
+
+/**
+ * Node-only capabilities, each resolving to a skip reason (a string) where unavailable, so that
+ * an experiment records "skipped: ..." rather than failing on a machine without gcc or Chromium.
+ */
+export interface Host {
+  cBaseline(): Promise<CBaseline | string>;
+  browser(): Promise<BrowserHost | string>;
 }
 
 export function makeMeta(experiment: string, ctx: RunContext, options: object): Meta {

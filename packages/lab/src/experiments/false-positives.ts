@@ -1,47 +1,63 @@
-import { buildScene } from '@maxgrid/scenes';
-import { barChart, lineChart, type ChartSpec } from '../report/charts.js';
+import { buildScene, type Scene } from '@maxgrid/scenes';
+import { lineChart, type ChartSpec } from '../report/charts.js';
 import { csvLine, makeMeta, maxgridOnly, metaSchema, type Meta, type Profile, type RunContext } from './common.js';
 
 /**
- * The report's future work (7.4): how many broad-phase candidates are not contacts, measured as
- * it suggests, by the narrow-phase's input (candidate pairs) against its output (contacts), per
- * maxgrid broad-phase. Two sweeps of the `uniform` scene: over N at its default radii (1:2), and
- * over the radius spread minRadius : maxRadius from 1:1 to 1:100 at a fixed N.
+ * The report's future work (7.4): how much work a broad-phase does per true contact. Three
+ * numbers per step, from the engine's own counters: pairs the broad-phase examined (pairTests,
+ * its real work: n(n-1)/2 for naive, every 3x3-neighbourhood pair for maxgrid), pairs it passed to
+ * the narrow-phase (candidatePairs; the grids already filter these by a padded circle test, so
+ * they sit near the contact count) and contacts. The headline is pairs examined per contact.
+ * Three sweeps: over N (`uniform`, radii 4..8), and over the radius spread 1:1..1:100 at a fixed N
+ * with two size distributions: `mixed` (many small circles and 0.1% `ratio` times larger, the
+ * report's worst case for Max Grid) and `uniform` with log-uniform radii (as many circles per
+ * size octave).
  */
 export interface FalsePositiveOptions {
   ns: number[];
-  /** maxRadius / minRadius values for the spread sweep. */
+  /** Largest radius over smallest, for the two spread sweeps. */
   ratios: number[];
-  /** Smallest radius in the spread sweep; the largest is minRadius * ratio. */
+  /** Smallest radius in the spread sweeps (mixed: small circles in [minRadius, 2 minRadius]). */
   minRadius: number;
-  /** N for the spread sweep. */
+  /** N for the spread sweeps. */
   spreadN: number;
   /** Steps averaged per case, after `warmupSteps`. */
   steps: number;
   warmupSteps: number;
   dt: number;
-  /** A broad-phase whose step exceeds this (ms) is not run at larger N or ratio. */
+  /** A broad-phase whose step exceeds this (ms) is not run at larger N or ratio of that sweep. */
   cutoffMs: number;
 }
 
 export function falsePositiveDefaults(profile: Profile): FalsePositiveOptions {
   return profile === 'full'
-    ? { ns: [1000, 4000, 16000, 64000], ratios: [1, 2, 5, 10, 20, 50, 100], minRadius: 2, spreadN: 8000, steps: 60, warmupSteps: 30, dt: 1 / 60, cutoffMs: 2000 }
-    : { ns: [500, 2000, 8000], ratios: [1, 2, 10, 100], minRadius: 2, spreadN: 2000, steps: 10, warmupSteps: 5, dt: 1 / 60, cutoffMs: 200 };
+    ? { ns: [1000, 4000, 16000, 64000], ratios: [1, 2, 5, 10, 20, 50, 100], minRadius: 4, spreadN: 16000, steps: 60, warmupSteps: 30, dt: 1 / 60, cutoffMs: 2000 }
+    : { ns: [500, 2000, 8000], ratios: [1, 2, 10, 100], minRadius: 4, spreadN: 2000, steps: 10, warmupSteps: 5, dt: 1 / 60, cutoffMs: 200 };
 }
 
+export type FalsePositiveSweep = 'n' | 'mixed' | 'log';
+export const FALSE_POSITIVE_SWEEPS: Record<FalsePositiveSweep, string> = {
+  n: 'uniform, radii 4..8, over N',
+  mixed: 'mixed (0.1% of circles ratio times larger), over radius ratio',
+  log: 'uniform with log-uniform radii, over radius ratio',
+};
+
 export interface FalsePositiveRow {
-  sweep: 'n' | 'spread';
+  sweep: FalsePositiveSweep;
+  scene: string;
   n: number;
   ratio: number;
   engine: string;
   /** Means per step over the measured steps. */
+  pairTests: number;
   candidatePairs: number;
   contacts: number;
-  /** (candidates - contacts) / candidates, 0 when there are no candidates. */
-  falsePositiveFraction: number;
-  /** candidates / contacts, null when there are no contacts. */
+  /** pairTests / contacts, null when there are no contacts: the headline. */
+  testsPerContact: number | null;
+  /** candidatePairs / contacts, null when there are no contacts. */
   candidatesPerContact: number | null;
+  /** (pairTests - contacts) / pairTests, 0 when nothing was examined. */
+  falsePositiveFraction: number;
   broadphaseMs: number;
   narrowphaseMs: number;
 }
@@ -49,7 +65,13 @@ export interface FalsePositiveRow {
 export interface FalsePositiveResult {
   meta: Meta;
   rows: FalsePositiveRow[];
-  skipped: { sweep: 'n' | 'spread'; engine: string; from: number }[];
+  skipped: { sweep: FalsePositiveSweep; engine: string; from: number }[];
+}
+
+function sceneFor(sweep: FalsePositiveSweep, n: number, ratio: number, o: FalsePositiveOptions): Scene {
+  if (sweep === 'n') return buildScene('uniform', { n, seed: 1 });
+  if (sweep === 'mixed') return buildScene('mixed', { n, seed: 1, minRadius: o.minRadius, ratio });
+  return buildScene('uniform', { n, seed: 1, minRadius: o.minRadius, maxRadius: o.minRadius * ratio, logRadius: 1 });
 }
 
 export async function runFalsePositives(options: FalsePositiveOptions, ctx: RunContext): Promise<FalsePositiveResult> {
@@ -57,38 +79,31 @@ export async function runFalsePositives(options: FalsePositiveOptions, ctx: RunC
   const rows: FalsePositiveRow[] = [];
   const skipped: FalsePositiveResult['skipped'] = [];
   const cases = [
-    ...options.ns.map((n) => ({ sweep: 'n' as const, n, ratio: NaN, key: n })),
-    ...options.ratios.map((ratio) => ({ sweep: 'spread' as const, n: options.spreadN, ratio, key: ratio })),
+    ...options.ns.map((n) => ({ sweep: 'n' as const, n, ratio: 2, key: n })),
+    ...(['mixed', 'log'] as const).flatMap((sweep) => options.ratios.map((ratio) => ({ sweep, n: options.spreadN, ratio, key: ratio }))),
   ];
   const total = cases.length * engines.length;
-  const dropped = { n: new Set<string>(), spread: new Set<string>() };
+  const dropped = new Set<string>();
   let done = 0;
   for (const c of cases) {
-    const params =
-      c.sweep === 'n'
-        ? { n: c.n, seed: 1 }
-        : { n: c.n, seed: 1, minRadius: options.minRadius, maxRadius: options.minRadius * c.ratio };
-    const scene = buildScene('uniform', params);
-    const ratio = c.sweep === 'n' ? scene.params.maxRadius / scene.params.minRadius : c.ratio;
+    const scene = sceneFor(c.sweep, c.n, c.ratio, options);
     for (const engine of engines) {
       const id = engine.info.id;
-      ctx.progress?.(done++, total, `${c.sweep} N=${c.n} ratio=${ratio} ${id}`);
-      if (dropped[c.sweep].has(id)) continue;
+      ctx.progress?.(done++, total, `${c.sweep} N=${c.n} ratio=${c.ratio} ${id}`);
+      if (dropped.has(`${c.sweep} ${id}`)) continue;
       const sim = engine.create(scene);
-      let candidates = 0;
-      let contacts = 0;
-      let broad = 0;
-      let narrow = 0;
+      const sum = { tests: 0, candidates: 0, contacts: 0, broad: 0, narrow: 0 };
       try {
         for (let i = 0; i < options.warmupSteps; i++) sim.step(options.dt);
         for (let i = 0; i < options.steps; i++) {
           sim.step(options.dt);
           const pairs = sim.pairStats!();
           const phases = sim.phaseMs!();
-          candidates += pairs.candidatePairs;
-          contacts += pairs.contacts;
-          broad += phases.broadphaseMs;
-          narrow += phases.narrowphaseMs;
+          sum.tests += pairs.pairTests;
+          sum.candidates += pairs.candidatePairs;
+          sum.contacts += pairs.contacts;
+          sum.broad += phases.broadphaseMs;
+          sum.narrow += phases.narrowphaseMs;
         }
       } finally {
         sim.dispose();
@@ -96,20 +111,25 @@ export async function runFalsePositives(options: FalsePositiveOptions, ctx: RunC
       const s = options.steps;
       const row: FalsePositiveRow = {
         sweep: c.sweep,
+        scene: scene.name,
         n: c.n,
-        ratio,
+        // The n sweep's ratio is the scene's own maxRadius / minRadius (8 / 4).
+        ratio: c.sweep === 'n' ? scene.params.maxRadius / scene.params.minRadius : c.ratio,
         engine: id,
-        candidatePairs: candidates / s,
-        contacts: contacts / s,
-        falsePositiveFraction: candidates === 0 ? 0 : (candidates - contacts) / candidates,
-        candidatesPerContact: contacts === 0 ? null : candidates / contacts,
-        broadphaseMs: broad / s,
-        narrowphaseMs: narrow / s,
+        pairTests: sum.tests / s,
+        candidatePairs: sum.candidates / s,
+        contacts: sum.contacts / s,
+        testsPerContact: sum.contacts === 0 ? null : sum.tests / sum.contacts,
+        candidatesPerContact: sum.contacts === 0 ? null : sum.candidates / sum.contacts,
+        falsePositiveFraction: sum.tests === 0 ? 0 : Math.max(0, sum.tests - sum.contacts) / sum.tests,
+        broadphaseMs: sum.broad / s,
+        narrowphaseMs: sum.narrow / s,
       };
       rows.push(row);
       if (row.broadphaseMs + row.narrowphaseMs > options.cutoffMs) {
-        dropped[c.sweep].add(id);
-        skipped.push({ sweep: c.sweep, engine: id, from: c.key });
+        dropped.add(`${c.sweep} ${id}`);
+        const next = cases.find((d) => d.sweep === c.sweep && d.key > c.key);
+        if (next) skipped.push({ sweep: c.sweep, engine: id, from: next.key });
       }
       await ctx.yieldToHost?.();
     }
@@ -120,11 +140,11 @@ export async function runFalsePositives(options: FalsePositiveOptions, ctx: RunC
 
 export function falsePositiveCsv(result: FalsePositiveResult): string {
   const lines = [
-    csvLine(['sweep', 'n', 'radius_ratio', 'engine', 'candidate_pairs', 'contacts', 'false_positive_fraction', 'candidates_per_contact', 'broadphase_ms', 'narrowphase_ms']),
+    csvLine(['sweep', 'scene', 'n', 'radius_ratio', 'engine', 'pair_tests', 'candidate_pairs', 'contacts', 'tests_per_contact', 'candidates_per_contact', 'false_positive_fraction', 'broadphase_ms', 'narrowphase_ms']),
   ];
   for (const r of result.rows) {
     lines.push(
-      csvLine([r.sweep, r.n, r.ratio, r.engine, r.candidatePairs, r.contacts, r.falsePositiveFraction, r.candidatesPerContact ?? '', r.broadphaseMs, r.narrowphaseMs]),
+      csvLine([r.sweep, r.scene, r.n, r.ratio, r.engine, r.pairTests, r.candidatePairs, r.contacts, r.testsPerContact ?? '', r.candidatesPerContact ?? '', r.falsePositiveFraction, r.broadphaseMs, r.narrowphaseMs]),
     );
   }
   return lines.join('\n') + '\n';
@@ -132,40 +152,47 @@ export function falsePositiveCsv(result: FalsePositiveResult): string {
 
 export function falsePositiveCharts(result: FalsePositiveResult): ChartSpec[] {
   const engines = [...new Set(result.rows.map((r) => r.engine))];
-  const sweep = (kind: 'n' | 'spread', x: (r: FalsePositiveRow) => number) =>
+  const series = (sweep: FalsePositiveSweep, x: (r: FalsePositiveRow) => number) =>
     engines.map((e) => ({
       name: e,
       points: result.rows
-        .filter((r) => r.sweep === kind && r.engine === e && r.candidatesPerContact !== null)
-        .map((r) => [x(r), r.candidatesPerContact!] as [number, number]),
+        .filter((r) => r.sweep === sweep && r.engine === e && r.testsPerContact !== null)
+        .map((r) => [x(r), r.testsPerContact!] as [number, number]),
     }));
-  const ratios = [...new Set(result.rows.filter((r) => r.sweep === 'spread').map((r) => r.ratio))];
+  const spreadN = String(result.meta.options.spreadN);
   return [
     lineChart({
       id: 'false-positives-n',
-      title: 'Candidate pairs per true contact vs N (uniform, radii 1:2)',
+      title: 'Pairs examined per true contact vs N (uniform, radii 4..8)',
       xName: 'N (circles)',
-      yName: 'candidates / contacts',
+      yName: 'pair tests / contacts',
       xLog: true,
       yLog: true,
-      series: sweep('n', (r) => r.n),
+      series: series('n', (r) => r.n),
     }),
-    barChart({
+    lineChart({
       id: 'false-positives-spread',
-      title: `Candidate pairs per true contact vs radius spread (uniform, N = ${String(result.meta.options.spreadN)})`,
-      categories: ratios.map((r) => `1:${r}`),
-      yName: 'candidates / contacts',
+      title: `Pairs examined per true contact vs radius ratio (mixed, N = ${spreadN})`,
+      xName: 'largest / smallest radius',
+      yName: 'pair tests / contacts',
+      xLog: true,
       yLog: true,
-      series: engines.map((e) => ({
-        name: e,
-        values: ratios.map((ratio) => {
-          const row = result.rows.find((r) => r.sweep === 'spread' && r.engine === e && r.ratio === ratio);
-          return row?.candidatesPerContact ?? NaN;
-        }),
-      })),
+      series: series('mixed', (r) => r.ratio),
+    }),
+    lineChart({
+      id: 'false-positives-log',
+      title: `Pairs examined per true contact vs radius ratio (uniform, log-uniform radii, N = ${spreadN})`,
+      xName: 'largest / smallest radius',
+      yName: 'pair tests / contacts',
+      xLog: true,
+      yLog: true,
+      series: series('log', (r) => r.ratio),
     }),
   ];
 }
+
+const count = { type: 'number', minimum: 0 } as const;
+const perContact = { type: ['number', 'null'], minimum: 0 } as const;
 
 export const falsePositiveSchema = {
   $id: 'false-positives',
@@ -178,23 +205,33 @@ export const falsePositiveSchema = {
       minItems: 1,
       items: {
         type: 'object',
-        required: ['sweep', 'n', 'ratio', 'engine', 'candidatePairs', 'contacts', 'falsePositiveFraction', 'candidatesPerContact', 'broadphaseMs', 'narrowphaseMs'],
+        required: ['sweep', 'scene', 'n', 'ratio', 'engine', 'pairTests', 'candidatePairs', 'contacts', 'testsPerContact', 'candidatesPerContact', 'falsePositiveFraction', 'broadphaseMs', 'narrowphaseMs'],
         properties: {
-          sweep: { enum: ['n', 'spread'] },
+          sweep: { enum: ['n', 'mixed', 'log'] },
+          scene: { enum: ['uniform', 'mixed'] },
           n: { type: 'integer', minimum: 1 },
           ratio: { type: 'number', minimum: 1 },
           engine: { type: 'string', pattern: '^maxgrid:' },
-          candidatePairs: { type: 'number', minimum: 0 },
-          contacts: { type: 'number', minimum: 0 },
+          pairTests: count,
+          candidatePairs: count,
+          contacts: count,
+          testsPerContact: perContact,
+          candidatesPerContact: perContact,
           falsePositiveFraction: { type: 'number', minimum: 0, maximum: 1 },
-          candidatesPerContact: { type: ['number', 'null'], minimum: 1 },
-          broadphaseMs: { type: 'number', minimum: 0 },
-          narrowphaseMs: { type: 'number', minimum: 0 },
+          broadphaseMs: count,
+          narrowphaseMs: count,
         },
         additionalProperties: false,
       },
     },
-    skipped: { type: 'array' },
+    skipped: {
+      type: 'array',
+      items: {
+        type: 'object',
+        required: ['sweep', 'engine', 'from'],
+        properties: { sweep: { enum: ['n', 'mixed', 'log'] }, engine: { type: 'string' }, from: { type: 'number' } },
+      },
+    },
   },
   additionalProperties: false,
 } as const;

@@ -12,6 +12,7 @@ import {
   type FalsePositiveOptions,
   type FalsePositiveResult,
 } from './false-positives.js';
+import { cMaxgridCharts, cMaxgridCsv, cMaxgridDefaults, cMaxgridSchema, runCMaxgrid, type CMaxgridOptions, type CMaxgridResult } from './c-maxgrid.js';
 import { runScale, scaleCharts, scaleCsv, scaleDefaults, scaleSchema, type ScaleOptions, type ScaleResult } from './scale.js';
 import { runStepTime, stepTimeCharts, stepTimeCsv, stepTimeDefaults, stepTimeSchema, type StepTimeOptions, type StepTimeResult } from './step-time.js';
 
@@ -29,6 +30,8 @@ export interface Experiment<O extends object, R> {
   description: string;
   schema: object;
   defaultEngines: string[];
+  /** Needs Node (a C compiler, a headless Chromium): the browser lab page leaves it out. */
+  nodeOnly?: boolean;
   options(profile: Profile, overrides: Overrides): O;
   run(options: O, ctx: RunContext): Promise<R>;
   csv(result: R): string;
@@ -112,6 +115,26 @@ export const scale: Experiment<ScaleOptions, ScaleResult> = {
   charts: scaleCharts,
 };
 
+export const cMaxgrid: Experiment<CMaxgridOptions, CMaxgridResult> = {
+  name: 'c-maxgrid',
+  description: 'maxgrid vs the same Max Grid step in plain C (gcc -O3 -march=native), hashes checked (issue 5, target 2)',
+  schema: cMaxgridSchema,
+  defaultEngines: ['maxgrid:maxgrid'],
+  nodeOnly: true,
+  options(profile, o) {
+    reject('c-maxgrid', o, ['ns', 'runs', 'scenes', 'dt']);
+    const supported = ['uniform', 'seed-box', 'mixed'];
+    if (o.scenes && (o.scenes.length !== 1 || !supported.includes(o.scenes[0]))) {
+      throw new RangeError(`--scene for experiment 'c-maxgrid' takes one of ${supported.join(', ')} (the C program's all-dynamic boxed scenes), got ${o.scenes.join(',')}`);
+    }
+    const d = cMaxgridDefaults(profile);
+    return { ...d, ns: o.ns ?? d.ns, rounds: o.runs ?? d.rounds, scene: o.scenes?.[0] ?? d.scene, dt: o.dt ?? d.dt };
+  },
+  run: runCMaxgrid,
+  csv: cMaxgridCsv,
+  charts: cMaxgridCharts,
+};
+
 // The registry stores experiments of different option and result types side by side.
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 export type AnyExperiment = Experiment<any, any>;
@@ -121,6 +144,7 @@ export const EXPERIMENTS: Record<string, AnyExperiment> = {
   energy,
   'false-positives': falsePositives,
   scale,
+  'c-maxgrid': cMaxgrid,
 };
 
 /** Every experiment; `results` (Node only) runs them all and writes docs/results.md. */

@@ -83,15 +83,16 @@ function headline(name: string, result: unknown): string[] {
     }
     case 'false-positives': {
       const r = result as FalsePositiveResult;
-      const ns = r.rows.filter((x) => x.sweep === 'n');
-      const nMax = Math.max(...ns.map((x) => x.n));
-      const qMax = Math.max(...r.rows.filter((x) => x.sweep === 'spread').map((x) => x.ratio));
-      const at = (rows: typeof r.rows) => rows.map((x) => `${x.engine} ${fmt(x.candidatesPerContact)}`).join(', ');
-      return [
-        `Candidate pairs per true contact at N = ${nMax}: ${at(ns.filter((x) => x.n === nMax))}.`,
-        '',
-        `At radius spread 1:${qMax}: ${at(r.rows.filter((x) => x.sweep === 'spread' && x.ratio === qMax))}.`,
-      ];
+      const nMax = Math.max(...r.rows.filter((x) => x.sweep === 'n').map((x) => x.n));
+      const at = (rows: typeof r.rows) => rows.map((x) => `${x.engine} ${fmt(x.testsPerContact)}`).join(', ');
+      const out = [`Pairs examined per true contact at N = ${nMax}: ${at(r.rows.filter((x) => x.sweep === 'n' && x.n === nMax))}.`, ''];
+      for (const sweep of ['mixed', 'log'] as const) {
+        const rows = r.rows.filter((x) => x.sweep === sweep);
+        if (rows.length === 0) continue;
+        const qMax = Math.max(...rows.map((x) => x.ratio));
+        out.push(`Radius spread 1:${qMax}, ${sweep === 'mixed' ? 'scene mixed' : 'uniform with log-uniform radii'}: ${at(rows.filter((x) => x.ratio === qMax))}.`, '');
+      }
+      return out;
     }
     case 'scale': {
       const r = result as ScaleResult;

@@ -7,6 +7,7 @@ import { loadEnginesNode } from './engines.js';
 import { nodeEnvironment } from './machine.js';
 import { writeCharts, writeText } from './output.js';
 import { progressBar } from './progress.js';
+import { nodeHost } from './host.js';
 
 export interface RunRequest {
   experiment: AnyExperiment;
@@ -35,6 +36,7 @@ export async function runExperiment(req: RunRequest): Promise<Omit<RunOutput, 's
       environment: nodeEnvironment(),
       profile: custom ? 'custom' : req.profile,
       progress: bar.progress,
+      host: nodeHost(),
     });
     result.meta.command = req.command;
     return { result, engines };

@@ -1,6 +1,6 @@
 import type { EngineInfo } from '../engines/adapter.js';
 import type { EnergyResult } from '../experiments/energy.js';
-import type { FalsePositiveResult } from '../experiments/false-positives.js';
+import type { FalsePositiveResult, FalsePositiveSweep } from '../experiments/false-positives.js';
 import type { ScaleResult } from '../experiments/scale.js';
 import { stepTimeRatio, type StepTimeResult } from '../experiments/step-time.js';
 
@@ -88,20 +88,23 @@ export function energyTables(result: EnergyResult): Table[] {
 export function falsePositiveTables(result: FalsePositiveResult): Table[] {
   const engines = [...new Set(result.rows.map((r) => r.engine))];
   const cell = (r: FalsePositiveResult['rows'][number] | undefined) =>
-    r ? `${fmt(r.candidatesPerContact)} (${fmt(r.candidatePairs)} / ${fmt(r.contacts)})` : 'skipped';
-  const ns = [...new Set(result.rows.filter((r) => r.sweep === 'n').map((r) => r.n))];
-  const ratios = [...new Set(result.rows.filter((r) => r.sweep === 'spread').map((r) => r.ratio))];
+    r ? `${fmt(r.testsPerContact)} (${fmt(r.pairTests)} / ${fmt(r.candidatePairs)} / ${fmt(r.contacts)})` : 'skipped';
+  const sweep = (kind: FalsePositiveSweep, title: string, key: 'n' | 'ratio', label: (v: number) => string): Table => {
+    const rows = result.rows.filter((r) => r.sweep === kind);
+    const keys = [...new Set(rows.map((r) => r[key]))].sort((a, b) => a - b);
+    return {
+      title,
+      headers: [key === 'n' ? 'N' : 'radius ratio', ...engines],
+      rows: keys.map((v) => [label(v), ...engines.map((e) => cell(rows.find((r) => r[key] === v && r.engine === e)))]),
+      note: 'Each cell: pairs examined per contact (pairs examined / pairs passed to the narrow-phase / contacts, means per step). Pairs examined is `world.stats.pairTests`, the broad-phase\'s own work.',
+    };
+  };
+  const spreadN = String(result.meta.options.spreadN);
+  const minR = String(result.meta.options.minRadius);
   return [
-    {
-      title: 'False positives vs N (uniform, radii 4–8): candidates per contact (candidate pairs / contacts, per step)',
-      headers: ['N', ...engines],
-      rows: ns.map((n) => [String(n), ...engines.map((e) => cell(result.rows.find((r) => r.sweep === 'n' && r.n === n && r.engine === e)))]),
-    },
-    {
-      title: `False positives vs radius spread (uniform, N = ${String(result.meta.options.spreadN)}, radii ${String(result.meta.options.minRadius)} to ${String(result.meta.options.minRadius)}·ratio)`,
-      headers: ['radius ratio', ...engines],
-      rows: ratios.map((q) => [`1:${q}`, ...engines.map((e) => cell(result.rows.find((r) => r.sweep === 'spread' && r.ratio === q && r.engine === e)))]),
-    },
+    sweep('n', 'False positives vs N (uniform, radii 4–8): pairs examined per contact', 'n', String),
+    sweep('mixed', `False positives vs radius spread, scene mixed (N = ${spreadN}; small radii ${minR}–2·${minR}, 0.1% of circles ${minR}·ratio)`, 'ratio', (q) => `1:${q}`),
+    sweep('log', `False positives vs radius spread, scene uniform with log-uniform radii ${minR} to ${minR}·ratio (N = ${spreadN})`, 'ratio', (q) => `1:${q}`),
   ];
 }
 

@@ -1,0 +1,14 @@
+import type { Host } from '../experiments/common.js';
+import { cBaseline } from './native.js';
+
+/** Node's capabilities for experiments: the C baseline, and a headless Chromium on demand. */
+export function nodeHost(): Host {
+  return {
+    cBaseline,
+    async browser() {
+      // Loaded only when an experiment asks: vite and playwright-core are heavy.
+      const { chromiumHost } = await import('./chromium.js');
+      return chromiumHost();
+    },
+  };
+}
