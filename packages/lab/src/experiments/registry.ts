@@ -13,6 +13,9 @@ import {
   type FalsePositiveResult,
 } from './false-positives.js';
 import { cMaxgridCharts, cMaxgridCsv, cMaxgridDefaults, cMaxgridSchema, runCMaxgrid, type CMaxgridOptions, type CMaxgridResult } from './c-maxgrid.js';
+import { runSapSleep, sapSleepCharts, sapSleepCsv, sapSleepDefaults, sapSleepSchema, type SapSleepOptions, type SapSleepResult } from './sap-sleep.js';
+import { runTargets, targetsDefaults, targetsSchema, type TargetsOptions, type TargetsResult } from './targets.js';
+import { targetsCsv } from './targets-csv.js';
 import { runScale, scaleCharts, scaleCsv, scaleDefaults, scaleSchema, type ScaleOptions, type ScaleResult } from './scale.js';
 import { runStepTime, stepTimeCharts, stepTimeCsv, stepTimeDefaults, stepTimeSchema, type StepTimeOptions, type StepTimeResult } from './step-time.js';
 
@@ -135,6 +138,38 @@ export const cMaxgrid: Experiment<CMaxgridOptions, CMaxgridResult> = {
   charts: cMaxgridCharts,
 };
 
+export const sapSleep: Experiment<SapSleepOptions, SapSleepResult> = {
+  name: 'sap-sleep',
+  description: 'sap vs sap-persistent on an all-moving and on mostly-sleeping scenes (issue 6, item 2)',
+  schema: sapSleepSchema,
+  defaultEngines: ['maxgrid:sap', 'maxgrid:sap-persistent'],
+  options(profile, o) {
+    reject('sap-sleep', o, ['ns', 'runs', 'dt']);
+    if (o.ns && o.ns.length !== 1) throw new RangeError(`option --n takes one value for experiment 'sap-sleep', got ${o.ns.join(',')}`);
+    const d = sapSleepDefaults(profile);
+    return { ...d, n: o.ns?.[0] ?? d.n, rounds: o.runs ?? d.rounds, dt: o.dt ?? d.dt };
+  },
+  run: runSapSleep,
+  csv: sapSleepCsv,
+  charts: sapSleepCharts,
+};
+
+export const targets: Experiment<TargetsOptions, TargetsResult> = {
+  name: 'targets',
+  description: "Issue 5's performance targets T1-T7 from one run: peers, C, a million bodies, mixed sizes, Chromium vs Node",
+  schema: targetsSchema,
+  defaultEngines: ['maxgrid:maxgrid', 'maxgrid:hgrid', 'maxgrid:auto', 'rapier', 'box2d-wasm'],
+  nodeOnly: true,
+  options(profile, o) {
+    reject('targets', o, ['runs', 'dt']);
+    const d = targetsDefaults(profile);
+    return { ...d, rounds: o.runs ?? d.rounds, dt: o.dt ?? d.dt };
+  },
+  run: runTargets,
+  csv: (r: TargetsResult) => targetsCsv(r),
+  charts: () => [],
+};
+
 // The registry stores experiments of different option and result types side by side.
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 export type AnyExperiment = Experiment<any, any>;
@@ -144,7 +179,9 @@ export const EXPERIMENTS: Record<string, AnyExperiment> = {
   energy,
   'false-positives': falsePositives,
   scale,
+  'sap-sleep': sapSleep,
   'c-maxgrid': cMaxgrid,
+  targets,
 };
 
 /** Every experiment; `results` (Node only) runs them all and writes docs/results.md. */

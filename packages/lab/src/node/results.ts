@@ -9,10 +9,14 @@ import { stepTimeRatio, type StepTimeResult } from '../experiments/step-time.js'
 import { htmlReport, tablesFor, type ReportSection } from '../report/html.js';
 import { BASELINE, engineTable, fmt, markdownTable, ratioText } from '../report/tables.js';
 import { nodeEnvironment } from './machine.js';
+import type { CMaxgridResult } from '../experiments/c-maxgrid.js';
+import type { SapSleepResult } from '../experiments/sap-sleep.js';
+import type { TargetsResult } from '../experiments/targets.js';
+import { cMaxgridHeadline, sapSleepHeadline, targetsHeadline } from '../report/tables-targets.js';
 import { writeCharts, writeText } from './output.js';
 import { runExperiment } from './run.js';
 
-const ORDER = ['step-time', 'energy', 'false-positives', 'scale'] as const;
+const ORDER = ['step-time', 'energy', 'false-positives', 'scale', 'sap-sleep', 'c-maxgrid', 'targets'] as const;
 
 export interface ResultsRequest {
   profile: Profile;
@@ -57,7 +61,7 @@ export async function runResults(req: ResultsRequest): Promise<string[]> {
     '',
     `Produced by one run of \`${req.command}\` (profile **${req.profile}**) on ${new Date().toISOString().slice(0, 10)}; run it again to regenerate this file, the charts and the data in [results/](results/) (JSON, CSV, SVG, PNG, and a self-contained [HTML report](results/report.html)).`,
     '',
-    `Machine: ${environment.cpu}, ${environment.cores} cores, ${environment.memoryGiB} GiB, ${environment.platform}; ${environment.runtime} (V8 ${environment.v8}). Measured in Node; Chromium was not used for these numbers (the lab page, \`/lab.html\` in the sandbox, runs the quick experiments in a browser).`,
+    `Machine: ${environment.cpu}, ${environment.cores} cores, ${environment.memoryGiB} GiB, ${environment.platform}; ${environment.runtime} (V8 ${environment.v8}). Measured in Node, except the browser-parity target (T6), which steps the same world in headless Chromium through the lab page (\`/lab.html\` in the sandbox, which also runs the quick experiments in a browser).`,
     '',
     'The machine is shared and has two cores, so absolute times are noisy: read the ratios, measured in the same run with engines interleaved per N, rather than single times.',
     req.profile === 'quick' ? 'This is the **quick** profile (few N, short runs); `--full` runs the report\'s 10..4200 by 10, 10 s, 10 runs.' : '',
@@ -94,6 +98,12 @@ function headline(name: string, result: unknown): string[] {
       }
       return out;
     }
+    case 'sap-sleep':
+      return sapSleepHeadline(result as SapSleepResult);
+    case 'c-maxgrid':
+      return cMaxgridHeadline(result as CMaxgridResult);
+    case 'targets':
+      return targetsHeadline(result as TargetsResult);
     case 'scale': {
       const r = result as ScaleResult;
       const first = r.rows[0];

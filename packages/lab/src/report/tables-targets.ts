@@ -1,0 +1,158 @@
+import type { CMaxgridResult } from '../experiments/c-maxgrid.js';
+import type { SapSleepResult } from '../experiments/sap-sleep.js';
+import type { TargetsResult, Timing } from '../experiments/targets.js';
+import { fmt, ratioText, type Table } from './tables.js';
+
+const spreadText = (s: { median: number; p25: number; p75: number }) => `${fmt(s.median)} [${fmt(s.p25)}–${fmt(s.p75)}]`;
+const n = (x: number) => x.toLocaleString('en-US');
+const ratioOrDash = (x: number | null | undefined) => (x === null || x === undefined ? '–' : ratioText(x));
+
+export function cMaxgridTables(result: CMaxgridResult): Table[] {
+  const c = result.compiler;
+  return [
+    {
+      title: `maxgrid (TypeScript, Node) vs the same step in C, scene ${String(result.meta.options.scene)}: median ms per step [p25–p75]`,
+      headers: ['N', 'C', 'maxgrid:maxgrid', 'maxgrid / C', 'state hash (C = JS)'],
+      rows:
+        c.status === 'skipped'
+          ? [['–', `skipped: ${c.reason}`, '–', '–', '–']]
+          : result.rows.map((r) =>
+              r.status === 'ok'
+                ? [n(r.n), spreadText(r.cMs!), spreadText(r.jsMs!), ratioText(r.ratio!), `${r.cHash} = ${r.jsHash}`]
+                : [n(r.n), 'no timing: hashes differ', 'no timing', '–', `${r.cHash} ≠ ${r.jsHash}`],
+            ),
+      note: c.status === 'ok' ? `Compiled with \`${c.command}\` (${c.version}); ${String(result.meta.options.rounds)} rounds alternating C and JS.` : undefined,
+    },
+  ];
+}
+
+export function sapSleepTables(result: SapSleepResult): Table[] {
+  const cases = [...new Set(result.rows.map((r) => r.case))];
+  const engines = [...new Set(result.rows.map((r) => r.engine))];
+  const [a, b] = engines;
+  return [
+    {
+      title: `sap vs sap-persistent (N = ${n(Number(result.meta.options.n))}): median ms per step [p25–p75], pairs examined per step`,
+      headers: ['case', 'scene and settings', 'settle steps', 'asleep (start → end)', ...engines.map((e) => `${e} ms`), ...engines.map((e) => `${e} pairs examined`), b ? `${b} / ${a}` : 'ratio'],
+      rows: cases.map((c) => {
+        const rows = engines.map((e) => result.rows.find((r) => r.case === c && r.engine === e)!);
+        const s = rows[0].settings;
+        const pct = (x: number) => `${Math.round(x * 100)}%`;
+        return [
+          c,
+          `${rows[0].scene}: ${Object.entries(s)
+            .map(([k, v]) => `${k} ${typeof v === 'number' ? fmt(v) : String(v)}`)
+            .join(', ')}`,
+          String(rows[0].settleSteps),
+          `${pct(rows[0].asleepStart)} → ${pct(rows[0].asleepEnd)}`,
+          ...rows.map((r) => spreadText(r.ms)),
+          ...rows.map((r) => fmt(r.pairTests)),
+          rows[1] ? ratioText(rows[1].ms.median / rows[0].ms.median) : '–',
+        ];
+      }),
+    },
+  ];
+}
+
+function timingRows(timings: Timing[]): string[][] {
+  return timings.map((t) => [t.engine, t.scene, n(t.n), spreadText(t.ms), String(t.steps), fmt(t.nsPerBody)]);
+}
+
+const TIMING_HEADERS = ['engine', 'scene', 'N', 'median ms [p25–p75]', 'timed steps', 'ns / body / step'];
+
+export function targetsTables(r: TargetsResult): Table[] {
+  const o = r.meta.options as Record<string, number>;
+  const protocol = `${o.rounds} rounds × ${o.stepsPerRound} steps per engine after ${o.warmupSteps} warm-up steps, engines interleaved per round, dt 1/${Math.round(1 / o.dt)}`;
+  const t2 = r.t2;
+  const t6 = r.t6;
+  const c = t2.comparison;
+  return [
+    {
+      title: `T1 against peers: uniform N = ${n(o.n)} (target: maxgrid ≤ 1/25 of Rapier and of box2d-wasm)`,
+      headers: TIMING_HEADERS,
+      rows: [
+        ...timingRows(r.t1.timings),
+        ['rapier / maxgrid:maxgrid', '', '', ratioOrDash(r.t1.rapierOverMaxgrid), '', ''],
+        ['box2d-wasm / maxgrid:maxgrid', '', '', ratioOrDash(r.t1.box2dOverMaxgrid), '', ''],
+      ],
+      note: `Few steps, because the peers take 100+ ms per step at this N: ${protocol}.`,
+    },
+    {
+      title: `T2 against the hardware: maxgrid vs the same step in C at N = ${n(o.n)} (target: ≤ 1.3×)`,
+      headers: ['C median ms [p25–p75]', 'maxgrid:maxgrid median ms [p25–p75]', 'maxgrid / C', 'state hashes'],
+      rows: [
+        t2.status === 'skipped'
+          ? [`skipped: ${t2.reason ?? ''}`, '–', '–', '–']
+          : t2.status === 'hash-mismatch'
+            ? ['no timing: hashes differ', '–', '–', `${c!.cHash} ≠ ${c!.jsHash}`]
+            : [spreadText(c!.cMs!), spreadText(c!.jsMs!), ratioOrDash(c!.ratio), `equal (${c!.cHash})`],
+      ],
+      note: t2.compile ? `C compiled with \`${t2.compile}\`; ${c?.rounds ?? 0} runs each of ${c?.stepsPerRound ?? 0} timed steps, alternating C and JS.` : undefined,
+    },
+    {
+      title: `T3 a million: uniform N = ${n(r.t3.n)} (targets: ≤ 200 bytes per body; ns per body ≤ 1.5× the 64k cost)`,
+      headers: ['median ms [p25–p75]', 'timed steps', 'engine bytes / body', 'ns / body / step', `ns / body at ${n(o.n)} (T1)`, 'ratio 1M / 64k', 'build ms'],
+      rows: [[spreadText(r.t3.ms), String(r.t3.steps), fmt(r.t3.bytesPerBody), fmt(r.t3.nsPerBody), fmt(r.t3.nsPerBodyAt64k), ratioText(r.t3.ratio), fmt(r.t3.buildMs)]],
+      note: 'Engine bytes are `world.memoryBytes()`, the engine\'s own typed arrays.',
+    },
+    {
+      title: `T5 mixed sizes: scene mixed, ratio 1:${o.mixedRatio}, N = ${n(o.n)} (targets: ≤ 2× the uniform per-body cost; ≥ 10× faster than Rapier)`,
+      headers: TIMING_HEADERS,
+      rows: [
+        ...timingRows(r.t5.timings),
+        ...Object.entries(r.t5.mixedOverUniform).map(([id, q]) => [`${id}: mixed / uniform per body`, '', '', ratioText(q), '', '']),
+        ['rapier / maxgrid:auto on mixed', '', '', ratioOrDash(r.t5.rapierOverAuto), '', ''],
+      ],
+      note: `Uniform references are T1's timings of the same broad-phase. ${protocol}.`,
+    },
+    {
+      title: `T6 browser parity: maxgrid:maxgrid, uniform N = ${n(o.n)}, Chromium vs Node (target: ≤ 1.3×)`,
+      headers: ['runtime', 'Node median ms [p25–p75]', 'Chromium median ms [p25–p75]', 'Chromium / Node', 'same state hash'],
+      rows: [
+        t6.status === 'skipped'
+          ? [`skipped: ${t6.reason ?? ''}`, '–', '–', '–', '–']
+          : [t6.runtime!, spreadText(t6.node!), spreadText(t6.browser!), ratioText(t6.ratio!), t6.hashesMatch ? 'yes' : 'NO'],
+      ],
+      note: t6.settings ? `Chromium flags: \`${t6.settings.flags}\`; ${t6.settings.page}; rounds alternate Node and Chromium.` : undefined,
+    },
+    {
+      title: 'T4 and T7: not measured by this command',
+      headers: ['target', 'status'],
+      rows: r.notMeasured.map((x) => [x.target, x.reason]),
+    },
+  ];
+}
+
+/** One-paragraph summaries for docs/results.md, quoting medians and ratios from the run. */
+export function cMaxgridHeadline(r: CMaxgridResult): string[] {
+  if (r.compiler.status === 'skipped') return [`Skipped: ${r.compiler.reason}.`];
+  return r.rows.map((x) =>
+    x.status === 'ok'
+      ? `N = ${n(x.n)}: C median ${fmt(x.cMs!.median)} ms, maxgrid:maxgrid ${fmt(x.jsMs!.median)} ms, maxgrid / C = ${ratioText(x.ratio!)} (state hashes equal).`
+      : `N = ${n(x.n)}: no timing reported, the C state hash ${x.cHash} differs from the engine's ${x.jsHash}.`,
+  );
+}
+
+export function sapSleepHeadline(r: SapSleepResult): string[] {
+  const cases = [...new Set(r.rows.map((x) => x.case))];
+  return cases.map((c) => {
+    const [a, b] = r.rows.filter((x) => x.case === c);
+    const pct = Math.round(a.asleepStart * 100);
+    return `${c} (${a.scene}, ${pct}% asleep): ${a.engine} ${fmt(a.ms.median)} ms, ${b ? `${b.engine} ${fmt(b.ms.median)} ms, ratio ${ratioText(b.ms.median / a.ms.median)}` : ''}.`;
+  });
+}
+
+export function targetsHeadline(r: TargetsResult): string[] {
+  const o = r.meta.options as Record<string, number>;
+  const c = r.t2.comparison;
+  return [
+    `T1 (uniform ${n(o.n)}): rapier / maxgrid = ${ratioOrDash(r.t1.rapierOverMaxgrid)}, box2d-wasm / maxgrid = ${ratioOrDash(r.t1.box2dOverMaxgrid)} (target ≥ 25×).`,
+    `T2: ${r.t2.status === 'ok' ? `maxgrid / C = ${ratioOrDash(c?.ratio)} (target ≤ 1.3×)` : r.t2.status === 'skipped' ? `skipped: ${r.t2.reason ?? ''}` : 'no timing: the C and engine state hashes differ'}.`,
+    `T3 (${n(r.t3.n)} bodies): ${fmt(r.t3.bytesPerBody)} bytes per body (target ≤ 200), ${fmt(r.t3.nsPerBody)} ns per body per step, ${ratioText(r.t3.ratio)} the 64k cost (target ≤ 1.5×).`,
+    `T5 (mixed 1:${o.mixedRatio}, ${n(o.n)}): per-body cost mixed / uniform ${Object.entries(r.t5.mixedOverUniform)
+      .map(([id, q]) => `${id} ${ratioText(q)}`)
+      .join(', ')} (target ≤ 2×); rapier / maxgrid:auto = ${ratioOrDash(r.t5.rapierOverAuto)} (target ≥ 10×).`,
+    `T6: ${r.t6.status === 'ok' ? `Chromium / Node = ${ratioText(r.t6.ratio!)} (target ≤ 1.3×; ${r.t6.runtime}; state hashes ${r.t6.hashesMatch ? 'equal' : 'DIFFER'})` : `skipped: ${r.t6.reason ?? ''}`}.`,
+    `T4, T7: not measured (see the last table).`,
+  ].flatMap((line) => [line, '']);
+}
