@@ -5,6 +5,11 @@
  * one per circle), and both renderers show the same colour for a body.
  */
 export const PALETTE_SIZE = 48;
+const HALF = PALETTE_SIZE / 2;
+
+/** Static circles and segments: a neutral grey no palette entry comes near (palette saturation ≥ 0.55). */
+export const STATIC_COLOR = '#c3ccd6';
+export const STATIC_RGB = [0xc3, 0xcc, 0xd6] as const;
 
 function hash32(a: number, b: number): number {
   let h = Math.imul(a ^ 0x9e3779b9, 0x85ebca6b) ^ Math.imul(b + 0x632be5ab, 0xc2b2ae35);
@@ -38,14 +43,21 @@ export class BodyColors {
   version = 0;
   private slots = 0;
   private seed = 0;
+  private layers = false;
 
-  /** Assigns colours for `slotCount` slots from `seed`. */
-  reset(seed: number, slotCount: number): void {
+  /**
+   * Assigns colours for `slotCount` slots from `seed`. With `layers`, the two collision layers
+   * (even and odd slots) take the cool and the warm half of the hues, so who passes through whom
+   * can be seen.
+   */
+  reset(seed: number, slotCount: number, layers = false): void {
     this.seed = seed >>> 0;
+    this.layers = layers;
     this.css.length = 0;
     for (let p = 0; p < PALETTE_SIZE; p++) {
       // Hues spread evenly and then shuffled by the seed keep neighbours distinguishable.
-      const hue = ((p * 0.618033988749895 + hash32(this.seed, p) / 2 ** 34) % 1 + 1) % 1;
+      let hue = ((p * 0.618033988749895 + hash32(this.seed, p) / 2 ** 34) % 1 + 1) % 1;
+      if (layers) hue = p < HALF ? 0.5 + 0.17 * hue : 0.02 + 0.12 * hue;
       const sat = 0.55 + (hash32(this.seed, p + 1000) % 1000) / 1000 * 0.35;
       const light = 0.5 + (hash32(this.seed, p + 2000) % 1000) / 1000 * 0.15;
       hslToRgb(hue, sat, light, this.paletteRgb, p * 3);
@@ -77,7 +89,8 @@ export class BodyColors {
   }
 
   paletteOf(slot: number): number {
-    return hash32(this.seed, slot + 0x10000) % PALETTE_SIZE;
+    const h = hash32(this.seed, slot + 0x10000);
+    return this.layers ? (slot % 2) * HALF + (h % HALF) : h % PALETTE_SIZE;
   }
 
   // A counting sort of slots by palette entry.

@@ -1,19 +1,26 @@
 import { BROADPHASE_NAMES, INTEGRATOR_NAMES } from '@maxgrid/engine';
+import { SCENES } from '@maxgrid/scenes';
 import {
   NAIVE_LIMIT,
-  NUMBER_SPECS,
+  SCENE_CHOICES,
   SEED_MAX,
+  WORLD_TOGGLES,
   clampNumber,
   clampSeed,
+  copySettings,
+  defaultSettings,
+  sceneSpecs,
   type NumberSpec,
   type RendererName,
+  type SceneChoice,
   type Settings,
+  type ToolName,
 } from './settings.js';
 
 export interface ControlEvents {
-  /** A scene parameter changed: rebuild. */
+  /** The scene, a scene parameter or a world option changed: rebuild. */
   scene(settings: Settings): void;
-  /** Broad-phase, integrator, renderer or an overlay changed: no rebuild. */
+  /** Broad-phase, integrator, renderer, an overlay or the tool changed: no rebuild. */
   live(settings: Settings): void;
 }
 
@@ -31,33 +38,44 @@ interface Slider {
 
 /**
  * The form: one labelled <input> or <select> per setting. The controls hold no state of their own;
- * `show` writes a Settings value into them and every change reads them back into a new one.
+ * `show` writes a Settings value into them and every change reads them back into a new one. The
+ * sliders are the current scene's, made from its parameter specs, and remade when it changes.
  */
 export class Controls {
-  private readonly sliders: Slider[] = [];
+  private sliders: Slider[] = [];
+  private slidersFor: SceneChoice | null = null;
+  private readonly fieldset = byId<HTMLFieldSetElement>('scene-controls');
+  private readonly sceneSelect = byId<HTMLSelectElement>('scene');
   private readonly seed = byId<HTMLInputElement>('seed');
   private readonly broadphase = byId<HTMLSelectElement>('broadphase');
   private readonly integrator = byId<HTMLSelectElement>('integrator');
   readonly renderer = byId<HTMLSelectElement>('renderer');
+  private readonly tool = byId<HTMLSelectElement>('tool');
   private readonly grid = byId<HTMLInputElement>('grid');
   private readonly aabb = byId<HTMLInputElement>('aabb');
+  private readonly toggles = WORLD_TOGGLES.map((key) => ({ key, input: byId<HTMLInputElement>(`toggle-${key}`) }));
   private current: Settings;
 
   constructor(initial: Settings, private readonly events: ControlEvents) {
-    this.current = { ...initial };
+    this.current = copySettings(initial);
     // Enter in the seed box would submit the form and reload the page with raw slider positions.
     byId<HTMLFormElement>('settings').addEventListener('submit', (e) => e.preventDefault());
-    const fieldset = byId<HTMLFieldSetElement>('scene-controls');
-    const seedField = this.seed.closest('.field');
-    for (const spec of NUMBER_SPECS) {
-      const slider = this.makeSlider(spec);
-      fieldset.insertBefore(slider.input.parentElement as HTMLElement, seedField);
-      this.sliders.push(slider);
+    for (const name of SCENE_CHOICES) {
+      const option = new Option(name, name);
+      option.title = SCENES[name].description;
+      this.sceneSelect.append(option);
     }
     this.seed.max = String(SEED_MAX);
     for (const name of BROADPHASE_NAMES) this.broadphase.append(new Option(name, name));
     for (const name of INTEGRATOR_NAMES) this.integrator.append(new Option(name, name));
 
+    // Another scene starts from its own defaults; the seed, engine and view choices carry over.
+    this.sceneSelect.addEventListener('change', () => {
+      const scene = this.sceneSelect.value as SceneChoice;
+      if (scene === this.current.scene) return;
+      this.current = { ...copySettings(this.current), scene, params: defaultSettings(scene).params };
+      this.events.scene(copySettings(this.current));
+    });
     // Typing a seed rebuilds as it goes; the box is tidied (clamped) only when editing ends, so a
     // half-typed or empty value is never written back under the cursor.
     this.seed.addEventListener('input', () => {
@@ -66,45 +84,56 @@ export class Controls {
       const seed = clampSeed(value);
       if (seed === this.current.seed) return;
       this.current.seed = seed;
-      this.events.scene({ ...this.current });
+      this.events.scene(copySettings(this.current));
     });
     this.seed.addEventListener('change', () => {
       this.seed.value = String(this.current.seed);
     });
+    for (const { key, input } of this.toggles) {
+      input.addEventListener('change', () => {
+        this.current[key] = input.checked;
+        this.events.scene(copySettings(this.current));
+      });
+    }
     const live = () => {
       this.current.broadphase = this.broadphase.value as Settings['broadphase'];
       this.current.integrator = this.integrator.value as Settings['integrator'];
       this.current.renderer = this.renderer.value as RendererName;
+      this.current.tool = this.tool.value as ToolName;
       this.current.grid = this.grid.checked;
       this.current.aabb = this.aabb.checked;
-      this.events.live({ ...this.current });
+      this.events.live(copySettings(this.current));
     };
-    for (const el of [this.broadphase, this.integrator, this.renderer, this.grid, this.aabb]) el.addEventListener('change', live);
+    for (const el of [this.broadphase, this.integrator, this.renderer, this.tool, this.grid, this.aabb]) el.addEventListener('change', live);
     this.show(initial);
   }
 
   get settings(): Settings {
-    return { ...this.current };
+    return copySettings(this.current);
   }
 
   show(s: Settings): void {
-    this.current = { ...s };
+    this.current = copySettings(s);
+    if (this.slidersFor !== s.scene) this.makeSliders(s.scene);
     for (const { spec, input, output } of this.sliders) {
-      const value = s[spec.key];
+      const value = s.params[spec.key];
       input.value = String(spec.slider ? spec.slider.toPosition(value) : value);
       input.setAttribute('aria-valuetext', spec.format(value));
       output.value = spec.format(value);
     }
+    this.sceneSelect.value = s.scene;
     this.seed.value = String(s.seed);
     this.broadphase.value = s.broadphase;
     this.integrator.value = s.integrator;
     this.renderer.value = s.renderer;
+    this.tool.value = s.tool;
     this.grid.checked = s.grid;
     this.aabb.checked = s.aabb;
+    for (const { key, input } of this.toggles) input.checked = s[key];
     // Naive tests every pair: offered only while a step stays well under a second.
     const naive = this.broadphase.querySelector<HTMLOptionElement>('option[value="naive"]');
     if (naive) {
-      naive.disabled = s.n > NAIVE_LIMIT;
+      naive.disabled = s.params.n > NAIVE_LIMIT;
       naive.title = naive.disabled ? `O(n²): only up to ${NAIVE_LIMIT.toLocaleString('en-US')} bodies` : '';
     }
   }
@@ -117,10 +146,23 @@ export class Controls {
     }
   }
 
+  private makeSliders(scene: SceneChoice): void {
+    for (const { input } of this.sliders) input.parentElement?.remove();
+    this.sliders = [];
+    const seedField = this.seed.closest('.field');
+    for (const spec of sceneSpecs(scene)) {
+      const slider = this.makeSlider(spec);
+      this.fieldset.insertBefore(slider.input.parentElement as HTMLElement, seedField);
+      this.sliders.push(slider);
+    }
+    this.slidersFor = scene;
+  }
+
   private makeSlider(spec: NumberSpec): Slider {
     const id = `slider-${spec.key}`;
     const field = document.createElement('div');
     field.className = 'field';
+    field.title = spec.description;
     const label = document.createElement('label');
     label.htmlFor = id;
     const name = document.createElement('span');
@@ -140,11 +182,11 @@ export class Controls {
     input.addEventListener('input', () => {
       const raw = Number(input.value);
       const value = clampNumber(spec, spec.slider ? spec.slider.toValue(raw) : raw);
-      if (value === this.current[spec.key]) return;
-      this.current[spec.key] = value;
+      if (value === this.current.params[spec.key]) return;
+      this.current.params[spec.key] = value;
       output.value = spec.format(value);
       input.setAttribute('aria-valuetext', spec.format(value));
-      this.events.scene({ ...this.current });
+      this.events.scene(copySettings(this.current));
     });
     return { spec, input, output };
   }

@@ -25,9 +25,11 @@ export function toJson(recorder: Recorder, settings: Settings, dt: number, broad
     for (let i = 0; i < ring.length; i++) out[i] = ring.at(i);
     series[c] = out;
   }
+  // Settings flattened as the URL has them (n, seed, gravity, ... at the top), one level deep.
+  const { params, ...rest } = settings;
   return JSON.stringify({
-    scene: 'seed-box',
-    settings,
+    scene: settings.scene,
+    settings: { ...rest, ...params },
     dt,
     broadphase,
     integrator,

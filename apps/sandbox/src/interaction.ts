@@ -1,3 +1,4 @@
+import type { QueryTool } from './query-tool.js';
 import type { Simulation } from './simulation.js';
 import type { ViewTransform } from './view.js';
 
@@ -5,25 +6,28 @@ import type { ViewTransform } from './view.js';
 const CLICK_SLOP = 5;
 
 /**
- * Mouse, pen and touch through pointer events: press on a circle to drag it (releasing throws it
- * with the pointer's velocity), click empty space to add a circle of the current size.
+ * Mouse, pen and touch through pointer events, by tool. Drag: press on a circle to drag it
+ * (releasing throws it with the pointer's velocity), click empty space to add a circle of the
+ * scene's size. Ray: press and drag to cast a ray from the press to the pointer. Point: hover to
+ * ask which circles contain the pointer.
  */
 export function attachPointer(
   target: HTMLElement,
   sim: Simulation,
   view: ViewTransform,
+  query: QueryTool,
   spawnRadius: () => number,
-  onSpawn: () => void,
+  onChange: () => void,
 ): void {
   let pointerId = -1;
   let startX = 0;
   let startY = 0;
   let onEmpty = false;
+  let rayStartX = 0;
+  let rayStartY = 0;
 
-  const local = (e: PointerEvent): { x: number; y: number } => {
-    const rect = target.getBoundingClientRect();
-    return { x: view.toWorldX(e.clientX - rect.left), y: view.toWorldY(e.clientY - rect.top) };
-  };
+  const worldX = (e: PointerEvent) => view.toWorldX(e.clientX - target.getBoundingClientRect().left);
+  const worldY = (e: PointerEvent) => view.toWorldY(e.clientY - target.getBoundingClientRect().top);
 
   target.addEventListener('pointerdown', (e) => {
     if (pointerId >= 0 || e.button !== 0) return;
@@ -31,33 +35,60 @@ export function attachPointer(
     target.setPointerCapture(e.pointerId);
     startX = e.clientX;
     startY = e.clientY;
-    const p = local(e);
-    const handle = sim.bodyAt(p.x, p.y);
-    onEmpty = handle < 0;
-    if (!onEmpty) sim.beginDrag(handle, p.x, p.y);
+    const x = worldX(e);
+    const y = worldY(e);
     e.preventDefault();
+    if (query.tool === 'ray') {
+      rayStartX = x;
+      rayStartY = y;
+      query.ray(x, y, x, y);
+      return;
+    }
+    if (query.tool === 'point') {
+      query.point(x, y);
+      return;
+    }
+    const handle = sim.bodyAt(x, y);
+    onEmpty = handle < 0;
+    if (!onEmpty) sim.beginDrag(handle, x, y);
   });
 
   target.addEventListener('pointermove', (e) => {
-    if (e.pointerId !== pointerId || onEmpty) return;
-    const p = local(e);
-    sim.moveDrag(p.x, p.y);
+    // The Point tool follows a hovering mouse too, not only a pressed one.
+    if (query.tool === 'point') {
+      if (pointerId < 0 || e.pointerId === pointerId) query.point(worldX(e), worldY(e));
+      return;
+    }
+    if (e.pointerId !== pointerId) return;
+    if (query.tool === 'ray') query.ray(rayStartX, rayStartY, worldX(e), worldY(e));
+    else if (!onEmpty) sim.moveDrag(worldX(e), worldY(e));
+  });
+
+  target.addEventListener('pointerleave', (e) => {
+    if (query.tool === 'point' && e.pointerId !== pointerId) query.leavePoint();
   });
 
   const finish = (e: PointerEvent, cancelled: boolean) => {
     if (e.pointerId !== pointerId) return;
     pointerId = -1;
+    if (query.tool === 'ray') {
+      if (!cancelled) query.ray(rayStartX, rayStartY, worldX(e), worldY(e));
+      onChange();
+      return;
+    }
+    if (query.tool === 'point') return;
     if (!onEmpty) {
       sim.endDrag();
       return;
     }
     const moved = Math.hypot(e.clientX - startX, e.clientY - startY);
     if (cancelled || moved > CLICK_SLOP) return;
-    const p = local(e);
+    const x = worldX(e);
+    const y = worldY(e);
     const box = sim.box;
-    if (p.x < 0 || p.y < 0 || p.x > box.width || p.y > box.height) return;
-    sim.spawn(p.x, p.y, spawnRadius());
-    onSpawn();
+    if (x < 0 || y < 0 || x > box.width || y > box.height) return;
+    sim.spawn(x, y, spawnRadius());
+    onChange();
   };
   target.addEventListener('pointerup', (e) => finish(e, false));
   target.addEventListener('pointercancel', (e) => finish(e, true));

@@ -2,11 +2,22 @@ import { Controls } from './controls.js';
 import { download, toCsv, toJson } from './data-export.js';
 import { attachPointer } from './interaction.js';
 import { MonitorPanel } from './monitor/panel.js';
+import { QueryTool } from './query-tool.js';
 import { Canvas2DRenderer } from './render/canvas2d.js';
-import { Overlay } from './render/overlay.js';
-import type { Renderer } from './render/renderer.js';
+import { Overlay, type OverlayOptions } from './render/overlay.js';
+import type { Renderer, SceneShapes } from './render/renderer.js';
 import { WebGLRenderer } from './render/webgl.js';
-import { NAIVE_LIMIT, parseSettings, serializeSettings, usableBroadphase, type RendererName, type Settings } from './settings.js';
+import { spawnRadius } from './scene-specs.js';
+import {
+  NAIVE_LIMIT,
+  copySettings,
+  defaultSettings,
+  parseSettings,
+  serializeSettings,
+  usableBroadphase,
+  type RendererName,
+  type Settings,
+} from './settings.js';
 import { DT, Simulation } from './simulation.js';
 import { ViewTransform } from './view.js';
 
@@ -26,6 +37,7 @@ const pauseButton = byId<HTMLButtonElement>('pause');
 const sim = new Simulation();
 const view = new ViewTransform();
 const monitor = new MonitorPanel(sim.recorder);
+const query = new QueryTool(byId('query-readout'));
 const renderers: Partial<Record<RendererName, Renderer>> = { canvas: new Canvas2DRenderer(canvas2d) };
 let renderer: Renderer = renderers.canvas as Renderer;
 
@@ -48,25 +60,55 @@ function say(message: string): void {
 }
 
 function engineFor(s: Settings): Settings {
-  const broadphase = usableBroadphase(s.broadphase, s.n);
+  const broadphase = usableBroadphase(s.broadphase, s.params.n);
   if (broadphase !== s.broadphase) say(`The naive broad-phase is offered up to ${NAIVE_LIMIT.toLocaleString('en-US')} bodies; using maxgrid.`);
-  return { ...s, broadphase };
+  else if (s.scene === 'mixed' && broadphase === 'maxgrid') {
+    say('Max Grid sizes every cell by the largest circle, so here it tests many pairs; try hgrid or auto.');
+  }
+  return { ...copySettings(s), broadphase };
 }
 
+/**
+ * Builds the world for `next`. A scene may refuse its parameters (more circles than fit the funnel,
+ * a minimum radius above the maximum): then the page says why and keeps, or falls back to, a
+ * scene that builds, so the controls and the URL always describe the world on screen.
+ */
 function rebuild(next: Settings): void {
-  settings = engineFor(next);
-  sim.rebuild(settings);
+  say('');
+  let wanted = engineFor(next);
+  try {
+    sim.rebuild(wanted);
+  } catch (error) {
+    const fallback = sim.world ? settings : { ...defaultSettings(wanted.scene), ...pickView(wanted) };
+    say(`${error instanceof Error ? error.message : String(error)}; kept the last scene that fits.`);
+    wanted = fallback;
+    sim.rebuild(wanted);
+  }
+  settings = wanted;
+  query.clear();
+  query.setTool(settings.tool);
   controls.show(settings);
   saveUrl();
   forceStats = true;
 }
 
+/** The choices that are not the scene: kept when a URL's scene falls back to its defaults. */
+function pickView(s: Settings): Partial<Settings> {
+  const { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, layers, tool } = s;
+  return { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, layers, tool };
+}
+
 function applyLive(next: Settings): void {
   say('');
-  settings = engineFor({ ...next, n: settings.n });
+  settings = engineFor({ ...next, params: settings.params });
   sim.setBroadphase(settings.broadphase);
   sim.setIntegrator(settings.integrator);
   settings.renderer = selectRenderer(settings.renderer);
+  if (settings.tool !== query.tool) {
+    sim.endDrag();
+    query.setTool(settings.tool);
+    query.update(sim.world);
+  }
   controls.show(settings);
   saveUrl();
 }
@@ -105,7 +147,8 @@ function resize(): void {
 
 // Buttons and clicks refresh the numbers at once, so what is on screen matches what was done.
 function refreshStats(): void {
-  monitor.update(performance.now(), sim.world, sim.time, true);
+  query.update(sim.world);
+  monitor.update(performance.now(), sim, true);
 }
 
 pauseButton.addEventListener('click', () => {
@@ -123,12 +166,16 @@ byId('reset').addEventListener('click', () => {
 });
 byId('download').addEventListener('click', () => {
   const format = byId<HTMLSelectElement>('format').value;
-  const base = `maxgrid-seed-box-n${settings.n}-seed${settings.seed}`;
+  const base = `maxgrid-${settings.scene}-n${settings.params.n}-seed${settings.seed}`;
   const world = sim.world;
   if (format === 'json') download(`${base}.json`, 'application/json', toJson(sim.recorder, settings, DT, world.broadphase, world.integrator));
   else download(`${base}.csv`, 'text/csv', toCsv(sim.recorder));
 });
-attachPointer(overlay.canvas, sim, view, () => settings.size, refreshStats);
+attachPointer(overlay.canvas, sim, view, query, () => spawnRadius(settings.scene, settings.params), refreshStats);
+
+// Read by the renderers and the overlay every frame: kept up to date in place, never rebuilt.
+const shapes: SceneShapes = { segments: sim.segments, staticCircles: 0, sleepers: 0 };
+const overlayOptions: OverlayOptions = { grid: false, aabb: false, held: -1, segments: sim.segments, touches: sim.touches, query };
 
 rebuild(settings);
 settings.renderer = selectRenderer(settings.renderer);
@@ -150,9 +197,16 @@ function frame(now: number): void {
   }
   sim.advance(elapsed);
   resize();
-  renderer.draw(sim.world.views(), sim.colors, view, sim.box);
-  overlay.draw(sim.world, view, { grid: settings.grid, aabb: settings.aabb, held: sim.dragging });
-  monitor.update(now, sim.world, sim.time, forceStats);
+  shapes.segments = overlayOptions.segments = sim.segments;
+  shapes.staticCircles = sim.staticCircles;
+  shapes.sleepers = sim.world.stats.sleepingBodies;
+  renderer.draw(sim.world.views(), sim.colors, view, sim.box, shapes);
+  overlayOptions.grid = settings.grid;
+  overlayOptions.aabb = settings.aabb;
+  overlayOptions.held = sim.dragging;
+  query.update(sim.world);
+  overlay.draw(sim.world, view, overlayOptions);
+  monitor.update(now, sim, forceStats);
   forceStats = false;
 }
 requestAnimationFrame(frame);

@@ -1,8 +1,10 @@
 import { World, BodyTypeCode, type BroadPhaseName, type IntegratorName } from '@maxgrid/engine';
-import { buildScene, buildWorld } from '@maxgrid/scenes';
+import { buildScene } from '@maxgrid/scenes';
 import { sceneParams, type Settings } from './settings.js';
 import { BodyColors } from './colors.js';
 import { Recorder } from './monitor/recorder.js';
+import { TouchEvents } from './touch-events.js';
+import { buildSandboxWorld, flatSegments, layerMask, layerOf } from './scene-world.js';
 
 /** The fixed physics step: rendering runs at whatever rate the display gives. */
 export const DT = 1 / 60;
@@ -31,24 +33,46 @@ export class Simulation {
   private gravityY = 0;
   /** Read every frame by the renderers, so one object kept up to date rather than a new one. */
   readonly box = { width: 1600, height: 900 };
+  /** Static segments of the scene (x1, y1, x2, y2, thickness each); they never change. */
+  segments: Float64Array = new Float64Array(0);
+  /** Static circles in the scene: renderers skip their extra pass when there are none. */
+  staticCircles = 0;
+  /** Begin and end touch events of the last step, and which bodies to flash. */
+  readonly touches = new TouchEvents();
+  /** World options of the current world, for the monitor to show what applies. */
+  layers = false;
+  continuous = true;
   private dragHandle = -1;
   private dragX = 0;
   private dragY = 0;
 
   constructor(private readonly now: () => number = () => performance.now()) {}
 
-  /** Rebuilds the seed-box scene from the settings: the same settings always give the same bodies. */
+  /**
+   * Rebuilds the scene from the settings: the same settings always give the same bodies. Throws,
+   * leaving the current world as it was, when the scene refuses its parameters (too many circles
+   * to fit the funnel, a minimum radius above the maximum).
+   */
   rebuild(settings: Settings): void {
-    const scene = buildScene('seed-box', sceneParams(settings));
-    this.world = buildWorld(scene, { broadphase: settings.broadphase, integrator: settings.integrator });
+    const scene = buildScene(settings.scene, sceneParams(settings));
+    this.world = buildSandboxWorld(scene, DT, settings);
+    this.layers = settings.layers;
+    this.continuous = settings.continuous;
+    this.segments = flatSegments(scene);
+    this.touches.reset(settings.events);
     this.boxWidth = scene.bounds.width;
     this.boxHeight = scene.bounds.height;
     this.box.width = this.boxWidth;
     this.box.height = this.boxHeight;
     this.gravityY = scene.gravity.y;
-    this.colors.reset(settings.seed, this.world.views().slotCount);
+    const v = this.world.views();
+    this.colors.reset(settings.seed, v.slotCount, settings.layers);
     this.dynamicMass = 0;
-    for (let k = 0; k < scene.count; k++) this.dynamicMass += this.world.getCircle(k).mass;
+    this.staticCircles = 0;
+    for (let s = 0; s < v.slotCount; s++) {
+      if (v.type[s] === BodyTypeCode.dynamic) this.dynamicMass += v.mass[s];
+      else if (v.type[s] === BodyTypeCode.static) this.staticCircles++;
+    }
     this.recorder.clear();
     this.time = 0;
     this.accumulator = 0;
@@ -89,6 +113,7 @@ export class Simulation {
     this.applyDrag();
     world.step(DT);
     this.time += DT;
+    this.touches.record(world);
     const stats = world.stats;
     this.recorder.record(this.time, stats.totalMs, world.kineticEnergy(), this.potentialEnergy(), stats.candidatePairs, stats.contacts);
   }
@@ -103,12 +128,24 @@ export class Simulation {
     return this.world.potentialEnergy() + (g > 0 ? g * this.boxHeight * this.dynamicMass : 0);
   }
 
-  /** The handle of the topmost body under a world point, or -1. Scans every body: per click only. */
+  /** Dynamic bodies whose centre is in the lower half of the box: shows a scene falling. */
+  lowerHalf(): number {
+    const v = this.world.views();
+    const half = this.boxHeight / 2;
+    let n = 0;
+    for (let s = 0; s < v.slotCount; s++) if (v.type[s] === BodyTypeCode.dynamic && v.y[s] > half) n++;
+    return n;
+  }
+
+  /**
+   * The handle of the topmost movable body under a world point, or -1. Static pegs are not
+   * picked up: a drag ends by making the body dynamic. Scans every body: per click only.
+   */
   bodyAt(x: number, y: number): number {
     const v = this.world.views();
     let found = -1;
     for (let s = 0; s < v.slotCount; s++) {
-      if (v.type[s] === BodyTypeCode.free) continue;
+      if (v.type[s] === BodyTypeCode.free || v.type[s] === BodyTypeCode.static) continue;
       const dx = v.x[s] - x;
       const dy = v.y[s] - y;
       const r = Math.max(v.radius[s], 3);
@@ -156,6 +193,9 @@ export class Simulation {
     const cx = Math.min(this.boxWidth - r, Math.max(r, x));
     const cy = Math.min(this.boxHeight - r, Math.max(r, y));
     const handle = this.world.createCircle({ x: cx, y: cy, radius: r });
+    // Handles are generation × 2²⁴ + slot: the new body joins the layer of its slot, as built ones do.
+    const slot = handle % 2 ** 24;
+    if (this.layers) this.world.setCollisionFilter(handle, layerOf(slot), layerMask(slot));
     this.dynamicMass += this.world.getCircle(handle).mass;
     this.colors.ensure(this.world.views().slotCount);
     return handle;

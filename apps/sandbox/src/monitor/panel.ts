@@ -1,4 +1,4 @@
-import type { World } from '@maxgrid/engine';
+import type { Simulation } from '../simulation.js';
 import { LineChart } from './chart.js';
 import type { Recorder } from './recorder.js';
 import { Ring } from './ring.js';
@@ -45,9 +45,25 @@ export class MonitorPanel {
     time: byId('stat-time'),
     stepMs: byId('stat-step-ms'),
     fps: byId('stat-fps'),
+    pairTests: byId('stat-pair-tests'),
     candidates: byId('stat-candidates'),
     contacts: byId('stat-contacts'),
     falsePositives: byId('stat-false-positives'),
+    lowerHalf: byId('stat-lower-half'),
+    sleeping: byId('stat-sleeping'),
+    segmentContacts: byId('stat-segment-contacts'),
+    swept: byId('stat-swept'),
+    filtered: byId('stat-filtered'),
+    begin: byId('stat-begin'),
+    end: byId('stat-end'),
+  };
+  // Rows for features that may not apply: shown only when the scene or a toggle makes them count.
+  private readonly rows = {
+    segmentContacts: byId('row-segment-contacts'),
+    swept: byId('row-swept'),
+    filtered: byId('row-filtered'),
+    begin: byId('row-begin'),
+    end: byId('row-end'),
   };
   private lastText = -Infinity;
   private lastChart = -Infinity;
@@ -71,23 +87,38 @@ export class MonitorPanel {
   }
 
   /** Call once per frame; `force` refreshes the text now (after a rebuild or a single step). */
-  update(now: number, world: World, time: number, force = false): void {
+  update(now: number, sim: Simulation, force = false): void {
     if (force || now - this.lastText >= 250) {
       this.lastText = now;
+      const world = sim.world;
       const st = world.stats;
       const o = this.out;
       o.bodies.textContent = integer(world.bodyCount);
       o.steps.textContent = integer(st.steps);
-      o.time.textContent = `${time.toFixed(2)} s`;
+      o.time.textContent = `${sim.time.toFixed(2)} s`;
       const stepMs = recentMean(this.recorder.series.step_ms);
       o.stepMs.textContent = Number.isFinite(stepMs) ? `${stepMs.toFixed(2)} ms` : '–';
       const fps = recentRate(this.fps);
       o.fps.textContent = Number.isFinite(fps) ? `${fps.toFixed(0)} fps` : '–';
+      o.pairTests.textContent = integer(st.pairTests);
       o.candidates.textContent = integer(st.candidatePairs);
       o.contacts.textContent = integer(st.contacts);
-      // Candidates the narrow-phase rejected: how much work the broad-phase wasted.
-      o.falsePositives.textContent =
-        st.candidatePairs > 0 ? `${(100 * (1 - st.contacts / st.candidatePairs)).toFixed(1)}%` : '–';
+      // Pairs the broad-phase examined that were not touching: the report's measure of its wasted
+      // work. Measured on pair tests, since the grids already drop most non-touching pairs before
+      // they become candidates.
+      o.falsePositives.textContent = st.pairTests > 0 ? `${(100 * (1 - st.contacts / st.pairTests)).toFixed(1)}%` : '–';
+      o.lowerHalf.textContent = integer(sim.lowerHalf());
+      o.sleeping.textContent = integer(st.sleepingBodies);
+      const r = this.rows;
+      r.segmentContacts.hidden = sim.segments.length === 0;
+      o.segmentContacts.textContent = integer(st.segmentContacts);
+      r.swept.hidden = !sim.continuous;
+      o.swept.textContent = integer(st.sweptBodies);
+      r.filtered.hidden = !sim.layers;
+      o.filtered.textContent = integer(st.filteredPairs);
+      r.begin.hidden = r.end.hidden = !sim.touches.enabled;
+      o.begin.textContent = integer(sim.touches.begins);
+      o.end.textContent = integer(sim.touches.ends);
     }
     if (force || now - this.lastChart >= 100) {
       this.lastChart = now;

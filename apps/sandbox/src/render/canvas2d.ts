@@ -1,7 +1,7 @@
 import { BodyTypeCode, type BodyViews } from '@maxgrid/engine';
-import { PALETTE_SIZE, type BodyColors } from '../colors.js';
+import { PALETTE_SIZE, STATIC_COLOR, type BodyColors } from '../colors.js';
 import type { ViewTransform } from '../view.js';
-import { BACKGROUND, BOX_FILL, type Renderer } from './renderer.js';
+import { BACKGROUND, BOX_FILL, SLEEP_DIM, type Renderer, type SceneShapes } from './renderer.js';
 
 const TAU = 2 * Math.PI;
 
@@ -22,7 +22,7 @@ export class Canvas2DRenderer implements Renderer {
     this.ctx = ctx;
   }
 
-  draw(v: BodyViews, colors: BodyColors, view: ViewTransform, box: { width: number; height: number }): void {
+  draw(v: BodyViews, colors: BodyColors, view: ViewTransform, box: { width: number; height: number }, shapes: SceneShapes): void {
     const ctx = this.ctx;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.fillStyle = BACKGROUND;
@@ -30,6 +30,18 @@ export class Canvas2DRenderer implements Renderer {
     ctx.setTransform(view.scale, 0, 0, view.scale, view.offsetX, view.offsetY);
     ctx.fillStyle = BOX_FILL;
     ctx.fillRect(0, 0, box.width, box.height);
+
+    // Segments are capsules of radius `thickness`: a line that wide with round caps is exactly that.
+    const seg = shapes.segments;
+    ctx.strokeStyle = STATIC_COLOR;
+    ctx.lineCap = 'round';
+    for (let i = 0; i < seg.length; i += 5) {
+      ctx.lineWidth = Math.max(2 * seg[i + 4], 1 / view.scale);
+      ctx.beginPath();
+      ctx.moveTo(seg[i], seg[i + 1]);
+      ctx.lineTo(seg[i + 2], seg[i + 3]);
+      ctx.stroke();
+    }
 
     const { x, y, radius, type, slotCount } = v;
     const { order, start } = colors;
@@ -40,17 +52,35 @@ export class Canvas2DRenderer implements Renderer {
       ctx.beginPath();
       for (let k = start[p]; k < end; k++) {
         const s = order[k];
-        if (s >= slotCount || type[s] === BodyTypeCode.free) continue;
-        const r = radius[s];
-        if (r < tiny) {
-          ctx.rect(x[s] - tiny, y[s] - tiny, 2 * tiny, 2 * tiny);
-        } else {
-          ctx.moveTo(x[s] + r, y[s]);
-          ctx.arc(x[s], y[s], r, 0, TAU);
-        }
+        if (s >= slotCount || type[s] === BodyTypeCode.free || type[s] === BodyTypeCode.static) continue;
+        this.addCircle(x[s], y[s], radius[s], tiny);
       }
       ctx.fillStyle = colors.css[p];
       ctx.fill();
+    }
+    // Two more passes only when the scene has static circles or sleepers: one path each.
+    if (shapes.staticCircles > 0) {
+      ctx.beginPath();
+      for (let s = 0; s < slotCount; s++) if (type[s] === BodyTypeCode.static) this.addCircle(x[s], y[s], radius[s], tiny);
+      ctx.fillStyle = STATIC_COLOR;
+      ctx.fill();
+    }
+    if (shapes.sleepers > 0) {
+      const asleep = v.asleep;
+      ctx.beginPath();
+      for (let s = 0; s < slotCount; s++) if (asleep[s] === 1 && type[s] !== BodyTypeCode.free) this.addCircle(x[s], y[s], radius[s], tiny);
+      ctx.fillStyle = SLEEP_DIM;
+      ctx.fill();
+    }
+  }
+
+  private addCircle(cx: number, cy: number, r: number, tiny: number): void {
+    const ctx = this.ctx;
+    if (r < tiny) {
+      ctx.rect(cx - tiny, cy - tiny, 2 * tiny, 2 * tiny);
+    } else {
+      ctx.moveTo(cx + r, cy);
+      ctx.arc(cx, cy, r, 0, TAU);
     }
   }
 }

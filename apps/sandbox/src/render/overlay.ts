@@ -1,4 +1,6 @@
 import { BodyTypeCode, type GridGeometry, type World } from '@maxgrid/engine';
+import type { QueryTool } from '../query-tool.js';
+import type { TouchEvents } from '../touch-events.js';
 import type { ViewTransform } from '../view.js';
 
 export interface OverlayOptions {
@@ -6,12 +8,22 @@ export interface OverlayOptions {
   aabb: boolean;
   /** Handle of the body being dragged, or -1. */
   held: number;
+  /** Static segments (x1, y1, x2, y2, thickness each), for their AABBs. */
+  segments: Float64Array;
+  touches: TouchEvents;
+  query: QueryTool;
 }
 
+export const RAY_COLOR = '#f0f6fc';
+export const HIT_COLOR = '#ff7b72';
+const POINT_COLOR = '#e3b341';
+const FLASH_COLOR = 'rgba(255, 255, 255, 0.85)';
+
 /**
- * A transparent 2D canvas above the renderer: the report's draw-grid function (5.11.2), each
- * body's AABB, and a ring around the held body. It works over either renderer, and stays blank
- * (one clear) when nothing is switched on.
+ * A transparent 2D canvas above the renderer: the report's draw-grid function (5.11.2), AABBs of
+ * bodies and segments, a ring around the held body, flashes where touches began, and the query
+ * tools' rays, hits and highlights. It works over either renderer, and stays blank (one clear)
+ * when nothing is switched on.
  */
 export class Overlay {
   private readonly ctx: CanvasRenderingContext2D;
@@ -23,9 +35,11 @@ export class Overlay {
     this.ctx = ctx;
   }
 
-  draw(world: World, view: ViewTransform, options: OverlayOptions): void {
+  draw(world: World, view: ViewTransform, o: OverlayOptions): void {
     const ctx = this.ctx;
-    const empty = !options.grid && !options.aabb && options.held < 0;
+    const q = o.query;
+    const querying = (q.tool === 'ray' && q.hasRay) || (q.tool === 'point' && q.hasPoint);
+    const empty = !o.grid && !o.aabb && o.held < 0 && !o.touches.enabled && !querying;
     if (empty && this.wasEmpty) return;
     this.wasEmpty = empty;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
@@ -35,29 +49,95 @@ export class Overlay {
     const hairline = 1 / view.scale;
     ctx.lineWidth = hairline;
 
-    if (options.grid) {
+    if (o.grid) {
       const g = world.gridGeometry();
       if (g && g.cellSize > 0) this.drawGrid(g, view);
     }
-    if (options.aabb) {
-      const v = world.views();
-      ctx.strokeStyle = 'rgba(255, 210, 80, 0.55)';
-      ctx.beginPath();
-      for (let s = 0; s < v.slotCount; s++) {
-        if (v.type[s] === BodyTypeCode.free) continue;
-        const r = v.radius[s];
-        ctx.rect(v.x[s] - r, v.y[s] - r, 2 * r, 2 * r);
-      }
-      ctx.stroke();
-    }
-    if (options.held >= 0 && world.hasBody(options.held)) {
-      const c = world.getCircle(options.held);
+    if (o.aabb) this.drawBoxes(world, o.segments);
+    if (o.touches.enabled) this.drawFlashes(world, o.touches, hairline);
+    if (o.held >= 0 && world.hasBody(o.held)) {
+      const c = world.getCircle(o.held);
       ctx.strokeStyle = '#ffffff';
       ctx.lineWidth = 2 * hairline;
       ctx.beginPath();
       ctx.arc(c.x, c.y, c.radius + 3 * hairline, 0, 2 * Math.PI);
       ctx.stroke();
     }
+    if (q.tool === 'ray' && q.hasRay) this.drawRay(q, hairline);
+    if (q.tool === 'point' && q.hasPoint) this.drawPoint(world, q, hairline);
+  }
+
+  private drawBoxes(world: World, seg: Float64Array): void {
+    const ctx = this.ctx;
+    const v = world.views();
+    ctx.strokeStyle = 'rgba(255, 210, 80, 0.55)';
+    ctx.beginPath();
+    for (let s = 0; s < v.slotCount; s++) {
+      if (v.type[s] === BodyTypeCode.free) continue;
+      const r = v.radius[s];
+      ctx.rect(v.x[s] - r, v.y[s] - r, 2 * r, 2 * r);
+    }
+    for (let i = 0; i < seg.length; i += 5) {
+      const t = seg[i + 4];
+      const minX = Math.min(seg[i], seg[i + 2]) - t;
+      const minY = Math.min(seg[i + 1], seg[i + 3]) - t;
+      ctx.rect(minX, minY, Math.max(seg[i], seg[i + 2]) + t - minX, Math.max(seg[i + 1], seg[i + 3]) + t - minY);
+    }
+    ctx.stroke();
+  }
+
+  // A ring rather than a fill: in a pile touches begin every step, and fills would hide the bodies.
+  private drawFlashes(world: World, touches: TouchEvents, hairline: number): void {
+    const ctx = this.ctx;
+    const v = world.views();
+    ctx.strokeStyle = FLASH_COLOR;
+    ctx.lineWidth = 1.5 * hairline;
+    ctx.beginPath();
+    for (let s = 0; s < v.slotCount; s++) {
+      if (v.type[s] === BodyTypeCode.free || !touches.flashing(s)) continue;
+      ctx.moveTo(v.x[s] + v.radius[s], v.y[s]);
+      ctx.arc(v.x[s], v.y[s], v.radius[s], 0, 2 * Math.PI);
+    }
+    ctx.stroke();
+  }
+
+  private drawRay(q: QueryTool, hairline: number): void {
+    const ctx = this.ctx;
+    ctx.strokeStyle = RAY_COLOR;
+    ctx.lineWidth = 1.5 * hairline;
+    ctx.beginPath();
+    ctx.moveTo(q.x1, q.y1);
+    ctx.lineTo(q.x2, q.y2);
+    ctx.stroke();
+    // Each hit: a dot where the ray enters, and the surface normal there, 18 device pixels long.
+    const normal = 18 * hairline;
+    ctx.strokeStyle = HIT_COLOR;
+    ctx.fillStyle = HIT_COLOR;
+    ctx.lineWidth = 2 * hairline;
+    for (let k = 0; k < q.hits.length; k++) {
+      const h = q.hits[k];
+      ctx.beginPath();
+      ctx.arc(h.x, h.y, (k === 0 ? 5 : 3.5) * hairline, 0, 2 * Math.PI);
+      ctx.fill();
+      ctx.beginPath();
+      ctx.moveTo(h.x, h.y);
+      ctx.lineTo(h.x + h.normalX * normal, h.y + h.normalY * normal);
+      ctx.stroke();
+    }
+  }
+
+  private drawPoint(world: World, q: QueryTool, hairline: number): void {
+    const ctx = this.ctx;
+    ctx.strokeStyle = POINT_COLOR;
+    ctx.lineWidth = 2.5 * hairline;
+    ctx.beginPath();
+    for (const h of q.under) {
+      if (!world.hasBody(h)) continue;
+      const c = world.getCircle(h);
+      ctx.moveTo(c.x + c.radius + 2 * hairline, c.y);
+      ctx.arc(c.x, c.y, c.radius + 2 * hairline, 0, 2 * Math.PI);
+    }
+    ctx.stroke();
   }
 
   // Cells thinner than ~3 device pixels would paint the whole box grey; draw every k-th line then.
@@ -67,6 +147,7 @@ export class Overlay {
     const x1 = g.originX + g.columns * g.cellSize;
     const y1 = g.originY + g.rows * g.cellSize;
     ctx.strokeStyle = 'rgba(88, 166, 255, 0.45)';
+    ctx.lineWidth = 1 / view.scale;
     ctx.beginPath();
     for (let c = 0; c <= g.columns; c += every) {
       const x = g.originX + c * g.cellSize;

@@ -1,12 +1,20 @@
 import { BodyTypeCode, type BodyViews } from '@maxgrid/engine';
-import type { BodyColors } from '../colors.js';
+import { STATIC_RGB, type BodyColors } from '../colors.js';
 import type { ViewTransform } from '../view.js';
-import type { Renderer } from './renderer.js';
+import type { Renderer, SceneShapes } from './renderer.js';
+import { SegmentLayer } from './webgl-segments.js';
+import { link, must } from './webgl-util.js';
+
+/** Per-instance state codes, the fourth float of each body. */
+const NORMAL = 0;
+const STATIC = 1;
+const ASLEEP = 2;
 
 const VERTEX = `#version 300 es
 in vec2 a_corner;
-in vec3 a_body;   // x, y, radius in world units
+in vec4 a_body;   // x, y, radius in world units, state (0 normal, 1 static, 2 asleep)
 in vec4 a_color;
+uniform vec3 u_static;
 uniform vec2 u_scale;   // world units -> clip space
 uniform vec2 u_offset;
 uniform float u_pixels; // device pixels per world unit
@@ -22,7 +30,10 @@ void main() {
   gl_Position = vec4(world * u_scale + u_offset, 0.0, 1.0);
   v_local = a_corner * (rPx + 1.0);
   v_radiusPx = a_body.z > 0.0 ? rPx : -1.0;
-  v_color = a_color;
+  // Static circles share the segments' colour; sleepers fade towards the box, as on canvas 2D.
+  v_color = a_body.w == 1.0 ? vec4(u_static, 1.0)
+          : a_body.w == 2.0 ? vec4(mix(a_color.rgb, vec3(0.086, 0.106, 0.133), 0.6), 1.0)
+          : a_color;
 }`;
 
 const FRAGMENT = `#version 300 es
@@ -39,8 +50,9 @@ void main() {
 
 /**
  * Instanced WebGL 2: one quad, one draw call for every body. Per frame the only work on the CPU is
- * copying x, y and radius from the engine's Float64 views into one reused Float32 buffer; colours
- * are uploaded only when they change. Free slots get radius 0, which the shaders skip.
+ * copying x, y, radius and a state code (static, asleep) from the engine's Float64 views into one
+ * reused Float32 buffer; colours are uploaded only when they change. Free slots get radius 0,
+ * which the shaders skip. Segments are a second instanced draw (webgl-segments.ts).
  */
 export class WebGLRenderer implements Renderer {
   private readonly gl: WebGL2RenderingContext;
@@ -51,6 +63,7 @@ export class WebGLRenderer implements Renderer {
   private readonly uScale: WebGLUniformLocation | null;
   private readonly uOffset: WebGLUniformLocation | null;
   private readonly uPixels: WebGLUniformLocation | null;
+  private readonly segments: SegmentLayer;
   private bodies = new Float32Array(0);
   private gpuCapacity = 0;
   private colorVersion = -1;
@@ -65,6 +78,8 @@ export class WebGLRenderer implements Renderer {
     this.uScale = gl.getUniformLocation(this.program, 'u_scale');
     this.uOffset = gl.getUniformLocation(this.program, 'u_offset');
     this.uPixels = gl.getUniformLocation(this.program, 'u_pixels');
+    gl.useProgram(this.program);
+    gl.uniform3f(gl.getUniformLocation(this.program, 'u_static'), STATIC_RGB[0] / 255, STATIC_RGB[1] / 255, STATIC_RGB[2] / 255);
 
     this.vao = must(gl.createVertexArray(), 'vertex array');
     gl.bindVertexArray(this.vao);
@@ -79,7 +94,7 @@ export class WebGLRenderer implements Renderer {
     gl.bindBuffer(gl.ARRAY_BUFFER, this.bodyBuffer);
     const body = gl.getAttribLocation(this.program, 'a_body');
     gl.enableVertexAttribArray(body);
-    gl.vertexAttribPointer(body, 3, gl.FLOAT, false, 0, 0);
+    gl.vertexAttribPointer(body, 4, gl.FLOAT, false, 0, 0);
     gl.vertexAttribDivisor(body, 1);
 
     this.colorBuffer = must(gl.createBuffer(), 'buffer');
@@ -89,12 +104,13 @@ export class WebGLRenderer implements Renderer {
     gl.vertexAttribPointer(color, 4, gl.UNSIGNED_BYTE, true, 0, 0);
     gl.vertexAttribDivisor(color, 1);
     gl.bindVertexArray(null);
+    this.segments = new SegmentLayer(gl, quad);
 
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
   }
 
-  draw(v: BodyViews, colors: BodyColors, view: ViewTransform, box: { width: number; height: number }): void {
+  draw(v: BodyViews, colors: BodyColors, view: ViewTransform, box: { width: number; height: number }, shapes: SceneShapes): void {
     const gl = this.gl;
     const n = v.slotCount;
     gl.viewport(0, 0, view.width, view.height);
@@ -112,15 +128,24 @@ export class WebGLRenderer implements Renderer {
     gl.clearColor(0x16 / 255, 0x1b / 255, 0x22 / 255, 1);
     gl.clear(gl.COLOR_BUFFER_BIT);
     gl.disable(gl.SCISSOR_TEST);
+
+    // World (0,0) at the top left with y down, as the engine's box is.
+    const sx = (2 * view.scale) / view.width;
+    const sy = (-2 * view.scale) / view.height;
+    const ox = (2 * view.offsetX) / view.width - 1;
+    const oy = 1 - (2 * view.offsetY) / view.height;
+    this.segments.draw(shapes.segments, sx, sy, ox, oy, view.scale);
     if (n === 0) return;
 
-    if (this.bodies.length < n * 3) this.bodies = new Float32Array(Math.max(n, (this.bodies.length / 3) * 2) * 3);
+    if (this.bodies.length < n * 4) this.bodies = new Float32Array(Math.max(n, (this.bodies.length / 4) * 2) * 4);
     const out = this.bodies;
-    const { x, y, radius, type } = v;
-    for (let s = 0, o = 0; s < n; s++, o += 3) {
+    const { x, y, radius, type, asleep } = v;
+    for (let s = 0, o = 0; s < n; s++, o += 4) {
+      const t = type[s];
       out[o] = x[s];
       out[o + 1] = y[s];
-      out[o + 2] = type[s] === BodyTypeCode.free ? 0 : radius[s];
+      out[o + 2] = t === BodyTypeCode.free ? 0 : radius[s];
+      out[o + 3] = t === BodyTypeCode.static ? STATIC : asleep[s] === 1 ? ASLEEP : NORMAL;
     }
 
     gl.useProgram(this.program);
@@ -130,7 +155,7 @@ export class WebGLRenderer implements Renderer {
       gl.bufferData(gl.ARRAY_BUFFER, out.byteLength, gl.DYNAMIC_DRAW);
       this.gpuCapacity = out.length;
     }
-    gl.bufferSubData(gl.ARRAY_BUFFER, 0, out, 0, n * 3);
+    gl.bufferSubData(gl.ARRAY_BUFFER, 0, out, 0, n * 4);
     if (colors.version !== this.colorVersion || this.colorCapacity < n) {
       gl.bindBuffer(gl.ARRAY_BUFFER, this.colorBuffer);
       gl.bufferData(gl.ARRAY_BUFFER, colors.rgba, gl.STATIC_DRAW);
@@ -138,35 +163,10 @@ export class WebGLRenderer implements Renderer {
       this.colorCapacity = colors.rgba.length / 4;
     }
 
-    // World (0,0) at the top left with y down, as the engine's box is.
-    const sx = (2 * view.scale) / view.width;
-    const sy = (-2 * view.scale) / view.height;
     gl.uniform2f(this.uScale, sx, sy);
-    gl.uniform2f(this.uOffset, (2 * view.offsetX) / view.width - 1, 1 - (2 * view.offsetY) / view.height);
+    gl.uniform2f(this.uOffset, ox, oy);
     gl.uniform1f(this.uPixels, view.scale);
     gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, n);
     gl.bindVertexArray(null);
   }
-}
-
-function must<T>(value: T | null, what: string): T {
-  if (value === null) throw new Error(`WebGL could not create a ${what}`);
-  return value;
-}
-
-function compile(gl: WebGL2RenderingContext, kind: number, source: string): WebGLShader {
-  const shader = must(gl.createShader(kind), 'shader');
-  gl.shaderSource(shader, source);
-  gl.compileShader(shader);
-  if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS)) throw new Error(`shader: ${gl.getShaderInfoLog(shader) ?? 'unknown error'}`);
-  return shader;
-}
-
-function link(gl: WebGL2RenderingContext, vertex: string, fragment: string): WebGLProgram {
-  const program = must(gl.createProgram(), 'program');
-  gl.attachShader(program, compile(gl, gl.VERTEX_SHADER, vertex));
-  gl.attachShader(program, compile(gl, gl.FRAGMENT_SHADER, fragment));
-  gl.linkProgram(program);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) throw new Error(`program: ${gl.getProgramInfoLog(program) ?? 'unknown error'}`);
-  return program;
 }

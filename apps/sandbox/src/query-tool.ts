@@ -1,0 +1,97 @@
+import type { RayHit, World } from '@maxgrid/engine';
+import type { ToolName } from './settings.js';
+
+/**
+ * The Ray and Point tools: what the pointer asks the engine's queries, and their last answers.
+ * Bodies move between frames, so the active query is asked again after every step; it allocates
+ * only for what it finds (the engine's query calls return fresh arrays), never per body.
+ */
+export class QueryTool {
+  tool: ToolName = 'drag';
+  /** A ray exists once a drag with the Ray tool has begun; it stays after release. */
+  hasRay = false;
+  x1 = 0;
+  y1 = 0;
+  x2 = 0;
+  y2 = 0;
+  hits: RayHit[] = [];
+  /** Where the Point tool's pointer hovers, while it is over the stage. */
+  hasPoint = false;
+  px = 0;
+  py = 0;
+  under: number[] = [];
+  private dirty = true;
+  private askedAtStep = -1;
+
+  constructor(private readonly readout: HTMLElement) {}
+
+  setTool(tool: ToolName): void {
+    if (tool === this.tool) return;
+    this.tool = tool;
+    this.clear();
+  }
+
+  /** Forgets the ray and the point (a new world, or another tool). */
+  clear(): void {
+    this.hasRay = false;
+    this.hasPoint = false;
+    this.hits = [];
+    this.under = [];
+    this.dirty = true;
+    this.askedAtStep = -1;
+  }
+
+  ray(x1: number, y1: number, x2: number, y2: number): void {
+    this.hasRay = true;
+    this.x1 = x1;
+    this.y1 = y1;
+    this.x2 = x2;
+    this.y2 = y2;
+    this.dirty = true;
+  }
+
+  point(x: number, y: number): void {
+    this.hasPoint = true;
+    this.px = x;
+    this.py = y;
+    this.dirty = true;
+  }
+
+  leavePoint(): void {
+    this.hasPoint = false;
+    this.under = [];
+    this.dirty = true;
+  }
+
+  /** Asks again when the pointer moved or the world stepped since the last answer. */
+  update(world: World): void {
+    const steps = world.stats.steps;
+    if (!this.dirty && steps === this.askedAtStep) return;
+    this.dirty = false;
+    this.askedAtStep = steps;
+    if (this.tool === 'ray' && this.hasRay) {
+      // A ray of zero length (a click) has no direction; the engine would refuse it.
+      const moved = this.x1 !== this.x2 || this.y1 !== this.y2;
+      this.hits = moved ? world.rayCastAll(this.x1, this.y1, this.x2, this.y2) : [];
+    } else if (this.tool === 'point' && this.hasPoint) {
+      this.under = world.queryPoint(this.px, this.py);
+    }
+    this.readout.textContent = this.describe();
+  }
+
+  private describe(): string {
+    if (this.tool === 'ray') {
+      if (!this.hasRay) return 'Ray: drag across the bodies to cast a ray.';
+      const n = this.hits.length;
+      if (n === 0) return 'Ray: 0 hits';
+      const first = this.hits[0];
+      return `Ray: ${n} hit${n === 1 ? '' : 's'} · first: body ${first.handle} at fraction ${first.fraction.toFixed(3)}`;
+    }
+    if (this.tool === 'point') {
+      if (!this.hasPoint) return 'Point: hover over the bodies.';
+      const n = this.under.length;
+      return `Point: ${n} bod${n === 1 ? 'y' : 'ies'} under the pointer${n > 0 ? ` (${this.under.slice(0, 6).join(', ')}${n > 6 ? ', …' : ''})` : ''}`;
+    }
+    return '';
+  }
+}

@@ -1,0 +1,143 @@
+import { SCENES, seedBoxParams, type ParamSpec } from '@maxgrid/scenes';
+
+/** The scenes the page offers; bouncing-ball is one circle, a lab accuracy test rather than a view. */
+export const SCENE_CHOICES = ['seed-box', 'funnel', 'mixed', 'uniform'] as const;
+export type SceneChoice = (typeof SCENE_CHOICES)[number];
+
+export interface NumberSpec {
+  key: string;
+  label: string;
+  /** The URL accepts [min, max]; the slider may cover the same range through `slider`. */
+  min: number;
+  max: number;
+  step: number;
+  default: number;
+  /** What the parameter means, from the scene's own spec; shown as the slider's tooltip. */
+  description: string;
+  format(value: number): string;
+  /** For sliders whose position is not the value (Quantity is logarithmic). */
+  slider?: { min: number; max: number; toValue(position: number): number; toPosition(value: number): number };
+}
+
+const fixed = (digits: number, unit = '') => (v: number) => v.toFixed(digits) + unit;
+const percent = (v: number) => `${Math.round(v * 100)}%`;
+const count = (v: number) => v.toLocaleString('en-US');
+
+function twoSignificant(v: number): number {
+  if (v < 100) return Math.round(v);
+  const unit = 10 ** (Math.floor(Math.log10(v)) - 1);
+  return Math.round(v / unit) * unit;
+}
+
+// Quantities span several decades, so a linear slider would make every small count unreachable;
+// positions map logarithmically, rounded to two significant digits.
+function logSlider(max: number): NonNullable<NumberSpec['slider']> {
+  const positions = 600;
+  const decades = Math.log10(max);
+  return {
+    min: 0,
+    max: positions,
+    toValue: (p) => (p <= 0 ? 0 : Math.min(max, twoSignificant(10 ** ((decades * (p - 1)) / (positions - 1))))),
+    toPosition: (v) => (v <= 0 ? 0 : 1 + Math.round(((positions - 1) * Math.log10(v)) / decades)),
+  };
+}
+
+/** The page's widest quantity: the WebGL renderer still draws this many at interactive rates. */
+export const QUANTITY_MAX = 200_000;
+
+const seedBox = seedBoxParams;
+// The report's sliders, kept as they were for the seed-box scene (labels, ranges, formats).
+const SEED_BOX_SPECS: readonly NumberSpec[] = [
+  { key: 'gravity', label: 'Gravity', min: -2000, max: 2000, step: 10, default: seedBox.gravity.default, description: seedBox.gravity.description, format: fixed(0, ' px/s²') },
+  { key: 'elasticity', label: 'Elasticity', min: 0, max: 1, step: 0.01, default: seedBox.elasticity.default, description: seedBox.elasticity.description, format: fixed(2) },
+  { key: 'n', label: 'Quantity', min: 0, max: QUANTITY_MAX, step: 1, default: seedBox.n.default, description: seedBox.n.description, format: count, slider: logSlider(QUANTITY_MAX) },
+  // Size is capped well below the scene's own limit so the largest circle always fits the box.
+  { key: 'size', label: 'Size', min: 0.5, max: 40, step: 0.5, default: seedBox.size.default, description: seedBox.size.description, format: fixed(1, ' px') },
+  { key: 'sizeNoise', label: 'Size noise', min: 0, max: 0.99, step: 0.01, default: seedBox.sizeNoise.default, description: seedBox.sizeNoise.description, format: percent },
+  { key: 'velocity', label: 'Velocity', min: 0, max: 2000, step: 10, default: seedBox.velocity.default, description: seedBox.velocity.description, format: fixed(0, ' px/s') },
+  { key: 'velocityNoise', label: 'Velocity noise', min: 0, max: 1, step: 0.01, default: seedBox.velocityNoise.default, description: seedBox.velocityNoise.description, format: percent },
+];
+
+/**
+ * How the page shows another scene's parameter. Range and default come from the scene's spec;
+ * `max` narrows it where the spec allows values no page can run or show (a million circles, radii
+ * of 10,000 px), and the step is the slider's resolution.
+ */
+interface Presentation {
+  label: string;
+  step: number;
+  format(value: number): string;
+  min?: number;
+  max?: number;
+  log?: boolean;
+}
+
+const PRESENTATION: Record<string, Presentation> = {
+  n: { label: 'Quantity', step: 1, format: count, log: true },
+  gravity: { label: 'Gravity', step: 10, max: 2000, format: fixed(0, ' px/s²') },
+  elasticity: { label: 'Elasticity', step: 0.01, format: fixed(2) },
+  size: { label: 'Size', step: 0.5, format: fixed(1, ' px') },
+  minRadius: { label: 'Min radius', step: 0.5, min: 0.5, max: 20, format: fixed(1, ' px') },
+  maxRadius: { label: 'Max radius', step: 0.5, min: 0.5, max: 40, format: fixed(1, ' px') },
+  ratio: { label: 'Size ratio', step: 1, max: 200, format: fixed(0, '×') },
+  largeFraction: { label: 'Large share', step: 0.0005, max: 0.05, format: (v) => `${(v * 100).toFixed(2)}%` },
+  fill: { label: 'Fill', step: 0.01, min: 0.01, format: percent },
+  maxSpeed: { label: 'Max speed', step: 10, max: 2000, format: fixed(0, ' px/s') },
+  logRadius: { label: 'Log radii', step: 1, format: (v) => (v ? 'on' : 'off') },
+};
+
+function fromSceneSpec(key: string, spec: ParamSpec): NumberSpec {
+  const look = PRESENTATION[key] ?? { label: key, step: spec.integer ? 1 : 0.01, format: fixed(2) };
+  const min = Math.max(spec.min, look.min ?? spec.min);
+  const max = Math.min(spec.max, look.max ?? spec.max, key === 'n' ? QUANTITY_MAX : Infinity);
+  return {
+    key,
+    label: look.label,
+    min,
+    max,
+    step: look.step,
+    default: Math.min(max, Math.max(min, spec.default)),
+    description: spec.description,
+    format: look.format,
+    slider: look.log ? logSlider(max) : undefined,
+  };
+}
+
+const cache = new Map<SceneChoice, readonly NumberSpec[]>();
+
+/** The sliders of a scene: every parameter but the seed, which has its own box. */
+export function sceneSpecs(scene: SceneChoice): readonly NumberSpec[] {
+  if (scene === 'seed-box') return SEED_BOX_SPECS;
+  let specs = cache.get(scene);
+  if (!specs) {
+    const params: Record<string, ParamSpec> = SCENES[scene].params;
+    specs = Object.entries(params)
+      .filter(([key]) => key !== 'seed')
+      .map(([key, spec]) => fromSceneSpec(key, spec));
+    cache.set(scene, specs);
+  }
+  return specs;
+}
+
+export function defaultParams(scene: SceneChoice): Record<string, number> {
+  const out: Record<string, number> = {};
+  for (const spec of sceneSpecs(scene)) out[spec.key] = spec.default;
+  return out;
+}
+
+/** Clamps into the spec's range and snaps to its step; NaN falls back to the default. */
+export function clampNumber(spec: NumberSpec, value: number): number {
+  if (!Number.isFinite(value)) return spec.default;
+  const clamped = Math.min(spec.max, Math.max(spec.min, value));
+  if (spec.key === 'n') return Math.round(clamped);
+  const snapped = spec.min + Math.round((clamped - spec.min) / spec.step) * spec.step;
+  // Round away binary noise such as 0.30000000000000004, which would show up in the URL.
+  return Math.min(spec.max, Number(snapped.toFixed(6)));
+}
+
+/** Radius of a circle added by a click: the scene's typical size. */
+export function spawnRadius(scene: SceneChoice, p: Record<string, number>): number {
+  if (scene === 'mixed') return 1.5 * p.minRadius;
+  if (scene === 'uniform') return (p.minRadius + p.maxRadius) / 2;
+  return p.size;
+}

@@ -1,0 +1,87 @@
+import { World, type BroadPhaseName, type IntegratorName, type WorldOptions } from '@maxgrid/engine';
+import type { Scene } from '@maxgrid/scenes';
+
+/** Collision layers of the Layers toggle: two body layers that pass through each other... */
+export const LAYER_A = 1;
+export const LAYER_B = 2;
+/** ...and one for static shapes, which both layers still hit. */
+export const LAYER_STATIC = 4;
+
+export interface WorldChoices {
+  broadphase: BroadPhaseName;
+  integrator: IntegratorName;
+  sleeping: boolean;
+  continuous: boolean;
+  events: boolean;
+  layers: boolean;
+}
+
+/** The layer of a dynamic body in slot `slot`: even and odd slots, so the seed decides who is where. */
+export function layerOf(slot: number): number {
+  return slot % 2 === 0 ? LAYER_A : LAYER_B;
+}
+
+/** Category and mask of a dynamic body with the Layers toggle on: its own layer and the statics. */
+export function layerMask(slot: number): number {
+  return layerOf(slot) | LAYER_STATIC;
+}
+
+/**
+ * The sandbox's version of `buildWorld` from @maxgrid/scenes, which takes neither contact events
+ * nor per-body layers: circle k still gets handle (and slot) k, segments follow.
+ */
+export function buildSandboxWorld(scene: Scene, dt: number, c: WorldChoices): World {
+  const g = Math.hypot(scene.gravity.x, scene.gravity.y);
+  const options: WorldOptions = {
+    bounds: scene.bounds,
+    gravity: scene.gravity,
+    restitution: scene.restitution,
+    broadphase: c.broadphase,
+    integrator: c.integrator,
+    continuous: c.continuous,
+    contactEvents: c.events,
+  };
+  if (c.sleeping) {
+    options.sleeping = true;
+    // Both thresholds scale with g·dt, the speed gravity adds in one step. A resting contact
+    // "approaches" at about g·dt every step; with restitution that is an endless micro-bounce, so
+    // approaches under 2 g·dt are made inelastic. The solver makes one pass, so a settled pile
+    // still jitters: measured on funnel and seed-box with elasticity 0, the median body moves at
+    // about 7 g·dt, and with the 1.5 g·dt a single resting body needs, 0 to 1 of 500 ever slept.
+    // 8 g·dt lets piles doze off, and stays safe in flight: a body is that slow for only 16 steps
+    // around the top of its arc, under the 0.5 s (30 steps) it must stay slow before sleeping.
+    // Without gravity nothing rests on anything: the engine's defaults (1 px/s, elastic) apply.
+    if (g > 0) {
+      options.sleepSpeed = 8 * g * dt;
+      options.restitutionThreshold = 2 * g * dt;
+    }
+  }
+  const world = new World(options);
+  world.reserve(scene.count);
+  for (let k = 0; k < scene.count; k++) {
+    const isStatic = scene.fixed !== null && scene.fixed[k] === 1;
+    const category = !c.layers ? 1 : isStatic ? LAYER_STATIC : layerOf(k);
+    const mask = !c.layers || isStatic ? 0xffffffff : layerMask(k);
+    world.createCircle({
+      x: scene.x[k],
+      y: scene.y[k],
+      vx: isStatic ? 0 : scene.vx[k],
+      vy: isStatic ? 0 : scene.vy[k],
+      radius: scene.radius[k],
+      type: isStatic ? 'static' : 'dynamic',
+      category,
+      mask,
+    });
+  }
+  for (const s of scene.segments) {
+    world.createSegment(c.layers ? { ...s, category: LAYER_STATIC, mask: 0xffffffff } : s);
+  }
+  return world;
+}
+
+/** Segments as one flat array (x1, y1, x2, y2, thickness per segment), for the renderers. */
+export function flatSegments(scene: Scene): Float64Array {
+  const out = new Float64Array(scene.segments.length * 5);
+  scene.segments.forEach((s, i) => out.set([s.x1, s.y1, s.x2, s.y2, s.thickness], i * 5));
+  return out;
+}

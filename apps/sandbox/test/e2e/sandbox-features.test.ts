@@ -1,0 +1,285 @@
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import type { Browser, Page } from 'playwright-core';
+import { join } from 'node:path';
+import { ARTIFACTS, launchBrowser, openPage } from './browser.js';
+
+// The engine's features in the 2D sandbox (issue 6): scenes with static shapes, the world-option
+// toggles, the query tools. Read like a user reads the page: labels, shown counts and pixels.
+
+const POLL = { timeout: 30_000, interval: 100 };
+/** Static circles and segments are drawn in this grey (colors.ts STATIC_COLOR). */
+const STATIC_RGB = [0xc3, 0xcc, 0xd6];
+/** Ray hit markers on the overlay (overlay.ts HIT_COLOR). */
+const HIT_RGB = [0xff, 0x7b, 0x72];
+
+let browser: Browser;
+
+beforeAll(async () => {
+  browser = await launchBrowser();
+  // Let Vite finish optimising dependencies (it may reload the first page) before any test.
+  const { page } = await openPage(browser, '/?n=10');
+  await page.waitForTimeout(2000);
+  await page.close();
+});
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+async function stat(page: Page, id: string): Promise<number> {
+  const text = await page.locator(`#stat-${id}`).innerText();
+  return Number(text.replace(/[^\d.-]/g, ''));
+}
+
+async function stepsPass(page: Page, more: number): Promise<void> {
+  await page.waitForFunction(
+    (target) => Number(document.getElementById('stat-steps')?.textContent?.replace(/\D/g, '')) >= target,
+    more,
+    { timeout: 30_000 },
+  );
+}
+
+/**
+ * Page coordinates of a world point: the box is fitted into the stage keeping its aspect ratio and
+ * centred, as anyone measuring the picture would find. `box` is the scene's box size.
+ */
+async function toPage(page: Page, box: { width: number; height: number }) {
+  const stage = await page.locator('#overlay').boundingBox();
+  if (!stage) throw new Error('no stage');
+  const scale = Math.min(stage.width / box.width, stage.height / box.height);
+  const ox = stage.x + (stage.width - box.width * scale) / 2;
+  const oy = stage.y + (stage.height - box.height * scale) / 2;
+  return (x: number, y: number) => ({ x: ox + x * scale, y: oy + y * scale });
+}
+
+/** RGB of page pixels at the given page points, from one screenshot. */
+async function pixelsAt(page: Page, points: { x: number; y: number }[]): Promise<number[][]> {
+  const png = await page.screenshot();
+  return page.evaluate(
+    async ([b64, pts]) => {
+      const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+      const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+      const ctx = canvas.getContext('2d') as OffscreenCanvasRenderingContext2D;
+      ctx.drawImage(bitmap, 0, 0);
+      return pts.map((p) => Array.from(ctx.getImageData(Math.round(p.x), Math.round(p.y), 1, 1).data.slice(0, 3)));
+    },
+    [png.toString('base64'), points] as const,
+  );
+}
+
+const near = (rgb: number[], want: number[], tolerance = 14) => rgb.every((c, i) => Math.abs(c - want[i]) <= tolerance);
+
+/** Overlay pixels close to a colour: hit markers, which no other overlay drawing uses. */
+async function overlayPixelsNear(page: Page, want: number[]): Promise<number> {
+  return page.evaluate((w) => {
+    const c = document.getElementById('overlay') as HTMLCanvasElement;
+    const d = (c.getContext('2d', { willReadFrequently: true }) as CanvasRenderingContext2D).getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (d[i + 3] > 200 && Math.abs(d[i] - w[0]) < 20 && Math.abs(d[i + 1] - w[1]) < 20 && Math.abs(d[i + 2] - w[2]) < 20) n++;
+    }
+    return n;
+  }, want);
+}
+
+function pause(page: Page) {
+  return page.getByRole('button', { name: 'Pause', exact: true }).click();
+}
+
+describe('2D sandbox: engine features', () => {
+  it('draws the funnel scene: segments and pegs in both renderers, and bodies fall', async () => {
+    const { page, errors } = await openPage(browser, '/?scene=funnel&n=300');
+    await pause(page);
+    await stepsPass(page, 1);
+    expect(await page.getByLabel('Scene').inputValue()).toBe('funnel');
+    // The funnel's own parameters, each with its spec's description as the tooltip.
+    for (const name of ['Quantity', 'Gravity', 'Elasticity', 'Size']) {
+      const input = page.getByLabel(new RegExp(`^${name} [-\\d]`));
+      expect(await input.count(), name).toBe(1);
+      expect(await input.locator('..').getAttribute('title'), name).toBeTruthy();
+    }
+    expect(await page.getByLabel(/^Velocity noise/).count()).toBe(0);
+    // 300 falling circles and 51 static pegs.
+    expect(await stat(page, 'bodies')).toBe(351);
+
+    const at = await toPage(page, { width: 800, height: 900 });
+    // Points along the left funnel wall (20,120)-(360,380) and on the first row of pegs.
+    const wall = [0.15, 0.3, 0.45, 0.6, 0.75, 0.9].map((t) => at(20 + 340 * t, 120 + 260 * t));
+    const pegs = [0, 2, 4, 6, 8].map((c) => at(120 + c * 70, 470));
+    for (const renderer of ['canvas', 'webgl']) {
+      await page.getByLabel('Renderer').selectOption(renderer);
+      await page.waitForTimeout(300);
+      const rgb = await pixelsAt(page, [...wall, ...pegs]);
+      expect(rgb.slice(0, wall.length).filter((c) => near(c, STATIC_RGB)).length, `${renderer} wall ${JSON.stringify(rgb)}`).toBe(wall.length);
+      expect(rgb.slice(wall.length).filter((c) => near(c, STATIC_RGB)).length, `${renderer} pegs ${JSON.stringify(rgb)}`).toBe(pegs.length);
+    }
+    await page.locator('#stage').screenshot({ path: join(ARTIFACTS, 'sandbox-funnel-start.png') });
+
+    expect(await stat(page, 'lower-half')).toBe(0);
+    await pause(page);
+    await expect.poll(() => stat(page, 'lower-half'), POLL).toBeGreaterThan(150);
+    expect(await page.locator('#row-segment-contacts').isVisible()).toBe(true);
+    await expect.poll(() => stat(page, 'segment-contacts'), POLL).toBeGreaterThan(0);
+    await page.locator('#stage').screenshot({ path: join(ARTIFACTS, 'sandbox-funnel.png') });
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
+  it('shows sleeping bodies with Sleeping on, and none once it is off', async () => {
+    // Elasticity 0 and strong gravity: the funnel settles in a few seconds.
+    const { page, errors } = await openPage(browser, '/?scene=funnel&n=300&elasticity=0&gravity=1500');
+    await stepsPass(page, 2);
+    expect(await stat(page, 'sleeping')).toBe(0);
+    await page.getByLabel('Sleeping').check();
+    await expect.poll(() => new URL(page.url()).searchParams.get('sleeping'), POLL).toBe('1');
+    await expect.poll(() => stat(page, 'sleeping'), { timeout: 60_000, interval: 200 }).toBeGreaterThan(0);
+    await page.getByLabel('Sleeping').uncheck();
+    await expect.poll(() => new URL(page.url()).searchParams.get('sleeping'), POLL).toBeNull();
+    await stepsPass(page, 30);
+    expect(await stat(page, 'sleeping')).toBe(0);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
+  it('counts touch events, filtered pairs and swept bodies when their toggles are on', async () => {
+    const { page, errors } = await openPage(browser, '/?n=1000');
+    await stepsPass(page, 2);
+    for (const row of ['begin', 'end', 'filtered']) expect(await page.locator(`#row-${row}`).isVisible(), row).toBe(false);
+    // Continuous collision is the engine's default, so its row shows from the start.
+    expect(await page.getByLabel('Continuous collision').isChecked()).toBe(true);
+    expect(await page.locator('#row-swept').isVisible()).toBe(true);
+
+    await page.getByLabel('Contact events').check();
+    await expect.poll(() => page.locator('#row-begin').isVisible(), POLL).toBe(true);
+    await expect.poll(() => stat(page, 'begin'), POLL).toBeGreaterThan(0);
+    await expect.poll(() => stat(page, 'end'), POLL).toBeGreaterThan(0);
+    // Bodies that just began a touch flash on the overlay.
+    await expect.poll(() => overlayPixelsNear(page, [255, 255, 255]), POLL).toBeGreaterThan(0);
+
+    await page.getByLabel('Collision layers').check();
+    await expect.poll(() => page.locator('#row-filtered').isVisible(), POLL).toBe(true);
+    await expect.poll(() => stat(page, 'filtered'), POLL).toBeGreaterThan(0);
+    await page.getByLabel('Collision layers').uncheck();
+    await expect.poll(() => page.locator('#row-filtered').isVisible(), POLL).toBe(false);
+
+    await page.getByLabel('Continuous collision').uncheck();
+    await expect.poll(() => page.locator('#row-swept').isVisible(), POLL).toBe(false);
+    // False positives are now measured against the broad-phase's pair tests.
+    expect(await stat(page, 'pair-tests')).toBeGreaterThanOrEqual(await stat(page, 'candidates'));
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
+  it('casts a ray across the bodies it crosses, and points at the body under the pointer', async () => {
+    // An empty, still box; three circles added by clicks on a horizontal line.
+    const { page, errors } = await openPage(browser, '/?n=0&gravity=0&velocity=0&size=20');
+    await pause(page);
+    const at = await toPage(page, { width: 1600, height: 900 });
+    for (const x of [400, 800, 1200]) {
+      const p = at(x, 450);
+      await page.mouse.click(p.x, p.y);
+    }
+    await expect.poll(() => stat(page, 'bodies'), POLL).toBe(3);
+
+    await page.getByLabel('Tool').selectOption('ray');
+    expect(new URL(page.url()).searchParams.get('tool')).toBe('ray');
+    const from = at(100, 450);
+    const to = at(1500, 450);
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    await page.mouse.move((from.x + to.x) / 2, from.y, { steps: 3 });
+    await page.mouse.move(to.x, to.y, { steps: 3 });
+    await page.mouse.up();
+    const readout = page.locator('#query-readout');
+    await expect.poll(() => readout.innerText(), POLL).toMatch(/^Ray: 3 hits/);
+    // The first body crossed is the first one added (handle 0); the ray enters it at x = 380 of a
+    // ray from 100 to 1500, a fraction of 0.2, give or take a pixel of pointer rounding.
+    const [, handle, fraction] = /first: body (\d+) at fraction ([\d.]+)/.exec(await readout.innerText()) ?? [];
+    expect(Number(handle)).toBe(0);
+    expect(Number(fraction)).toBeCloseTo(0.2, 2);
+    expect(await overlayPixelsNear(page, HIT_RGB)).toBeGreaterThan(20);
+    // Clicks with the Ray tool add nothing.
+    expect(await stat(page, 'bodies')).toBe(3);
+    // A ray that misses everything.
+    const high = at(100, 100);
+    await page.mouse.move(high.x, high.y);
+    await page.mouse.down();
+    await page.mouse.move(at(1500, 100).x, high.y, { steps: 3 });
+    await page.mouse.up();
+    await expect.poll(() => readout.innerText(), POLL).toBe('Ray: 0 hits');
+    await page.locator('#stage').screenshot({ path: join(ARTIFACTS, 'sandbox-ray.png') });
+
+    await page.getByLabel('Tool').selectOption('point');
+    const middle = at(805, 445);
+    await page.mouse.move(middle.x, middle.y);
+    await expect.poll(() => readout.innerText(), POLL).toBe('Point: 1 body under the pointer (1)');
+    await page.mouse.move(high.x, high.y);
+    await expect.poll(() => readout.innerText(), POLL).toMatch(/^Point: 0 bodies/);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
+  it('finds hits with a ray across a busy scene', async () => {
+    const { page, errors } = await openPage(browser, '/?n=1000&tool=ray');
+    await stepsPass(page, 2);
+    await pause(page);
+    const at = await toPage(page, { width: 1600, height: 900 });
+    const a = at(50, 300);
+    const b = at(1550, 600);
+    await page.mouse.move(a.x, a.y);
+    await page.mouse.down();
+    await page.mouse.move(b.x, b.y, { steps: 4 });
+    await page.mouse.up();
+    const text = await page.locator('#query-readout').innerText();
+    const hits = Number(/^Ray: (\d+) hit/.exec(text)?.[1]);
+    expect(hits, text).toBeGreaterThan(0);
+    expect(await overlayPixelsNear(page, HIT_RGB)).toBeGreaterThan(0);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
+  it('keeps scene, parameters, toggles and tool in the URL; bad values fall back', async () => {
+    const { page, errors } = await openPage(browser, '/?n=100');
+    await page.getByLabel('Scene').selectOption('uniform');
+    await expect.poll(() => new URL(page.url()).searchParams.get('scene'), POLL).toBe('uniform');
+    await page.getByLabel(/^Fill /).fill('0.4');
+    await page.getByLabel(/^Quantity /).fill('300');
+    await page.getByLabel('Sleeping').check();
+    await page.getByLabel('Contact events').check();
+    await page.getByLabel('Collision layers').check();
+    await page.getByLabel('Continuous collision').uncheck();
+    await page.getByLabel('Tool').selectOption('point');
+    await expect.poll(() => new URL(page.url()).searchParams.get('tool'), POLL).toBe('point');
+    const read = async () => ({
+      scene: await page.getByLabel('Scene').inputValue(),
+      labels: await page.locator('#scene-controls label').allInnerTexts(),
+      toggles: await Promise.all(['Sleeping', 'Continuous collision', 'Contact events', 'Collision layers'].map((n) => page.getByLabel(n).isChecked())),
+      tool: await page.getByLabel('Tool').inputValue(),
+      bodies: await stat(page, 'bodies'),
+    });
+    await stepsPass(page, 2);
+    const before = await read();
+    expect(before.toggles).toEqual([true, false, true, true]);
+    expect(before.labels.join('|')).toMatch(/Fill\s+40%/);
+    const url = new URL(page.url());
+    expect(url.searchParams.get('continuous')).toBe('0');
+    expect(url.searchParams.get('fill')).toBe('0.4');
+    await page.reload({ waitUntil: 'load' });
+    await stepsPass(page, 2);
+    expect(await read()).toEqual(before);
+
+    // Unknown scene, toggle and tool values fall back to the defaults.
+    await page.goto(page.url().replace('scene=uniform', 'scene=bogus').replace('sleeping=1', 'sleeping=yes').replace('tool=point', 'tool=laser'));
+    await stepsPass(page, 2);
+    expect(await page.getByLabel('Scene').inputValue()).toBe('seed-box');
+    expect(await page.getByLabel('Sleeping').isChecked()).toBe(false);
+    expect(await page.getByLabel('Tool').inputValue()).toBe('drag');
+    // A funnel that cannot hold its circles is refused with a notice; its defaults are built instead.
+    await page.goto(page.url().replace(/\?.*/, '?scene=funnel&n=5000&size=12'));
+    await stepsPass(page, 2);
+    expect(await page.locator('#notice').innerText()).toMatch(/fit/);
+    expect(await stat(page, 'bodies')).toBe(551);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+});
