@@ -140,3 +140,19 @@ describe('physics sanity per adapter', () => {
     }
   });
 });
+
+describe('scenes with static shapes', () => {
+  it('peer adapters refuse them by name; maxgrid builds them', () => {
+    const funnel = buildScene('funnel', {});
+    for (const engine of engines) {
+      if (engine.info.id.startsWith('maxgrid:')) {
+        const sim = engine.create(funnel);
+        sim.step(1 / 60);
+        expect(sim.count).toBe(funnel.count);
+        sim.dispose();
+      } else {
+        expect(() => engine.create(funnel), engine.info.id).toThrow(new RegExp(`engine '${engine.info.id}' cannot build scene 'funnel'.*static circles.*segments`));
+      }
+    }
+  });
+});

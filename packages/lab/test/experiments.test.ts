@@ -4,7 +4,8 @@ import type { Engine } from '../src/engines/adapter.js';
 import { ENGINE_IDS } from '../src/engines/registry.js';
 import type { RunContext } from '../src/experiments/common.js';
 import { spread } from '../src/experiments/common.js';
-import { EXPERIMENTS, energy, falsePositives, scale, stepTime } from '../src/experiments/registry.js';
+import { EXPERIMENTS, energy, falsePositives, sapSleep, scale, stepTime, targets } from '../src/experiments/registry.js';
+import { cBaseline } from '../src/node/native.js';
 import { renderSvg } from '../src/report/render.js';
 import { htmlReport, tablesFor } from '../src/report/html.js';
 import { markdownTable } from '../src/report/tables.js';
@@ -34,9 +35,11 @@ function expectPublishable(name: string, result: unknown): void {
   const csv = experiment.csv(result).trim().split('\n');
   expect(csv.length).toBeGreaterThan(1);
   const columns = csv[0].split(',').length;
-  for (const line of csv) expect(line.split(',').length).toBe(columns);
+  // Quoted fields may hold commas (RFC 4180); count fields outside the quotes.
+  for (const line of csv) expect(line.replace(/"(?:[^"]|"")*"/g, 'q').split(',').length).toBe(columns);
   for (const chart of experiment.charts(result)) expect(renderSvg(chart)).toMatch(/^<svg[\s\S]*<\/svg>$/);
   const tables = tablesFor(name, result);
+  for (const t of tables) for (const row of t.rows) expect(row).toHaveLength(t.headers.length);
   expect(tables.length).toBeGreaterThan(0);
   for (const t of tables) expect(markdownTable(t)).toContain('| ---');
 }
@@ -134,6 +137,42 @@ describe('scale', () => {
       expect(r.nsPerBody).toBeCloseTo((r.ms.median * 1e6) / r.n, 6);
     }
     expectPublishable('scale', result);
+  });
+});
+
+describe('sap-sleep', () => {
+  it('times sap and sap-persistent on moving, pile and field cases with their sleeping fractions; JSON validates', async () => {
+    const options = { ...sapSleep.options('quick', {}), n: 300, rounds: 2, steps: 2, warmupSteps: 2, settleSteps: 60 };
+    const result = await sapSleep.run(options, ctx(['maxgrid:sap', 'maxgrid:sap-persistent']));
+    expectValid(sapSleep.schema, result);
+    expect(result.rows.map((r) => `${r.case} ${r.engine}`)).toEqual(
+      ['moving', 'pile', 'field'].flatMap((c) => [`${c} maxgrid:sap`, `${c} maxgrid:sap-persistent`]),
+    );
+    for (const c of ['moving', 'pile', 'field']) {
+      const [a, b] = result.rows.filter((r) => r.case === c);
+      // Same world, same steps: broad-phases differ only in speed, never in what sleeps or touches.
+      expect([b.asleepStart, b.asleepEnd, b.contacts]).toEqual([a.asleepStart, a.asleepEnd, a.contacts]);
+    }
+    expect(result.rows.find((r) => r.case === 'moving')!.asleepStart).toBe(0);
+    expect(result.rows.find((r) => r.case === 'field')!.asleepStart).toBeGreaterThan(0.5);
+    expectPublishable('sap-sleep', result);
+  });
+});
+
+describe('targets', () => {
+  it('measures T1, T2, T3, T5 on small sizes, records T6 skipped with its reason; JSON validates', async () => {
+    const options = { ...targets.options('quick', {}), n: 1500, bigN: 4000, rounds: 1, stepsPerRound: 1, warmupSteps: 1, bigSteps: 1, bigWarmupSteps: 0 };
+    // The browser is left out here (Chromium start-up is slow); the lab's e2e test drives the page hook T6 uses.
+    const host = { cBaseline, browser: async () => 'no browser in this test' };
+    const result = await targets.run(options, { ...ctx(targets.defaultEngines), host });
+    expectValid(targets.schema, result);
+    expect(result.t1.timings.map((t) => t.engine)).toEqual(targets.defaultEngines);
+    expect(result.t6).toEqual({ status: 'skipped', reason: 'no browser in this test' });
+    expect(['ok', 'skipped']).toContain(result.t2.status);
+    expect(result.t3.bytesPerBody).toBeGreaterThan(0);
+    expect(Object.keys(result.t5.mixedOverUniform)).toEqual(['maxgrid:maxgrid', 'maxgrid:hgrid', 'maxgrid:auto']);
+    expect(result.notMeasured.map((x) => x.target.split(' ')[0])).toEqual(['T4', 'T7']);
+    expectPublishable('targets', result);
   });
 });
 
