@@ -128,6 +128,11 @@ export class Simulation {
     return this.world.potentialEnergy() + (g > 0 ? g * this.boxHeight * this.dynamicMass : 0);
   }
 
+  /** Whether gravity pulls bodies down, towards the floor. */
+  get falls(): boolean {
+    return this.gravityY > 0;
+  }
+
   /** Dynamic bodies whose centre is in the lower half of the box: shows a scene falling. */
   lowerHalf(): number {
     const v = this.world.views();

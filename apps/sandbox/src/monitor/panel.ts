@@ -59,6 +59,7 @@ export class MonitorPanel {
   };
   // Rows for features that may not apply: shown only when the scene or a toggle makes them count.
   private readonly rows = {
+    lowerHalf: byId('row-lower-half'),
     segmentContacts: byId('row-segment-contacts'),
     swept: byId('row-swept'),
     filtered: byId('row-filtered'),
@@ -107,9 +108,11 @@ export class MonitorPanel {
       // work. Measured on pair tests, since the grids already drop most non-touching pairs before
       // they become candidates.
       o.falsePositives.textContent = st.pairTests > 0 ? `${(100 * (1 - st.contacts / st.pairTests)).toFixed(1)}%` : '–';
-      o.lowerHalf.textContent = integer(sim.lowerHalf());
-      o.sleeping.textContent = integer(st.sleepingBodies);
       const r = this.rows;
+      // Without gravity nothing falls, and where the bodies are says nothing.
+      r.lowerHalf.hidden = !sim.falls;
+      if (sim.falls) o.lowerHalf.textContent = integer(sim.lowerHalf());
+      o.sleeping.textContent = integer(st.sleepingBodies);
       r.segmentContacts.hidden = sim.segments.length === 0;
       o.segmentContacts.textContent = integer(st.segmentContacts);
       r.swept.hidden = !sim.continuous;
