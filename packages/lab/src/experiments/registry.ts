@@ -90,7 +90,7 @@ export const energy: Experiment<EnergyOptions, EnergyResult> = {
 
 export const falsePositives: Experiment<FalsePositiveOptions, FalsePositiveResult> = {
   name: 'false-positives',
-  description: 'Broad-phase candidate pairs vs true contacts, across N and radius spread 1:1..1:100 (report 7.4)',
+  description: 'Broad-phase pairs examined per true contact, across N and radius spread 1:1..1:100 (mixed and log-uniform radii) (report 7.4)',
   schema: falsePositiveSchema,
   defaultEngines: MAXGRID_IDS,
   options(profile, o) {
