@@ -60,6 +60,8 @@ export interface BuildOptions {
   broadphase?: BroadPhaseName;
   integrator?: IntegratorName;
   sleeping?: boolean;
+  sleepSpeed?: number;
+  sleepTime?: number;
   continuous?: boolean;
   restitutionThreshold?: number;
 }
