@@ -1,5 +1,5 @@
-import { World, type BroadPhaseName, type IntegratorName, type WorldOptions } from '@maxgrid/engine';
-import type { Scene } from '@maxgrid/scenes';
+import type { BroadPhaseName, IntegratorName, World } from '@maxgrid/engine';
+import { buildWorld, type BuildOptions, type Scene } from '@maxgrid/scenes';
 
 /** Collision layers of the Layers toggle: two body layers that pass through each other... */
 export const LAYER_A = 1;
@@ -26,16 +26,10 @@ export function layerMask(slot: number): number {
   return layerOf(slot) | LAYER_STATIC;
 }
 
-/**
- * The sandbox's version of `buildWorld` from @maxgrid/scenes, which takes neither contact events
- * nor per-body layers: circle k still gets handle (and slot) k, segments follow.
- */
+/** The scene as a world with the sandbox's toggles: circle k gets handle (and slot) k. */
 export function buildSandboxWorld(scene: Scene, dt: number, c: WorldChoices): World {
   const g = Math.hypot(scene.gravity.x, scene.gravity.y);
-  const options: WorldOptions = {
-    bounds: scene.bounds,
-    gravity: scene.gravity,
-    restitution: scene.restitution,
+  const options: BuildOptions = {
     broadphase: c.broadphase,
     integrator: c.integrator,
     continuous: c.continuous,
@@ -56,26 +50,12 @@ export function buildSandboxWorld(scene: Scene, dt: number, c: WorldChoices): Wo
       options.restitutionThreshold = 2 * g * dt;
     }
   }
-  const world = new World(options);
-  world.reserve(scene.count);
-  for (let k = 0; k < scene.count; k++) {
-    const isStatic = scene.fixed !== null && scene.fixed[k] === 1;
-    const category = !c.layers ? 1 : isStatic ? LAYER_STATIC : layerOf(k);
-    const mask = !c.layers || isStatic ? 0xffffffff : layerMask(k);
-    world.createCircle({
-      x: scene.x[k],
-      y: scene.y[k],
-      vx: isStatic ? 0 : scene.vx[k],
-      vy: isStatic ? 0 : scene.vy[k],
-      radius: scene.radius[k],
-      type: isStatic ? 'static' : 'dynamic',
-      category,
-      mask,
-    });
+  if (c.layers) {
+    options.layers = (k, isStatic) =>
+      isStatic ? { category: LAYER_STATIC, mask: 0xffffffff } : { category: layerOf(k), mask: layerMask(k) };
+    options.segmentLayers = { category: LAYER_STATIC, mask: 0xffffffff };
   }
-  for (const s of scene.segments) {
-    world.createSegment(c.layers ? { ...s, category: LAYER_STATIC, mask: 0xffffffff } : s);
-  }
+  const world = buildWorld(scene, options);
   return world;
 }
 

@@ -198,8 +198,8 @@ export class Simulation {
     const cx = Math.min(this.boxWidth - r, Math.max(r, x));
     const cy = Math.min(this.boxHeight - r, Math.max(r, y));
     const handle = this.world.createCircle({ x: cx, y: cy, radius: r });
-    // Handles are generation × 2²⁴ + slot: the new body joins the layer of its slot, as built ones do.
-    const slot = handle % 2 ** 24;
+    // The new body joins the layer of its slot, as built ones do.
+    const slot = this.world.slotOfHandle(handle);
     if (this.layers) this.world.setCollisionFilter(handle, layerOf(slot), layerMask(slot));
     this.dynamicMass += this.world.getCircle(handle).mass;
     this.colors.ensure(this.world.views().slotCount);

@@ -2,7 +2,6 @@ import type { World } from '@maxgrid/engine';
 
 /** Steps a body stays highlighted after it began touching another: long enough to be seen. */
 export const FLASH_STEPS = 8;
-const SLOT_SPAN = 2 ** 24;
 
 /**
  * The Contact events toggle: counts of the last step's begin and end events for the monitor, and
@@ -44,8 +43,9 @@ export class TouchEvents {
       this.flashStep = grown;
     }
     for (let k = 0; k < e.beginCount; k++) {
-      this.flashStep[e.beginA[k] % SLOT_SPAN] = this.step;
-      this.flashStep[e.beginB[k] % SLOT_SPAN] = this.step;
+      // Begin events name live bodies, so both handles map to slots.
+      this.flashStep[world.slotOfHandle(e.beginA[k])] = this.step;
+      this.flashStep[world.slotOfHandle(e.beginB[k])] = this.step;
     }
   }
 

@@ -174,6 +174,11 @@ export class World {
     return out;
   }
 
+  /** The slot of a live body in the bulk views, or -1 for a stale or unknown handle. */
+  slotOfHandle(handle: number): number {
+    return this.bodies.slotOf(handle);
+  }
+
   /** The handle of the body in a slot of the bulk views, or -1 for a free slot. */
   handleAtSlot(slot: number): number {
     const b = this.bodies;

@@ -7,7 +7,7 @@ import type { ParamSpecs } from './params.js';
 import type { Scene } from './scene.js';
 
 export { Prng } from './prng.js';
-export { buildWorld, type Scene, type SceneSegment, type BuildOptions } from './scene.js';
+export { buildWorld, type Scene, type SceneSegment, type BuildOptions, type Layers } from './scene.js';
 export { resolveParams, type ParamSpec, type ParamSpecs } from './params.js';
 export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams, funnel, funnelParams };
 

@@ -1,4 +1,4 @@
-import { World, type BroadPhaseName, type IntegratorName } from '@maxgrid/engine';
+import { World, type WorldOptions } from '@maxgrid/engine';
 
 /**
  * A scene as plain data: every engine adapter in the lab builds from the same numbers, and the
@@ -56,23 +56,29 @@ export function allocateScene(
   };
 }
 
-export interface BuildOptions {
-  broadphase?: BroadPhaseName;
-  integrator?: IntegratorName;
-  sleeping?: boolean;
-  sleepSpeed?: number;
-  sleepTime?: number;
-  continuous?: boolean;
-  restitutionThreshold?: number;
+/** Layers of one body: see the engine's `category` and `mask`. */
+export interface Layers {
+  category: number;
+  mask: number;
+}
+
+/**
+ * Every World option the scene does not fix (bounds, gravity and restitution come from the scene),
+ * plus collision layers: `layers(k, isStatic)` for circle k, and `segmentLayers` for every segment.
+ */
+export interface BuildOptions extends Omit<WorldOptions, 'bounds' | 'gravity' | 'restitution'> {
+  layers?: (k: number, isStatic: boolean) => Layers;
+  segmentLayers?: Layers;
 }
 
 /** A maxgrid world holding the scene; circle k gets handle k. */
 export function buildWorld(scene: Scene, options: BuildOptions = {}): World {
+  const { layers, segmentLayers, ...worldOptions } = options;
   const world = new World({
     bounds: scene.bounds,
     gravity: scene.gravity,
     restitution: scene.restitution,
-    ...options,
+    ...worldOptions,
   });
   world.reserve(scene.count);
   for (let k = 0; k < scene.count; k++) {
@@ -84,8 +90,9 @@ export function buildWorld(scene: Scene, options: BuildOptions = {}): World {
       vy: isStatic ? 0 : scene.vy[k],
       radius: scene.radius[k],
       type: isStatic ? 'static' : 'dynamic',
+      ...(layers ? layers(k, isStatic) : {}),
     });
   }
-  for (const s of scene.segments) world.createSegment(s);
+  for (const s of scene.segments) world.createSegment(segmentLayers ? { ...s, ...segmentLayers } : s);
   return world;
 }
