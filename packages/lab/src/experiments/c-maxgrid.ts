@@ -22,8 +22,8 @@ export interface CMaxgridOptions {
 
 export function cMaxgridDefaults(profile: Profile): CMaxgridOptions {
   return profile === 'full'
-    ? { scene: 'uniform', ns: [1000, 4000, 16000, 64000, 256000], rounds: 10, steps: 60, warmupSteps: 10, dt: 1 / 60 }
-    : { scene: 'uniform', ns: [4000, 64000], rounds: 3, steps: 10, warmupSteps: 3, dt: 1 / 60 };
+    ? { scene: 'uniform', ns: [1000, 4000, 16000, 64000, 256000], rounds: 10, steps: 60, warmupSteps: 20, dt: 1 / 60 }
+    : { scene: 'uniform', ns: [4000, 64000], rounds: 3, steps: 10, warmupSteps: 20, dt: 1 / 60 };
 }
 
 export interface CComparison {

@@ -29,8 +29,8 @@ export interface TargetsOptions {
 
 export function targetsDefaults(profile: Profile): TargetsOptions {
   return profile === 'full'
-    ? { n: 64_000, bigN: 1_000_000, mixedRatio: 100, dt: 1 / 60, rounds: 6, stepsPerRound: 10, warmupSteps: 5, bigSteps: 30, bigWarmupSteps: 5 }
-    : { n: 64_000, bigN: 1_000_000, mixedRatio: 100, dt: 1 / 60, rounds: 3, stepsPerRound: 5, warmupSteps: 3, bigSteps: 5, bigWarmupSteps: 2 };
+    ? { n: 64_000, bigN: 1_000_000, mixedRatio: 100, dt: 1 / 60, rounds: 6, stepsPerRound: 10, warmupSteps: 20, bigSteps: 30, bigWarmupSteps: 5 }
+    : { n: 64_000, bigN: 1_000_000, mixedRatio: 100, dt: 1 / 60, rounds: 3, stepsPerRound: 5, warmupSteps: 20, bigSteps: 5, bigWarmupSteps: 2 };
 }
 
 export interface Timing {
