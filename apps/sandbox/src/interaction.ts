@@ -9,7 +9,8 @@ const CLICK_SLOP = 5;
  * Mouse, pen and touch through pointer events, by tool. Drag: press on a circle to drag it
  * (releasing throws it with the pointer's velocity), click empty space to add a circle of the
  * scene's size. Ray: press and drag to cast a ray from the press to the pointer. Point: hover to
- * ask which circles contain the pointer.
+ * ask which circles contain the pointer. Box: press and drag to span a box from the press to the
+ * pointer and ask which circles overlap it.
  */
 export function attachPointer(
   target: HTMLElement,
@@ -23,11 +24,18 @@ export function attachPointer(
   let startX = 0;
   let startY = 0;
   let onEmpty = false;
-  let rayStartX = 0;
-  let rayStartY = 0;
+  // Where a Ray or Box drag began: the fixed end of the ray, the fixed corner of the box.
+  let anchorX = 0;
+  let anchorY = 0;
 
   const worldX = (e: PointerEvent) => view.toWorldX(e.clientX - target.getBoundingClientRect().left);
   const worldY = (e: PointerEvent) => view.toWorldY(e.clientY - target.getBoundingClientRect().top);
+
+  /** The ray or box from the drag's anchor to a world point, by tool. */
+  const spanTo = (x: number, y: number) => {
+    if (query.tool === 'ray') query.ray(anchorX, anchorY, x, y);
+    else query.box(anchorX, anchorY, x, y);
+  };
 
   target.addEventListener('pointerdown', (e) => {
     if (pointerId >= 0 || e.button !== 0) return;
@@ -38,10 +46,10 @@ export function attachPointer(
     const x = worldX(e);
     const y = worldY(e);
     e.preventDefault();
-    if (query.tool === 'ray') {
-      rayStartX = x;
-      rayStartY = y;
-      query.ray(x, y, x, y);
+    if (query.tool === 'ray' || query.tool === 'box') {
+      anchorX = x;
+      anchorY = y;
+      spanTo(x, y);
       return;
     }
     if (query.tool === 'point') {
@@ -60,7 +68,7 @@ export function attachPointer(
       return;
     }
     if (e.pointerId !== pointerId) return;
-    if (query.tool === 'ray') query.ray(rayStartX, rayStartY, worldX(e), worldY(e));
+    if (query.tool === 'ray' || query.tool === 'box') spanTo(worldX(e), worldY(e));
     else if (!onEmpty) sim.moveDrag(worldX(e), worldY(e));
   });
 
@@ -71,8 +79,8 @@ export function attachPointer(
   const finish = (e: PointerEvent, cancelled: boolean) => {
     if (e.pointerId !== pointerId) return;
     pointerId = -1;
-    if (query.tool === 'ray') {
-      if (!cancelled) query.ray(rayStartX, rayStartY, worldX(e), worldY(e));
+    if (query.tool === 'ray' || query.tool === 'box') {
+      if (!cancelled) spanTo(worldX(e), worldY(e));
       onChange();
       return;
     }

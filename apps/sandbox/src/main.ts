@@ -94,8 +94,8 @@ function rebuild(next: Settings): void {
 
 /** The choices that are not the scene: kept when a URL's scene falls back to its defaults. */
 function pickView(s: Settings): Partial<Settings> {
-  const { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, layers, tool } = s;
-  return { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, layers, tool };
+  const { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, hits, layers, tool } = s;
+  return { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, hits, layers, tool };
 }
 
 function applyLive(next: Settings): void {
@@ -175,7 +175,7 @@ attachPointer(overlay.canvas, sim, view, query, () => spawnRadius(settings.scene
 
 // Read by the renderers and the overlay every frame: kept up to date in place, never rebuilt.
 const shapes: SceneShapes = { segments: sim.segments, staticCircles: 0, sleepers: 0 };
-const overlayOptions: OverlayOptions = { grid: false, aabb: false, held: -1, segments: sim.segments, touches: sim.touches, query };
+const overlayOptions: OverlayOptions = { grid: false, aabb: false, held: -1, segments: sim.segments, touches: sim.touches, hits: sim.hits, query };
 
 rebuild(settings);
 settings.renderer = selectRenderer(settings.renderer);

@@ -2,7 +2,7 @@ import type { RayHit, World } from '@maxgrid/engine';
 import type { ToolName } from './settings.js';
 
 /**
- * The Ray and Point tools: what the pointer asks the engine's queries, and their last answers.
+ * The Ray, Point and Box tools: what the pointer asks the engine's queries, and their last answers.
  * Bodies move between frames, so the active query is asked again after every step; it allocates
  * only for what it finds (the engine's query calls return fresh arrays), never per body.
  */
@@ -20,6 +20,13 @@ export class QueryTool {
   px = 0;
   py = 0;
   under: number[] = [];
+  /** A box exists once a drag with the Box tool has begun; corners as dragged, in any order. */
+  hasBox = false;
+  bx1 = 0;
+  by1 = 0;
+  bx2 = 0;
+  by2 = 0;
+  inBox: number[] = [];
   private dirty = true;
   private askedAtStep = -1;
 
@@ -31,12 +38,14 @@ export class QueryTool {
     this.clear();
   }
 
-  /** Forgets the ray and the point (a new world, or another tool). */
+  /** Forgets the ray, the point and the box (a new world, or another tool). */
   clear(): void {
     this.hasRay = false;
     this.hasPoint = false;
+    this.hasBox = false;
     this.hits = [];
     this.under = [];
+    this.inBox = [];
     this.dirty = true;
     this.askedAtStep = -1;
   }
@@ -47,6 +56,15 @@ export class QueryTool {
     this.y1 = y1;
     this.x2 = x2;
     this.y2 = y2;
+    this.dirty = true;
+  }
+
+  box(x1: number, y1: number, x2: number, y2: number): void {
+    this.hasBox = true;
+    this.bx1 = x1;
+    this.by1 = y1;
+    this.bx2 = x2;
+    this.by2 = y2;
     this.dirty = true;
   }
 
@@ -75,6 +93,14 @@ export class QueryTool {
       this.hits = moved ? world.rayCastAll(this.x1, this.y1, this.x2, this.y2) : [];
     } else if (this.tool === 'point' && this.hasPoint) {
       this.under = world.queryPoint(this.px, this.py);
+    } else if (this.tool === 'box' && this.hasBox) {
+      // The engine wants min <= max; a box dragged up or to the left has its corners swapped.
+      this.inBox = world.queryAABB(
+        Math.min(this.bx1, this.bx2),
+        Math.min(this.by1, this.by2),
+        Math.max(this.bx1, this.bx2),
+        Math.max(this.by1, this.by2),
+      );
     }
     this.readout.textContent = this.describe();
   }
@@ -91,6 +117,11 @@ export class QueryTool {
       if (!this.hasPoint) return 'Point: hover over the bodies.';
       const n = this.under.length;
       return `Point: ${n} bod${n === 1 ? 'y' : 'ies'} under the pointer${n > 0 ? ` (${this.under.slice(0, 6).join(', ')}${n > 6 ? ', …' : ''})` : ''}`;
+    }
+    if (this.tool === 'box') {
+      if (!this.hasBox) return 'Box: drag to draw a box over the bodies.';
+      const n = this.inBox.length;
+      return `Box: ${n} bod${n === 1 ? 'y' : 'ies'}`;
     }
     return '';
   }

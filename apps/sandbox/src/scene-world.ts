@@ -13,7 +13,22 @@ export interface WorldChoices {
   sleeping: boolean;
   continuous: boolean;
   events: boolean;
+  hits: boolean;
   layers: boolean;
+}
+
+/** Slowest approach, in px/s, that counts as a hit: under it a body moves under a pixel per step. */
+export const MIN_HIT_SPEED = 50;
+
+/**
+ * The hitEventThreshold of the Hit events toggle. A hit should be a collision one can see, not a
+ * body resting on another: under gravity a resting contact approaches at about g·dt every step,
+ * and a settled pile jitters at up to ~7 g·dt (measured for the Sleeping toggle below), so hits
+ * start at 8 g·dt. Without gravity, or with weak gravity, 50 px/s (under a pixel per 60 Hz step)
+ * keeps the slowest grazes out while the seed box's default speeds (100 ± 50 px/s) all count.
+ */
+export function hitThreshold(scene: Scene, dt: number): number {
+  return Math.max(MIN_HIT_SPEED, 8 * Math.hypot(scene.gravity.x, scene.gravity.y) * dt);
 }
 
 /** The layer of a dynamic body in slot `slot`: even and odd slots, so the seed decides who is where. */
@@ -35,6 +50,7 @@ export function buildSandboxWorld(scene: Scene, dt: number, c: WorldChoices): Wo
     continuous: c.continuous,
     contactEvents: c.events,
   };
+  if (c.hits) options.hitEventThreshold = hitThreshold(scene, dt);
   if (c.sleeping) {
     options.sleeping = true;
     // Both thresholds scale with g·dt, the speed gravity adds in one step. A resting contact

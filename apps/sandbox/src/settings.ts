@@ -6,7 +6,7 @@ export { SCENE_CHOICES, clampNumber, sceneSpecs, type NumberSpec, type SceneChoi
 
 /**
  * Everything the URL reproduces. The scene, its seed and its parameters always rebuild the same
- * bodies; the world options (sleeping, continuous collision, events, layers) are construction
+ * bodies; the world options (sleeping, continuous collision, events, hits, layers) are construction
  * options, so they rebuild too; the rest choose how the world is stepped, drawn and probed.
  */
 export interface Settings {
@@ -22,6 +22,8 @@ export interface Settings {
   sleeping: boolean;
   continuous: boolean;
   events: boolean;
+  /** Hit events: the world records collisions approaching faster than a threshold. */
+  hits: boolean;
   layers: boolean;
   tool: ToolName;
 }
@@ -29,11 +31,11 @@ export interface Settings {
 export const RENDERER_NAMES = ['canvas', 'webgl'] as const;
 export type RendererName = (typeof RENDERER_NAMES)[number];
 
-export const TOOL_NAMES = ['drag', 'ray', 'point'] as const;
+export const TOOL_NAMES = ['drag', 'ray', 'point', 'box'] as const;
 export type ToolName = (typeof TOOL_NAMES)[number];
 
 /** World options that rebuild the scene, by URL key; `continuous` is on by default, as in the engine. */
-export const WORLD_TOGGLES = ['sleeping', 'continuous', 'events', 'layers'] as const;
+export const WORLD_TOGGLES = ['sleeping', 'continuous', 'events', 'hits', 'layers'] as const;
 export type WorldToggle = (typeof WORLD_TOGGLES)[number];
 
 export const SEED_MAX = seedBoxParams.seed.max;
@@ -54,6 +56,7 @@ export function defaultSettings(scene: SceneChoice = 'seed-box'): Settings {
     sleeping: false,
     continuous: true,
     events: false,
+    hits: false,
     layers: false,
     tool: 'drag',
   };

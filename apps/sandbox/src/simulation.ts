@@ -3,8 +3,9 @@ import { buildScene } from '@maxgrid/scenes';
 import { sceneParams, type Settings } from './settings.js';
 import { BodyColors } from './colors.js';
 import { Recorder } from './monitor/recorder.js';
+import { HitEvents } from './hit-events.js';
 import { TouchEvents } from './touch-events.js';
-import { buildSandboxWorld, flatSegments, layerMask, layerOf } from './scene-world.js';
+import { buildSandboxWorld, flatSegments, hitThreshold, layerMask, layerOf } from './scene-world.js';
 
 /** The fixed physics step: rendering runs at whatever rate the display gives. */
 export const DT = 1 / 60;
@@ -39,6 +40,8 @@ export class Simulation {
   staticCircles = 0;
   /** Begin and end touch events of the last step, and which bodies to flash. */
   readonly touches = new TouchEvents();
+  /** Hits of the last step (collisions above the threshold), and which bodies to ring. */
+  readonly hits = new HitEvents();
   /** World options of the current world, for the monitor to show what applies. */
   layers = false;
   continuous = true;
@@ -60,6 +63,7 @@ export class Simulation {
     this.continuous = settings.continuous;
     this.segments = flatSegments(scene);
     this.touches.reset(settings.events);
+    this.hits.reset(settings.hits, hitThreshold(scene, DT));
     this.boxWidth = scene.bounds.width;
     this.boxHeight = scene.bounds.height;
     this.box.width = this.boxWidth;
@@ -114,6 +118,7 @@ export class Simulation {
     world.step(DT);
     this.time += DT;
     this.touches.record(world);
+    this.hits.record(world);
     const stats = world.stats;
     this.recorder.record(this.time, stats.totalMs, world.kineticEnergy(), this.potentialEnergy(), stats.candidatePairs, stats.contacts);
   }

@@ -56,6 +56,8 @@ export class MonitorPanel {
     filtered: byId('stat-filtered'),
     begin: byId('stat-begin'),
     end: byId('stat-end'),
+    hits: byId('stat-hits'),
+    fastestHit: byId('stat-fastest-hit'),
   };
   // Rows for features that may not apply: shown only when the scene or a toggle makes them count.
   private readonly rows = {
@@ -65,6 +67,8 @@ export class MonitorPanel {
     filtered: byId('row-filtered'),
     begin: byId('row-begin'),
     end: byId('row-end'),
+    hits: byId('row-hits'),
+    fastestHit: byId('row-fastest-hit'),
   };
   private lastText = -Infinity;
   private lastChart = -Infinity;
@@ -122,6 +126,11 @@ export class MonitorPanel {
       r.begin.hidden = r.end.hidden = !sim.touches.enabled;
       o.begin.textContent = integer(sim.touches.begins);
       o.end.textContent = integer(sim.touches.ends);
+      const hits = sim.hits;
+      r.hits.hidden = r.fastestHit.hidden = !hits.enabled;
+      o.hits.textContent = integer(hits.count);
+      // Of the last step, like the count beside it; a dash rather than 0 when nothing hit.
+      o.fastestHit.textContent = hits.count > 0 ? `${hits.fastest.toFixed(0)} px/s` : '–';
     }
     if (force || now - this.lastChart >= 100) {
       this.lastChart = now;

@@ -1,4 +1,5 @@
 import { BodyTypeCode, type GridGeometry, type World } from '@maxgrid/engine';
+import type { HitEvents } from '../hit-events.js';
 import type { QueryTool } from '../query-tool.js';
 import type { TouchEvents } from '../touch-events.js';
 import type { ViewTransform } from '../view.js';
@@ -11,6 +12,7 @@ export interface OverlayOptions {
   /** Static segments (x1, y1, x2, y2, thickness each), for their AABBs. */
   segments: Float64Array;
   touches: TouchEvents;
+  hits: HitEvents;
   query: QueryTool;
 }
 
@@ -18,11 +20,16 @@ export const RAY_COLOR = '#f0f6fc';
 export const HIT_COLOR = '#ff7b72';
 const POINT_COLOR = '#e3b341';
 const FLASH_COLOR = 'rgba(255, 255, 255, 0.85)';
+/** Rings at hit bodies: a colour nothing else on the overlay uses, so they can be told apart. */
+export const HIT_RING_COLOR = '#d2a8ff';
+/** The Box tool's rectangle and the circles found in it. */
+export const BOX_COLOR = '#56d4dd';
+const BOX_FILL = 'rgba(86, 212, 221, 0.08)';
 
 /**
  * A transparent 2D canvas above the renderer: the report's draw-grid function (5.11.2), AABBs of
- * bodies and segments, a ring around the held body, flashes where touches began, and the query
- * tools' rays, hits and highlights. It works over either renderer, and stays blank (one clear)
+ * bodies and segments, a ring around the held body, flashes where touches began, rings where hits
+ * happened, and the query tools' rays, hits, boxes and highlights. It works over either renderer, and stays blank (one clear)
  * when nothing is switched on.
  */
 export class Overlay {
@@ -38,8 +45,8 @@ export class Overlay {
   draw(world: World, view: ViewTransform, o: OverlayOptions): void {
     const ctx = this.ctx;
     const q = o.query;
-    const querying = (q.tool === 'ray' && q.hasRay) || (q.tool === 'point' && q.hasPoint);
-    const empty = !o.grid && !o.aabb && o.held < 0 && !o.touches.enabled && !querying;
+    const querying = (q.tool === 'ray' && q.hasRay) || (q.tool === 'point' && q.hasPoint) || (q.tool === 'box' && q.hasBox);
+    const empty = !o.grid && !o.aabb && o.held < 0 && !o.touches.enabled && !o.hits.showing && !querying;
     if (empty && this.wasEmpty) return;
     this.wasEmpty = empty;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
@@ -55,6 +62,7 @@ export class Overlay {
     }
     if (o.aabb) this.drawBoxes(world, o.segments);
     if (o.touches.enabled) this.drawFlashes(world, o.touches, hairline);
+    if (o.hits.showing) this.drawHits(world, o.hits, hairline);
     if (o.held >= 0 && world.hasBody(o.held)) {
       const c = world.getCircle(o.held);
       ctx.strokeStyle = '#ffffff';
@@ -65,6 +73,7 @@ export class Overlay {
     }
     if (q.tool === 'ray' && q.hasRay) this.drawRay(q, hairline);
     if (q.tool === 'point' && q.hasPoint) this.drawPoint(world, q, hairline);
+    if (q.tool === 'box' && q.hasBox) this.drawBox(world, q, hairline);
   }
 
   private drawBoxes(world: World, seg: Float64Array): void {
@@ -97,6 +106,54 @@ export class Overlay {
       if (v.type[s] === BodyTypeCode.free || !touches.flashing(s)) continue;
       ctx.moveTo(v.x[s] + v.radius[s], v.y[s]);
       ctx.arc(v.x[s], v.y[s], v.radius[s], 0, 2 * Math.PI);
+    }
+    ctx.stroke();
+  }
+
+  /**
+   * A ring just outside each body hit in the last few steps, its gap growing with the hit's speed
+   * over the threshold: 3 device pixels at the threshold, 4 more per doubling, up to 19. A log
+   * scale, since approach speeds span orders of magnitude in one scene. One path for all rings.
+   */
+  private drawHits(world: World, hits: HitEvents, hairline: number): void {
+    const ctx = this.ctx;
+    const v = world.views();
+    const speeds = hits.hitSpeed;
+    ctx.strokeStyle = HIT_RING_COLOR;
+    ctx.lineWidth = 2 * hairline;
+    ctx.beginPath();
+    for (let s = 0; s < v.slotCount; s++) {
+      if (v.type[s] === BodyTypeCode.free || !hits.ringing(s)) continue;
+      const gap = Math.min(19, 3 + 4 * Math.log2(Math.max(1, speeds[s] / hits.threshold)));
+      const r = v.radius[s] + gap * hairline;
+      ctx.moveTo(v.x[s] + r, v.y[s]);
+      ctx.arc(v.x[s], v.y[s], r, 0, 2 * Math.PI);
+    }
+    ctx.stroke();
+  }
+
+  // Highlights found bodies through the views and their slots: a large box holds thousands of
+  // bodies, and getCircle would allocate an object for each of them every frame.
+  private drawBox(world: World, q: QueryTool, hairline: number): void {
+    const ctx = this.ctx;
+    const x = Math.min(q.bx1, q.bx2);
+    const y = Math.min(q.by1, q.by2);
+    const w = Math.abs(q.bx2 - q.bx1);
+    const h = Math.abs(q.by2 - q.by1);
+    ctx.fillStyle = BOX_FILL;
+    ctx.fillRect(x, y, w, h);
+    ctx.strokeStyle = BOX_COLOR;
+    ctx.lineWidth = 1.5 * hairline;
+    ctx.strokeRect(x, y, w, h);
+    const v = world.views();
+    ctx.lineWidth = 2.5 * hairline;
+    ctx.beginPath();
+    for (const handle of q.inBox) {
+      if (!world.hasBody(handle)) continue;
+      const s = world.slotOfHandle(handle);
+      const r = v.radius[s] + 2 * hairline;
+      ctx.moveTo(v.x[s] + r, v.y[s]);
+      ctx.arc(v.x[s], v.y[s], r, 0, 2 * Math.PI);
     }
     ctx.stroke();
   }

@@ -11,6 +11,10 @@ const POLL = { timeout: 30_000, interval: 100 };
 const STATIC_RGB = [0xc3, 0xcc, 0xd6];
 /** Ray hit markers on the overlay (overlay.ts HIT_COLOR). */
 const HIT_RGB = [0xff, 0x7b, 0x72];
+/** Rings at bodies hit in a collision (overlay.ts HIT_RING_COLOR). */
+const HIT_RING_RGB = [0xd2, 0xa8, 0xff];
+/** The Box tool's rectangle and highlights (overlay.ts BOX_COLOR). */
+const BOX_RGB = [0x56, 0xd4, 0xdd];
 
 let browser: Browser;
 
@@ -170,6 +174,32 @@ describe('2D sandbox: engine features', () => {
     await page.close();
   });
 
+  it('rings bodies hit in fast collisions and counts hits with Hit events on', async () => {
+    // The default seed box is elastic with 1000 bodies at 100 ± 50 px/s: collisions every step.
+    const { page, errors } = await openPage(browser, '/?n=1000');
+    await stepsPass(page, 2);
+    for (const row of ['hits', 'fastest-hit']) expect(await page.locator(`#row-${row}`).isVisible(), row).toBe(false);
+    expect(await overlayPixelsNear(page, HIT_RING_RGB)).toBe(0);
+
+    await page.getByLabel('Hit events').check();
+    await expect.poll(() => new URL(page.url()).searchParams.get('hits'), POLL).toBe('1');
+    await expect.poll(() => page.locator('#row-hits').isVisible(), POLL).toBe(true);
+    await expect.poll(() => stat(page, 'hits'), POLL).toBeGreaterThan(0);
+    // The fastest hit is at least the threshold, 50 px/s here (8 g·dt = 40 px/s is lower).
+    await expect.poll(() => stat(page, 'fastest-hit'), POLL).toBeGreaterThanOrEqual(50);
+    expect(await page.locator('#stat-fastest-hit').innerText()).toMatch(/px\/s$/);
+    await expect.poll(() => overlayPixelsNear(page, HIT_RING_RGB), POLL).toBeGreaterThan(20);
+    await page.locator('#stage').screenshot({ path: join(ARTIFACTS, 'sandbox-hits.png') });
+
+    // Off again: the rows hide and the rings are gone with the rebuilt world.
+    await page.getByLabel('Hit events').uncheck();
+    await expect.poll(() => page.locator('#row-hits').isVisible(), POLL).toBe(false);
+    await expect.poll(() => new URL(page.url()).searchParams.get('hits'), POLL).toBeNull();
+    await expect.poll(() => overlayPixelsNear(page, HIT_RING_RGB), POLL).toBe(0);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
   it('casts a ray across the bodies it crosses, and points at the body under the pointer', async () => {
     // An empty, still box; three circles added by clicks on a horizontal line.
     const { page, errors } = await openPage(browser, '/?n=0&gravity=0&velocity=0&size=20');
@@ -215,6 +245,31 @@ describe('2D sandbox: engine features', () => {
     await expect.poll(() => readout.innerText(), POLL).toBe('Point: 1 body under the pointer (1)');
     await page.mouse.move(high.x, high.y);
     await expect.poll(() => readout.innerText(), POLL).toMatch(/^Point: 0 bodies/);
+
+    // A box over all three (radius 20 at x = 400, 800, 1200), then one over empty space.
+    await page.getByLabel('Tool').selectOption('box');
+    expect(new URL(page.url()).searchParams.get('tool')).toBe('box');
+    expect(await readout.innerText()).toMatch(/^Box: drag/);
+    const drag = async (x1: number, y1: number, x2: number, y2: number) => {
+      const a = at(x1, y1);
+      const b = at(x2, y2);
+      await page.mouse.move(a.x, a.y);
+      await page.mouse.down();
+      await page.mouse.move((a.x + b.x) / 2, (a.y + b.y) / 2, { steps: 3 });
+      await page.mouse.move(b.x, b.y, { steps: 3 });
+      await page.mouse.up();
+    };
+    await drag(300, 350, 1300, 550);
+    await expect.poll(() => readout.innerText(), POLL).toBe('Box: 3 bodies');
+    expect(await overlayPixelsNear(page, BOX_RGB)).toBeGreaterThan(100);
+    await page.locator('#stage').screenshot({ path: join(ARTIFACTS, 'sandbox-box.png') });
+    // Dragged up and to the left, covering only the middle body.
+    await drag(900, 520, 700, 380);
+    await expect.poll(() => readout.innerText(), POLL).toBe('Box: 1 body');
+    await drag(100, 50, 1500, 300);
+    await expect.poll(() => readout.innerText(), POLL).toBe('Box: 0 bodies');
+    // Drags with the Box tool add nothing.
+    expect(await stat(page, 'bodies')).toBe(3);
     expect(errors).toEqual([]);
     await page.close();
   });
@@ -246,33 +301,40 @@ describe('2D sandbox: engine features', () => {
     await page.getByLabel(/^Quantity /).fill('300');
     await page.getByLabel('Sleeping').check();
     await page.getByLabel('Contact events').check();
+    await page.getByLabel('Hit events').check();
     await page.getByLabel('Collision layers').check();
     await page.getByLabel('Continuous collision').uncheck();
-    await page.getByLabel('Tool').selectOption('point');
-    await expect.poll(() => new URL(page.url()).searchParams.get('tool'), POLL).toBe('point');
+    await page.getByLabel('Tool').selectOption('box');
+    await expect.poll(() => new URL(page.url()).searchParams.get('tool'), POLL).toBe('box');
     const read = async () => ({
       scene: await page.getByLabel('Scene').inputValue(),
       labels: await page.locator('#scene-controls label').allInnerTexts(),
-      toggles: await Promise.all(['Sleeping', 'Continuous collision', 'Contact events', 'Collision layers'].map((n) => page.getByLabel(n).isChecked())),
+      toggles: await Promise.all(
+        ['Sleeping', 'Continuous collision', 'Contact events', 'Hit events', 'Collision layers'].map((n) => page.getByLabel(n).isChecked()),
+      ),
       tool: await page.getByLabel('Tool').inputValue(),
       bodies: await stat(page, 'bodies'),
     });
     await stepsPass(page, 2);
     const before = await read();
-    expect(before.toggles).toEqual([true, false, true, true]);
+    expect(before.toggles).toEqual([true, false, true, true, true]);
     expect(before.labels.join('|')).toMatch(/Fill\s+40%/);
     const url = new URL(page.url());
     expect(url.searchParams.get('continuous')).toBe('0');
     expect(url.searchParams.get('fill')).toBe('0.4');
+    expect(url.searchParams.get('hits')).toBe('1');
     await page.reload({ waitUntil: 'load' });
     await stepsPass(page, 2);
     expect(await read()).toEqual(before);
 
     // Unknown scene, toggle and tool values fall back to the defaults.
-    await page.goto(page.url().replace('scene=uniform', 'scene=bogus').replace('sleeping=1', 'sleeping=yes').replace('tool=point', 'tool=laser'));
+    const bad = page.url().replace('scene=uniform', 'scene=bogus').replace('sleeping=1', 'sleeping=yes').replace('hits=1', 'hits=true');
+    await page.goto(bad.replace('tool=box', 'tool=laser'));
     await stepsPass(page, 2);
     expect(await page.getByLabel('Scene').inputValue()).toBe('seed-box');
     expect(await page.getByLabel('Sleeping').isChecked()).toBe(false);
+    expect(await page.getByLabel('Hit events').isChecked()).toBe(false);
+    expect(new URL(page.url()).searchParams.get('hits')).toBeNull();
     expect(await page.getByLabel('Tool').inputValue()).toBe('drag');
     // A funnel that cannot hold its circles is refused with a notice; its defaults are built instead.
     await page.goto(page.url().replace(/\?.*/, '?scene=funnel&n=5000&size=12'));
