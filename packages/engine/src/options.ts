@@ -170,10 +170,6 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
   };
 }
 
-export function nonNegative(field: string, value: unknown): number {
-  return nonNegativeNumber(field, value);
-}
-
 export function flag(field: string, value: unknown): boolean {
   if (typeof value !== 'boolean') throw new TypeError(`${field} must be true or false, got ${describeValue(value)}`);
   return value;

@@ -14,12 +14,11 @@ import * as analytics from './analytics.js';
 import { StepPipeline } from './step/pipeline.js';
 import type { StepStats } from './step/stats.js';
 import type { IntegratorName } from './integrate/integrator.js';
-import { finiteNumber } from './util/validate.js';
+import { finiteNumber, nonNegativeNumber } from './util/validate.js';
 import {
   bodyType,
   broadphaseName,
   layerBits,
-  nonNegative,
   integratorName,
   resolveCircle,
   resolveWorldOptions,
@@ -132,7 +131,7 @@ export class World {
     this.segments.remove(this.segmentSlot(handle));
   }
 
-  getSegment(handle: number): Required<Omit<SegmentOptions, never>> {
+  getSegment(handle: number): Required<SegmentOptions> {
     const s = this.segmentSlot(handle);
     const g = this.segments;
     return { x1: g.ax[s], y1: g.ay[s], x2: g.bx[s], y2: g.by[s], thickness: g.thickness[s], restitution: g.restitution[s], category: g.category[s], mask: g.mask[s] };
@@ -234,7 +233,7 @@ export class World {
 
   setLinearDamping(handle: number, damping: number): void {
     const s = this.slot(handle);
-    this.bodies.setMotion(s, this.bodies.gravityScale[s], nonNegative('linearDamping', damping));
+    this.bodies.setMotion(s, this.bodies.gravityScale[s], nonNegativeNumber('linearDamping', damping));
   }
 
   /** Collision layers: bodies a and b collide only if (a.category & b.mask) and (b.category & a.mask). */

@@ -32,12 +32,14 @@ export class CellGrid {
 
   /**
    * Sizes the grid over the extent [minX, maxX] x [minY, maxY] with cells of at least
-   * `minCellSize`, enlarged until there are at most `cellBudget` cells, and bins `slots[0..n)`,
-   * or slots 0..n-1 when `slots` is null (a world without holes).
+   * `minCellSize`, enlarged until there are at most `cellBudget` cells, and bins
+   * `slots[offset..offset+n)`, or slots 0..n-1 when `slots` is null (a world without holes).
+   * An offset rather than a subarray: a subarray is a new object, and this runs every step.
    */
   build(
     bodies: BodyStore,
     slots: Int32Array | null,
+    offset: number,
     n: number,
     minX: number,
     minY: number,
@@ -71,7 +73,7 @@ export class CellGrid {
     cellStart.fill(0, 0, cells + 2);
     // Offsets are >= 0 and below 2^31, so `| 0` truncates exactly as Math.floor would, faster.
     for (let k = 0; k < n; k++) {
-      const i = slots === null ? k : slots[k];
+      const i = slots === null ? k : slots[offset + k];
       const c = ((y[i] - minY) * inv | 0) * columns + ((x[i] - minX) * inv | 0);
       binOf[k] = c;
       cellStart[c]++;
@@ -82,7 +84,7 @@ export class CellGrid {
     for (let k = n - 1; k >= 0; k--) {
       const c = binOf[k];
       const at = --cellStart[c];
-      const i = slots === null ? k : slots[k];
+      const i = slots === null ? k : slots[offset + k];
       sortedSlot[at] = i;
       sortedX[at] = x[i];
       sortedY[at] = y[i];

@@ -3,7 +3,6 @@ import type { BodyStore } from '../store/body-store.js';
 import type { PairSink } from '../store/pair-sink.js';
 import { CellGrid } from './cell-grid.js';
 import { LiveExtent } from './live-extent.js';
-import { RADIUS_PAD } from './fat-bounds.js';
 import { grownCapacity } from '../util/grow.js';
 
 /** Radius classes are powers of two; more than this many collapse into the top one. */
@@ -38,16 +37,17 @@ export class HierarchicalGridBroadPhase implements BroadPhase {
     const n = live.count;
     if (n < 2) return 0;
     const levels = this.assignLevels(bodies, n);
-    const base = 2 * live.minRadius * (1 + RADIUS_PAD) + live.coordPad;
+    const base = live.cellSizeFor(live.minRadius);
     const budget = 4 * n + 64;
     for (let level = 0; level < levels; level++) {
       const from = this.levelStart[level];
       const count = this.levelStart[level + 1] - from;
       // A level's cells must cover its largest diameter; the top level takes everything larger.
-      const cellSize = level === levels - 1 ? 2 * live.maxRadius * (1 + RADIUS_PAD) + live.coordPad : base * 2 ** level;
+      const cellSize = level === levels - 1 ? live.cellSizeFor(live.maxRadius) : base * 2 ** level;
       this.grid(level).build(
         bodies,
-        this.levelSlots.subarray(from),
+        this.levelSlots,
+        from,
         count,
         live.minX,
         live.minY,

@@ -1,6 +1,6 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
-import { COORD_PAD } from './fat-bounds.js';
+import { COORD_PAD, RADIUS_PAD } from './fat-bounds.js';
 
 /**
  * The live bodies of a step: their slots in ascending order, the box around their centres and
@@ -68,6 +68,14 @@ export class LiveExtent {
     this.minRadius = bodies.minRadius();
     this.maxRadius = bodies.maxRadius();
     this.coordPad = Math.max(Math.abs(minX), Math.abs(maxX), Math.abs(minY), Math.abs(maxY)) * COORD_PAD;
+  }
+
+  /**
+   * The smallest conservative cell for circles up to `radius`: their diameter, padded as
+   * fat-bounds.ts explains, so that touching circles are never more than one cell apart.
+   */
+  cellSizeFor(radius: number): number {
+    return 2 * radius * (1 + RADIUS_PAD) + this.coordPad;
   }
 
   memoryBytes(): number {

@@ -3,7 +3,6 @@ import type { BodyStore } from '../store/body-store.js';
 import type { PairSink } from '../store/pair-sink.js';
 import { CellGrid } from './cell-grid.js';
 import { LiveExtent } from './live-extent.js';
-import { RADIUS_PAD } from './fat-bounds.js';
 
 export interface GridGeometry {
   originX: number;
@@ -38,8 +37,8 @@ export class MaxGridBroadPhase implements BroadPhase {
     const live = this.live;
     live.measure(bodies);
     if (live.count < 2) return 0;
-    const cellSize = 2 * live.maxRadius * (1 + RADIUS_PAD) + live.coordPad;
-    this.grid.build(bodies, live.dense ? null : live.slots, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
+    const cellSize = live.cellSizeFor(live.maxRadius);
+    this.grid.build(bodies, live.dense ? null : live.slots, 0, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
     return this.grid.scanSelf(out, live.coordPad);
   }
 

@@ -1,7 +1,6 @@
 import type { BodyStore } from '../store/body-store.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
 import { LiveExtent } from '../broadphase/live-extent.js';
-import { RADIUS_PAD } from '../broadphase/fat-bounds.js';
 import { rayCircle } from './ray-circle.js';
 
 export interface RayHit {
@@ -168,8 +167,8 @@ export class Queries {
     if (this.builtVersion !== version) {
       live.measure(bodies);
       if (live.count > 0) {
-        const cellSize = 2 * live.maxRadius * (1 + RADIUS_PAD) + live.coordPad;
-        this.grid.build(bodies, live.dense ? null : live.slots, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
+        const cellSize = live.cellSizeFor(live.maxRadius);
+        this.grid.build(bodies, live.dense ? null : live.slots, 0, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
         if (this.stamp.length < live.count) this.stamp = new Uint32Array(Math.max(live.count, 2 * this.stamp.length));
       }
       this.builtVersion = version;

@@ -71,14 +71,14 @@ export class ContinuousCollision {
     return bodies.staticCount > 0 || segments.count > 0;
   }
 
+  /** Copies whole columns: a subarray of just the used slots would be a new object every step. */
   rememberPositions(bodies: BodyStore): void {
-    if (this.previousX.length < bodies.slotCount) {
-      const capacity = grownCapacity(this.previousX.length, bodies.slotCount);
-      this.previousX = grow(this.previousX, capacity);
-      this.previousY = grow(this.previousY, capacity);
+    if (this.previousX.length !== bodies.x.length) {
+      this.previousX = new Float64Array(bodies.x.length);
+      this.previousY = new Float64Array(bodies.y.length);
     }
-    this.previousX.set(bodies.x.subarray(0, bodies.slotCount));
-    this.previousY.set(bodies.y.subarray(0, bodies.slotCount));
+    this.previousX.set(bodies.x);
+    this.previousY.set(bodies.y);
   }
 
   sweep(

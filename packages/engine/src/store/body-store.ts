@@ -209,12 +209,6 @@ export class BodyStore {
     }
   }
 
-  /** Largest over smallest radius of live bodies (1 when empty): how mixed the sizes are. */
-  radiusSpread(): number {
-    this.refreshRadiusRange();
-    return this.liveCount === 0 ? 1 : this.cachedMaxRadius / this.cachedMinRadius;
-  }
-
   minRadius(): number {
     this.refreshRadiusRange();
     return this.cachedMinRadius;
