@@ -1,6 +1,9 @@
 import { SCENES } from '@maxgrid/scenes';
 import { ENGINE_IDS } from '../engines/registry.js';
 import type { ChartSpec } from '../report/charts.js';
+import { energyTables, falsePositiveTables, scaleTables, stepTimeTables, type Table } from '../report/tables.js';
+import { cMaxgridHeadline, cMaxgridTables, sapSleepHeadline, sapSleepTables, targetsHeadline, targetsTables } from '../report/tables-targets.js';
+import { energyHeadline, falsePositiveHeadline, scaleHeadline, stepTimeHeadline } from '../report/headlines.js';
 import type { Profile, RunContext } from './common.js';
 import { energyCharts, energyCsv, energyDefaults, energySchema, runEnergy, type EnergyOptions, type EnergyResult } from './energy.js';
 import {
@@ -39,6 +42,10 @@ export interface Experiment<O extends object, R> {
   run(options: O, ctx: RunContext): Promise<R>;
   csv(result: R): string;
   charts(result: R): ChartSpec[];
+  /** Tables for the markdown and the HTML report alike. */
+  tables(result: R): Table[];
+  /** The sentences that open its section of docs/results.md. */
+  headline(result: R): string[];
 }
 
 function reject(experiment: string, overrides: Overrides, allowed: (keyof Overrides)[]): void {
@@ -69,6 +76,8 @@ export const stepTime: Experiment<StepTimeOptions, StepTimeResult> = {
   },
   run: runStepTime,
   csv: stepTimeCsv,
+  tables: stepTimeTables,
+  headline: stepTimeHeadline,
   charts: stepTimeCharts,
 };
 
@@ -85,6 +94,8 @@ export const energy: Experiment<EnergyOptions, EnergyResult> = {
   },
   run: runEnergy,
   csv: energyCsv,
+  tables: energyTables,
+  headline: energyHeadline,
   charts: energyCharts,
 };
 
@@ -100,6 +111,8 @@ export const falsePositives: Experiment<FalsePositiveOptions, FalsePositiveResul
   },
   run: runFalsePositives,
   csv: falsePositiveCsv,
+  tables: falsePositiveTables,
+  headline: falsePositiveHeadline,
   charts: falsePositiveCharts,
 };
 
@@ -115,6 +128,8 @@ export const scale: Experiment<ScaleOptions, ScaleResult> = {
   },
   run: runScale,
   csv: scaleCsv,
+  tables: scaleTables,
+  headline: scaleHeadline,
   charts: scaleCharts,
 };
 
@@ -135,6 +150,8 @@ export const cMaxgrid: Experiment<CMaxgridOptions, CMaxgridResult> = {
   },
   run: runCMaxgrid,
   csv: cMaxgridCsv,
+  tables: cMaxgridTables,
+  headline: cMaxgridHeadline,
   charts: cMaxgridCharts,
 };
 
@@ -151,6 +168,8 @@ export const sapSleep: Experiment<SapSleepOptions, SapSleepResult> = {
   },
   run: runSapSleep,
   csv: sapSleepCsv,
+  tables: sapSleepTables,
+  headline: sapSleepHeadline,
   charts: sapSleepCharts,
 };
 
@@ -168,6 +187,8 @@ export const targets: Experiment<TargetsOptions, TargetsResult> = {
   run: runTargets,
   csv: (r: TargetsResult) => targetsCsv(r),
   charts: () => [],
+  tables: targetsTables,
+  headline: targetsHeadline,
 };
 
 // The registry stores experiments of different option and result types side by side.

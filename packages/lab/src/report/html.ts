@@ -1,35 +1,13 @@
 import type { EngineInfo } from '../engines/adapter.js';
 import type { Environment } from '../experiments/common.js';
-import type { EnergyResult } from '../experiments/energy.js';
-import type { FalsePositiveResult } from '../experiments/false-positives.js';
-import type { ScaleResult } from '../experiments/scale.js';
-import type { StepTimeResult } from '../experiments/step-time.js';
-import type { CMaxgridResult } from '../experiments/c-maxgrid.js';
-import type { SapSleepResult } from '../experiments/sap-sleep.js';
-import type { TargetsResult } from '../experiments/targets.js';
-import { cMaxgridTables, sapSleepTables, targetsTables } from './tables-targets.js';
-import { engineTable, energyTables, escapeHtml, falsePositiveTables, htmlTable, scaleTables, stepTimeTables, type Table } from './tables.js';
+import { engineTable, escapeHtml, htmlTable, type Table } from './tables.js';
+import { EXPERIMENTS } from '../experiments/registry.js';
 
 /** The tables an experiment's result is reported with, in the markdown and the HTML alike. */
 export function tablesFor(experiment: string, result: unknown): Table[] {
-  switch (experiment) {
-    case 'step-time':
-      return stepTimeTables(result as StepTimeResult);
-    case 'energy':
-      return energyTables(result as EnergyResult);
-    case 'false-positives':
-      return falsePositiveTables(result as FalsePositiveResult);
-    case 'scale':
-      return scaleTables(result as ScaleResult);
-    case 'sap-sleep':
-      return sapSleepTables(result as SapSleepResult);
-    case 'c-maxgrid':
-      return cMaxgridTables(result as CMaxgridResult);
-    case 'targets':
-      return targetsTables(result as TargetsResult);
-    default:
-      throw new RangeError(`no tables for experiment '${experiment}'`);
-  }
+  const entry = EXPERIMENTS[experiment];
+  if (!entry) throw new RangeError(`no tables for experiment '${experiment}'`);
+  return entry.tables(result);
 }
 
 export interface ReportSection {
