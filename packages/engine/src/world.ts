@@ -12,6 +12,7 @@ import { queryMask, rayArguments } from './query/query-args.js';
 import type { CircleState, BodyViews, QueryOptions } from './world-types.js';
 import * as analytics from './analytics.js';
 import { StepPipeline } from './step/pipeline.js';
+import { ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
 import type { IntegratorName } from './integrate/integrator.js';
 import { finiteNumber, nonNegativeNumber } from './util/validate.js';
@@ -284,6 +285,31 @@ export class World {
   reserve(count: number): void {
     if (!Number.isSafeInteger(count) || count < 0) throw new RangeError(`reserve count must be a non-negative integer, got ${count}`);
     this.bodies.reserve(count);
+  }
+
+  /**
+   * Runs the step on `workerCount` threads: this one and `workerCount - 1` worker threads
+   * (worker_threads in Node, module Web Workers in browsers, which need a cross-origin isolated
+   * page for SharedArrayBuffer). Resolves once they are running; until then steps run on this
+   * thread. Motion, the Max Grid broad-phase with the narrow-phase, and correct run in parallel;
+   * the solver stays serial. The result is the same bits for any worker count, and as without
+   * workers. `views()` must be taken again afterwards: the columns move to shared memory.
+   */
+  async startWorkers(workerCount: number): Promise<void> {
+    this.stopWorkers();
+    const grid = new MaxGridBroadPhase().cellGrid;
+    this.pipeline.parallel = await ParallelStep.start(workerCount, this.bodies, grid);
+  }
+
+  /** Stops the worker threads; later steps run on this thread alone. */
+  stopWorkers(): void {
+    this.pipeline.parallel?.stop();
+    this.pipeline.parallel = null;
+  }
+
+  /** Threads working on each step: 1 without workers. */
+  get workerCount(): number {
+    return this.pipeline.parallel?.threads ?? 1;
   }
 
   /** Advances the world by `dt` seconds. Allocates nothing once buffers have grown to the scene. */

@@ -43,8 +43,13 @@ export class AutoBroadPhase implements BroadPhase {
   current: BroadPhase = this.uniform;
 
   findPairs(bodies: BodyStore, out: PairSink): number {
+    return this.select(bodies).findPairs(bodies, out);
+  }
+
+  /** The broad-phase this step uses (re-chosen every RECHOOSE_EVERY steps and on membership changes). */
+  select(bodies: BodyStore): BroadPhase {
     if (this.chosenFor !== bodies.membershipVersion || ++this.stepsSinceChoice >= RECHOOSE_EVERY) this.choose(bodies);
-    return this.current.findPairs(bodies, out);
+    return this.current;
   }
 
   memoryBytes(): number {

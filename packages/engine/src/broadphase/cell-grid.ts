@@ -1,6 +1,6 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { PairSink } from '../store/pair-sink.js';
-import { grownCapacity } from '../util/grow.js';
+import { allocateLike, grownCapacity } from '../util/grow.js';
 import { RADIUS_PAD } from './fat-bounds.js';
 
 /**
@@ -21,14 +21,19 @@ export class CellGrid {
   rows = 0;
   count = 0;
 
-  cellStart = new Int32Array(2);
-  sortedSlot = new Int32Array(0);
-  sortedX = new Float64Array(0);
-  sortedY = new Float64Array(0);
-  sortedR = new Float64Array(0);
+  cellStart: Int32Array = new Int32Array(2);
+  sortedSlot: Int32Array = new Int32Array(0);
+  sortedX: Float64Array = new Float64Array(0);
+  sortedY: Float64Array = new Float64Array(0);
+  sortedR: Float64Array = new Float64Array(0);
   /** 1 / cellSize, shared by sizing, binning and lookups so all round identically. */
   inverse = 0;
-  private binOf = new Int32Array(0);
+  /** Each body's cell, in input order: scratch of the counting sort. */
+  binOf: Int32Array = new Int32Array(0);
+  /** Buffers live on SharedArrayBuffers, for the threads of a parallel step. */
+  shared = false;
+  /** Bumped whenever the buffers are reallocated. */
+  layoutVersion = 0;
 
   /**
    * Sizes the grid over the extent [minX, maxX] x [minY, maxY] with cells of at least
@@ -48,6 +53,12 @@ export class CellGrid {
     minCellSize: number,
     cellBudget: number,
   ): void {
+    this.layout(minX, minY, maxX, maxY, minCellSize, cellBudget, n);
+    this.bin(bodies, slots, offset, n);
+  }
+
+  /** Sizes the grid and its buffers for `n` bodies, without binning them (see `build`). */
+  layout(minX: number, minY: number, maxX: number, maxY: number, minCellSize: number, cellBudget: number, n: number): void {
     let cellSize = minCellSize;
     let inv = 1 / cellSize;
     let columns = Math.floor((maxX - minX) * inv) + 1;
@@ -66,7 +77,11 @@ export class CellGrid {
     this.rows = rows;
     this.count = n;
     this.ensure(n, columns * rows);
+  }
 
+  /** Counting sort of the bodies into the cells sized by `layout`. */
+  bin(bodies: BodyStore, slots: Int32Array | null, offset: number, n: number): void {
+    const { columns, rows, originX: minX, originY: minY, inverse: inv } = this;
     const cells = columns * rows;
     const { x, y, radius } = bodies;
     const { cellStart, binOf, sortedSlot, sortedX, sortedY, sortedR } = this;
@@ -102,11 +117,19 @@ export class CellGrid {
    * number of pairs examined.
    */
   scanSelf(out: PairSink, pad: number): number {
+    return this.scanRows(out, pad, 0, this.rows);
+  }
+
+  /**
+   * scanSelf for the pairs found from cells in rows [rowFrom, rowTo): disjoint row bands find
+   * disjoint sets of pairs, whose union is scanSelf's, so threads can scan bands side by side.
+   */
+  scanRows(out: PairSink, pad: number, rowFrom: number, rowTo: number): number {
     const { cellStart, sortedSlot, sortedX, sortedY, sortedR, columns, rows } = this;
     let examined = 0;
     // Cell by cell, row-major: each cell's two neighbour ranges are found once for all its bodies,
     // and no per-body cell index is needed. Empty cells cost one comparison.
-    for (let row = 0; row < rows; row++) {
+    for (let row = rowFrom; row < rowTo; row++) {
       const rowStart = row * columns;
       const hasBelow = row + 1 < rows;
       for (let column = 0; column < columns; column++) {
@@ -185,15 +208,28 @@ export class CellGrid {
     );
   }
 
+  /** Moves the buffers onto shared memory (or back); the next `layout` reallocates them. */
+  setShared(shared: boolean): void {
+    if (shared === this.shared) return;
+    this.shared = shared;
+    this.cellStart = new Int32Array(2);
+    this.sortedSlot = new Int32Array(0);
+  }
+
   private ensure(n: number, cells: number): void {
-    if (this.cellStart.length < cells + 2) this.cellStart = new Int32Array(grownCapacity(this.cellStart.length, cells + 2));
+    const shared = this.shared;
+    if (this.cellStart.length < cells + 2) {
+      this.cellStart = allocateLike(this.cellStart, grownCapacity(this.cellStart.length, cells + 2), shared);
+      this.layoutVersion++;
+    }
     if (this.sortedSlot.length >= n) return;
     const capacity = grownCapacity(this.sortedSlot.length, n);
-    this.binOf = new Int32Array(capacity);
-    this.sortedSlot = new Int32Array(capacity);
-    this.sortedX = new Float64Array(capacity);
-    this.sortedY = new Float64Array(capacity);
-    this.sortedR = new Float64Array(capacity);
+    this.binOf = allocateLike(this.binOf, capacity, shared);
+    this.sortedSlot = allocateLike(this.sortedSlot, capacity, shared);
+    this.sortedX = allocateLike(this.sortedX, capacity, shared);
+    this.sortedY = allocateLike(this.sortedY, capacity, shared);
+    this.sortedR = allocateLike(this.sortedR, capacity, shared);
+    this.layoutVersion++;
   }
 }
 

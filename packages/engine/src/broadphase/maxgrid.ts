@@ -42,6 +42,30 @@ export class MaxGridBroadPhase implements BroadPhase {
     return this.grid.scanSelf(out, live.coordPad);
   }
 
+  /**
+   * For a parallel step: measures the bodies and sizes the grid without binning them, which the
+   * step's threads then do. Returns null where the serial `findPairs` must run instead: fewer than
+   * two bodies, or holes in the slots (the parallel passes bin slots 0..n-1).
+   */
+  layoutForThreads(bodies: BodyStore): CellGrid | null {
+    const live = this.live;
+    live.measure(bodies);
+    if (live.count < 2 || !live.dense) return null;
+    const cellSize = live.cellSizeFor(live.maxRadius);
+    this.grid.layout(live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64, live.count);
+    return this.grid;
+  }
+
+  /** Absolute padding of the last measured extent (see fat-bounds.ts). */
+  get coordPad(): number {
+    return this.live.coordPad;
+  }
+
+  /** The grid, so that a parallel step can move its buffers to shared memory. */
+  get cellGrid(): CellGrid {
+    return this.grid;
+  }
+
   memoryBytes(): number {
     return this.live.memoryBytes() + this.grid.memoryBytes();
   }

@@ -7,12 +7,19 @@ import { needsGeneralMotion } from './motion.js';
  * then velocity advances by the acceleration. Kinematic bodies move with the velocity they were
  * given and ignore gravity and forces; static and free slots do not move.
  */
-export function integrateExplicitEuler(bodies: BodyStore, gx: number, gy: number, dt: number): void {
-  if (needsGeneralMotion(bodies)) return general(bodies, gx, gy, dt);
-  const { x, y, vx, vy, type, slotCount } = bodies;
+export function integrateExplicitEuler(
+  bodies: BodyStore,
+  gx: number,
+  gy: number,
+  dt: number,
+  from = 0,
+  to = bodies.slotCount,
+): void {
+  if (needsGeneralMotion(bodies)) return general(bodies, gx, gy, dt, from, to);
+  const { x, y, vx, vy, type } = bodies;
   const dvx = gx * dt;
   const dvy = gy * dt;
-  for (let i = 0; i < slotCount; i++) {
+  for (let i = from; i < to; i++) {
     const t = type[i];
     if (t === TypeCode.dynamic) {
       x[i] += vx[i] * dt;
@@ -27,9 +34,9 @@ export function integrateExplicitEuler(bodies: BodyStore, gx: number, gy: number
 }
 
 /** With per-body gravity scale, pending forces, damping or sleepers. */
-function general(bodies: BodyStore, gx: number, gy: number, dt: number): void {
-  const { x, y, vx, vy, type, invMass, gravityScale, linearDamping, forceX, forceY, asleep, slotCount } = bodies;
-  for (let i = 0; i < slotCount; i++) {
+function general(bodies: BodyStore, gx: number, gy: number, dt: number, from: number, to: number): void {
+  const { x, y, vx, vy, type, invMass, gravityScale, linearDamping, forceX, forceY, asleep } = bodies;
+  for (let i = from; i < to; i++) {
     const t = type[i];
     if (t === TypeCode.dynamic) {
       if (asleep[i]) continue;

@@ -1,5 +1,5 @@
 import type { BodyStore } from '../store/body-store.js';
-import type { ContactBuffer } from '../store/contact-buffer.js';
+import type { ContactSink } from '../store/contact-buffer.js';
 import type { PairConsumer } from '../store/pair-sink.js';
 import { TypeCode } from '../store/body-types.js';
 import { circlesOverlap } from './circle-circle.js';
@@ -21,7 +21,7 @@ export class NarrowPhase implements PairConsumer {
 
   constructor(
     private readonly bodies: BodyStore,
-    private readonly contacts: ContactBuffer,
+    private readonly contacts: ContactSink,
   ) {}
 
   begin(): void {

@@ -16,6 +16,8 @@ const MAX_BOUNCES = 16;
  *
  * Normal speeds under `restitutionThreshold` bounce with restitution 0, as between bodies.
  *
+ * Slots [from, to), all by default: each body is handled on its own, so ranges may run in parallel.
+ *
  * Kinematic bodies are contained too, with restitution 1: they keep the speed they were given, but
  * the box is the world's domain and nothing ends a step outside it.
  */
@@ -25,9 +27,11 @@ export function bounceOffBox(
   height: number,
   wallRestitution: number,
   restitutionThreshold: number,
+  from = 0,
+  to = bodies.slotCount,
 ): void {
-  const { x, y, vx, vy, radius, restitution, type, slotCount } = bodies;
-  for (let i = 0; i < slotCount; i++) {
+  const { x, y, vx, vy, radius, restitution, type } = bodies;
+  for (let i = from; i < to; i++) {
     const t = type[i];
     if (t !== TypeCode.dynamic && t !== TypeCode.kinematic) continue;
     const r = radius[i];
@@ -64,6 +68,28 @@ export function clampIntoBox(bodies: BodyStore, width: number, height: number, c
     return;
   }
   for (let i = 0; i < bodies.slotCount; i++) clampBody(bodies, i, width, height);
+}
+
+/**
+ * clampIntoBox for the contact bodies whose slot lies in [from, to): each thread of a parallel step
+ * reads every contact but writes only its own slots, so no two threads ever touch one body.
+ */
+export function clampContactBodiesInRange(
+  bodies: BodyStore,
+  lo: Int32Array,
+  hi: Int32Array,
+  count: number,
+  width: number,
+  height: number,
+  from: number,
+  to: number,
+): void {
+  for (let k = 0; k < count; k++) {
+    const i = lo[k];
+    const j = hi[k];
+    if (i >= from && i < to) clampBody(bodies, i, width, height);
+    if (j >= from && j < to) clampBody(bodies, j, width, height);
+  }
 }
 
 function clampBody(bodies: BodyStore, i: number, width: number, height: number): void {

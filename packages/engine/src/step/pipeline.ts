@@ -14,6 +14,10 @@ import { solveSegmentContacts } from '../solver/segment-contacts.js';
 import { SegmentGrid, type SegmentStore } from '../store/segment-store.js';
 import { emptyStats, type StepStats } from './stats.js';
 import { nowMs } from '../util/timer.js';
+import type { MotionSettings, ParallelStep } from '../parallel/parallel-step.js';
+import { AutoBroadPhase } from '../broadphase/auto.js';
+import { MaxGridBroadPhase } from '../broadphase/maxgrid.js';
+import type { CellGrid } from '../broadphase/cell-grid.js';
 
 export interface StepSettings {
   gravity: { x: number; y: number };
@@ -36,6 +40,9 @@ export interface StepSettings {
  * The broad-phase hands candidates to the narrow-phase in chunks (see PairSink), so those two
  * interleave; their times are separated by timing the narrow-phase inside the sink. Everything
  * here works on buffers that persist between steps: a warm step allocates nothing.
+ *
+ * With `parallel` attached, motion, the Max Grid and narrow-phase, and correct run on several
+ * threads (see ParallelStep), the rest as here; the result is the same bits either way.
  */
 export class StepPipeline {
   readonly contacts = new ContactBuffer();
@@ -44,6 +51,7 @@ export class StepPipeline {
   readonly stats: StepStats = emptyStats();
   readonly continuous = new ContinuousCollision();
   readonly segmentGrid = new SegmentGrid();
+  parallel: ParallelStep | null = null;
 
   constructor(
     private readonly bodies: BodyStore,
@@ -58,24 +66,33 @@ export class StepPipeline {
   }
 
   run(dt: number): void {
-    const { bodies, settings, stats, contacts, pairs, events } = this;
+    const { bodies, settings, stats, contacts, pairs, events, parallel } = this;
     const box = settings.box;
     const t0 = nowMs();
     const sweep = settings.continuous && this.continuous.needed(bodies, this.segments);
     if (sweep) this.continuous.rememberPositions(bodies);
 
-    INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
+    // Without sweeps, parallel motion bounces off the walls in the same pass as integration.
+    const bouncedInMotion = parallel !== null && !sweep;
+    if (parallel) parallel.motion(this.motionSettings(dt), bouncedInMotion);
+    else INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
 
     if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold);
-    if (box) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
+    if (box && !bouncedInMotion) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
     const t2 = nowMs();
 
     contacts.clear();
     pairs.begin();
     this.narrowPhase.begin();
-    const pairTests = this.broadPhase.findPairs(bodies, pairs);
-    pairs.flush();
+    const grid = parallel ? this.parallelGrid() : null;
+    let pairTests: number;
+    if (grid) {
+      pairTests = parallel!.findContacts(grid, this.parallelMaxGrid!.coordPad, contacts);
+    } else {
+      pairTests = this.broadPhase.findPairs(bodies, pairs);
+      pairs.flush();
+    }
     const t3 = nowMs();
 
     contacts.sortCanonical(bodies.slotCount);
@@ -84,7 +101,10 @@ export class StepPipeline {
     const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver.restitutionThreshold);
     const t4 = nowMs();
 
-    if (box) clampIntoBox(bodies, box.width, box.height, segmentContacts > 0 ? null : contacts);
+    if (box) {
+      if (grid && segmentContacts === 0) parallel!.clamp(box);
+      else clampIntoBox(bodies, box.width, box.height, segmentContacts > 0 ? null : contacts);
+    }
     const t5 = nowMs();
 
     events?.update(bodies, contacts);
@@ -92,27 +112,70 @@ export class StepPipeline {
     if (settings.sleeping.enabled) updateSleep(bodies, dt, settings.sleeping.speed, settings.sleeping.time);
     const t6 = nowMs();
 
+    const candidates = grid ? parallel!.candidates : pairs.total;
+    const filtered = grid ? parallel!.filtered : this.narrowPhase.filtered;
+    const narrowMs = grid ? parallel!.narrowMs : pairs.consumerMs;
     stats.steps++;
     stats.bodies = bodies.liveCount;
     stats.pairTests = pairTests;
-    stats.candidatePairs = pairs.total;
+    stats.candidatePairs = candidates;
     stats.contacts = contacts.count;
     stats.segmentContacts = segmentContacts;
     stats.sweptBodies = sweep ? this.continuous.swept : 0;
-    stats.filteredPairs = this.narrowPhase.filtered;
+    stats.filteredPairs = filtered;
     stats.sleepingBodies = bodies.sleepingCount;
     stats.integrateMs = t1 - t0;
     stats.boundaryMs = t2 - t1;
-    stats.narrowphaseMs = pairs.consumerMs;
-    stats.broadphaseMs = t3 - t2 - pairs.consumerMs;
+    stats.narrowphaseMs = narrowMs;
+    stats.broadphaseMs = t3 - t2 - narrowMs;
     stats.solveMs = t4 - t3;
     stats.correctMs = t5 - t4;
     stats.reportMs = t6 - t5;
     stats.totalMs = t6 - t0;
   }
 
+  private parallelMaxGrid: MaxGridBroadPhase | null = null;
+
+  /**
+   * The Max Grid the parallel step bins into, laid out for this step, or null when this step's
+   * broad-phase is another one (or Max Grid must run serially), which then runs as usual.
+   */
+  private parallelGrid(): CellGrid | null {
+    const broad = this.broadPhase;
+    const used = broad instanceof AutoBroadPhase ? broad.select(this.bodies) : broad;
+    if (!(used instanceof MaxGridBroadPhase)) return null;
+    used.cellGrid.setShared(true);
+    this.parallelMaxGrid = used;
+    return used.layoutForThreads(this.bodies);
+  }
+
+  private readonly motion = {
+    integrator: 'explicit-euler' as IntegratorName,
+    gravityX: 0,
+    gravityY: 0,
+    dt: 0,
+    box: null as { width: number; height: number } | null,
+    wallRestitution: 0,
+    restitutionThreshold: 0,
+  };
+
+  /** One reused record, so that a parallel step allocates nothing either. */
+  private motionSettings(dt: number): MotionSettings {
+    const m = this.motion;
+    const s = this.settings;
+    m.integrator = this.integrator;
+    m.gravityX = s.gravity.x;
+    m.gravityY = s.gravity.y;
+    m.dt = dt;
+    m.box = s.box;
+    m.wallRestitution = s.wallRestitution;
+    m.restitutionThreshold = s.solver.restitutionThreshold;
+    return m;
+  }
+
   memoryBytes(): number {
     return (
+      (this.parallel?.memoryBytes() ?? 0) +
       this.broadPhase.memoryBytes() +
       this.contacts.memoryBytes() +
       this.pairs.memoryBytes() +

@@ -82,6 +82,10 @@ export class BodyStore {
   box: { width: number; height: number } | null = null;
   /** Bumped whenever the set of live bodies changes, for structures that persist between steps. */
   membershipVersion = 0;
+  /** Bumped whenever the columns are reallocated: worker threads then need the new buffers. */
+  layoutVersion = 0;
+  /** Columns live on SharedArrayBuffers (a parallel step is attached). */
+  shared = false;
 
   private freeSlots = new Int32Array(0);
   private freeCount = 0;
@@ -250,27 +254,42 @@ export class BodyStore {
     if (needed > this.capacity) this.grow(needed);
   }
 
+  /**
+   * Moves every column onto shared memory (or back), for the threads of a parallel step. Views
+   * taken earlier (World.views) go stale, as after any growth.
+   */
+  setShared(shared: boolean): void {
+    if (shared === this.shared) return;
+    this.shared = shared;
+    this.reallocate(this.capacity);
+  }
+
   private grow(needed: number): void {
-    const capacity = grownCapacity(this.capacity, needed);
-    this.x = grow(this.x, capacity);
-    this.y = grow(this.y, capacity);
-    this.vx = grow(this.vx, capacity);
-    this.vy = grow(this.vy, capacity);
-    this.radius = grow(this.radius, capacity);
-    this.mass = grow(this.mass, capacity);
-    this.invMass = grow(this.invMass, capacity);
-    this.restitution = grow(this.restitution, capacity);
-    this.type = grow(this.type, capacity);
-    this.shape = grow(this.shape, capacity);
-    this.generation = grow(this.generation, capacity);
-    this.category = grow(this.category, capacity);
-    this.mask = grow(this.mask, capacity);
-    this.gravityScale = grow(this.gravityScale, capacity);
-    this.linearDamping = grow(this.linearDamping, capacity);
-    this.forceX = grow(this.forceX, capacity);
-    this.forceY = grow(this.forceY, capacity);
-    this.sleepTime = grow(this.sleepTime, capacity);
-    this.asleep = grow(this.asleep, capacity);
+    this.reallocate(grownCapacity(this.capacity, needed));
+  }
+
+  private reallocate(capacity: number): void {
+    const shared = this.shared;
+    this.x = grow(this.x, capacity, shared);
+    this.y = grow(this.y, capacity, shared);
+    this.vx = grow(this.vx, capacity, shared);
+    this.vy = grow(this.vy, capacity, shared);
+    this.radius = grow(this.radius, capacity, shared);
+    this.mass = grow(this.mass, capacity, shared);
+    this.invMass = grow(this.invMass, capacity, shared);
+    this.restitution = grow(this.restitution, capacity, shared);
+    this.type = grow(this.type, capacity, shared);
+    this.shape = grow(this.shape, capacity, shared);
+    this.generation = grow(this.generation, capacity, shared);
+    this.category = grow(this.category, capacity, shared);
+    this.mask = grow(this.mask, capacity, shared);
+    this.gravityScale = grow(this.gravityScale, capacity, shared);
+    this.linearDamping = grow(this.linearDamping, capacity, shared);
+    this.forceX = grow(this.forceX, capacity, shared);
+    this.forceY = grow(this.forceY, capacity, shared);
+    this.sleepTime = grow(this.sleepTime, capacity, shared);
+    this.asleep = grow(this.asleep, capacity, shared);
     this.capacity = capacity;
+    this.layoutVersion++;
   }
 }

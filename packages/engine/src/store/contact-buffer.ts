@@ -1,5 +1,10 @@
 import { grownCapacity, grow } from '../util/grow.js';
 
+/** Where the narrow-phase records touching pairs. */
+export interface ContactSink {
+  push(lo: number, hi: number): void;
+}
+
 /**
  * Touching pairs found by the narrow-phase, as (lo, hi) slots with lo < hi.
  *
@@ -11,7 +16,7 @@ import { grownCapacity, grow } from '../util/grow.js';
  * passes over the contacts alone: O(contacts x bytes), independent of the world's size.
  * Nothing is allocated once the scratch has grown.
  */
-export class ContactBuffer {
+export class ContactBuffer implements ContactSink {
   lo = new Int32Array(64);
   hi = new Int32Array(64);
   count = 0;
@@ -30,6 +35,15 @@ export class ContactBuffer {
     this.lo[this.count] = lo;
     this.hi[this.count] = hi;
     this.count++;
+  }
+
+  /** Appends `count` pairs from other arrays (a worker thread's contacts). */
+  append(lo: Int32Array, hi: Int32Array, count: number): void {
+    const at = this.count;
+    if (at + count > this.lo.length) this.growPairs(at + count);
+    this.lo.set(lo.subarray(0, count), at);
+    this.hi.set(hi.subarray(0, count), at);
+    this.count = at + count;
   }
 
   memoryBytes(): number {

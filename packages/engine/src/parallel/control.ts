@@ -1,0 +1,128 @@
+/**
+ * The control block shared by the threads of a parallel step: one Int32Array for commands,
+ * barriers and integer parameters, one Float64Array for real parameters, one for per-thread
+ * results. Thread 0 is the caller of `step()`; it publishes a command by bumping SEQ, does its own
+ * share, then waits for DONE to count the others in. Atomics order everything: a thread that sees
+ * a new SEQ also sees every plain write made before it, and likewise for DONE.
+ */
+export const MAX_THREADS = 16;
+
+export const Slot = {
+  seq: 0,
+  command: 1,
+  done: 2,
+  epoch: 3,
+  threads: 4,
+  slotCount: 5,
+  bodyCount: 6,
+  columns: 7,
+  rows: 8,
+  integrator: 9,
+  customMotion: 10,
+  forcesPending: 11,
+  sleeping: 12,
+  bounce: 13,
+  hasBox: 14,
+  /** Set by a worker whose kernel threw; the caller then fails the step. */
+  failed: 15,
+  /** MAX_THREADS cells: bodies in each thread's cell range, for the prefix sums. */
+  blockTotal: 32,
+  /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */
+  contactCount: 64,
+  length: 96,
+} as const;
+
+export const Param = {
+  gravityX: 0,
+  gravityY: 1,
+  dt: 2,
+  boxWidth: 3,
+  boxHeight: 4,
+  wallRestitution: 5,
+  restitutionThreshold: 6,
+  originX: 7,
+  originY: 8,
+  inverseCell: 9,
+  coordPad: 10,
+  length: 16,
+} as const;
+
+/** Per-thread results, RESULT_STRIDE doubles each. */
+export const Result = {
+  examined: 0,
+  candidates: 1,
+  filtered: 2,
+  narrowMs: 3,
+} as const;
+export const RESULT_STRIDE = 4;
+
+export const Command = {
+  /** Workers wait until they hold the buffers of the current epoch. */
+  sync: 1,
+  /** Integrate a slot range, then (with Slot.bounce) bounce it off the box walls. */
+  motion: 2,
+  /** Each body's cell, for a body range. */
+  bin: 3,
+  /** Count the bodies in a cell range. */
+  count: 4,
+  /** Prefix sums over a cell range, then scatter the bodies of that range into cell order. */
+  scatter: 6,
+  /** Scan a band of rows for pairs, narrow-phase them into this thread's contact list. */
+  scan: 7,
+  /** Clamp contact bodies of a slot range into the box. */
+  clamp: 8,
+  stop: 9,
+} as const;
+
+/** The integrators by number, as the control block carries them. */
+export const INTEGRATOR_IDS = ['explicit-euler', 'semi-implicit-euler'] as const;
+
+/** Thread w's share [from, to) of `total` items split evenly over `threads`. */
+export function shareStart(total: number, w: number, threads: number): number {
+  return Math.floor((total * w) / threads);
+}
+
+/** Names of the body columns that worker threads see. */
+export const BODY_COLUMNS = [
+  'x',
+  'y',
+  'vx',
+  'vy',
+  'radius',
+  'mass',
+  'invMass',
+  'restitution',
+  'type',
+  'category',
+  'mask',
+  'gravityScale',
+  'linearDamping',
+  'forceX',
+  'forceY',
+  'asleep',
+] as const;
+
+export type BodyColumnName = (typeof BODY_COLUMNS)[number];
+
+/** What the caller sends a worker whenever buffers were reallocated. */
+export interface BufferMessage {
+  kind: 'buffers';
+  epoch: number;
+  bodies: Record<BodyColumnName, SharedArrayBuffer>;
+  cellStart: SharedArrayBuffer;
+  binOf: SharedArrayBuffer;
+  sortedSlot: SharedArrayBuffer;
+  sortedX: SharedArrayBuffer;
+  sortedY: SharedArrayBuffer;
+  sortedR: SharedArrayBuffer;
+  contactLo: SharedArrayBuffer[];
+  contactHi: SharedArrayBuffer[];
+}
+
+export interface InitMessage {
+  kind: 'init';
+  index: number;
+  control: SharedArrayBuffer;
+  params: SharedArrayBuffer;
+  results: SharedArrayBuffer;
+}

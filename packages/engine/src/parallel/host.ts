@@ -1,0 +1,98 @@
+/**
+ * Starting worker threads, in Node (worker_threads) and in browsers (module Web Workers), without
+ * pulling either platform's typings into the engine: the few members used are declared here.
+ */
+
+// Declared rather than taken from DOM or Node typings, which a dependency-free library does not load.
+declare const URL: new (url: string, base: string) => { readonly href: string };
+type URL = InstanceType<typeof URL>;
+declare global {
+  interface ImportMeta {
+    readonly url: string;
+  }
+}
+
+export interface WorkerHandle {
+  postMessage(message: unknown): void;
+  terminate(): void;
+}
+
+interface NodeWorker extends WorkerHandle {
+  on(event: 'message' | 'error', listener: (value: never) => void): void;
+  unref(): void;
+}
+
+interface BrowserWorker extends WorkerHandle {
+  onmessage: ((event: { data: unknown }) => void) | null;
+  onerror: ((event: { message?: string }) => void) | null;
+}
+
+type Global = {
+  process?: { versions?: { node?: string } };
+  Worker?: new (url: URL, options: { type: 'module' }) => BrowserWorker;
+  SharedArrayBuffer?: unknown;
+  crossOriginIsolated?: boolean;
+};
+
+const host = globalThis as unknown as Global;
+
+export const isNode = typeof host.process?.versions?.node === 'string';
+
+/** Whether this thread may block in Atomics.wait: not a browser's main thread. */
+export const canBlock = isNode;
+
+/** Why threads cannot start here, or null when they can. */
+export function threadsUnavailable(): string | null {
+  if (typeof host.SharedArrayBuffer !== 'function') {
+    return 'SharedArrayBuffer is unavailable: a browser page must be cross-origin isolated (serve it with Cross-Origin-Opener-Policy: same-origin and Cross-Origin-Embedder-Policy: require-corp)';
+  }
+  if (!isNode && typeof host.Worker !== 'function') return 'this environment has no Worker';
+  return null;
+}
+
+/**
+ * The worker script beside this module. Run from TypeScript sources (tests, tsx, a Vite dev
+ * server), Node threads load the compiled twin in dist/, because a bare worker thread cannot load
+ * TypeScript; a browser asks the dev server, which compiles the source on request.
+ */
+function workerUrl(): URL {
+  const here = import.meta.url;
+  if (!here.endsWith('.ts')) return new URL('./worker-entry.js', here);
+  return isNode ? new URL('../../dist/parallel/worker-entry.js', here) : new URL('./worker-entry.ts', here);
+}
+
+// A variable, not a literal, so that bundlers for the browser leave the Node-only import alone.
+const WORKER_THREADS = 'node:worker_threads';
+
+/**
+ * Starts a worker, sends it `init` and resolves once it answers that it is ready. Node workers are
+ * unref'd: a world that is never stopped does not keep the process alive.
+ */
+export async function startWorker(init: unknown): Promise<WorkerHandle> {
+  const url = workerUrl();
+  if (isNode) {
+    const { Worker } = (await import(/* @vite-ignore */ WORKER_THREADS)) as { Worker: new (url: URL) => NodeWorker };
+    const worker = new Worker(url);
+    await new Promise<void>((resolve, reject) => {
+      worker.on('message', (message: { kind?: string; error?: string }) => {
+        if (message.kind === 'ready') resolve();
+        if (message.kind === 'failed') reject(new Error(`worker thread failed: ${message.error}`));
+      });
+      worker.on('error', (error: Error) => reject(error));
+      worker.postMessage(init);
+    });
+    worker.unref();
+    return worker;
+  }
+  const worker = new host.Worker!(url, { type: 'module' });
+  await new Promise<void>((resolve, reject) => {
+    worker.onmessage = (event) => {
+      const message = event.data as { kind?: string; error?: string };
+      if (message.kind === 'ready') resolve();
+      if (message.kind === 'failed') reject(new Error(`worker thread failed: ${message.error}`));
+    };
+    worker.onerror = (event) => reject(new Error(`worker thread failed to start: ${event.message ?? 'unknown error'}`));
+    worker.postMessage(init);
+  });
+  return worker;
+}

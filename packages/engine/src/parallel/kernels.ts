@@ -1,0 +1,258 @@
+import { BodyStore } from '../store/body-store.js';
+import { CellGrid } from '../broadphase/cell-grid.js';
+import { RADIUS_PAD } from '../broadphase/fat-bounds.js';
+import { NarrowPhase } from '../narrowphase/narrowphase.js';
+import { PairSink } from '../store/pair-sink.js';
+import type { ContactSink } from '../store/contact-buffer.js';
+import { INTEGRATORS } from '../integrate/integrator.js';
+import { bounceOffBox, clampContactBodiesInRange } from '../solver/box-walls.js';
+import { nowMs } from '../util/timer.js';
+import { BODY_COLUMNS, Command, INTEGRATOR_IDS, Param, RESULT_STRIDE, Result, Slot, shareStart, type BufferMessage } from './control.js';
+import type { Column } from '../util/grow.js';
+
+/** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2. */
+const MOTION_CHUNK = 4096;
+
+/**
+ * A thread's contact list on shared memory. It never grows (only the caller may allocate shared
+ * memory that every thread sees): past its capacity it keeps counting, and the caller enlarges
+ * it and runs the scan again, which is pure, so nothing is lost.
+ */
+export class BoundedContactList implements ContactSink {
+  count = 0;
+  constructor(
+    public lo: Int32Array,
+    public hi: Int32Array,
+  ) {}
+
+  push(lo: number, hi: number): void {
+    const k = this.count++;
+    if (k < this.lo.length) {
+      this.lo[k] = lo;
+      this.hi[k] = hi;
+    }
+  }
+}
+
+/**
+ * One thread's side of a parallel step: the caller (thread 0) and every worker run the same
+ * kernels on their own share, so what a stage computes does not depend on who runs it. Each
+ * kernel writes only memory its share owns (a slot range, a cell range, its contact list), so shares never race, and the result is the same bits for any thread count.
+ */
+export class ThreadKernels {
+  contactLo: Int32Array[] = [];
+  contactHi: Int32Array[] = [];
+  readonly contacts = new BoundedContactList(new Int32Array(0), new Int32Array(0));
+  private readonly narrowPhase: NarrowPhase;
+  private readonly sink: PairSink;
+
+  constructor(
+    readonly index: number,
+    readonly control: Int32Array,
+    readonly params: Float64Array,
+    readonly results: Float64Array,
+    readonly bodies: BodyStore,
+    public grid: CellGrid,
+  ) {
+    this.narrowPhase = new NarrowPhase(bodies, this.contacts);
+    this.sink = new PairSink(this.narrowPhase, nowMs);
+  }
+
+  /** Installs the caller's buffers in a worker (the caller's own thread already holds them). */
+  install(message: BufferMessage): void {
+    const columns = this.bodies as unknown as Record<string, Column>;
+    for (const name of BODY_COLUMNS) {
+      const Ctor = columns[name].constructor as new (buffer: SharedArrayBuffer) => Column;
+      columns[name] = new Ctor(message.bodies[name]);
+    }
+    const grid = this.grid;
+    grid.cellStart = new Int32Array(message.cellStart);
+    grid.binOf = new Int32Array(message.binOf);
+    grid.sortedSlot = new Int32Array(message.sortedSlot);
+    grid.sortedX = new Float64Array(message.sortedX);
+    grid.sortedY = new Float64Array(message.sortedY);
+    grid.sortedR = new Float64Array(message.sortedR);
+    this.contactLo = message.contactLo.map((b) => new Int32Array(b));
+    this.contactHi = message.contactHi.map((b) => new Int32Array(b));
+  }
+
+  /** Points this thread's contact list at its shared arrays (after `install` or a regrowth). */
+  bindContactList(): void {
+    this.contacts.lo = this.contactLo[this.index];
+    this.contacts.hi = this.contactHi[this.index];
+  }
+
+  /** A worker's copy of the scalars the caller's stages read from the body store. */
+  loadScalars(): void {
+    const c = this.control;
+    const b = this.bodies;
+    b.slotCount = c[Slot.slotCount];
+    b.customMotionCount = c[Slot.customMotion];
+    b.forcesPending = c[Slot.forcesPending] === 1;
+    b.sleepingCount = c[Slot.sleeping];
+    const g = this.grid;
+    g.columns = c[Slot.columns];
+    g.rows = c[Slot.rows];
+    g.count = c[Slot.bodyCount];
+  }
+
+  run(command: number): void {
+    switch (command) {
+      case Command.motion:
+        return this.motion();
+      case Command.bin:
+        return this.bin();
+      case Command.count:
+        return this.count();
+      case Command.scatter:
+        return this.scatter();
+      case Command.scan:
+        return this.scan();
+      case Command.clamp:
+        return this.clamp();
+      default:
+        throw new Error(`parallel step: unknown command ${command}`);
+    }
+  }
+
+  private share(total: number): [number, number] {
+    const threads = this.control[Slot.threads];
+    return [shareStart(total, this.index, threads), shareStart(total, this.index + 1, threads)];
+  }
+
+  private motion(): void {
+    const c = this.control;
+    const p = this.params;
+    const [from, to] = this.share(c[Slot.slotCount]);
+    const integrate = INTEGRATORS[INTEGRATOR_IDS[c[Slot.integrator]]];
+    const bounce = c[Slot.bounce] === 1;
+    // In cache-sized chunks, so that the walls test bodies integration has just brought in.
+    for (let at = from; at < to; at += MOTION_CHUNK) {
+      const end = Math.min(at + MOTION_CHUNK, to);
+      integrate(this.bodies, p[Param.gravityX], p[Param.gravityY], p[Param.dt], at, end);
+      if (bounce) bounceOffBox(this.bodies, p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold], at, end);
+    }
+  }
+
+  /** Each body's cell, for a body range: the same formula as CellGrid.bin. */
+  private bin(): void {
+    const c = this.control;
+    const p = this.params;
+    const columns = c[Slot.columns];
+    const [from, to] = this.share(c[Slot.bodyCount]);
+    const binOf = this.grid.binOf;
+    const { x, y } = this.bodies;
+    const minX = p[Param.originX];
+    const minY = p[Param.originY];
+    const inv = p[Param.inverseCell];
+    for (let k = from; k < to; k++) binOf[k] = ((y[k] - minY) * inv | 0) * columns + ((x[k] - minX) * inv | 0);
+  }
+
+  /**
+   * Counts the bodies of this thread's cell range (a band of whole cells; every thread reads all
+   * of binOf but writes only its own cells, so nothing is merged), and how many that is in all.
+   */
+  private count(): void {
+    const c = this.control;
+    const [from, to] = this.share(c[Slot.columns] * c[Slot.rows]);
+    const n = c[Slot.bodyCount];
+    const { binOf, cellStart } = this.grid;
+    cellStart.fill(0, from, to);
+    let mine = 0;
+    for (let k = 0; k < n; k++) {
+      const cell = binOf[k];
+      if (cell >= from && cell < to) {
+        cellStart[cell]++;
+        mine++;
+      }
+    }
+    c[Slot.blockTotal + this.index] = mine;
+  }
+
+  /**
+   * Prefix sums over this thread's cells, offset by the bodies of the cells before them, then the
+   * scatter of this thread's bodies from the back, exactly as CellGrid.bin does for all cells: the
+   * layout is the serial one, with slots ascending inside each cell.
+   */
+  private scatter(): void {
+    const c = this.control;
+    const threads = c[Slot.threads];
+    const cells = c[Slot.columns] * c[Slot.rows];
+    const [from, to] = this.share(cells);
+    const n = c[Slot.bodyCount];
+    const { binOf, cellStart, sortedSlot, sortedX, sortedY, sortedR } = this.grid;
+    let end = 0;
+    for (let t = 0; t < this.index; t++) end += c[Slot.blockTotal + t];
+    for (let cell = from; cell < to; cell++) {
+      end += cellStart[cell];
+      cellStart[cell] = end;
+    }
+    const { x, y, radius } = this.bodies;
+    for (let k = n - 1; k >= 0; k--) {
+      const cell = binOf[k];
+      if (cell < from || cell >= to) continue;
+      const at = --cellStart[cell];
+      sortedSlot[at] = k;
+      sortedX[at] = x[k];
+      sortedY[at] = y[k];
+      sortedR[at] = radius[k] * (1 + RADIUS_PAD);
+    }
+    if (this.index === threads - 1) {
+      cellStart[cells] = n;
+      cellStart[cells + 1] = n;
+    }
+  }
+
+  /** Scans a band of rows holding about 1/threads of the bodies; bands meet where the bodies split. */
+  private scan(): void {
+    const c = this.control;
+    const threads = c[Slot.threads];
+    const rowFrom = this.rowBound(this.index, threads);
+    const rowTo = this.rowBound(this.index + 1, threads);
+    const contacts = this.contacts;
+    contacts.count = 0;
+    this.sink.begin();
+    this.narrowPhase.begin();
+    const examined = this.grid.scanRows(this.sink, this.params[Param.coordPad], rowFrom, rowTo);
+    this.sink.flush();
+    const r = this.results;
+    const at = this.index * RESULT_STRIDE;
+    r[at + Result.examined] = examined;
+    r[at + Result.candidates] = this.sink.total;
+    r[at + Result.filtered] = this.narrowPhase.filtered;
+    r[at + Result.narrowMs] = this.sink.consumerMs;
+    c[Slot.contactCount + this.index] = contacts.count;
+  }
+
+  /** The first row whose first cell starts at or after thread w's share of the bodies. */
+  private rowBound(w: number, threads: number): number {
+    const { rows, columns, cellStart } = this.grid;
+    if (w === 0) return 0;
+    if (w === threads) return rows;
+    const target = shareStart(this.control[Slot.bodyCount], w, threads);
+    let lo = 0;
+    let hi = rows;
+    while (lo < hi) {
+      const mid = (lo + hi) >> 1;
+      if (cellStart[mid * columns] >= target) hi = mid;
+      else lo = mid + 1;
+    }
+    return lo;
+  }
+
+  private clamp(): void {
+    const c = this.control;
+    const p = this.params;
+    const threads = c[Slot.threads];
+    const [from, to] = this.share(c[Slot.slotCount]);
+    for (let t = 0; t < threads; t++) {
+      const count = c[Slot.contactCount + t];
+      clampContactBodiesInRange(this.bodies, this.contactLo[t], this.contactHi[t], count, p[Param.boxWidth], p[Param.boxHeight], from, to);
+    }
+  }
+}
+
+/** A worker's private body store and grid, whose buffers `install` replaces with shared ones. */
+export function workerKernels(index: number, control: Int32Array, params: Float64Array, results: Float64Array): ThreadKernels {
+  return new ThreadKernels(index, control, params, results, new BodyStore(), new CellGrid());
+}

@@ -1,0 +1,296 @@
+import type { BodyStore } from '../store/body-store.js';
+import type { ContactBuffer } from '../store/contact-buffer.js';
+import type { CellGrid } from '../broadphase/cell-grid.js';
+import { grownCapacity } from '../util/grow.js';
+import { nowMs } from '../util/timer.js';
+import type { IntegratorName } from '../integrate/integrator.js';
+import {
+  BODY_COLUMNS,
+  Command,
+  INTEGRATOR_IDS,
+  MAX_THREADS,
+  Param,
+  RESULT_STRIDE,
+  Result,
+  Slot,
+  type BodyColumnName,
+  type BufferMessage,
+} from './control.js';
+import { ThreadKernels } from './kernels.js';
+import { canBlock, startWorker, threadsUnavailable, type WorkerHandle } from './host.js';
+
+/** Polls of DONE before the caller sleeps in Atomics.wait (where it may). */
+const SPIN = 50_000;
+
+/**
+ * A worker silent this long is taken as lost (killed, or its thread starved) and the step fails
+ * with an error instead of hanging. No share of a step comes near it: a million bodies take ~0.1 s.
+ */
+const STALL_MS = 20_000;
+
+/** Everything a step's motion stage needs, as the pipeline holds it. */
+export interface MotionSettings {
+  integrator: IntegratorName;
+  gravityX: number;
+  gravityY: number;
+  dt: number;
+  box: { width: number; height: number } | null;
+  wallRestitution: number;
+  restitutionThreshold: number;
+}
+
+/**
+ * The caller's side of a parallel step: it owns the shared control block and every shared buffer,
+ * publishes commands, runs thread 0's share itself and waits for the others.
+ *
+ * Which stages run in parallel, and why the bits do not change:
+ * - motion (integrate, then the box walls): every body's update reads only that body;
+ * - the Max Grid build (a counting sort split in count, totals, prefix and scatter passes) and
+ *   the scan of row bands with the narrow-phase: each thread finds a disjoint share of the same
+ *   contact set, and the step sorts contacts canonically before solving, as it always does;
+ * - correct (clamping contact bodies into the box): each thread owns a slot range.
+ * The solver stays serial: it resolves contacts one after another in canonical order, which is
+ * what makes results independent of how contacts were found. Continuous collision, segments,
+ * events, sleeping and the other broad-phases run serially as well, between the parallel stages.
+ */
+export class ParallelStep {
+  readonly threads: number;
+  private readonly control: Int32Array;
+  private readonly params: Float64Array;
+  private readonly results: Float64Array;
+  private readonly caller: ThreadKernels;
+  private epoch = 0;
+  private sentBodies = -1;
+  private sentGrid: CellGrid | null = null;
+  private sentGridVersion = -1;
+  private listsVersion = 0;
+  private sentLists = -1;
+  /** Summed over threads by the last findContacts. */
+  candidates = 0;
+  filtered = 0;
+  narrowMs = 0;
+
+  private constructor(
+    private readonly bodies: BodyStore,
+    private readonly workers: WorkerHandle[],
+    control: Int32Array,
+    params: Float64Array,
+    results: Float64Array,
+    grid: CellGrid,
+  ) {
+    this.threads = workers.length + 1;
+    this.control = control;
+    this.params = params;
+    this.results = results;
+    this.caller = new ThreadKernels(0, control, params, results, bodies, grid);
+    control[Slot.threads] = this.threads;
+    for (let t = 0; t < this.threads; t++) {
+      this.caller.contactLo.push(new Int32Array(new SharedArrayBuffer(4 * 1024)));
+      this.caller.contactHi.push(new Int32Array(new SharedArrayBuffer(4 * 1024)));
+    }
+    this.caller.bindContactList();
+  }
+
+  /** Starts `threads - 1` workers; the caller is thread 0. Moves the body columns to shared memory. */
+  static async start(threads: number, bodies: BodyStore, grid: CellGrid): Promise<ParallelStep> {
+    if (!Number.isSafeInteger(threads) || threads < 1 || threads > MAX_THREADS) {
+      throw new RangeError(`workerCount must be an integer in [1, ${MAX_THREADS}], got ${threads}`);
+    }
+    const why = threadsUnavailable();
+    if (why) throw new Error(`cannot start worker threads: ${why}`);
+    const control = new Int32Array(new SharedArrayBuffer(Slot.length * 4));
+    const params = new Float64Array(new SharedArrayBuffer(Param.length * 8));
+    const results = new Float64Array(new SharedArrayBuffer(RESULT_STRIDE * MAX_THREADS * 8));
+    const workers: WorkerHandle[] = [];
+    try {
+      for (let index = 1; index < threads; index++) {
+        workers.push(await startWorker({ kind: 'init', index, control: control.buffer, params: params.buffer, results: results.buffer }));
+      }
+    } catch (error) {
+      for (const worker of workers) worker.terminate();
+      throw error;
+    }
+    bodies.setShared(true);
+    grid.setShared(true);
+    return new ParallelStep(bodies, workers, control, params, results, grid);
+  }
+
+  stop(): void {
+    if (this.workers.length > 0) this.publish(Command.stop);
+    for (const worker of this.workers) worker.terminate();
+    this.workers.length = 0;
+  }
+
+  /** Integrates every body, then (with `bounce`) bounces them off the box walls. */
+  motion(settings: MotionSettings, bounce: boolean): void {
+    const c = this.control;
+    const p = this.params;
+    const b = this.bodies;
+    c[Slot.slotCount] = b.slotCount;
+    c[Slot.customMotion] = b.customMotionCount;
+    c[Slot.forcesPending] = b.forcesPending ? 1 : 0;
+    c[Slot.sleeping] = b.sleepingCount;
+    c[Slot.integrator] = INTEGRATOR_IDS.indexOf(settings.integrator);
+    c[Slot.bounce] = bounce && settings.box ? 1 : 0;
+    p[Param.gravityX] = settings.gravityX;
+    p[Param.gravityY] = settings.gravityY;
+    p[Param.dt] = settings.dt;
+    p[Param.boxWidth] = settings.box?.width ?? 0;
+    p[Param.boxHeight] = settings.box?.height ?? 0;
+    p[Param.wallRestitution] = settings.wallRestitution;
+    p[Param.restitutionThreshold] = settings.restitutionThreshold;
+    this.run(Command.motion);
+  }
+
+  /**
+   * Bins every body into `grid` (already laid out over dense slots 0..n-1), scans it and
+   * narrow-phases the candidates on all threads, then appends each thread's contacts to
+   * `contacts`, unsorted. Returns the pairs examined.
+   */
+  findContacts(grid: CellGrid, coordPad: number, contacts: ContactBuffer): number {
+    const c = this.control;
+    const p = this.params;
+    this.caller.grid = grid;
+    c[Slot.bodyCount] = grid.count;
+    c[Slot.columns] = grid.columns;
+    c[Slot.rows] = grid.rows;
+    p[Param.originX] = grid.originX;
+    p[Param.originY] = grid.originY;
+    p[Param.inverseCell] = grid.inverse;
+    p[Param.coordPad] = coordPad;
+    this.run(Command.bin);
+    this.run(Command.count);
+    this.run(Command.scatter);
+    this.run(Command.scan);
+    while (this.growOverflowingLists()) this.run(Command.scan);
+
+    let examined = 0;
+    this.candidates = 0;
+    this.filtered = 0;
+    this.narrowMs = this.results[Result.narrowMs];
+    for (let t = 0; t < this.threads; t++) {
+      const at = t * RESULT_STRIDE;
+      examined += this.results[at + Result.examined];
+      this.candidates += this.results[at + Result.candidates];
+      this.filtered += this.results[at + Result.filtered];
+      contacts.append(this.caller.contactLo[t], this.caller.contactHi[t], c[Slot.contactCount + t]);
+    }
+    return examined;
+  }
+
+  /** Clamps the bodies of the contacts found by the last findContacts into the box. */
+  clamp(box: { width: number; height: number }): void {
+    this.params[Param.boxWidth] = box.width;
+    this.params[Param.boxHeight] = box.height;
+    this.control[Slot.slotCount] = this.bodies.slotCount;
+    this.run(Command.clamp);
+  }
+
+  memoryBytes(): number {
+    let bytes = 0;
+    for (let t = 0; t < this.threads; t++) {
+      bytes += this.caller.contactLo[t].byteLength * 2;
+    }
+    return bytes;
+  }
+
+  /** Publishes a command, runs the caller's share, waits for every worker. */
+  private run(command: number): void {
+    this.syncBuffers();
+    this.publish(command);
+    this.caller.run(command);
+    this.awaitWorkers();
+  }
+
+  private publish(command: number): void {
+    const c = this.control;
+    c[Slot.command] = command;
+    Atomics.store(c, Slot.done, 0);
+    Atomics.add(c, Slot.seq, 1);
+    Atomics.notify(c, Slot.seq);
+  }
+
+  private awaitWorkers(): void {
+    const c = this.control;
+    const expected = this.workers.length;
+    let since = 0;
+    for (let spin = 0; ; spin++) {
+      const done = Atomics.load(c, Slot.done);
+      if (done >= expected) break;
+      if (spin < SPIN) continue;
+      if (since === 0) since = nowMs();
+      else if (nowMs() - since > STALL_MS) {
+        throw new Error(
+          `parallel step stalled: ${done} of ${expected} workers finished command ${c[Slot.command]} within ${STALL_MS} ms`,
+        );
+      }
+      if (canBlock) Atomics.wait(c, Slot.done, done, 20);
+    }
+    if (Atomics.load(c, Slot.failed) !== 0) {
+      Atomics.store(c, Slot.failed, 0);
+      throw new Error('a worker thread failed during the step (its error was posted to the console of the thread that started it)');
+    }
+  }
+
+  /**
+   * Sends workers the shared buffers whenever one was reallocated (bodies added, a larger grid, a
+   * longer contact list) and waits until each holds them: a step never runs on stale memory.
+   */
+  private syncBuffers(): void {
+    const grid = this.caller.grid;
+    if (
+      this.sentBodies === this.bodies.layoutVersion &&
+      this.sentGrid === grid &&
+      this.sentGridVersion === grid.layoutVersion &&
+      this.sentLists === this.listsVersion
+    ) {
+      return;
+    }
+    this.sentBodies = this.bodies.layoutVersion;
+    this.sentGrid = grid;
+    this.sentGridVersion = grid.layoutVersion;
+    this.sentLists = this.listsVersion;
+    if (this.workers.length === 0) return;
+    const epoch = ++this.epoch;
+    const columns = this.bodies as unknown as Record<BodyColumnName, { buffer: SharedArrayBuffer }>;
+    const bodies = {} as Record<BodyColumnName, SharedArrayBuffer>;
+    for (const name of BODY_COLUMNS) bodies[name] = columns[name].buffer;
+    const k = this.caller;
+    const message: BufferMessage = {
+      kind: 'buffers',
+      epoch,
+      bodies,
+      cellStart: grid.cellStart.buffer as SharedArrayBuffer,
+      binOf: grid.binOf.buffer as SharedArrayBuffer,
+      sortedSlot: grid.sortedSlot.buffer as SharedArrayBuffer,
+      sortedX: grid.sortedX.buffer as SharedArrayBuffer,
+      sortedY: grid.sortedY.buffer as SharedArrayBuffer,
+      sortedR: grid.sortedR.buffer as SharedArrayBuffer,
+      contactLo: k.contactLo.map((a) => a.buffer as SharedArrayBuffer),
+      contactHi: k.contactHi.map((a) => a.buffer as SharedArrayBuffer),
+    };
+    for (const worker of this.workers) worker.postMessage(message);
+    this.control[Slot.epoch] = epoch;
+    this.publish(Command.sync);
+    this.awaitWorkers();
+  }
+
+  /** Enlarges every contact list that overflowed in the last scan; true when the scan must rerun. */
+  private growOverflowingLists(): boolean {
+    const k = this.caller;
+    let grew = false;
+    for (let t = 0; t < this.threads; t++) {
+      const needed = this.control[Slot.contactCount + t];
+      if (needed <= k.contactLo[t].length) continue;
+      const capacity = grownCapacity(k.contactLo[t].length, needed);
+      k.contactLo[t] = new Int32Array(new SharedArrayBuffer(capacity * 4));
+      k.contactHi[t] = new Int32Array(new SharedArrayBuffer(capacity * 4));
+      grew = true;
+    }
+    if (grew) {
+      k.bindContactList();
+      this.listsVersion++;
+    }
+    return grew;
+  }
+}

@@ -1,0 +1,91 @@
+/**
+ * A worker thread of a parallel step. It idles in Atomics.waitAsync, so its event loop stays free
+ * to receive new buffers, runs each command the caller publishes on its share, and counts itself
+ * done. See control.ts for the protocol and kernels.ts for the work.
+ */
+import { Command, Slot, type BufferMessage, type InitMessage } from './control.js';
+import { workerKernels, type ThreadKernels } from './kernels.js';
+import { isNode } from './host.js';
+
+type Post = (message: unknown) => void;
+type WaitAsync = (array: Int32Array, index: number, value: number) => { async: boolean; value: Promise<string> | string };
+
+/** Spins this many polls before sleeping: commands inside one step follow each other closely. */
+const SPIN = 20_000;
+
+const waitAsync = (Atomics as unknown as { waitAsync: WaitAsync }).waitAsync;
+
+let kernels: ThreadKernels | null = null;
+let epoch = 0;
+let epochWaiter: (() => void) | null = null;
+let post: Post = () => {};
+
+function receive(message: InitMessage | BufferMessage): void {
+  if (message.kind === 'init') {
+    kernels = workerKernels(message.index, new Int32Array(message.control), new Float64Array(message.params), new Float64Array(message.results));
+    // The command count is read before answering: once the caller hears "ready" it may publish at
+    // any moment, and a count read after that could already include the first command, which
+    // this worker would then wait past forever.
+    void serve(kernels, Atomics.load(kernels.control, Slot.seq));
+    post({ kind: 'ready' });
+    return;
+  }
+  kernels!.install(message);
+  kernels!.bindContactList();
+  epoch = message.epoch;
+  epochWaiter?.();
+}
+
+async function nextCommand(control: Int32Array, seen: number): Promise<void> {
+  for (let spin = 0; spin < SPIN; spin++) if (Atomics.load(control, Slot.seq) !== seen) return;
+  while (Atomics.load(control, Slot.seq) === seen) {
+    const wait = waitAsync(control, Slot.seq, seen);
+    if (wait.async) await wait.value;
+  }
+}
+
+function epochReached(wanted: number): Promise<void> {
+  if (epoch >= wanted) return Promise.resolve();
+  return new Promise((resolve) => {
+    epochWaiter = () => {
+      if (epoch < wanted) return;
+      epochWaiter = null;
+      resolve();
+    };
+  });
+}
+
+async function serve(k: ThreadKernels, seen: number): Promise<void> {
+  const control = k.control;
+  for (;;) {
+    await nextCommand(control, seen);
+    seen = Atomics.load(control, Slot.seq);
+    const command = control[Slot.command];
+    if (command === Command.stop) return;
+    try {
+      if (command === Command.sync) await epochReached(control[Slot.epoch]);
+      else {
+        k.loadScalars();
+        k.run(command);
+      }
+    } catch (error) {
+      // The caller is waiting on DONE: report the failure there, then count in as usual.
+      Atomics.store(control, Slot.failed, 1);
+      post({ kind: 'failed', error: String((error as Error)?.stack ?? error) });
+    }
+    Atomics.add(control, Slot.done, 1);
+    Atomics.notify(control, Slot.done);
+  }
+}
+
+if (isNode) {
+  const { parentPort } = (await import(/* @vite-ignore */ 'node:worker_threads' as string)) as {
+    parentPort: { on(event: 'message', listener: (message: InitMessage | BufferMessage) => void): void; postMessage: Post };
+  };
+  post = (message) => parentPort.postMessage(message);
+  parentPort.on('message', receive);
+} else {
+  const self = globalThis as unknown as { onmessage: (event: { data: InitMessage | BufferMessage }) => void; postMessage: Post };
+  post = (message) => self.postMessage(message);
+  self.onmessage = (event) => receive(event.data);
+}

@@ -1,0 +1,102 @@
+import { describe, expect, it } from 'vitest';
+import { buildScene, buildWorld } from '@maxgrid/scenes';
+import { World, type WorldOptions } from '../src/index.js';
+
+// Worker threads load the compiled engine (dist/), which `npm test` builds first.
+
+type Build = () => World;
+
+/** Steps a fresh world from `build` with the given worker count (0: none) and returns its hash. */
+async function hashWith(build: Build, workers: number, steps: number, during?: (world: World, step: number) => void): Promise<string> {
+  const world = build();
+  if (workers > 0) await world.startWorkers(workers);
+  try {
+    for (let s = 0; s < steps; s++) {
+      during?.(world, s);
+      world.step(1 / 60);
+    }
+    return world.stateHash();
+  } finally {
+    world.stopWorkers();
+  }
+}
+
+async function expectSameBits(build: Build, steps: number, during?: (world: World, step: number) => void): Promise<void> {
+  const serial = await hashWith(build, 0, steps, during);
+  for (const workers of [1, 2, 3]) {
+    expect(await hashWith(build, workers, steps, during), `${workers} worker(s)`).toBe(serial);
+  }
+}
+
+const uniform = (n: number, options: WorldOptions = {}, params: Record<string, number> = {}) => () =>
+  buildWorld(buildScene('uniform', { n, ...params }), { broadphase: 'maxgrid', ...options });
+
+describe('parallel step', () => {
+  it('gives the serial step bit for bit with 1, 2 and 3 threads (elastic uniform scene)', async () => {
+    await expectSameBits(uniform(4000), 60);
+  });
+
+  it('matches the golden seed-box hash with gravity and walls, on the default broad-phase', async () => {
+    const build = () => buildWorld(buildScene('seed-box', { n: 800, seed: 42 }), { integrator: 'explicit-euler' });
+    const world = build();
+    await world.startWorkers(2);
+    expect(world.workerCount).toBe(2);
+    for (let s = 0; s < 600; s++) world.step(1 / 60);
+    world.stopWorkers();
+    // The same pinned hash as determinism.test.ts: the parallel step changes no bit.
+    expect(world.stateHash()).toBe('1981b004408be274');
+  });
+
+  it('keeps the same bits while bodies are added (buffers regrow and are re-sent) and destroyed (holes)', async () => {
+    const during = (world: World, step: number) => {
+      if (step % 7 === 3) {
+        for (let k = 0; k < 300; k++) world.createCircle({ x: 20 + (k % 50) * 9, y: 20 + Math.floor(k / 50) * 9 + step, radius: 3, vx: 40, vy: -30 });
+      }
+      if (step === 20) for (const handle of world.handles().slice(0, 500)) world.destroyBody(handle);
+    };
+    await expectSameBits(uniform(2000), 40, during);
+  });
+
+  it('keeps the same bits in a crowded scene whose contacts overflow the threads\' first contact lists', async () => {
+    let most = 0;
+    const build = () => buildWorld(buildScene('uniform', { n: 6000, fill: 0.6, maxSpeed: 400 }), { broadphase: 'maxgrid' });
+    const serial = await hashWith(build, 0, 30, (world) => (most = Math.max(most, world.stats.contacts)));
+    expect(most).toBeGreaterThan(2 * 1024);
+    expect(await hashWith(build, 2, 30)).toBe(serial);
+  });
+
+  it('falls back to serial stages where it must and still matches: hgrid, sleeping, events, forces', async () => {
+    await expectSameBits(() => buildWorld(buildScene('mixed', { n: 3000 }), { broadphase: 'auto' }), 30);
+    const busy = () => {
+      const world = buildWorld(buildScene('seed-box', { n: 600, seed: 3 }), { sleeping: true, sleepSpeed: 40, contactEvents: true, hitEventThreshold: 50 });
+      return world;
+    };
+    await expectSameBits(busy, 90, (world, step) => {
+      if (step % 10 === 0) world.applyForce(world.handles()[step % 600], 5000, -8000);
+    });
+  });
+
+  it('steps on after stopWorkers, and restarting gives the same bits', async () => {
+    const serial = await hashWith(uniform(3000), 0, 40);
+    const world = uniform(3000)();
+    await world.startWorkers(2);
+    for (let s = 0; s < 15; s++) world.step(1 / 60);
+    world.stopWorkers();
+    expect(world.workerCount).toBe(1);
+    for (let s = 0; s < 10; s++) world.step(1 / 60);
+    await world.startWorkers(3);
+    for (let s = 0; s < 15; s++) world.step(1 / 60);
+    world.stopWorkers();
+    expect(world.stateHash()).toBe(serial);
+  });
+
+  it('rejects a bad worker count by name and value, leaving the world as it was', async () => {
+    const world = uniform(100)();
+    const before = world.stateHash();
+    for (const bad of [0, -1, 1.5, 17, Number.NaN]) {
+      await expect(world.startWorkers(bad)).rejects.toThrow(new RegExp(`workerCount must be an integer in \\[1, 16\\], got ${bad}`));
+      expect(world.workerCount).toBe(1);
+    }
+    expect(world.stateHash()).toBe(before);
+  });
+});
