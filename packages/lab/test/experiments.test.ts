@@ -160,8 +160,8 @@ describe('sap-sleep', () => {
 });
 
 describe('targets', () => {
-  it('measures T1, T2, T3, T5 on small sizes, records T6 skipped with its reason; JSON validates', async () => {
-    const options = { ...targets.options('quick', {}), n: 1500, bigN: 4000, rounds: 1, stepsPerRound: 1, warmupSteps: 1, bigSteps: 1, bigWarmupSteps: 0 };
+  it('measures T1, T2, T3, T4, T5 on small sizes, records T6 skipped with its reason; JSON validates', async () => {
+    const options = { ...targets.options('quick', {}), n: 1500, bigN: 4000, rounds: 1, stepsPerRound: 1, warmupSteps: 1, bigSteps: 1, bigWarmupSteps: 0, parallelSteps: 3 };
     // The browser is left out here (Chromium start-up is slow); the lab's e2e test drives the page hook T6 uses.
     const host = { cBaseline, browser: async () => 'no browser in this test' };
     const result = await targets.run(options, { ...ctx(targets.defaultEngines), host });
@@ -171,7 +171,9 @@ describe('targets', () => {
     expect(['ok', 'skipped']).toContain(result.t2.status);
     expect(result.t3.bytesPerBody).toBeGreaterThan(0);
     expect(Object.keys(result.t5.mixedOverUniform)).toEqual(['maxgrid:maxgrid', 'maxgrid:hgrid', 'maxgrid:auto']);
-    expect(result.notMeasured.map((x) => x.target.split(' ')[0])).toEqual(['T4', 'T7']);
+    // T4 steps a world on 1 thread and on 2: the bits must agree.
+    expect(result.t4).toMatchObject({ status: 'ok', n: 4000, threads: 2, steps: 3, hashesMatch: true });
+    expect(result.notMeasured.map((x) => x.target.split(' ')[0])).toEqual(['T7']);
     expectPublishable('targets', result);
   });
 });

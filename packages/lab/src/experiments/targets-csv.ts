@@ -17,6 +17,11 @@ export function targetsCsv(r: TargetsResult): string {
   add('T3', `bytes per body N=${r.t3.n}`, 'maxgrid:maxgrid', r.t3.bytesPerBody, 'B');
   add('T3', `ns per body per step N=${r.t3.n}`, 'maxgrid:maxgrid', r.t3.nsPerBody, 'ns');
   add('T3', 'ns per body 1M / 64k', 'ratio', r.t3.ratio, 'x');
+  if (r.t4.status === 'ok') {
+    add('T4', `median step 1 thread N=${r.t4.n}`, 'maxgrid:maxgrid', r.t4.serialMs!.median, 'ms');
+    add('T4', `median step ${r.t4.threads} threads N=${r.t4.n}`, 'maxgrid:maxgrid', r.t4.parallelMs!.median, 'ms');
+    add('T4', 'speed-up', 'ratio', r.t4.speedup, 'x');
+  } else add('T4', 'status', 'skipped', r.t4.reason, '');
   for (const t of r.t5.timings) add('T5', `median step ${t.scene} N=${t.n}`, t.engine, t.ms.median, 'ms');
   for (const [id, q] of Object.entries(r.t5.mixedOverUniform)) add('T5', 'mixed / uniform per body', id, q, 'x');
   add('T5', 'rapier / maxgrid:auto on mixed', 'ratio', r.t5.rapierOverAuto, 'x');

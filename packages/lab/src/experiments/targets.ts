@@ -2,6 +2,7 @@ import { buildScene, type Scene } from '@maxgrid/scenes';
 import type { Engine, Simulation } from '../engines/adapter.js';
 import { maxgridBuildOptions } from '../engines/maxgrid.js';
 import { cBaselineOf, cComparisonSchema, compareWithC, type CComparison } from './c-maxgrid.js';
+import { multiCore, multiCoreSchema, type MultiCoreResult } from './multicore.js';
 import { makeMeta, metaSchema, now, spread, spreadSchema, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 
 /**
@@ -10,8 +11,8 @@ import { makeMeta, metaSchema, now, spread, spreadSchema, type Meta, type Profil
  * T1 maxgrid vs Rapier and box2d-wasm at 64k `uniform`; T2 maxgrid vs the C baseline at 64k;
  * T3 a million bodies: bytes per body and ns per body against 64k; T5 `mixed` at ratio 100 with
  * maxgrid:auto, hgrid and maxgrid against their `uniform` cost, and against Rapier; T6 the same
- * maxgrid step in headless Chromium against Node. T4 (multi-core) and T7 (sandbox with WebGL)
- * are recorded as not measured, with the reason.
+ * maxgrid step in headless Chromium against Node; T4 the million-body world on 1 thread against
+ * `threads` threads. T7 (sandbox with WebGL) is recorded as not measured, with the reason.
  */
 export interface TargetsOptions {
   n: number;
@@ -25,12 +26,16 @@ export interface TargetsOptions {
   /** Steps for the million-body world (about 0.3 s each). */
   bigSteps: number;
   bigWarmupSteps: number;
+  /** Threads for T4's parallel step. */
+  threads: number;
+  /** Steps of each world for T4 (alternating). */
+  parallelSteps: number;
 }
 
 export function targetsDefaults(profile: Profile): TargetsOptions {
   return profile === 'full'
-    ? { n: 64_000, bigN: 1_000_000, mixedRatio: 100, dt: 1 / 60, rounds: 6, stepsPerRound: 10, warmupSteps: 20, bigSteps: 30, bigWarmupSteps: 5 }
-    : { n: 64_000, bigN: 1_000_000, mixedRatio: 100, dt: 1 / 60, rounds: 3, stepsPerRound: 5, warmupSteps: 20, bigSteps: 5, bigWarmupSteps: 2 };
+    ? { n: 64_000, bigN: 1_000_000, mixedRatio: 100, dt: 1 / 60, rounds: 6, stepsPerRound: 10, warmupSteps: 20, bigSteps: 30, bigWarmupSteps: 5, threads: 2, parallelSteps: 30 }
+    : { n: 64_000, bigN: 1_000_000, mixedRatio: 100, dt: 1 / 60, rounds: 3, stepsPerRound: 5, warmupSteps: 20, bigSteps: 5, bigWarmupSteps: 2, threads: 2, parallelSteps: 15 };
 }
 
 export interface Timing {
@@ -47,6 +52,7 @@ export interface TargetsResult {
   t1: { timings: Timing[]; rapierOverMaxgrid: number | null; box2dOverMaxgrid: number | null };
   t2: { status: 'ok' | 'hash-mismatch' | 'skipped'; reason?: string; compile?: string; comparison?: CComparison };
   t3: { n: number; ms: Spread; steps: number; memoryBytes: number; bytesPerBody: number; nsPerBody: number; nsPerBodyAt64k: number; ratio: number; buildMs: number };
+  t4: MultiCoreResult;
   t5: { timings: Timing[]; mixedOverUniform: Record<string, number>; rapierOverAuto: number | null };
   t6: { status: 'ok' | 'skipped'; reason?: string; runtime?: string; settings?: Record<string, string>; node?: Spread; browser?: Spread; ratio?: number; hashesMatch?: boolean };
   notMeasured: { target: string; reason: string }[];
@@ -132,14 +138,16 @@ export async function runTargets(o: TargetsOptions, ctx: RunContext): Promise<Ta
   // T3 last: a million bodies hold about 200 MB, freed before anything else runs.
   const t3 = await million(maxgrids[0], o, ctx, t1Timings.find((t) => t.engine === 'maxgrid:maxgrid')!.nsPerBody);
 
+  // T4 after T3, for the same reason; two million-body worlds.
+  const t4 = await multiCore({ n: o.bigN, threads: o.threads, dt: o.dt, steps: o.parallelSteps, warmupSteps: o.bigWarmupSteps }, ctx);
+
   const notMeasured = [
-    { target: 'T4 multi-core', reason: 'not implemented yet: the engine has no parallel step (worker_threads / Web Workers over SharedArrayBuffer)' },
     {
       target: 'T7 sandbox 100k with WebGL',
       reason: 'needs a GPU machine: headless Chromium here renders WebGL with SwiftShader (CPU), so a frame rate would measure the software rasteriser; not measured by this command',
     },
   ];
-  return { meta, t1, t2, t3, t5, t6, notMeasured };
+  return { meta, t1, t2, t3, t4, t5, t6, notMeasured };
 }
 
 async function million(engine: Engine, o: TargetsOptions, ctx: RunContext, nsPerBodyAt64k: number): Promise<TargetsResult['t3']> {
@@ -215,7 +223,7 @@ const ratio = { type: ['number', 'null'] } as const;
 export const targetsSchema = {
   $id: 'targets',
   type: 'object',
-  required: ['meta', 't1', 't2', 't3', 't5', 't6', 'notMeasured'],
+  required: ['meta', 't1', 't2', 't3', 't4', 't5', 't6', 'notMeasured'],
   properties: {
     meta: metaSchema,
     t1: {
@@ -243,6 +251,7 @@ export const targetsSchema = {
         buildMs: { type: 'number', minimum: 0 },
       },
     },
+    t4: multiCoreSchema,
     t5: {
       type: 'object',
       required: ['timings', 'mixedOverUniform', 'rapierOverAuto'],

@@ -95,6 +95,7 @@ export function targetsTables(r: TargetsResult): Table[] {
       rows: [[spreadText(r.t3.ms), String(r.t3.steps), fmt(r.t3.bytesPerBody), fmt(r.t3.nsPerBody), fmt(r.t3.nsPerBodyAt64k), ratioText(r.t3.ratio), fmt(r.t3.buildMs)]],
       note: 'Engine bytes are `world.memoryBytes()`, the engine\'s own typed arrays.',
     },
+    t4Table(r),
     {
       title: `T5 mixed sizes: scene mixed, ratio 1:${o.mixedRatio}, N = ${n(o.n)} (targets: ≤ 2× the uniform per-body cost; ≥ 10× faster than Rapier)`,
       headers: TIMING_HEADERS,
@@ -116,7 +117,7 @@ export function targetsTables(r: TargetsResult): Table[] {
       note: t6.settings ? `Chromium flags: \`${t6.settings.flags}\`; ${t6.settings.page}; rounds alternate Node and Chromium.` : undefined,
     },
     {
-      title: 'T4 and T7: not measured by this command',
+      title: 'T7: not measured by this command',
       headers: ['target', 'status'],
       rows: r.notMeasured.map((x) => [x.target, x.reason]),
     },
@@ -153,6 +154,30 @@ export function targetsHeadline(r: TargetsResult): string[] {
       .map(([id, q]) => `${id} ${ratioText(q)}`)
       .join(', ')} (target ≤ 2×); rapier / maxgrid:auto = ${ratioOrDash(r.t5.rapierOverAuto)} (target ≥ 10×).`,
     `T6: ${r.t6.status === 'ok' ? `Chromium / Node = ${ratioText(r.t6.ratio!)} (target ≤ 1.3×; ${r.t6.runtime}; state hashes ${r.t6.hashesMatch ? 'equal' : 'DIFFER'})` : `skipped: ${r.t6.reason ?? ''}`}.`,
-    `T4, T7: not measured (see the last table).`,
+    t4Headline(r),
+    `T7: not measured (see the last table).`,
   ].flatMap((line) => [line, '']);
+}
+
+function t4Table(r: TargetsResult) {
+  const t4 = r.t4;
+  return {
+    title: `T4 multi-core: uniform N = ${n(t4.n ?? 0)}, 1 thread vs ${t4.threads ?? '–'} threads (target: ≥ 1.6× on 2 cores, same bits; moonshot ≥ 60 steps/s)`,
+    headers: ['1 thread median ms [p25–p75]', 'parallel median ms [p25–p75]', 'speed-up', 'parallel steps / s', 'same state hash'],
+    rows: [
+      t4.status === 'skipped'
+        ? [`skipped: ${t4.reason ?? ''}`, '–', '–', '–', '–']
+        : [spreadText(t4.serialMs!), spreadText(t4.parallelMs!), ratioText(t4.speedup!), fmt(t4.parallelStepsPerSecond!), t4.hashesMatch ? 'yes' : 'NO'],
+    ],
+    note:
+      t4.status === 'ok'
+        ? `Two worlds from one seeded scene, ${t4.steps} timed steps each, alternating step by step; the parallel world uses \`world.startWorkers(${t4.threads})\` (worker_threads). docs/engine.md says what runs on each thread.`
+        : undefined,
+  };
+}
+
+function t4Headline(r: TargetsResult): string {
+  const t4 = r.t4;
+  if (t4.status !== 'ok') return `T4: skipped: ${t4.reason ?? ''}.`;
+  return `T4 (${n(t4.n!)} bodies, ${t4.threads} threads): ${ratioText(t4.speedup!)} the 1-thread speed (target ≥ 1.6×), ${fmt(t4.parallelStepsPerSecond!)} steps/s (moonshot ≥ 60); state hashes ${t4.hashesMatch ? 'equal' : 'DIFFER'}.`;
 }
