@@ -291,14 +291,13 @@ export class World {
    * Runs the step on `workerCount` threads: this one and `workerCount - 1` worker threads
    * (worker_threads in Node, module Web Workers in browsers, which need a cross-origin isolated
    * page for SharedArrayBuffer). Resolves once they are running; until then steps run on this
-   * thread. Motion, the Max Grid broad-phase with the narrow-phase, and correct run in parallel;
-   * the solver stays serial. The result is the same bits for any worker count, and as without
-   * workers. `views()` must be taken again afterwards: the columns move to shared memory.
+   * thread. Motion, the Max Grid broad-phase with the narrow-phase, the solver and correct run in
+   * parallel. The result is the same bits for any worker count, and as without workers. `views()` must be taken again afterwards: the columns move to shared memory.
    */
   async startWorkers(workerCount: number): Promise<void> {
     this.stopWorkers();
     const grid = new MaxGridBroadPhase().cellGrid;
-    this.pipeline.parallel = await ParallelStep.start(workerCount, this.bodies, grid);
+    this.pipeline.parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts, grid);
   }
 
   /** Stops the worker threads; later steps run on this thread alone. */

@@ -25,10 +25,14 @@ export const Slot = {
   hasBox: 14,
   /** Set by a worker whose kernel threw; the caller then fails the step. */
   failed: 15,
+  /** Contacts in the step's canonical buffer. */
+  contactTotal: 16,
   /** MAX_THREADS cells: bodies in each thread's cell range, for the prefix sums. */
   blockTotal: 32,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */
   contactCount: 64,
+  /** MAX_THREADS cells: contacts each thread's solve block deferred. */
+  deferredCount: 80,
   length: 96,
 } as const;
 
@@ -71,7 +75,9 @@ export const Command = {
   scan: 7,
   /** Clamp contact bodies of a slot range into the box. */
   clamp: 8,
-  stop: 9,
+  /** Resolve a block of the canonical contacts, deferring what must wait (see solveContactBlock). */
+  solve: 9,
+  stop: 10,
 } as const;
 
 /** The integrators by number, as the control block carries them. */
@@ -117,6 +123,10 @@ export interface BufferMessage {
   sortedR: SharedArrayBuffer;
   contactLo: SharedArrayBuffer[];
   contactHi: SharedArrayBuffer[];
+  /** The step's canonical contact buffer, and where solve blocks list deferred contacts. */
+  canonicalLo: SharedArrayBuffer;
+  canonicalHi: SharedArrayBuffer;
+  deferred: SharedArrayBuffer;
 }
 
 export interface InitMessage {

@@ -6,6 +6,8 @@ import { PairSink } from '../store/pair-sink.js';
 import type { ContactSink } from '../store/contact-buffer.js';
 import { INTEGRATORS } from '../integrate/integrator.js';
 import { bounceOffBox, clampContactBodiesInRange } from '../solver/box-walls.js';
+import { solveContactBlock, type SolverSettings } from '../solver/contact-solver.js';
+import { grownCapacity } from '../util/grow.js';
 import { nowMs } from '../util/timer.js';
 import { BODY_COLUMNS, Command, INTEGRATOR_IDS, Param, RESULT_STRIDE, Result, Slot, shareStart, type BufferMessage } from './control.js';
 import type { Column } from '../util/grow.js';
@@ -42,6 +44,13 @@ export class BoundedContactList implements ContactSink {
 export class ThreadKernels {
   contactLo: Int32Array[] = [];
   contactHi: Int32Array[] = [];
+  /** The step's contacts in canonical order (the caller's ContactBuffer arrays). */
+  canonicalLo: Int32Array = new Int32Array(0);
+  canonicalHi: Int32Array = new Int32Array(0);
+  deferred: Int32Array = new Int32Array(0);
+  private mark = new Int32Array(0);
+  private stamp = 0;
+  private readonly solverSettings: SolverSettings = { restitutionThreshold: 0, hitThreshold: Infinity };
   readonly contacts = new BoundedContactList(new Int32Array(0), new Int32Array(0));
   private readonly narrowPhase: NarrowPhase;
   private readonly sink: PairSink;
@@ -74,6 +83,9 @@ export class ThreadKernels {
     grid.sortedR = new Float64Array(message.sortedR);
     this.contactLo = message.contactLo.map((b) => new Int32Array(b));
     this.contactHi = message.contactHi.map((b) => new Int32Array(b));
+    this.canonicalLo = new Int32Array(message.canonicalLo);
+    this.canonicalHi = new Int32Array(message.canonicalHi);
+    this.deferred = new Int32Array(message.deferred);
   }
 
   /** Points this thread's contact list at its shared arrays (after `install` or a regrowth). */
@@ -110,6 +122,8 @@ export class ThreadKernels {
         return this.scan();
       case Command.clamp:
         return this.clamp();
+      case Command.solve:
+        return this.solve();
       default:
         throw new Error(`parallel step: unknown command ${command}`);
     }
@@ -243,12 +257,21 @@ export class ThreadKernels {
   private clamp(): void {
     const c = this.control;
     const p = this.params;
-    const threads = c[Slot.threads];
     const [from, to] = this.share(c[Slot.slotCount]);
-    for (let t = 0; t < threads; t++) {
-      const count = c[Slot.contactCount + t];
-      clampContactBodiesInRange(this.bodies, this.contactLo[t], this.contactHi[t], count, p[Param.boxWidth], p[Param.boxHeight], from, to);
+    clampContactBodiesInRange(this.bodies, this.canonicalLo, this.canonicalHi, c[Slot.contactTotal], p[Param.boxWidth], p[Param.boxHeight], from, to);
+  }
+
+  private solve(): void {
+    const c = this.control;
+    const slots = c[Slot.slotCount];
+    if (this.mark.length < slots) {
+      this.mark = new Int32Array(grownCapacity(this.mark.length, slots));
+      this.stamp = 0;
     }
+    const [from, to] = this.share(c[Slot.contactTotal]);
+    const settings = this.solverSettings;
+    settings.restitutionThreshold = this.params[Param.restitutionThreshold];
+    c[Slot.deferredCount + this.index] = solveContactBlock(this.bodies, this.canonicalLo, this.canonicalHi, from, to, settings, this.mark, ++this.stamp, this.deferred);
   }
 }
 

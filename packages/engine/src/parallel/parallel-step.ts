@@ -2,6 +2,7 @@ import type { BodyStore } from '../store/body-store.js';
 import type { ContactBuffer } from '../store/contact-buffer.js';
 import type { CellGrid } from '../broadphase/cell-grid.js';
 import { grownCapacity } from '../util/grow.js';
+import { resolveContact, type SolverSettings } from '../solver/contact-solver.js';
 import { nowMs } from '../util/timer.js';
 import type { IntegratorName } from '../integrate/integrator.js';
 import {
@@ -13,6 +14,7 @@ import {
   RESULT_STRIDE,
   Result,
   Slot,
+  shareStart,
   type BodyColumnName,
   type BufferMessage,
 } from './control.js';
@@ -48,10 +50,13 @@ export interface MotionSettings {
  * - the Max Grid build (a counting sort split in count, totals, prefix and scatter passes) and
  *   the scan of row bands with the narrow-phase: each thread finds a disjoint share of the same
  *   contact set, and the step sorts contacts canonically before solving, as it always does;
+ * - solve: the canonical order is cut into one block per thread; each thread resolves the
+ *   contacts of its block whose bodies no earlier block touches, and the caller then resolves
+ *   the deferred rest in order, so every body sees the serial sequence of updates
+ *   (solveContactBlock explains why that is exact). With events or sleepers it runs serially;
  * - correct (clamping contact bodies into the box): each thread owns a slot range.
- * The solver stays serial: it resolves contacts one after another in canonical order, which is
- * what makes results independent of how contacts were found. Continuous collision, segments,
- * events, sleeping and the other broad-phases run serially as well, between the parallel stages.
+ * Continuous collision, segments, events, sleeping and the other broad-phases run serially,
+ * between the parallel stages.
  */
 export class ParallelStep {
   readonly threads: number;
@@ -65,6 +70,7 @@ export class ParallelStep {
   private sentGridVersion = -1;
   private listsVersion = 0;
   private sentLists = -1;
+  private sentContacts = -1;
   /** Summed over threads by the last findContacts. */
   candidates = 0;
   filtered = 0;
@@ -72,6 +78,7 @@ export class ParallelStep {
 
   private constructor(
     private readonly bodies: BodyStore,
+    private readonly canonical: ContactBuffer,
     private readonly workers: WorkerHandle[],
     control: Int32Array,
     params: Float64Array,
@@ -89,10 +96,11 @@ export class ParallelStep {
       this.caller.contactHi.push(new Int32Array(new SharedArrayBuffer(4 * 1024)));
     }
     this.caller.bindContactList();
+    this.caller.deferred = new Int32Array(new SharedArrayBuffer(4 * 1024));
   }
 
   /** Starts `threads - 1` workers; the caller is thread 0. Moves the body columns to shared memory. */
-  static async start(threads: number, bodies: BodyStore, grid: CellGrid): Promise<ParallelStep> {
+  static async start(threads: number, bodies: BodyStore, contacts: ContactBuffer, grid: CellGrid): Promise<ParallelStep> {
     if (!Number.isSafeInteger(threads) || threads < 1 || threads > MAX_THREADS) {
       throw new RangeError(`workerCount must be an integer in [1, ${MAX_THREADS}], got ${threads}`);
     }
@@ -111,8 +119,9 @@ export class ParallelStep {
       throw error;
     }
     bodies.setShared(true);
+    contacts.setShared(true);
     grid.setShared(true);
-    return new ParallelStep(bodies, workers, control, params, results, grid);
+    return new ParallelStep(bodies, contacts, workers, control, params, results, grid);
   }
 
   stop(): void {
@@ -178,11 +187,49 @@ export class ParallelStep {
     return examined;
   }
 
-  /** Clamps the bodies of the contacts found by the last findContacts into the box. */
+  /**
+   * Resolves the step's contacts, already in canonical order: blocks of that order on every
+   * thread, then the contacts they deferred, here, in order (see solveContactBlock). Only for
+   * steps without events or sleepers, whose bookkeeping the solver would otherwise update.
+   */
+  solve(settings: SolverSettings): void {
+    const c = this.control;
+    const count = this.canonical.count;
+    c[Slot.contactTotal] = count;
+    c[Slot.slotCount] = this.bodies.slotCount;
+    this.params[Param.restitutionThreshold] = settings.restitutionThreshold;
+    if (this.caller.deferred.length < count) {
+      this.caller.deferred = new Int32Array(new SharedArrayBuffer(grownCapacity(this.caller.deferred.length, count) * 4));
+      this.listsVersion++;
+    }
+    this.caller.canonicalLo = this.canonical.lo;
+    this.caller.canonicalHi = this.canonical.hi;
+    this.run(Command.solve);
+    const { lo, hi } = this.canonical;
+    const deferred = this.caller.deferred;
+    this.deferredContacts = 0;
+    for (let t = 0; t < this.threads; t++) {
+      const from = shareStart(count, t, this.threads);
+      const waiting = c[Slot.deferredCount + t];
+      this.deferredContacts += waiting;
+      for (let q = 0; q < waiting; q++) {
+        const k = deferred[from + q];
+        resolveContact(this.bodies, lo[k], hi[k], settings, null);
+      }
+    }
+  }
+
+  /** Contacts the last parallel solve deferred to its serial pass. */
+  deferredContacts = 0;
+
+  /** Clamps the bodies of the step's contacts into the box. */
   clamp(box: { width: number; height: number }): void {
     this.params[Param.boxWidth] = box.width;
     this.params[Param.boxHeight] = box.height;
     this.control[Slot.slotCount] = this.bodies.slotCount;
+    this.control[Slot.contactTotal] = this.canonical.count;
+    this.caller.canonicalLo = this.canonical.lo;
+    this.caller.canonicalHi = this.canonical.hi;
     this.run(Command.clamp);
   }
 
@@ -242,7 +289,8 @@ export class ParallelStep {
       this.sentBodies === this.bodies.layoutVersion &&
       this.sentGrid === grid &&
       this.sentGridVersion === grid.layoutVersion &&
-      this.sentLists === this.listsVersion
+      this.sentLists === this.listsVersion &&
+      this.sentContacts === this.canonical.layoutVersion
     ) {
       return;
     }
@@ -250,6 +298,7 @@ export class ParallelStep {
     this.sentGrid = grid;
     this.sentGridVersion = grid.layoutVersion;
     this.sentLists = this.listsVersion;
+    this.sentContacts = this.canonical.layoutVersion;
     if (this.workers.length === 0) return;
     const epoch = ++this.epoch;
     const columns = this.bodies as unknown as Record<BodyColumnName, { buffer: SharedArrayBuffer }>;
@@ -268,6 +317,9 @@ export class ParallelStep {
       sortedR: grid.sortedR.buffer as SharedArrayBuffer,
       contactLo: k.contactLo.map((a) => a.buffer as SharedArrayBuffer),
       contactHi: k.contactHi.map((a) => a.buffer as SharedArrayBuffer),
+      canonicalLo: this.canonical.lo.buffer as SharedArrayBuffer,
+      canonicalHi: this.canonical.hi.buffer as SharedArrayBuffer,
+      deferred: k.deferred.buffer as SharedArrayBuffer,
     };
     for (const worker of this.workers) worker.postMessage(message);
     this.control[Slot.epoch] = epoch;

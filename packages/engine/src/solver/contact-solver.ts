@@ -28,51 +28,91 @@ export interface SolverSettings {
 }
 
 export function solveContacts(bodies: BodyStore, contacts: ContactBuffer, events: ContactEvents | null, settings: SolverSettings): void {
-  const { restitutionThreshold, hitThreshold } = settings;
-  const { x, y, vx, vy, radius, invMass, restitution, asleep } = bodies;
-  const anyAsleep = bodies.sleepingCount > 0;
   const { lo, hi, count } = contacts;
-  for (let k = 0; k < count; k++) {
+  for (let k = 0; k < count; k++) resolveContact(bodies, lo[k], hi[k], settings, events);
+}
+
+/**
+ * Resolves a block [from, to) of the canonical order on one thread of a parallel step, beside
+ * other threads doing the blocks after it, deferring what must wait. A contact is deferred when
+ * either body appears in a contact before the block (another thread may be moving it now, and it
+ * must see that thread's result first) or in a contact deferred already (so each body's contacts
+ * keep their order). Every other contact reads and writes bodies no earlier block touches and no
+ * later block touches before its deferred pass, so resolving the deferred ones afterwards, in
+ * order, gives each body exactly the serial sequence of updates: the same bits.
+ * `mark` (one entry per slot, thread-private) is stamped rather than cleared. Returns how many
+ * contact indices were written to `deferred` from `from` on.
+ */
+export function solveContactBlock(
+  bodies: BodyStore,
+  lo: Int32Array,
+  hi: Int32Array,
+  from: number,
+  to: number,
+  settings: SolverSettings,
+  mark: Int32Array,
+  stamp: number,
+  deferred: Int32Array,
+): number {
+  for (let k = 0; k < from; k++) {
+    mark[lo[k]] = stamp;
+    mark[hi[k]] = stamp;
+  }
+  let waiting = 0;
+  for (let k = from; k < to; k++) {
     const i = lo[k];
     const j = hi[k];
-    const dx = x[j] - x[i];
-    const dy = y[j] - y[i];
-    const reach = radius[i] + radius[j];
-    const distSq = dx * dx + dy * dy;
-    if (distSq >= reach * reach) continue;
-    if (anyAsleep) {
-      if (asleep[i]) bodies.wake(i);
-      if (asleep[j]) bodies.wake(j);
+    if (mark[i] === stamp || mark[j] === stamp) {
+      mark[i] = stamp;
+      mark[j] = stamp;
+      deferred[from + waiting++] = k;
+      continue;
     }
-    const wi = invMass[i];
-    const wj = invMass[j];
-    const w = wi + wj;
-    if (w === 0) continue;
-    let nx = 1;
-    let ny = 0;
-    const dist = Math.sqrt(distSq);
-    if (dist > 0) {
-      nx = dx / dist;
-      ny = dy / dist;
-    }
-    const vn = (vx[j] - vx[i]) * nx + (vy[j] - vy[i]) * ny;
-    if (vn < 0) {
-      if (-vn >= hitThreshold && events) events.recordHit(bodies, i, j, -vn);
-      const e = -vn < restitutionThreshold ? 0 : mixRestitution(restitution[i], restitution[j]);
-      const impulse = (-(1 + e) * vn) / w;
-      const pi = impulse * wi;
-      const pj = impulse * wj;
-      vx[i] -= pi * nx;
-      vy[i] -= pi * ny;
-      vx[j] += pj * nx;
-      vy[j] += pj * ny;
-    }
-    const overlap = reach - dist;
-    const si = (overlap * wi) / w;
-    const sj = (overlap * wj) / w;
-    x[i] -= si * nx;
-    y[i] -= si * ny;
-    x[j] += sj * nx;
-    y[j] += sj * ny;
+    resolveContact(bodies, i, j, settings, null);
   }
+  return waiting;
+}
+
+/** Resolves one contact (lo slot i, hi slot j): the body of the loop described above. */
+export function resolveContact(bodies: BodyStore, i: number, j: number, settings: SolverSettings, events: ContactEvents | null): void {
+  const { x, y, vx, vy, radius, invMass, restitution, asleep } = bodies;
+  const dx = x[j] - x[i];
+  const dy = y[j] - y[i];
+  const reach = radius[i] + radius[j];
+  const distSq = dx * dx + dy * dy;
+  if (distSq >= reach * reach) return;
+  if (bodies.sleepingCount > 0) {
+    if (asleep[i]) bodies.wake(i);
+    if (asleep[j]) bodies.wake(j);
+  }
+  const wi = invMass[i];
+  const wj = invMass[j];
+  const w = wi + wj;
+  if (w === 0) return;
+  let nx = 1;
+  let ny = 0;
+  const dist = Math.sqrt(distSq);
+  if (dist > 0) {
+    nx = dx / dist;
+    ny = dy / dist;
+  }
+  const vn = (vx[j] - vx[i]) * nx + (vy[j] - vy[i]) * ny;
+  if (vn < 0) {
+    if (-vn >= settings.hitThreshold && events) events.recordHit(bodies, i, j, -vn);
+    const e = -vn < settings.restitutionThreshold ? 0 : mixRestitution(restitution[i], restitution[j]);
+    const impulse = (-(1 + e) * vn) / w;
+    const pi = impulse * wi;
+    const pj = impulse * wj;
+    vx[i] -= pi * nx;
+    vy[i] -= pi * ny;
+    vx[j] += pj * nx;
+    vy[j] += pj * ny;
+  }
+  const overlap = reach - dist;
+  const si = (overlap * wi) / w;
+  const sj = (overlap * wj) / w;
+  x[i] -= si * nx;
+  y[i] -= si * ny;
+  x[j] += sj * nx;
+  y[j] += sj * ny;
 }

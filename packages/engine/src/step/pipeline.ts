@@ -41,8 +41,8 @@ export interface StepSettings {
  * interleave; their times are separated by timing the narrow-phase inside the sink. Everything
  * here works on buffers that persist between steps: a warm step allocates nothing.
  *
- * With `parallel` attached, motion, the Max Grid and narrow-phase, and correct run on several
- * threads (see ParallelStep), the rest as here; the result is the same bits either way.
+ * With `parallel` attached, motion, the Max Grid and narrow-phase, solve and correct run on
+ * several threads (see ParallelStep), the rest as here; the result is the same bits either way.
  */
 export class StepPipeline {
   readonly contacts = new ContactBuffer();
@@ -97,12 +97,13 @@ export class StepPipeline {
 
     contacts.sortCanonical(bodies.slotCount);
     events?.clear();
-    solveContacts(bodies, contacts, events, settings.solver);
+    if (parallel && events === null && bodies.sleepingCount === 0) parallel.solve(settings.solver);
+    else solveContacts(bodies, contacts, events, settings.solver);
     const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver.restitutionThreshold);
     const t4 = nowMs();
 
     if (box) {
-      if (grid && segmentContacts === 0) parallel!.clamp(box);
+      if (parallel && segmentContacts === 0) parallel.clamp(box);
       else clampIntoBox(bodies, box.width, box.height, segmentContacts > 0 ? null : contacts);
     }
     const t5 = nowMs();

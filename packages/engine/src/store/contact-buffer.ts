@@ -17,17 +17,30 @@ export interface ContactSink {
  * Nothing is allocated once the scratch has grown.
  */
 export class ContactBuffer implements ContactSink {
-  lo = new Int32Array(64);
-  hi = new Int32Array(64);
+  lo: Int32Array = new Int32Array(64);
+  hi: Int32Array = new Int32Array(64);
   count = 0;
+  /** The pair arrays live on shared memory, for the threads of a parallel step. */
+  shared = false;
+  /** Bumped whenever `lo` and `hi` are reallocated. */
+  layoutVersion = 0;
 
-  private scratchLo = new Int32Array(64);
-  private scratchHi = new Int32Array(64);
+  private scratchLo: Int32Array = new Int32Array(64);
+  private scratchHi: Int32Array = new Int32Array(64);
   private counts = new Int32Array(64);
   private readonly buckets = new Int32Array(256);
 
   clear(): void {
     this.count = 0;
+  }
+
+  /** Moves the pair arrays onto shared memory (or back). */
+  setShared(shared: boolean): void {
+    if (shared === this.shared) return;
+    this.shared = shared;
+    this.lo = grow(this.lo, this.lo.length, shared);
+    this.hi = grow(this.hi, this.hi.length, shared);
+    this.layoutVersion++;
   }
 
   push(lo: number, hi: number): void {
@@ -127,7 +140,8 @@ export class ContactBuffer implements ContactSink {
 
   private growPairs(needed: number): void {
     const capacity = grownCapacity(this.lo.length, needed);
-    this.lo = grow(this.lo, capacity);
-    this.hi = grow(this.hi, capacity);
+    this.lo = grow(this.lo, capacity, this.shared);
+    this.hi = grow(this.hi, capacity, this.shared);
+    this.layoutVersion++;
   }
 }
