@@ -12,7 +12,7 @@ import { queryMask, rayArguments } from './query/query-args.js';
 import type { CircleState, BodyViews, QueryOptions } from './world-types.js';
 import * as analytics from './analytics.js';
 import { StepPipeline } from './step/pipeline.js';
-import { ParallelStep } from './parallel/parallel-step.js';
+import { checkWorkerCount, DEFAULT_MIN_BODIES, ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
 import type { IntegratorName } from './integrate/integrator.js';
 import { finiteNumber, nonNegativeNumber } from './util/validate.js';
@@ -294,10 +294,15 @@ export class World {
    * thread. Motion, the Max Grid broad-phase with the narrow-phase, the solver and correct run in
    * parallel. The result is the same bits for any worker count, and as without workers. `views()` must be taken again afterwards: the columns move to shared memory.
    */
-  async startWorkers(workerCount: number): Promise<void> {
+  async startWorkers(workerCount: number, options: { minBodies?: number } = {}): Promise<void> {
+    checkWorkerCount(workerCount);
+    const minBodies = options.minBodies ?? DEFAULT_MIN_BODIES;
+    if (!Number.isSafeInteger(minBodies) || minBodies < 0) throw new RangeError(`minBodies must be a non-negative integer, got ${minBodies}`);
     this.stopWorkers();
     const grid = new MaxGridBroadPhase().cellGrid;
-    this.pipeline.parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts, grid);
+    const parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts, grid);
+    parallel.minBodies = minBodies;
+    this.pipeline.parallel = parallel;
   }
 
   /** Stops the worker threads; later steps run on this thread alone. */

@@ -9,7 +9,8 @@ type Build = () => World;
 /** Steps a fresh world from `build` with the given worker count (0: none) and returns its hash. */
 async function hashWith(build: Build, workers: number, steps: number, during?: (world: World, step: number) => void): Promise<string> {
   const world = build();
-  if (workers > 0) await world.startWorkers(workers);
+  // minBodies 0: these worlds are small, and the parallel path is what is under test.
+  if (workers > 0) await world.startWorkers(workers, { minBodies: 0 });
   try {
     for (let s = 0; s < steps; s++) {
       during?.(world, s);
@@ -39,7 +40,7 @@ describe('parallel step', () => {
   it('matches the golden seed-box hash with gravity and walls, on the default broad-phase', async () => {
     const build = () => buildWorld(buildScene('seed-box', { n: 800, seed: 42 }), { integrator: 'explicit-euler' });
     const world = build();
-    await world.startWorkers(2);
+    await world.startWorkers(2, { minBodies: 0 });
     expect(world.workerCount).toBe(2);
     for (let s = 0; s < 600; s++) world.step(1 / 60);
     world.stopWorkers();
@@ -79,24 +80,30 @@ describe('parallel step', () => {
   it('steps on after stopWorkers, and restarting gives the same bits', async () => {
     const serial = await hashWith(uniform(3000), 0, 40);
     const world = uniform(3000)();
-    await world.startWorkers(2);
+    await world.startWorkers(2, { minBodies: 0 });
     for (let s = 0; s < 15; s++) world.step(1 / 60);
     world.stopWorkers();
     expect(world.workerCount).toBe(1);
     for (let s = 0; s < 10; s++) world.step(1 / 60);
-    await world.startWorkers(3);
+    await world.startWorkers(3, { minBodies: 0 });
     for (let s = 0; s < 15; s++) world.step(1 / 60);
     world.stopWorkers();
     expect(world.stateHash()).toBe(serial);
   });
 
-  it('rejects a bad worker count by name and value, leaving the world as it was', async () => {
+  it('rejects a bad worker count or minBodies by name and value, leaving the world and its workers as they were', async () => {
     const world = uniform(100)();
     const before = world.stateHash();
+    await world.startWorkers(2);
     for (const bad of [0, -1, 1.5, 17, Number.NaN]) {
       await expect(world.startWorkers(bad)).rejects.toThrow(new RegExp(`workerCount must be an integer in \\[1, 16\\], got ${bad}`));
-      expect(world.workerCount).toBe(1);
+      expect(world.workerCount).toBe(2);
     }
+    for (const bad of [-1, 0.5, Number.POSITIVE_INFINITY]) {
+      await expect(world.startWorkers(2, { minBodies: bad })).rejects.toThrow(`minBodies must be a non-negative integer, got ${bad}`);
+      expect(world.workerCount).toBe(2);
+    }
+    world.stopWorkers();
     expect(world.stateHash()).toBe(before);
   });
 });

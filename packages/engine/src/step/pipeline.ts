@@ -66,7 +66,8 @@ export class StepPipeline {
   }
 
   run(dt: number): void {
-    const { bodies, settings, stats, contacts, pairs, events, parallel } = this;
+    const { bodies, settings, stats, contacts, pairs, events } = this;
+    const parallel = this.parallel !== null && bodies.liveCount >= this.parallel.minBodies ? this.parallel : null;
     const box = settings.box;
     const t0 = nowMs();
     const sweep = settings.continuous && this.continuous.needed(bodies, this.segments);

@@ -35,7 +35,8 @@ export async function multiCore(o: MultiCoreOptions, ctx: RunContext): Promise<M
   const scene = buildScene('uniform', { n: o.n, seed: 1 });
   const serial = buildWorld(scene, { broadphase: 'maxgrid' });
   const parallel = buildWorld(scene, { broadphase: 'maxgrid' });
-  await parallel.startWorkers(o.threads);
+  // minBodies 0: the lab's small test sizes measure the parallel path too.
+  await parallel.startWorkers(o.threads, { minBodies: 0 });
   try {
     for (let s = 0; s < o.warmupSteps; s++) {
       serial.step(o.dt);
