@@ -2,6 +2,8 @@ import { defineConfig } from 'vite';
 import { fileURLToPath } from 'node:url';
 import { workspaceAliases } from '../../vitest.shared.js';
 
+const ISOLATION = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
+
 const page = (name: string) => fileURLToPath(new URL(`./${name}`, import.meta.url));
 
 // Three pages: the 2D sandbox (index), the report's three.js + cannon-es exploration (3d), and the
@@ -16,8 +18,10 @@ export default defineConfig({
   optimizeDeps: {
     include: ['three', 'cannon-es', 'echarts', 'matter-js', 'planck', 'p2-es', '@dimforge/rapier2d-simd-compat'],
   },
-  server: { host: '127.0.0.1', port: 5173 },
-  preview: { host: '127.0.0.1', port: 4173 },
+  // Cross-origin isolation, so that pages get SharedArrayBuffer and world.startWorkers can run
+  // the engine on Web Workers. Every resource the pages load is same-origin.
+  server: { host: '127.0.0.1', port: 5173, headers: ISOLATION },
+  preview: { host: '127.0.0.1', port: 4173, headers: ISOLATION },
   build: {
     target: 'es2022',
     rollupOptions: { input: { index: page('index.html'), '3d': page('3d.html'), lab: page('lab.html') } },

@@ -101,6 +101,8 @@ export interface PageWorlds {
   /** Steps `count` times; each step's time in ms (Chromium's clock is coarse, ~0.1 ms). */
   step(id: number, count: number, dt: number): number[];
   hash(id: number): string;
+  /** Runs the world's steps on `threads` threads (Web Workers), even while it is small. */
+  startWorkers(id: number, threads: number): Promise<number>;
   dispose(id: number): void;
 }
 
@@ -129,6 +131,14 @@ export function pageWorlds(): PageWorlds {
       return times;
     },
     hash: (id) => get(id).stateHash(),
-    dispose: (id) => void worlds.delete(id),
+    async startWorkers(id, threads) {
+      const world = get(id);
+      await world.startWorkers(threads, { minBodies: 0 });
+      return world.workerCount;
+    },
+    dispose(id) {
+      worlds.get(id)?.stopWorkers();
+      worlds.delete(id);
+    },
   };
 }

@@ -81,6 +81,18 @@ describe('lab page in Chromium', () => {
     await page.evaluate((i) => window.__labWorlds!.dispose(i), id);
   });
 
+  it('runs the parallel step on Web Workers (the page is cross-origin isolated) to the same hash as Node on one thread', async () => {
+    expect(await page.evaluate(() => globalThis.crossOriginIsolated)).toBe(true);
+    const params = { n: 3000, seed: 4 };
+    const id = await page.evaluate((p) => window.__labWorlds!.create('uniform', p, 'maxgrid'), params);
+    expect(await page.evaluate((i) => window.__labWorlds!.startWorkers(i, 2), id)).toBe(2);
+    await page.evaluate((i) => window.__labWorlds!.step(i, 30, 1 / 60), id);
+    const world = buildWorld(buildScene('uniform', params), maxgridBuildOptions('maxgrid'));
+    for (let s = 0; s < 30; s++) world.step(1 / 60);
+    expect(await page.evaluate((i) => window.__labWorlds!.hash(i), id)).toBe(world.stateHash());
+    await page.evaluate((i) => window.__labWorlds!.dispose(i), id);
+  });
+
   // Determinism across runtimes, in three steps so that a failure says where bits diverge.
   it('builds the golden scene to the same bits in Node and in Chromium', () => {
     // Differing vx/vy here means the scene builder's Math.cos/Math.sin round differently in the

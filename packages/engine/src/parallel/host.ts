@@ -4,11 +4,11 @@
  */
 
 // Declared rather than taken from DOM or Node typings, which a dependency-free library does not load.
-declare const URL: new (url: string, base: string) => { readonly href: string };
+declare const URL: new (url: string, base?: string) => { readonly href: string; readonly pathname: string };
 type URL = InstanceType<typeof URL>;
 declare global {
   interface ImportMeta {
-    readonly url: string;
+    url: string;
   }
 }
 
@@ -57,7 +57,8 @@ export function threadsUnavailable(): string | null {
  */
 function workerUrl(): URL {
   const here = import.meta.url;
-  if (!here.endsWith('.ts')) return new URL('./worker-entry.js', here);
+  // The path, not the whole URL: a dev server may add a query (`?t=...`) after the extension.
+  if (!new URL(here).pathname.endsWith('.ts')) return new URL('./worker-entry.js', here);
   return isNode ? new URL('../../dist/parallel/worker-entry.js', here) : new URL('./worker-entry.ts', here);
 }
 
