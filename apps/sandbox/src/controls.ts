@@ -4,6 +4,7 @@ import {
   NAIVE_LIMIT,
   SCENE_CHOICES,
   SEED_MAX,
+  THREAD_CHOICES,
   WORLD_TOGGLES,
   clampNumber,
   clampSeed,
@@ -49,6 +50,7 @@ export class Controls {
   private readonly seed = byId<HTMLInputElement>('seed');
   private readonly broadphase = byId<HTMLSelectElement>('broadphase');
   private readonly integrator = byId<HTMLSelectElement>('integrator');
+  private readonly threads = byId<HTMLSelectElement>('threads');
   readonly renderer = byId<HTMLSelectElement>('renderer');
   private readonly tool = byId<HTMLSelectElement>('tool');
   private readonly grid = byId<HTMLInputElement>('grid');
@@ -68,6 +70,9 @@ export class Controls {
     this.seed.max = String(SEED_MAX);
     for (const name of BROADPHASE_NAMES) this.broadphase.append(new Option(name, name));
     for (const name of INTEGRATOR_NAMES) this.integrator.append(new Option(name, name));
+    // Worker threads need SharedArrayBuffer, which only a cross-origin isolated page has.
+    const cores = globalThis.crossOriginIsolated ? navigator.hardwareConcurrency || 1 : 1;
+    for (const count of THREAD_CHOICES) if (count === 1 || count <= cores) this.threads.append(new Option(String(count), String(count)));
 
     // Another scene starts from its own defaults; the seed, engine and view choices carry over.
     this.sceneSelect.addEventListener('change', () => {
@@ -98,13 +103,14 @@ export class Controls {
     const live = () => {
       this.current.broadphase = this.broadphase.value as Settings['broadphase'];
       this.current.integrator = this.integrator.value as Settings['integrator'];
+      this.current.threads = Number(this.threads.value);
       this.current.renderer = this.renderer.value as RendererName;
       this.current.tool = this.tool.value as ToolName;
       this.current.grid = this.grid.checked;
       this.current.aabb = this.aabb.checked;
       this.events.live(copySettings(this.current));
     };
-    for (const el of [this.broadphase, this.integrator, this.renderer, this.tool, this.grid, this.aabb]) el.addEventListener('change', live);
+    for (const el of [this.broadphase, this.integrator, this.threads, this.renderer, this.tool, this.grid, this.aabb]) el.addEventListener('change', live);
     this.show(initial);
   }
 
@@ -125,6 +131,7 @@ export class Controls {
     this.seed.value = String(s.seed);
     this.broadphase.value = s.broadphase;
     this.integrator.value = s.integrator;
+    this.threads.value = String(s.threads);
     this.renderer.value = s.renderer;
     this.tool.value = s.tool;
     this.grid.checked = s.grid;

@@ -85,6 +85,7 @@ function rebuild(next: Settings): void {
     sim.rebuild(wanted);
   }
   settings = wanted;
+  sim.setThreads(settings.threads, threadsFailed);
   query.clear();
   query.setTool(settings.tool);
   controls.show(settings);
@@ -94,8 +95,12 @@ function rebuild(next: Settings): void {
 
 /** The choices that are not the scene: kept when a URL's scene falls back to its defaults. */
 function pickView(s: Settings): Partial<Settings> {
-  const { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, hits, layers, tool } = s;
-  return { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, hits, layers, tool };
+  const { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, hits, layers, tool, threads } = s;
+  return { broadphase, integrator, renderer, grid, aabb, sleeping, continuous, events, hits, layers, tool, threads };
+}
+
+function threadsFailed(message: string): void {
+  say(`Worker threads did not start (${message}); stepping on one thread.`);
 }
 
 function applyLive(next: Settings): void {
@@ -103,6 +108,7 @@ function applyLive(next: Settings): void {
   settings = engineFor({ ...next, params: settings.params });
   sim.setBroadphase(settings.broadphase);
   sim.setIntegrator(settings.integrator);
+  sim.setThreads(settings.threads, threadsFailed);
   settings.renderer = selectRenderer(settings.renderer);
   if (settings.tool !== query.tool) {
     sim.endDrag();

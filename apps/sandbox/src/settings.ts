@@ -26,7 +26,12 @@ export interface Settings {
   hits: boolean;
   layers: boolean;
   tool: ToolName;
+  /** Threads stepping the world (world.startWorkers); 1 runs it on the page's own thread. */
+  threads: number;
 }
+
+/** Thread counts offered; the page offers those up to the machine's core count. */
+export const THREAD_CHOICES = [1, 2, 4, 8] as const;
 
 export const RENDERER_NAMES = ['canvas', 'webgl'] as const;
 export type RendererName = (typeof RENDERER_NAMES)[number];
@@ -58,6 +63,7 @@ export function defaultSettings(scene: SceneChoice = 'seed-box'): Settings {
     events: false,
     hits: false,
     layers: false,
+    threads: 1,
     tool: 'drag',
   };
 }
@@ -95,6 +101,8 @@ export function parseSettings(search: string): Settings {
   s.integrator = oneOf(INTEGRATOR_NAMES, q.get('integrator'), s.integrator);
   s.renderer = oneOf(RENDERER_NAMES, q.get('renderer'), s.renderer);
   s.tool = oneOf(TOOL_NAMES, q.get('tool'), s.tool);
+  const threads = Number(q.get('threads'));
+  s.threads = (THREAD_CHOICES as readonly number[]).includes(threads) ? threads : 1;
   s.grid = flag(q, 'grid', false);
   s.aabb = flag(q, 'aabb', false);
   for (const key of WORLD_TOGGLES) s[key] = flag(q, key, s[key]);
@@ -115,6 +123,7 @@ export function serializeSettings(s: Settings): string {
   const defaults = defaultSettings();
   for (const key of WORLD_TOGGLES) if (s[key] !== defaults[key]) q.set(key, s[key] ? '1' : '0');
   if (s.tool !== 'drag') q.set('tool', s.tool);
+  if (s.threads !== 1) q.set('threads', String(s.threads));
   return '?' + q.toString();
 }
 

@@ -58,7 +58,9 @@ export class Simulation {
    */
   rebuild(settings: Settings): void {
     const scene = buildScene(settings.scene, sceneParams(settings));
-    this.world = buildSandboxWorld(scene, DT, settings);
+    const world = buildSandboxWorld(scene, DT, settings);
+    this.world?.stopWorkers();
+    this.world = world;
     this.layers = settings.layers;
     this.continuous = settings.continuous;
     this.segments = flatSegments(scene);
@@ -90,6 +92,27 @@ export class Simulation {
 
   setIntegrator(name: IntegratorName): void {
     this.world.setIntegrator(name);
+  }
+
+  /**
+   * Steps the world on `threads` threads (world.startWorkers). The workers start asynchronously;
+   * until they run, and for worlds under the engine's minimum size, steps stay on this thread,
+   * with the same results either way. `failed` hears why workers could not start.
+   */
+  setThreads(threads: number, failed: (message: string) => void): void {
+    const world = this.world;
+    if (threads <= 1) {
+      world.stopWorkers();
+      return;
+    }
+    if (world.workerCount === threads) return;
+    world.startWorkers(threads).then(
+      () => {
+        // Rebuilt while the workers were starting: they belong to a world no longer shown.
+        if (this.world !== world) world.stopWorkers();
+      },
+      (error: unknown) => failed(error instanceof Error ? error.message : String(error)),
+    );
   }
 
   /** Advances by the real time elapsed since the last frame, in whole fixed steps. */

@@ -344,4 +344,28 @@ describe('2D sandbox: engine features', () => {
     expect(errors).toEqual([]);
     await page.close();
   });
+
+  it('steps on Web Workers with the Threads control, and stops them again', async () => {
+    // 40,000 bodies: above the engine's default minBodies, so the workers take part in each step.
+    const { page, errors } = await openPage(browser, '/?scene=uniform&n=40000');
+    await stepsPass(page, 2);
+    expect(page.workers()).toHaveLength(0);
+    expect(await page.getByLabel('Threads').locator('option').allInnerTexts()).toContain('2');
+    await page.getByLabel('Threads').selectOption('2');
+    await expect.poll(() => page.workers().length, POLL).toBe(1);
+    const steps = await stat(page, 'steps');
+    await stepsPass(page, steps + 5);
+    expect(new URL(page.url()).searchParams.get('threads')).toBe('2');
+    expect(await stat(page, 'bodies')).toBe(40_000);
+
+    await page.getByLabel('Threads').selectOption('1');
+    await expect.poll(() => page.workers().length, POLL).toBe(0);
+    await stepsPass(page, (await stat(page, 'steps')) + 2);
+    // From the URL too: the link reproduces the choice.
+    await page.goto(page.url().replace(/\?.*/, '?scene=uniform&n=40000&threads=2'));
+    await expect.poll(() => page.workers().length, POLL).toBe(1);
+    expect(await page.getByLabel('Threads').inputValue()).toBe('2');
+    expect(errors).toEqual([]);
+    await page.close();
+  });
 });
