@@ -45,6 +45,8 @@ export class World {
   private readonly queries = new Queries(this.bodies);
   /** Bumped whenever positions or the body set change, so cached query grids know to rebuild. */
   private geometryVersion = 0;
+  /** Bumped by stopWorkers, so that workers still starting know they were cancelled. */
+  private workerStarts = 0;
   private readonly viewsRecord = {
     slotCount: 0,
     liveCount: 0,
@@ -299,14 +301,21 @@ export class World {
     const minBodies = options.minBodies ?? DEFAULT_MIN_BODIES;
     if (!Number.isSafeInteger(minBodies) || minBodies < 0) throw new RangeError(`minBodies must be a non-negative integer, got ${minBodies}`);
     this.stopWorkers();
+    const started = this.workerStarts;
     const grid = new MaxGridBroadPhase().cellGrid;
     const parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts, grid);
+    if (started !== this.workerStarts) {
+      // stopWorkers (or another startWorkers) was called while these were starting: it wins.
+      parallel.stop();
+      return;
+    }
     parallel.minBodies = minBodies;
     this.pipeline.parallel = parallel;
   }
 
   /** Stops the worker threads; later steps run on this thread alone. */
   stopWorkers(): void {
+    this.workerStarts++;
     this.pipeline.parallel?.stop();
     this.pipeline.parallel = null;
   }

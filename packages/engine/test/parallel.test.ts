@@ -91,6 +91,19 @@ describe('parallel step', () => {
     expect(world.stateHash()).toBe(serial);
   });
 
+  it('stopWorkers while workers are starting cancels them, and of two starts the last wins', async () => {
+    const world = uniform(500)();
+    const starting = world.startWorkers(2);
+    world.stopWorkers();
+    await starting;
+    expect(world.workerCount).toBe(1);
+    const first = world.startWorkers(2);
+    const second = world.startWorkers(3);
+    await Promise.all([first, second]);
+    expect(world.workerCount).toBe(3);
+    world.stopWorkers();
+  });
+
   it('rejects a bad worker count or minBodies by name and value, leaving the world and its workers as they were', async () => {
     const world = uniform(100)();
     const before = world.stateHash();

@@ -86,12 +86,14 @@ export class StepPipeline {
     contacts.clear();
     pairs.begin();
     this.narrowPhase.begin();
-    const grid = parallel ? this.parallelGrid() : null;
+    // `auto` chooses once per step: the parallel path asks which broad-phase it picked.
+    const broad = parallel && this.broadPhase instanceof AutoBroadPhase ? this.broadPhase.select(bodies) : this.broadPhase;
+    const grid = parallel && broad instanceof MaxGridBroadPhase ? this.parallelGrid(broad) : null;
     let pairTests: number;
     if (grid) {
-      pairTests = parallel!.findContacts(grid, this.parallelMaxGrid!.coordPad, contacts);
+      pairTests = parallel!.findContacts(grid, (broad as MaxGridBroadPhase).coordPad, contacts);
     } else {
-      pairTests = this.broadPhase.findPairs(bodies, pairs);
+      pairTests = broad.findPairs(bodies, pairs);
       pairs.flush();
     }
     const t3 = nowMs();
@@ -136,19 +138,13 @@ export class StepPipeline {
     stats.totalMs = t6 - t0;
   }
 
-  private parallelMaxGrid: MaxGridBroadPhase | null = null;
-
   /**
-   * The Max Grid the parallel step bins into, laid out for this step, or null when this step's
-   * broad-phase is another one (or Max Grid must run serially), which then runs as usual.
+   * The grid of `maxGrid`, on shared memory and laid out for this step, for the parallel step to
+   * bin into; null when this step's Max Grid must run serially (see layoutForThreads).
    */
-  private parallelGrid(): CellGrid | null {
-    const broad = this.broadPhase;
-    const used = broad instanceof AutoBroadPhase ? broad.select(this.bodies) : broad;
-    if (!(used instanceof MaxGridBroadPhase)) return null;
-    used.cellGrid.setShared(true);
-    this.parallelMaxGrid = used;
-    return used.layoutForThreads(this.bodies);
+  private parallelGrid(maxGrid: MaxGridBroadPhase): CellGrid | null {
+    maxGrid.cellGrid.setShared(true);
+    return maxGrid.layoutForThreads(this.bodies);
   }
 
   private readonly motion = {
