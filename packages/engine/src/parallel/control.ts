@@ -27,6 +27,8 @@ export const Slot = {
   failed: 15,
   /** Contacts in the step's canonical buffer. */
   contactTotal: 16,
+  /** 1: motion also computes each body's cell (the grid is laid out before motion). */
+  binInMotion: 17,
   /** MAX_THREADS cells: bodies in each thread's cell range, for the prefix sums. */
   blockTotal: 32,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */

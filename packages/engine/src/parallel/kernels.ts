@@ -140,20 +140,27 @@ export class ThreadKernels {
     const [from, to] = this.share(c[Slot.slotCount]);
     const integrate = INTEGRATORS[INTEGRATOR_IDS[c[Slot.integrator]]];
     const bounce = c[Slot.bounce] === 1;
+    // Only for worlds without holes, where slot k is body k and both shares are the same range.
+    const bin = c[Slot.binInMotion] === 1;
     // In cache-sized chunks, so that the walls test bodies integration has just brought in.
     for (let at = from; at < to; at += MOTION_CHUNK) {
       const end = Math.min(at + MOTION_CHUNK, to);
       integrate(this.bodies, p[Param.gravityX], p[Param.gravityY], p[Param.dt], at, end);
       if (bounce) bounceOffBox(this.bodies, p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold], at, end);
+      if (bin) this.binRange(at, end);
     }
   }
 
-  /** Each body's cell, for a body range: the same formula as CellGrid.bin. */
   private bin(): void {
+    const [from, to] = this.share(this.control[Slot.bodyCount]);
+    this.binRange(from, to);
+  }
+
+  /** Each body's cell, for a body range: the same formula as CellGrid.bin. */
+  private binRange(from: number, to: number): void {
     const c = this.control;
     const p = this.params;
     const columns = c[Slot.columns];
-    const [from, to] = this.share(c[Slot.bodyCount]);
     const binOf = this.grid.binOf;
     const { x, y } = this.bodies;
     const minX = p[Param.originX];

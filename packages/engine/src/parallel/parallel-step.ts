@@ -144,8 +144,13 @@ export class ParallelStep {
     this.workers.length = 0;
   }
 
-  /** Integrates every body, then (with `bounce`) bounces them off the box walls. */
-  motion(settings: MotionSettings, bounce: boolean): void {
+  /**
+   * Integrates every body, then (with `bounce`) bounces them off the box walls, then (with `grid`,
+   * already laid out) computes each body's cell in it.
+   */
+  motion(settings: MotionSettings, bounce: boolean, grid: CellGrid | null, coordPad: number): void {
+    if (grid) this.useGrid(grid, coordPad);
+    this.control[Slot.binInMotion] = grid ? 1 : 0;
     const c = this.control;
     const p = this.params;
     const b = this.bodies;
@@ -166,22 +171,17 @@ export class ParallelStep {
   }
 
   /**
-   * Bins every body into `grid` (already laid out over dense slots 0..n-1), scans it and
+   * Bins every body into `grid` (already laid out over dense slots 0..n-1; `binned` when motion
+   * already computed each body's cell), scans it and
    * narrow-phases the candidates on all threads, then appends each thread's contacts to
    * `contacts`, unsorted. Returns the pairs examined.
    */
-  findContacts(grid: CellGrid, coordPad: number, contacts: ContactBuffer): number {
+  findContacts(grid: CellGrid, coordPad: number, contacts: ContactBuffer, binned: boolean): number {
     const c = this.control;
-    const p = this.params;
-    this.caller.grid = grid;
-    c[Slot.bodyCount] = grid.count;
-    c[Slot.columns] = grid.columns;
-    c[Slot.rows] = grid.rows;
-    p[Param.originX] = grid.originX;
-    p[Param.originY] = grid.originY;
-    p[Param.inverseCell] = grid.inverse;
-    p[Param.coordPad] = coordPad;
-    this.run(Command.bin);
+    if (!binned) {
+      this.useGrid(grid, coordPad);
+      this.run(Command.bin);
+    }
     this.run(Command.count);
     this.run(Command.scatter);
     this.run(Command.scan);
@@ -235,6 +235,19 @@ export class ParallelStep {
 
   /** Contacts the last parallel solve deferred to its serial pass. */
   deferredContacts = 0;
+
+  private useGrid(grid: CellGrid, coordPad: number): void {
+    const c = this.control;
+    const p = this.params;
+    this.caller.grid = grid;
+    c[Slot.bodyCount] = grid.count;
+    c[Slot.columns] = grid.columns;
+    c[Slot.rows] = grid.rows;
+    p[Param.originX] = grid.originX;
+    p[Param.originY] = grid.originY;
+    p[Param.inverseCell] = grid.inverse;
+    p[Param.coordPad] = coordPad;
+  }
 
   /** Clamps the bodies of the step's contacts into the box. */
   clamp(box: { width: number; height: number }): void {

@@ -73,9 +73,15 @@ export class StepPipeline {
     const sweep = settings.continuous && this.continuous.needed(bodies, this.segments);
     if (sweep) this.continuous.rememberPositions(bodies);
 
-    // Without sweeps, parallel motion bounces off the walls in the same pass as integration.
+    // `auto` chooses once per step: the parallel path asks which broad-phase it picked.
+    const broad = parallel && this.broadPhase instanceof AutoBroadPhase ? this.broadPhase.select(bodies) : this.broadPhase;
+    // Without sweeps, parallel motion bounces off the walls in the same pass as integration; and
+    // in a box without holes, where the Max Grid spans the box whatever the positions, it also
+    // bins each body into the grid while the body is in cache.
     const bouncedInMotion = parallel !== null && !sweep;
-    if (parallel) parallel.motion(this.motionSettings(dt), bouncedInMotion);
+    const binInMotion = bouncedInMotion && box !== null && bodies.liveCount === bodies.slotCount && broad instanceof MaxGridBroadPhase;
+    let grid = binInMotion ? this.parallelGrid(broad as MaxGridBroadPhase) : null;
+    if (parallel) parallel.motion(this.motionSettings(dt), bouncedInMotion, grid, grid ? (broad as MaxGridBroadPhase).coordPad : 0);
     else INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
 
@@ -86,12 +92,11 @@ export class StepPipeline {
     contacts.clear();
     pairs.begin();
     this.narrowPhase.begin();
-    // `auto` chooses once per step: the parallel path asks which broad-phase it picked.
-    const broad = parallel && this.broadPhase instanceof AutoBroadPhase ? this.broadPhase.select(bodies) : this.broadPhase;
-    const grid = parallel && broad instanceof MaxGridBroadPhase ? this.parallelGrid(broad) : null;
+    const binned = grid !== null;
+    if (!binned && parallel && broad instanceof MaxGridBroadPhase) grid = this.parallelGrid(broad);
     let pairTests: number;
     if (grid) {
-      pairTests = parallel!.findContacts(grid, (broad as MaxGridBroadPhase).coordPad, contacts);
+      pairTests = parallel!.findContacts(grid, (broad as MaxGridBroadPhase).coordPad, contacts, binned);
     } else {
       pairTests = broad.findPairs(bodies, pairs);
       pairs.flush();
