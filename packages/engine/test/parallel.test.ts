@@ -66,8 +66,10 @@ describe('parallel step', () => {
     expect(await hashWith(build, 2, 30)).toBe(serial);
   });
 
-  it('falls back to serial stages where it must and still matches: hgrid, sleeping, events, forces', async () => {
+  it('falls back to serial stages where it must and still matches: hgrid, CCD and segments, sleeping, events, forces', async () => {
     await expectSameBits(() => buildWorld(buildScene('mixed', { n: 3000 }), { broadphase: 'auto' }), 30);
+    // Static pegs and segments: continuous sweeps between motion and the walls, segment contacts.
+    await expectSameBits(() => buildWorld(buildScene('funnel', { n: 400 })), 90);
     const busy = () => {
       const world = buildWorld(buildScene('seed-box', { n: 600, seed: 3 }), { sleeping: true, sleepSpeed: 40, contactEvents: true, hitEventThreshold: 50 });
       return world;
