@@ -129,15 +129,21 @@ export class ThreadKernels {
     }
   }
 
-  private share(total: number): [number, number] {
-    const threads = this.control[Slot.threads];
-    return [shareStart(total, this.index, threads), shareStart(total, this.index + 1, threads)];
+  /** Start of this thread's share of `total` items; `shareEnd` is its end (two numbers, not an array: kernels run every step). */
+  private shareFrom(total: number): number {
+    return shareStart(total, this.index, this.control[Slot.threads]);
+  }
+
+  private shareEnd(total: number): number {
+    return shareStart(total, this.index + 1, this.control[Slot.threads]);
   }
 
   private motion(): void {
     const c = this.control;
     const p = this.params;
-    const [from, to] = this.share(c[Slot.slotCount]);
+    const total = c[Slot.slotCount];
+    const from = this.shareFrom(total);
+    const to = this.shareEnd(total);
     const integrate = INTEGRATORS[INTEGRATOR_IDS[c[Slot.integrator]]];
     const bounce = c[Slot.bounce] === 1;
     // Only for worlds without holes, where slot k is body k and both shares are the same range.
@@ -152,7 +158,9 @@ export class ThreadKernels {
   }
 
   private bin(): void {
-    const [from, to] = this.share(this.control[Slot.bodyCount]);
+    const total = this.control[Slot.bodyCount];
+    const from = this.shareFrom(total);
+    const to = this.shareEnd(total);
     this.binRange(from, to);
   }
 
@@ -175,7 +183,9 @@ export class ThreadKernels {
    */
   private count(): void {
     const c = this.control;
-    const [from, to] = this.share(c[Slot.columns] * c[Slot.rows]);
+    const total = c[Slot.columns] * c[Slot.rows];
+    const from = this.shareFrom(total);
+    const to = this.shareEnd(total);
     const n = c[Slot.bodyCount];
     const { binOf, cellStart } = this.grid;
     cellStart.fill(0, from, to);
@@ -199,7 +209,8 @@ export class ThreadKernels {
     const c = this.control;
     const threads = c[Slot.threads];
     const cells = c[Slot.columns] * c[Slot.rows];
-    const [from, to] = this.share(cells);
+    const from = this.shareFrom(cells);
+    const to = this.shareEnd(cells);
     const n = c[Slot.bodyCount];
     const { binOf, cellStart, sortedSlot, sortedX, sortedY, sortedR } = this.grid;
     let end = 0;
@@ -264,7 +275,9 @@ export class ThreadKernels {
   private clamp(): void {
     const c = this.control;
     const p = this.params;
-    const [from, to] = this.share(c[Slot.slotCount]);
+    const total = c[Slot.slotCount];
+    const from = this.shareFrom(total);
+    const to = this.shareEnd(total);
     clampContactBodiesInRange(this.bodies, this.canonicalLo, this.canonicalHi, c[Slot.contactTotal], p[Param.boxWidth], p[Param.boxHeight], from, to);
   }
 
@@ -275,7 +288,9 @@ export class ThreadKernels {
       this.mark = new Int32Array(grownCapacity(this.mark.length, slots));
       this.stamp = 0;
     }
-    const [from, to] = this.share(c[Slot.contactTotal]);
+    const total = c[Slot.contactTotal];
+    const from = this.shareFrom(total);
+    const to = this.shareEnd(total);
     const settings = this.solverSettings;
     settings.restitutionThreshold = this.params[Param.restitutionThreshold];
     c[Slot.deferredCount + this.index] = solveContactBlock(this.bodies, this.canonicalLo, this.canonicalHi, from, to, settings, this.mark, ++this.stamp, this.deferred);

@@ -24,10 +24,15 @@ export interface StepStats {
   filteredPairs: number;
   /** Dynamic bodies asleep after the step. */
   sleepingBodies: number;
+  /**
+   * With worker threads and no continuous sweeps, this also covers the box walls (boundaryMs is
+   * then 0) and, in a box, binning bodies into the Max Grid.
+   */
   integrateMs: number;
   /** Continuous collision against static shapes, then the box walls. */
   boundaryMs: number;
   broadphaseMs: number;
+  /** With worker threads (startWorkers): the calling thread's own narrow-phase time. */
   narrowphaseMs: number;
   /** Canonical contact ordering plus impulses and separation. */
   solveMs: number;
