@@ -60,10 +60,12 @@ export interface MotionSettings {
  * publishes commands, runs thread 0's share itself and waits for the others.
  *
  * Which stages run in parallel, and why the bits do not change:
- * - motion (integrate, then the box walls): every body's update reads only that body;
- * - the Max Grid build (a counting sort split in count, totals, prefix and scatter passes) and
- *   the scan of row bands with the narrow-phase: each thread finds a disjoint share of the same
- *   contact set, and the step sorts contacts canonically before solving, as it always does;
+ * - motion (integrate, then the box walls, then in a box each body's cell): every body's update
+ *   reads only that body;
+ * - the Max Grid build (each body's cell per body range, then count and scatter per band of
+ *   cells, giving exactly the serial layout) and the scan of row bands with the narrow-phase:
+ *   each thread finds a disjoint share of the same contact set, and the step sorts contacts
+ *   canonically before solving, as it always does;
  * - solve: the canonical order is cut into one block per thread; each thread resolves the
  *   contacts of its block whose bodies no earlier block touches, and the caller then resolves
  *   the deferred rest in order, so every body sees the serial sequence of updates
@@ -115,7 +117,10 @@ export class ParallelStep {
     this.caller.deferred = new Int32Array(new SharedArrayBuffer(4 * 1024));
   }
 
-  /** Starts `threads - 1` workers; the caller is thread 0. Moves the body columns to shared memory. */
+  /**
+   * Starts `threads - 1` workers; the caller is thread 0. Moves the body columns and the contact
+   * buffer to shared memory. `grid` is where binning starts; each step passes the grid it uses.
+   */
   static async start(threads: number, bodies: BodyStore, contacts: ContactBuffer, grid: CellGrid): Promise<ParallelStep> {
     checkWorkerCount(threads);
     const why = threadsUnavailable();
