@@ -35,7 +35,9 @@ export const Slot = {
   contactCount: 64,
   /** MAX_THREADS cells: contacts each thread's solve block deferred. */
   deferredCount: 80,
-  length: 96,
+  /** MAX_THREADS cells: bodies each thread's solve block left outside the box. */
+  escapedCount: 96,
+  length: 112,
 } as const;
 
 export const Param = {
@@ -129,6 +131,7 @@ export interface BufferMessage {
   canonicalLo: SharedArrayBuffer;
   canonicalHi: SharedArrayBuffer;
   deferred: SharedArrayBuffer;
+  escaped: SharedArrayBuffer;
 }
 
 export interface InitMessage {

@@ -6,7 +6,7 @@ import { PairSink } from '../store/pair-sink.js';
 import type { ContactSink } from '../store/contact-buffer.js';
 import { INTEGRATORS } from '../integrate/integrator.js';
 import { bounceOffBox, clampContactBodiesInRange } from '../solver/box-walls.js';
-import { solveContactBlock, type SolverSettings } from '../solver/contact-solver.js';
+import { EscapeLog, solveContactBlock, type SolverSettings } from '../solver/contact-solver.js';
 import { grownCapacity } from '../util/grow.js';
 import { nowMs } from '../util/timer.js';
 import { BODY_COLUMNS, Command, INTEGRATOR_IDS, Param, RESULT_STRIDE, Result, Slot, shareStart, type BufferMessage } from './control.js';
@@ -48,6 +48,9 @@ export class ThreadKernels {
   canonicalLo: Int32Array = new Int32Array(0);
   canonicalHi: Int32Array = new Int32Array(0);
   deferred: Int32Array = new Int32Array(0);
+  /** Where solve blocks note bodies left outside the box: block [from, to) writes from 2 from. */
+  escaped: Int32Array = new Int32Array(0);
+  private readonly escapes = new EscapeLog();
   private mark = new Int32Array(0);
   private stamp = 0;
   private readonly solverSettings: SolverSettings = { restitutionThreshold: 0, hitThreshold: Infinity };
@@ -86,6 +89,7 @@ export class ThreadKernels {
     this.canonicalLo = new Int32Array(message.canonicalLo);
     this.canonicalHi = new Int32Array(message.canonicalHi);
     this.deferred = new Int32Array(message.deferred);
+    this.escaped = new Int32Array(message.escaped);
   }
 
   /** Points this thread's contact list at its shared arrays (after `install` or a regrowth). */
@@ -293,7 +297,10 @@ export class ThreadKernels {
     const to = this.shareEnd(total);
     const settings = this.solverSettings;
     settings.restitutionThreshold = this.params[Param.restitutionThreshold];
-    c[Slot.deferredCount + this.index] = solveContactBlock(this.bodies, this.canonicalLo, this.canonicalHi, from, to, settings, this.mark, ++this.stamp, this.deferred);
+    const p = this.params;
+    this.escapes.reset(this.escaped, 2 * from, p[Param.boxWidth], p[Param.boxHeight]);
+    c[Slot.deferredCount + this.index] = solveContactBlock(this.bodies, this.canonicalLo, this.canonicalHi, from, to, settings, this.mark, ++this.stamp, this.deferred, this.escapes);
+    c[Slot.escapedCount + this.index] = this.escapes.count;
   }
 }
 

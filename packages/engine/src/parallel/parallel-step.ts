@@ -2,7 +2,8 @@ import type { BodyStore } from '../store/body-store.js';
 import type { ContactBuffer } from '../store/contact-buffer.js';
 import type { CellGrid } from '../broadphase/cell-grid.js';
 import { grownCapacity } from '../util/grow.js';
-import { resolveContact, type SolverSettings } from '../solver/contact-solver.js';
+import { EscapeLog, resolveContact, type SolverSettings } from '../solver/contact-solver.js';
+import { clampBodies } from '../solver/box-walls.js';
 import { nowMs } from '../util/timer.js';
 import type { IntegratorName } from '../integrate/integrator.js';
 import {
@@ -115,6 +116,8 @@ export class ParallelStep {
     }
     this.caller.bindContactList();
     this.caller.deferred = new Int32Array(new SharedArrayBuffer(4 * 1024));
+    this.caller.escaped = new Int32Array(new SharedArrayBuffer(8 * 1024));
+    this.lateEscapes.list = new Int32Array(2 * 1024);
   }
 
   /**
@@ -211,31 +214,58 @@ export class ParallelStep {
    * thread, then the contacts they deferred, here, in order (see solveContactBlock). Only for
    * steps without events or sleepers, whose bookkeeping the solver would otherwise update.
    */
-  solve(settings: SolverSettings): void {
+  solve(settings: SolverSettings, box: { width: number; height: number } | null): void {
     const c = this.control;
     const count = this.canonical.count;
     c[Slot.contactTotal] = count;
     c[Slot.slotCount] = this.bodies.slotCount;
     this.params[Param.restitutionThreshold] = settings.restitutionThreshold;
-    if (this.caller.deferred.length < count) {
-      this.caller.deferred = new Int32Array(new SharedArrayBuffer(grownCapacity(this.caller.deferred.length, count) * 4));
+    this.params[Param.boxWidth] = box?.width ?? 0;
+    this.params[Param.boxHeight] = box?.height ?? 0;
+    const k = this.caller;
+    if (k.deferred.length < count) {
+      const capacity = grownCapacity(k.deferred.length, count);
+      k.deferred = new Int32Array(new SharedArrayBuffer(capacity * 4));
+      k.escaped = new Int32Array(new SharedArrayBuffer(capacity * 8));
+      this.lateEscapes.list = new Int32Array(2 * capacity);
       this.listsVersion++;
     }
-    this.caller.canonicalLo = this.canonical.lo;
-    this.caller.canonicalHi = this.canonical.hi;
+    k.canonicalLo = this.canonical.lo;
+    k.canonicalHi = this.canonical.hi;
     this.run(Command.solve);
     const { lo, hi } = this.canonical;
-    const deferred = this.caller.deferred;
+    const deferred = k.deferred;
+    const late = this.lateEscapes;
+    late.reset(late.list, 0, box?.width ?? 0, box?.height ?? 0);
     this.deferredContacts = 0;
     for (let t = 0; t < this.threads; t++) {
       const from = shareStart(count, t, this.threads);
       const waiting = c[Slot.deferredCount + t];
       this.deferredContacts += waiting;
       for (let q = 0; q < waiting; q++) {
-        const k = deferred[from + q];
-        resolveContact(this.bodies, lo[k], hi[k], settings, null);
+        const at = deferred[from + q];
+        resolveContact(this.bodies, lo[at], hi[at], settings, null);
+        late.note(this.bodies, lo[at], hi[at]);
       }
     }
+  }
+
+  /** Bodies the deferred pass of `solve` left outside the box. */
+  private readonly lateEscapes = new EscapeLog();
+
+  /**
+   * After `solve`: clamps into the box just the bodies that the solve noted outside it, on this
+   * thread (a handful per step, against every contact body for `clamp`).
+   */
+  clampEscaped(box: { width: number; height: number }): void {
+    const c = this.control;
+    const count = this.canonical.count;
+    const escaped = this.caller.escaped;
+    for (let t = 0; t < this.threads; t++) {
+      const from = 2 * shareStart(count, t, this.threads);
+      clampBodies(this.bodies, escaped, from, from + c[Slot.escapedCount + t], box.width, box.height);
+    }
+    clampBodies(this.bodies, this.lateEscapes.list, 0, this.lateEscapes.count, box.width, box.height);
   }
 
   /** Contacts the last parallel solve deferred to its serial pass. */
@@ -254,7 +284,7 @@ export class ParallelStep {
     p[Param.coordPad] = coordPad;
   }
 
-  /** Clamps the bodies of the step's contacts into the box. */
+  /** Clamps the bodies of the step's contacts into the box (when the solve ran serially). */
   clamp(box: { width: number; height: number }): void {
     this.params[Param.boxWidth] = box.width;
     this.params[Param.boxHeight] = box.height;
@@ -352,6 +382,7 @@ export class ParallelStep {
       canonicalLo: this.canonical.lo.buffer as SharedArrayBuffer,
       canonicalHi: this.canonical.hi.buffer as SharedArrayBuffer,
       deferred: k.deferred.buffer as SharedArrayBuffer,
+      escaped: k.escaped.buffer as SharedArrayBuffer,
     };
     for (const worker of this.workers) worker.postMessage(message);
     this.control[Slot.epoch] = epoch;

@@ -92,6 +92,19 @@ export function clampContactBodiesInRange(
   }
 }
 
+/** Whether clampBody would move body i: the same tests, for noting escapes as they happen. */
+export function outsideBox(bodies: BodyStore, i: number, width: number, height: number): boolean {
+  const r = bodies.radius[i];
+  const px = bodies.x[i];
+  const py = bodies.y[i];
+  return px < r || px > width - r || py < r || py > height - r;
+}
+
+/** clampBody for each of `slots[from..to)`. */
+export function clampBodies(bodies: BodyStore, slots: Int32Array, from: number, to: number, width: number, height: number): void {
+  for (let k = from; k < to; k++) clampBody(bodies, slots[k], width, height);
+}
+
 function clampBody(bodies: BodyStore, i: number, width: number, height: number): void {
   const t = bodies.type[i];
   if (t !== TypeCode.dynamic && t !== TypeCode.kinematic) return;

@@ -1,6 +1,7 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { ContactBuffer } from '../store/contact-buffer.js';
 import { mixRestitution } from './restitution.js';
+import { outsideBox } from './box-walls.js';
 import type { ContactEvents } from '../store/contact-events.js';
 
 /**
@@ -53,6 +54,7 @@ export function solveContactBlock(
   mark: Int32Array,
   stamp: number,
   deferred: Int32Array,
+  escapes: EscapeLog,
 ): number {
   for (let k = 0; k < from; k++) {
     mark[lo[k]] = stamp;
@@ -69,8 +71,37 @@ export function solveContactBlock(
       continue;
     }
     resolveContact(bodies, i, j, settings, null);
+    escapes.note(bodies, i, j);
   }
   return waiting;
+}
+
+/**
+ * Bodies that separation pushed out of the box, noted as it happens, so that correct clamps just
+ * those instead of every contact body: a body can only end the solve outside if some contact left
+ * it outside, and clamping one that came back inside changes nothing. Writes slots to
+ * `list[at..at+count)`; with width 0 (no box) it notes nothing.
+ */
+export class EscapeLog {
+  list: Int32Array = new Int32Array(0);
+  at = 0;
+  count = 0;
+  width = 0;
+  height = 0;
+
+  reset(list: Int32Array, at: number, width: number, height: number): void {
+    this.list = list;
+    this.at = at;
+    this.count = 0;
+    this.width = width;
+    this.height = height;
+  }
+
+  note(bodies: BodyStore, i: number, j: number): void {
+    if (this.width === 0) return;
+    if (outsideBox(bodies, i, this.width, this.height)) this.list[this.at + this.count++] = i;
+    if (outsideBox(bodies, j, this.width, this.height)) this.list[this.at + this.count++] = j;
+  }
 }
 
 /** Resolves one contact (lo slot i, hi slot j): the body of the loop described above. */

@@ -105,13 +105,15 @@ export class StepPipeline {
 
     contacts.sortCanonical(bodies.slotCount);
     events?.clear();
-    if (parallel && events === null && bodies.sleepingCount === 0) parallel.solve(settings.solver);
+    const solvedInParallel = parallel !== null && events === null && bodies.sleepingCount === 0;
+    if (solvedInParallel) parallel.solve(settings.solver, box);
     else solveContacts(bodies, contacts, events, settings.solver);
     const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver.restitutionThreshold);
     const t4 = nowMs();
 
     if (box) {
-      if (parallel && segmentContacts === 0) parallel.clamp(box);
+      if (solvedInParallel && segmentContacts === 0) parallel.clampEscaped(box);
+      else if (parallel && segmentContacts === 0) parallel.clamp(box);
       else clampIntoBox(bodies, box.width, box.height, segmentContacts > 0 ? null : contacts);
     }
     const t5 = nowMs();
