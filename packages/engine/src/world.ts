@@ -294,7 +294,8 @@ export class World {
    * (worker_threads in Node, module Web Workers in browsers, which need a cross-origin isolated
    * page for SharedArrayBuffer). Resolves once they are running; until then steps run on this
    * thread. Motion, the Max Grid broad-phase with the narrow-phase, the solver and correct run in
-   * parallel. The result is the same bits for any worker count, and as without workers. `views()` must be taken again afterwards: the columns move to shared memory.
+   * parallel. The result is the same bits for any worker count, and as without workers.
+   * `views()` must be taken again afterwards: the columns move to shared memory.
    */
   async startWorkers(workerCount: number, options: { minBodies?: number } = {}): Promise<void> {
     checkWorkerCount(workerCount);
@@ -302,8 +303,7 @@ export class World {
     if (!Number.isSafeInteger(minBodies) || minBodies < 0) throw new RangeError(`minBodies must be a non-negative integer, got ${minBodies}`);
     this.stopWorkers();
     const started = this.workerStarts;
-    const grid = new MaxGridBroadPhase().cellGrid;
-    const parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts, grid);
+    const parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts);
     if (started !== this.workerStarts) {
       // stopWorkers (or another startWorkers) was called while these were starting: it wins.
       parallel.stop();

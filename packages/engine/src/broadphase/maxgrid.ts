@@ -43,11 +43,12 @@ export class MaxGridBroadPhase implements BroadPhase {
   }
 
   /**
-   * For a parallel step: measures the bodies and sizes the grid without binning them, which the
-   * step's threads then do. Returns null where the serial `findPairs` must run instead: fewer than
-   * two bodies, or holes in the slots (the parallel passes bin slots 0..n-1).
+   * For a parallel step: measures the bodies and sizes the grid, on shared memory, without binning
+   * them, which the step's threads then do. Returns null where the serial `findPairs` must run
+   * instead: fewer than two bodies, or holes in the slots (the parallel passes bin slots 0..n-1).
    */
   layoutForThreads(bodies: BodyStore): CellGrid | null {
+    this.grid.setShared(true);
     const live = this.live;
     live.measure(bodies);
     if (live.count < 2 || !live.dense) return null;
@@ -59,11 +60,6 @@ export class MaxGridBroadPhase implements BroadPhase {
   /** Absolute padding of the last measured extent (see fat-bounds.ts). */
   get coordPad(): number {
     return this.live.coordPad;
-  }
-
-  /** The grid, so that a parallel step can move its buffers to shared memory. */
-  get cellGrid(): CellGrid {
-    return this.grid;
   }
 
   memoryBytes(): number {

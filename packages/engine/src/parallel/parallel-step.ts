@@ -1,6 +1,6 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { ContactBuffer } from '../store/contact-buffer.js';
-import type { CellGrid } from '../broadphase/cell-grid.js';
+import { CellGrid } from '../broadphase/cell-grid.js';
 import { grownCapacity } from '../util/grow.js';
 import { EscapeLog, resolveContact, type SolverSettings } from '../solver/contact-solver.js';
 import { clampBodies } from '../solver/box-walls.js';
@@ -102,13 +102,12 @@ export class ParallelStep {
     control: Int32Array,
     params: Float64Array,
     results: Float64Array,
-    grid: CellGrid,
   ) {
     this.threads = workers.length + 1;
     this.control = control;
     this.params = params;
     this.results = results;
-    this.caller = new ThreadKernels(0, control, params, results, bodies, grid);
+    this.caller = new ThreadKernels(0, control, params, results, bodies, new CellGrid());
     control[Slot.threads] = this.threads;
     for (let t = 0; t < this.threads; t++) {
       this.caller.contactLo.push(new Int32Array(new SharedArrayBuffer(4 * 1024)));
@@ -122,9 +121,9 @@ export class ParallelStep {
 
   /**
    * Starts `threads - 1` workers; the caller is thread 0. Moves the body columns and the contact
-   * buffer to shared memory. `grid` is where binning starts; each step passes the grid it uses.
+   * buffer to shared memory. Each step then passes the grid it bins into.
    */
-  static async start(threads: number, bodies: BodyStore, contacts: ContactBuffer, grid: CellGrid): Promise<ParallelStep> {
+  static async start(threads: number, bodies: BodyStore, contacts: ContactBuffer): Promise<ParallelStep> {
     checkWorkerCount(threads);
     const why = threadsUnavailable();
     if (why) throw new Error(`cannot start worker threads: ${why}`);
@@ -142,8 +141,7 @@ export class ParallelStep {
     }
     bodies.setShared(true);
     contacts.setShared(true);
-    grid.setShared(true);
-    return new ParallelStep(bodies, contacts, workers, control, params, results, grid);
+    return new ParallelStep(bodies, contacts, workers, control, params, results);
   }
 
   stop(): void {
@@ -237,11 +235,9 @@ export class ParallelStep {
     const deferred = k.deferred;
     const late = this.lateEscapes;
     late.reset(late.list, 0, box?.width ?? 0, box?.height ?? 0);
-    this.deferredContacts = 0;
     for (let t = 0; t < this.threads; t++) {
       const from = shareStart(count, t, this.threads);
       const waiting = c[Slot.deferredCount + t];
-      this.deferredContacts += waiting;
       for (let q = 0; q < waiting; q++) {
         const at = deferred[from + q];
         resolveContact(this.bodies, lo[at], hi[at], settings, null);
@@ -267,9 +263,6 @@ export class ParallelStep {
     }
     clampBodies(this.bodies, this.lateEscapes.list, 0, this.lateEscapes.count, box.width, box.height);
   }
-
-  /** Contacts the last parallel solve deferred to its serial pass. */
-  deferredContacts = 0;
 
   private useGrid(grid: CellGrid, coordPad: number): void {
     const c = this.control;
@@ -300,7 +293,7 @@ export class ParallelStep {
     for (let t = 0; t < this.threads; t++) {
       bytes += this.caller.contactLo[t].byteLength * 2;
     }
-    return bytes;
+    return bytes + this.caller.deferred.byteLength + this.caller.escaped.byteLength + this.lateEscapes.list.byteLength;
   }
 
   /** Publishes a command, runs the caller's share, waits for every worker. */

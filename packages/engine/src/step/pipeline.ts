@@ -17,7 +17,6 @@ import { nowMs } from '../util/timer.js';
 import type { MotionSettings, ParallelStep } from '../parallel/parallel-step.js';
 import { AutoBroadPhase } from '../broadphase/auto.js';
 import { MaxGridBroadPhase } from '../broadphase/maxgrid.js';
-import type { CellGrid } from '../broadphase/cell-grid.js';
 
 export interface StepSettings {
   gravity: { x: number; y: number };
@@ -80,7 +79,7 @@ export class StepPipeline {
     // bins each body into the grid while the body is in cache.
     const bouncedInMotion = parallel !== null && !sweep;
     const binInMotion = bouncedInMotion && box !== null && bodies.liveCount === bodies.slotCount && broad instanceof MaxGridBroadPhase;
-    let grid = binInMotion ? this.parallelGrid(broad as MaxGridBroadPhase) : null;
+    let grid = binInMotion ? (broad as MaxGridBroadPhase).layoutForThreads(bodies) : null;
     if (parallel) parallel.motion(this.motionSettings(dt), bouncedInMotion, grid, grid ? (broad as MaxGridBroadPhase).coordPad : 0);
     else INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
@@ -93,7 +92,7 @@ export class StepPipeline {
     pairs.begin();
     this.narrowPhase.begin();
     const binned = grid !== null;
-    if (!binned && parallel && broad instanceof MaxGridBroadPhase) grid = this.parallelGrid(broad);
+    if (!binned && parallel && broad instanceof MaxGridBroadPhase) grid = broad.layoutForThreads(bodies);
     let pairTests: number;
     if (grid) {
       pairTests = parallel!.findContacts(grid, (broad as MaxGridBroadPhase).coordPad, contacts, binned);
@@ -143,15 +142,6 @@ export class StepPipeline {
     stats.correctMs = t5 - t4;
     stats.reportMs = t6 - t5;
     stats.totalMs = t6 - t0;
-  }
-
-  /**
-   * The grid of `maxGrid`, on shared memory and laid out for this step, for the parallel step to
-   * bin into; null when this step's Max Grid must run serially (see layoutForThreads).
-   */
-  private parallelGrid(maxGrid: MaxGridBroadPhase): CellGrid | null {
-    maxGrid.cellGrid.setShared(true);
-    return maxGrid.layoutForThreads(this.bodies);
   }
 
   private readonly motion = {

@@ -50,12 +50,19 @@ export class ContactBuffer implements ContactSink {
     this.count++;
   }
 
-  /** Appends `count` pairs from other arrays (a worker thread's contacts). */
+  /**
+   * Appends `count` pairs from other arrays (a worker thread's contacts). A loop, not
+   * `set(subarray(...))`: a subarray is a new object, and this runs every parallel step.
+   */
   append(lo: Int32Array, hi: Int32Array, count: number): void {
     const at = this.count;
     if (at + count > this.lo.length) this.growPairs(at + count);
-    this.lo.set(lo.subarray(0, count), at);
-    this.hi.set(hi.subarray(0, count), at);
+    const toLo = this.lo;
+    const toHi = this.hi;
+    for (let k = 0; k < count; k++) {
+      toLo[at + k] = lo[k];
+      toHi[at + k] = hi[k];
+    }
     this.count = at + count;
   }
 

@@ -31,8 +31,3 @@ export function grow<T extends Column>(old: T, capacity: number, shared = false)
   next.set(old.subarray(0, Math.min(old.length, capacity)) as never);
   return next;
 }
-
-/** Whether an array lives on shared memory. */
-export function isShared(column: Column): boolean {
-  return typeof SharedArrayBuffer !== 'undefined' && column.buffer instanceof SharedArrayBuffer;
-}
