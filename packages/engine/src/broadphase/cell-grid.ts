@@ -2,12 +2,17 @@ import type { BodyStore } from '../store/body-store.js';
 import type { PairSink } from '../store/pair-sink.js';
 import { allocateLike, grownCapacity } from '../util/grow.js';
 import { RADIUS_PAD } from './fat-bounds.js';
+import { GridKernel, gridKernelEnabled } from './grid-kernel.js';
 
 /**
  * One uniform grid over a set of bodies, built by counting sort: count per cell, prefix sum,
  * scatter. O(bodies + cells), nothing allocated per cell, and the scatter copies each body's x, y
  * and (padded) radius into cell order so that scans read memory sequentially instead of chasing
  * slots. Cells are row-major, so a run of cells in one row is one contiguous range of bodies.
+ *
+ * Where WebAssembly is available the arrays live in a GridKernel's memory and binning (of slots
+ * 0..n-1) and scanning run there, with the same results bit for bit; the loops below are the
+ * TypeScript path, used without WebAssembly, for grids over slot lists, and by parallel threads.
  *
  * Correctness rests on one rule, kept by the callers: the cell size is at least the largest
  * contact distance between a body in this grid and any body tested against it, so touching
@@ -34,6 +39,21 @@ export class CellGrid {
   shared = false;
   /** Bumped whenever the buffers are reallocated. */
   layoutVersion = 0;
+  /** Whether binning and scanning run in WebAssembly (known from the first layout on). */
+  get usesKernel(): boolean {
+    return !!this.kernel;
+  }
+  /** The WebAssembly arrays and loops: undefined until the first layout, null on the TypeScript path. */
+  private kernel: GridKernel | null | undefined = undefined;
+  /** Whether kernels were enabled when this grid was made (see setGridKernelEnabled). */
+  private readonly kernelWanted = gridKernelEnabled();
+  private kernelViews = -1;
+  // Slot-ordered views of the bodies' columns that the kernel bins from, remade only when the
+  // columns or the count change, so that a warm step allocates nothing.
+  private sourceX: Float64Array | null = null;
+  private sourceY: Float64Array | null = null;
+  private sourceR: Float64Array | null = null;
+  private sourceColumns: Float64Array | null = null;
 
   /**
    * Sizes the grid over the extent [minX, maxX] x [minY, maxY] with cells of at least
@@ -84,6 +104,20 @@ export class CellGrid {
     const { columns, rows, originX: minX, originY: minY, inverse: inv } = this;
     const cells = columns * rows;
     const { x, y, radius } = bodies;
+    const kernel = this.kernel;
+    if (kernel && slots === null) {
+      if (this.sourceColumns !== x || this.sourceX!.length !== n || this.sourceY!.buffer !== y.buffer || this.sourceR!.buffer !== radius.buffer) {
+        this.sourceColumns = x;
+        this.sourceX = x.subarray(0, n);
+        this.sourceY = y.subarray(0, n);
+        this.sourceR = radius.subarray(0, n);
+      }
+      kernel.inputX.set(this.sourceX!);
+      kernel.inputY.set(this.sourceY!);
+      kernel.inputR.set(this.sourceR!);
+      kernel.bin(n, minX, minY, inv, columns, cells, 1 + RADIUS_PAD);
+      return;
+    }
     const { cellStart, binOf, sortedSlot, sortedX, sortedY, sortedR } = this;
     cellStart.fill(0, 0, cells + 2);
     // Offsets are >= 0 and below 2^31, so `| 0` truncates exactly as Math.floor would, faster.
@@ -126,6 +160,14 @@ export class CellGrid {
    */
   scanRows(out: PairSink, pad: number, rowFrom: number, rowTo: number): number {
     const { cellStart, sortedSlot, sortedX, sortedY, sortedR, columns, rows } = this;
+    const kernel = this.kernel;
+    if (kernel) {
+      const found = kernel.scan(columns, rows, rowFrom, rowTo, pad);
+      if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
+      const pairs = kernel.pairs;
+      for (let p = 0; p < 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
+      return kernel.examined;
+    }
     let examined = 0;
     // Cell by cell, row-major: each cell's two neighbour ranges are found once for all its bodies,
     // and no per-body cell index is needed. Empty cells cost one comparison.
@@ -201,6 +243,7 @@ export class CellGrid {
   }
 
   memoryBytes(): number {
+    if (this.kernel) return this.kernel.memoryBytes();
     return (
       this.cellStart.byteLength +
       this.sortedSlot.byteLength * 2 +
@@ -214,10 +257,21 @@ export class CellGrid {
     this.shared = shared;
     this.cellStart = new Int32Array(2);
     this.sortedSlot = new Int32Array(0);
+    // Threads share SharedArrayBuffers, not this grid's WebAssembly memory: back to the TypeScript
+    // path, and to a fresh kernel when the grid is private again.
+    this.kernel = undefined;
+    this.kernelViews = -1;
   }
 
   private ensure(n: number, cells: number): void {
     const shared = this.shared;
+    if (this.kernel === undefined) this.kernel = shared || !this.kernelWanted ? null : GridKernel.create();
+    const kernel = this.kernel;
+    if (kernel) {
+      kernel.ensure(n, cells);
+      if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
+      return;
+    }
     if (this.cellStart.length < cells + 2) {
       this.cellStart = allocateLike(this.cellStart, grownCapacity(this.cellStart.length, cells + 2), shared);
       this.layoutVersion++;
@@ -229,6 +283,17 @@ export class CellGrid {
     this.sortedX = allocateLike(this.sortedX, capacity, shared);
     this.sortedY = allocateLike(this.sortedY, capacity, shared);
     this.sortedR = allocateLike(this.sortedR, capacity, shared);
+    this.layoutVersion++;
+  }
+
+  private adoptKernelViews(kernel: GridKernel): void {
+    this.cellStart = kernel.cellStart;
+    this.binOf = kernel.binOf;
+    this.sortedSlot = kernel.sortedSlot;
+    this.sortedX = kernel.sortedX;
+    this.sortedY = kernel.sortedY;
+    this.sortedR = kernel.sortedR;
+    this.kernelViews = kernel.viewVersion;
     this.layoutVersion++;
   }
 }

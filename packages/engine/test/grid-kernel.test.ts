@@ -1,0 +1,135 @@
+import { afterEach, describe, expect, it } from 'vitest';
+import fc from 'fast-check';
+import { buildScene, buildWorld } from '@maxgrid/scenes';
+import { World, type WorldOptions } from '../src/index.js';
+import { BodyStore } from '../src/store/body-store.js';
+import { TypeCode } from '../src/store/body-types.js';
+import { CellGrid } from '../src/broadphase/cell-grid.js';
+import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
+import type { PairSink } from '../src/store/pair-sink.js';
+
+// The grid's WebAssembly kernel must be the TypeScript loops bit for bit: same pairs in the same
+// order, so every world steps to the same state whichever path its grids took.
+
+afterEach(() => setGridKernelEnabled(true));
+
+/** A grid made with the kernel on or off. */
+function gridWith(kernel: boolean): CellGrid {
+  setGridKernelEnabled(kernel);
+  const grid = new CellGrid();
+  setGridKernelEnabled(true);
+  return grid;
+}
+
+function pairsOf(grid: CellGrid, store: BodyStore, cellSize: number): { pairs: number[]; examined: number } {
+  const pairs: number[] = [];
+  const sink = { push: (a: number, b: number) => pairs.push(a, b) } as unknown as PairSink;
+  let minX = Infinity;
+  let minY = Infinity;
+  let maxX = -Infinity;
+  let maxY = -Infinity;
+  for (let i = 0; i < store.slotCount; i++) {
+    minX = Math.min(minX, store.x[i]);
+    maxX = Math.max(maxX, store.x[i]);
+    minY = Math.min(minY, store.y[i]);
+    maxY = Math.max(maxY, store.y[i]);
+  }
+  grid.build(store, null, 0, store.slotCount, minX, minY, maxX, maxY, cellSize, 4 * store.slotCount + 64);
+  const examined = grid.scanSelf(sink, 0);
+  return { pairs, examined };
+}
+
+function storeOf(list: { x: number; y: number; r: number }[]): BodyStore {
+  const store = new BodyStore();
+  for (const c of list) {
+    store.add({ x: c.x, y: c.y, vx: 0, vy: 0, radius: c.r, mass: 1, restitution: 1, type: TypeCode.dynamic, category: 1, mask: 0xffffffff, gravityScale: 1, linearDamping: 0 });
+  }
+  return store;
+}
+
+function runHash(build: () => World, steps: number, kernel: boolean, mutate?: (world: World, step: number) => void): string {
+  setGridKernelEnabled(kernel);
+  const world = build();
+  try {
+    for (let s = 0; s < steps; s++) {
+      mutate?.(world, s);
+      world.step(1 / 60);
+    }
+    return world.stateHash();
+  } finally {
+    setGridKernelEnabled(true);
+  }
+}
+
+describe('grid WebAssembly kernel', () => {
+  it('runs in this runtime (so the comparisons below compare two paths)', () => {
+    const store = storeOf([
+      { x: 0, y: 0, r: 1 },
+      { x: 1.5, y: 0, r: 1 },
+    ]);
+    const on = gridWith(true);
+    const off = gridWith(false);
+    expect(pairsOf(on, store, 2).pairs).toEqual([0, 1]);
+    expect(pairsOf(off, store, 2).pairs).toEqual([0, 1]);
+    expect(on.usesKernel).toBe(true);
+    expect(off.usesKernel).toBe(false);
+  });
+
+  it('finds the same pairs in the same order, and examines as many, as the TypeScript loops', () => {
+    const circle = fc.record({
+      x: fc.double({ min: -500, max: 500, noNaN: true }),
+      y: fc.double({ min: -500, max: 500, noNaN: true }),
+      r: fc.double({ min: 0.5, max: 20, noNaN: true }),
+    });
+    // One pair of grids reused across cases, so that layouts grow and shrink between builds.
+    const on = gridWith(true);
+    const off = gridWith(false);
+    fc.assert(
+      fc.property(fc.array(circle, { minLength: 2, maxLength: 300 }), (list) => {
+        const store = storeOf(list);
+        const cell = 2 * Math.max(...list.map((c) => c.r)) * (1 + 2 ** -20);
+        const a = pairsOf(on, store, cell);
+        const b = pairsOf(off, store, cell);
+        expect(a.pairs).toEqual(b.pairs);
+        expect(a.examined).toBe(b.examined);
+      }),
+      { numRuns: 60 },
+    );
+  });
+
+  it('grows its pair buffer past the first 1,024 pairs and still returns every pair', () => {
+    // 2,500 circles on a 50x50 lattice, each touching its 8 neighbours: 9,702 pairs.
+    const list = [];
+    for (let i = 0; i < 50; i++) for (let j = 0; j < 50; j++) list.push({ x: i * 1.5, y: j * 1.5, r: 1.1 });
+    const store = storeOf(list);
+    const a = pairsOf(gridWith(true), store, 2.2 * (1 + 2 ** -20));
+    const b = pairsOf(gridWith(false), store, 2.2 * (1 + 2 ** -20));
+    expect(a.pairs.length / 2).toBe(2 * 49 * 50 + 2 * 49 * 49);
+    expect(a.pairs).toEqual(b.pairs);
+  });
+
+  const scenes: [string, string, number, WorldOptions['broadphase']][] = [
+    ['uniform', 'maxgrid', 3000, 'maxgrid'],
+    ['seed-box', 'maxgrid', 2000, 'maxgrid'],
+    ['mixed', 'hgrid', 3000, 'hgrid'],
+    ['mixed', 'auto', 3000, 'auto'],
+  ];
+  it.each(scenes)('steps scene %s with %s to the same state hash with and without the kernel', (scene, _label, n, broadphase) => {
+    const build = () => buildWorld(buildScene(scene, { n, seed: 7 }), { broadphase });
+    expect(runHash(build, 40, true)).toBe(runHash(build, 40, false));
+  });
+
+  it('agrees through growth, holes and an unbounded world', () => {
+    const build = () => {
+      const world = new World({ broadphase: 'maxgrid', gravity: { x: 0, y: -50 } });
+      for (let i = 0; i < 400; i++) world.createCircle({ x: (i % 20) * 9, y: Math.floor(i / 20) * 9, radius: 4 + (i % 3), vx: (i % 7) - 3, vy: (i % 5) - 2 });
+      return world;
+    };
+    const mutate = (world: World, step: number) => {
+      // Step 10: twice as many bodies (the kernel's arrays move); step 20: holes (the slot-list bin).
+      if (step === 10) for (let i = 0; i < 400; i++) world.createCircle({ x: 200 + (i % 20) * 9, y: (i / 20) * 9, radius: 5 });
+      if (step === 20) for (let h = 0; h < 800; h += 7) world.destroyBody(h);
+    };
+    expect(runHash(build, 40, true, mutate)).toBe(runHash(build, 40, false, mutate));
+  });
+});
