@@ -2,7 +2,7 @@ import type { BodyStore } from '../store/body-store.js';
 import type { PairSink } from '../store/pair-sink.js';
 import { allocateLike, grownCapacity } from '../util/grow.js';
 import { RADIUS_PAD } from './fat-bounds.js';
-import { GridKernel, gridKernelEnabled } from './grid-kernel.js';
+import { GridKernel, gridKernelEnabled, type KernelLayout, type KernelMemory } from './grid-kernel.js';
 
 /**
  * One uniform grid over a set of bodies, built by counting sort: count per cell, prefix sum,
@@ -47,6 +47,11 @@ export class CellGrid {
   private kernel: GridKernel | null | undefined = undefined;
   /** Whether kernels were enabled when this grid was made (see setGridKernelEnabled). */
   private readonly kernelWanted = gridKernelEnabled();
+  /** Threads that scan a shared grid, each into its own pair buffer; this grid's scans use `pairRegion`. */
+  private threads = 1;
+  pairRegion = 0;
+  /** The most pairs a shared scan found beyond its buffer: the caller grows the buffers after the stage. */
+  pairsWanted = 0;
   private kernelViews = -1;
   // Slot-ordered views of the bodies' columns that the kernel bins from, remade only when the
   // columns or the count change, so that a warm step allocates nothing.
@@ -159,15 +164,34 @@ export class CellGrid {
    * disjoint sets of pairs, whose union is scanSelf's, so threads can scan bands side by side.
    */
   scanRows(out: PairSink, pad: number, rowFrom: number, rowTo: number): number {
-    const { cellStart, sortedSlot, sortedX, sortedY, sortedR, columns, rows } = this;
     const kernel = this.kernel;
     if (kernel) {
-      const found = kernel.scan(columns, rows, rowFrom, rowTo, pad);
+      const found = kernel.scan(this.columns, this.rows, rowFrom, rowTo, pad, this.pairRegion);
       if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
-      const pairs = kernel.pairs;
-      for (let p = 0; p < 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
-      return kernel.examined;
+      if (found <= kernel.pairCapacity) {
+        const pairs = kernel.pairs;
+        const base = 2 * this.pairRegion * kernel.pairCapacity;
+        for (let p = base; p < base + 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
+        return kernel.examined;
+      }
+      // A shared buffer overflowed: this band takes the TypeScript loops, the same pairs.
+      this.pairsWanted = Math.max(this.pairsWanted, found);
     }
+    return this.scanRowsInScript(out, pad, rowFrom, rowTo);
+  }
+
+  /** Grows a shared grid's pair buffers to `pairsWanted`, between stages; true when they grew. */
+  growPairBuffers(): boolean {
+    const kernel = this.kernel;
+    if (!kernel || this.pairsWanted <= kernel.pairCapacity) return false;
+    kernel.growPairs(this.pairsWanted);
+    this.adoptKernelViews(kernel);
+    return true;
+  }
+
+  /** scanRows' TypeScript loops. */
+  private scanRowsInScript(out: PairSink, pad: number, rowFrom: number, rowTo: number): number {
+    const { cellStart, sortedSlot, sortedX, sortedY, sortedR, columns, rows } = this;
     let examined = 0;
     // Cell by cell, row-major: each cell's two neighbour ranges are found once for all its bodies,
     // and no per-body cell index is needed. Empty cells cost one comparison.
@@ -251,21 +275,25 @@ export class CellGrid {
     );
   }
 
-  /** Moves the buffers onto shared memory (or back); the next `layout` reallocates them. */
-  setShared(shared: boolean): void {
-    if (shared === this.shared) return;
+  /**
+   * Moves the buffers onto shared memory for `threads` threads (or back); the next `layout`
+   * reallocates them.
+   */
+  setShared(shared: boolean, threads = 1): void {
+    if (shared === this.shared && threads === this.threads) return;
     this.shared = shared;
+    this.threads = shared ? threads : 1;
     this.cellStart = new Int32Array(2);
     this.sortedSlot = new Int32Array(0);
-    // Threads share SharedArrayBuffers, not this grid's WebAssembly memory: back to the TypeScript
-    // path, and to a fresh kernel when the grid is private again.
+    // A private kernel's memory cannot be shared, nor a shared one's pair buffers re-counted: a
+    // fresh kernel of the right kind comes with the next layout.
     this.kernel = undefined;
     this.kernelViews = -1;
   }
 
   private ensure(n: number, cells: number): void {
     const shared = this.shared;
-    if (this.kernel === undefined) this.kernel = shared || !this.kernelWanted ? null : GridKernel.create();
+    if (this.kernel === undefined) this.kernel = this.kernelWanted ? GridKernel.create(shared, this.threads) : null;
     const kernel = this.kernel;
     if (kernel) {
       kernel.ensure(n, cells);
@@ -284,6 +312,21 @@ export class CellGrid {
     this.sortedY = allocateLike(this.sortedY, capacity, shared);
     this.sortedR = allocateLike(this.sortedR, capacity, shared);
     this.layoutVersion++;
+  }
+
+  /** The shared memory and layout that worker threads attach to, or null on the TypeScript path. */
+  get kernelShare(): { memory: KernelMemory; layout: KernelLayout } | null {
+    const kernel = this.kernel;
+    return kernel && kernel.shared ? { memory: kernel.memory, layout: kernel.layout } : null;
+  }
+
+  /** A worker's view of the caller's shared kernel grid (see kernelShare). */
+  attachKernel(memory: KernelMemory, layout: KernelLayout): boolean {
+    const kernel = GridKernel.attach(memory, layout);
+    if (!kernel) return false;
+    this.kernel = kernel;
+    this.adoptKernelViews(kernel);
+    return true;
   }
 
   private adoptKernelViews(kernel: GridKernel): void {

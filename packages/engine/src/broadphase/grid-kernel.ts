@@ -1,4 +1,4 @@
-import { GRID_KERNEL_WASM } from '../generated/grid-kernel-wasm.js';
+import { GRID_KERNEL_SHARED_WASM, GRID_KERNEL_WASM } from '../generated/grid-kernel-wasm.js';
 import { grownCapacity } from '../util/grow.js';
 
 /**
@@ -14,8 +14,8 @@ import { grownCapacity } from '../util/grow.js';
 
 // The slice of the WebAssembly API used here, typed locally: the engine compiles against plain
 // ES2022, whose lib has no WebAssembly declarations.
-interface KernelMemory {
-  readonly buffer: ArrayBuffer;
+export interface KernelMemory {
+  readonly buffer: ArrayBuffer | SharedArrayBuffer;
   grow(pages: number): number;
 }
 interface KernelExports {
@@ -31,7 +31,7 @@ interface KernelExports {
   examined(): number;
 }
 interface WebAssemblyApi {
-  Memory: new (descriptor: { initial: number }) => KernelMemory;
+  Memory: new (descriptor: { initial: number; maximum?: number; shared?: boolean }) => KernelMemory;
   Module: new (bytes: Uint8Array) => object;
   Instance: new (module: object, imports: object) => { exports: unknown };
 }
@@ -39,7 +39,10 @@ interface WebAssemblyApi {
 const PAGE_BYTES = 65536;
 const FIRST_PAIR_CAPACITY = 1024;
 
-let compiled: object | null | undefined;
+/** The shared module's declared maximum, in pages (see scripts/build-kernel.mjs). */
+const SHARED_MAXIMUM_PAGES = 32768;
+
+const compiled: { private?: object | null; shared?: object | null } = {};
 let enabled = true;
 
 /**
@@ -54,13 +57,33 @@ export function gridKernelEnabled(): boolean {
   return enabled;
 }
 
-/** The compiled kernel module, or null where this runtime has no WebAssembly. */
-function kernelModule(): object | null {
-  if (compiled !== undefined) return compiled;
-  const api = (globalThis as { WebAssembly?: WebAssemblyApi }).WebAssembly;
-  // Synchronous compile: the module is about 1 KB, under the 4 KB that browsers allow on the main thread.
-  compiled = api ? new api.Module(GRID_KERNEL_WASM) : null;
-  return compiled;
+function webAssembly(): WebAssemblyApi | null {
+  return (globalThis as { WebAssembly?: WebAssemblyApi }).WebAssembly ?? null;
+}
+
+/** The compiled kernel module for a private or a shared memory, or null where this runtime lacks one. */
+function kernelModule(shared: boolean): object | null {
+  const key = shared ? 'shared' : 'private';
+  const known = compiled[key];
+  if (known !== undefined) return known;
+  const api = webAssembly();
+  let module: object | null = null;
+  try {
+    // Synchronous compile: the module is about 1 KB, under the 4 KB that browsers allow on the main thread.
+    if (api && (!shared || typeof SharedArrayBuffer === 'function')) module = new api.Module(shared ? GRID_KERNEL_SHARED_WASM : GRID_KERNEL_WASM);
+  } catch {
+    module = null; // e.g. a runtime without WebAssembly threads: the TypeScript path serves
+  }
+  compiled[key] = module;
+  return module;
+}
+
+/** Where a shared grid's arrays lie in its memory, for the threads that scan it. */
+export interface KernelLayout {
+  bodyCapacity: number;
+  cellCapacity: number;
+  pairCapacity: number;
+  pairRegions: number;
 }
 
 /**
@@ -69,8 +92,6 @@ function kernelModule(): object | null {
  * last, so that the pair buffer can grow without moving anything else.
  */
 export class GridKernel {
-  private readonly memory: KernelMemory;
-  private readonly fn: KernelExports;
   bodyCapacity = 0;
   cellCapacity = 0;
   pairCapacity = FIRST_PAIR_CAPACITY;
@@ -88,32 +109,57 @@ export class GridKernel {
   private pairsAt = 0;
 
   // Views of the arrays, remade whenever the memory grows (growing detaches the old buffer).
-  inputX = new Float64Array(0);
-  inputY = new Float64Array(0);
-  inputR = new Float64Array(0);
-  cellStart = new Int32Array(0);
-  binOf = new Int32Array(0);
-  sortedSlot = new Int32Array(0);
-  sortedX = new Float64Array(0);
-  sortedY = new Float64Array(0);
-  sortedR = new Float64Array(0);
-  pairs = new Int32Array(0);
+  inputX: Float64Array = new Float64Array(0);
+  inputY: Float64Array = new Float64Array(0);
+  inputR: Float64Array = new Float64Array(0);
+  cellStart: Int32Array = new Int32Array(0);
+  binOf: Int32Array = new Int32Array(0);
+  sortedSlot: Int32Array = new Int32Array(0);
+  sortedX: Float64Array = new Float64Array(0);
+  sortedY: Float64Array = new Float64Array(0);
+  sortedR: Float64Array = new Float64Array(0);
+  pairs: Int32Array = new Int32Array(0);
   /** Bumped whenever the views are remade: holders of the old ones must take the new. */
   viewVersion = 0;
 
   /** A kernel, or null where this runtime has no WebAssembly. */
-  static create(): GridKernel | null {
-    const module = kernelModule();
+  static create(shared = false, pairRegions = 1): GridKernel | null {
+    const module = kernelModule(shared);
     if (module === null) return null;
-    const api = (globalThis as unknown as { WebAssembly: WebAssemblyApi }).WebAssembly;
-    const memory = new api.Memory({ initial: 1 });
-    const instance = new api.Instance(module, { env: { memory } });
-    return new GridKernel(memory, instance.exports as KernelExports);
+    const api = webAssembly()!;
+    const memory = new api.Memory(shared ? { initial: 1, maximum: SHARED_MAXIMUM_PAGES, shared: true } : { initial: 1 });
+    return GridKernel.on(memory, module, shared, pairRegions);
   }
 
-  private constructor(memory: KernelMemory, fn: KernelExports) {
-    this.memory = memory;
-    this.fn = fn;
+  /** A worker's kernel over the caller's shared memory and layout (see `layout`). */
+  static attach(memory: KernelMemory, layout: KernelLayout): GridKernel | null {
+    const module = kernelModule(true);
+    if (module === null) return null;
+    const kernel = GridKernel.on(memory, module, true, layout.pairRegions);
+    kernel.pairCapacity = layout.pairCapacity;
+    kernel.bodyCapacity = layout.bodyCapacity;
+    kernel.cellCapacity = layout.cellCapacity;
+    kernel.place();
+    return kernel;
+  }
+
+  private static on(memory: KernelMemory, module: object, shared: boolean, pairRegions: number): GridKernel {
+    const api = webAssembly()!;
+    const instance = new api.Instance(module, { env: { memory } });
+    return new GridKernel(memory, instance.exports as KernelExports, shared, pairRegions);
+  }
+
+  private constructor(
+    readonly memory: KernelMemory,
+    private readonly fn: KernelExports,
+    readonly shared: boolean,
+    /** Pair buffers, one per thread that scans (1 for a private grid). */
+    readonly pairRegions: number,
+  ) {}
+
+  get layout(): KernelLayout {
+    const { bodyCapacity, cellCapacity, pairCapacity, pairRegions } = this;
+    return { bodyCapacity, cellCapacity, pairCapacity, pairRegions };
   }
 
   /**
@@ -124,6 +170,16 @@ export class GridKernel {
     if (this.bodyCapacity >= bodies && this.cellCapacity >= cells + 2) return;
     if (this.bodyCapacity < bodies) this.bodyCapacity = grownCapacity(this.bodyCapacity, bodies);
     if (this.cellCapacity < cells + 2) this.cellCapacity = grownCapacity(this.cellCapacity, cells + 2);
+    this.place();
+  }
+
+  /** Grows the pair buffers to hold at least `pairs` pairs each; the other arrays keep their place and contents. */
+  growPairs(pairs: number): void {
+    this.pairCapacity = grownCapacity(this.pairCapacity, pairs);
+    this.reserve();
+  }
+
+  private place(): void {
     const floats = this.bodyCapacity * 8;
     const ints = this.bodyCapacity * 4;
     this.sortedXAt = 0;
@@ -139,15 +195,10 @@ export class GridKernel {
     this.reserve();
   }
 
-  /** Grows the pair buffer to hold at least `pairs` pairs; the other arrays keep their place and contents. */
-  growPairs(pairs: number): void {
-    this.pairCapacity = grownCapacity(this.pairCapacity, pairs);
-    this.reserve();
-  }
-
   private reserve(): void {
-    const bytes = this.pairsAt + this.pairCapacity * 8;
+    const bytes = this.pairsAt + this.pairRegions * this.pairCapacity * 8;
     const have = this.memory.buffer.byteLength;
+    // A worker attached to a shared memory only reads the size the caller grew it to.
     if (bytes > have) this.memory.grow(Math.ceil((bytes - have) / PAGE_BYTES));
     const buffer = this.memory.buffer;
     const bodies = this.bodyCapacity;
@@ -160,7 +211,7 @@ export class GridKernel {
     this.sortedX = new Float64Array(buffer, this.sortedXAt, bodies);
     this.sortedY = new Float64Array(buffer, this.sortedYAt, bodies);
     this.sortedR = new Float64Array(buffer, this.sortedRAt, bodies);
-    this.pairs = new Int32Array(buffer, this.pairsAt, 2 * this.pairCapacity);
+    this.pairs = new Int32Array(buffer, this.pairsAt, 2 * this.pairCapacity * this.pairRegions);
     this.viewVersion++;
   }
 
@@ -174,14 +225,17 @@ export class GridKernel {
   }
 
   /**
-   * CellGrid.scanRows into `pairs`: returns the pair count, after growing the buffer and scanning
-   * again if it overflowed. `examined` then holds the pairs examined.
+   * CellGrid.scanRows into pair buffer `region` (pairs from index 2 * region * pairCapacity):
+   * returns the pair count, which exceeds pairCapacity when the buffer overflowed. A private
+   * kernel then grows the buffer and scans again; a shared one cannot grow while other threads
+   * read it, so its caller falls back to the TypeScript scan and grows the buffer after the stage.
+   * `examined` then holds the pairs examined.
    */
-  scan(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number): number {
-    let found = this.scanOnce(columns, rows, rowFrom, rowTo, pad);
-    if (found > this.pairCapacity) {
+  scan(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, region = 0): number {
+    let found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, region);
+    if (found > this.pairCapacity && !this.shared) {
       this.growPairs(found);
-      found = this.scanOnce(columns, rows, rowFrom, rowTo, pad);
+      found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, region);
     }
     return found;
   }
@@ -194,10 +248,10 @@ export class GridKernel {
     return this.memory.buffer.byteLength;
   }
 
-  private scanOnce(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number): number {
+  private scanOnce(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, region: number): number {
     return this.fn.scan(
       this.cellStartAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
-      columns, rows, rowFrom, rowTo, pad, this.pairsAt, this.pairCapacity,
+      columns, rows, rowFrom, rowTo, pad, this.pairsAt + region * this.pairCapacity * 8, this.pairCapacity,
     );
   }
 }

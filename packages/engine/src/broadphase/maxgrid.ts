@@ -47,8 +47,8 @@ export class MaxGridBroadPhase implements BroadPhase {
    * them, which the step's threads then do. Returns null where the serial `findPairs` must run
    * instead: fewer than two bodies, or holes in the slots (the parallel passes bin slots 0..n-1).
    */
-  layoutForThreads(bodies: BodyStore): CellGrid | null {
-    this.grid.setShared(true);
+  layoutForThreads(bodies: BodyStore, threads: number): CellGrid | null {
+    this.grid.setShared(true, threads);
     const live = this.live;
     live.measure(bodies);
     if (live.count < 2 || !live.dense) return null;

@@ -1,3 +1,4 @@
+import type { KernelLayout, KernelMemory } from '../broadphase/grid-kernel.js';
 /**
  * The control block shared by the threads of a parallel step: one Int32Array for commands,
  * barriers and integer parameters, one Float64Array for real parameters, one for per-thread
@@ -125,6 +126,8 @@ export interface BufferMessage {
   sortedX: SharedArrayBuffer;
   sortedY: SharedArrayBuffer;
   sortedR: SharedArrayBuffer;
+  /** Set when the grid lives in a shared WebAssembly memory: the grid arrays above are then unused. */
+  gridKernel: { memory: KernelMemory; layout: KernelLayout } | null;
   contactLo: SharedArrayBuffer[];
   contactHi: SharedArrayBuffer[];
   /** The step's canonical contact buffer, and where solve blocks list deferred contacts. */

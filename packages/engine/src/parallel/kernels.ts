@@ -78,12 +78,19 @@ export class ThreadKernels {
       columns[name] = new Ctor(message.bodies[name]);
     }
     const grid = this.grid;
-    grid.cellStart = new Int32Array(message.cellStart);
-    grid.binOf = new Int32Array(message.binOf);
-    grid.sortedSlot = new Int32Array(message.sortedSlot);
-    grid.sortedX = new Float64Array(message.sortedX);
-    grid.sortedY = new Float64Array(message.sortedY);
-    grid.sortedR = new Float64Array(message.sortedR);
+    grid.pairRegion = this.index;
+    if (message.gridKernel) {
+      if (!grid.attachKernel(message.gridKernel.memory, message.gridKernel.layout)) {
+        throw new Error(`worker ${this.index} cannot run the grid's WebAssembly kernel on shared memory`);
+      }
+    } else {
+      grid.cellStart = new Int32Array(message.cellStart);
+      grid.binOf = new Int32Array(message.binOf);
+      grid.sortedSlot = new Int32Array(message.sortedSlot);
+      grid.sortedX = new Float64Array(message.sortedX);
+      grid.sortedY = new Float64Array(message.sortedY);
+      grid.sortedR = new Float64Array(message.sortedR);
+    }
     this.contactLo = message.contactLo.map((b) => new Int32Array(b));
     this.contactHi = message.contactHi.map((b) => new Int32Array(b));
     this.canonicalLo = new Int32Array(message.canonicalLo);

@@ -203,7 +203,11 @@ export class ParallelStep {
       this.candidates += this.results[at + Result.candidates];
       this.filtered += this.results[at + Result.filtered];
       contacts.append(this.caller.contactLo[t], this.caller.contactHi[t], c[Slot.contactCount + t]);
+      // Every candidate went through the thread's pair buffer: one that overflowed scanned in
+      // TypeScript this time, and all buffers grow before the next step's scan.
+      grid.pairsWanted = Math.max(grid.pairsWanted, this.results[at + Result.candidates]);
     }
+    grid.growPairBuffers();
     return examined;
   }
 
@@ -370,6 +374,7 @@ export class ParallelStep {
       sortedX: grid.sortedX.buffer as SharedArrayBuffer,
       sortedY: grid.sortedY.buffer as SharedArrayBuffer,
       sortedR: grid.sortedR.buffer as SharedArrayBuffer,
+      gridKernel: grid.kernelShare,
       contactLo: k.contactLo.map((a) => a.buffer as SharedArrayBuffer),
       contactHi: k.contactHi.map((a) => a.buffer as SharedArrayBuffer),
       canonicalLo: this.canonical.lo.buffer as SharedArrayBuffer,

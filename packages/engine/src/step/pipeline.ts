@@ -79,7 +79,7 @@ export class StepPipeline {
     // bins each body into the grid while the body is in cache.
     const bouncedInMotion = parallel !== null && !sweep;
     const binInMotion = bouncedInMotion && box !== null && bodies.liveCount === bodies.slotCount && broad instanceof MaxGridBroadPhase;
-    let grid = binInMotion ? (broad as MaxGridBroadPhase).layoutForThreads(bodies) : null;
+    let grid = binInMotion ? (broad as MaxGridBroadPhase).layoutForThreads(bodies, parallel!.threads) : null;
     if (parallel) parallel.motion(this.motionSettings(dt), bouncedInMotion, grid, grid ? (broad as MaxGridBroadPhase).coordPad : 0);
     else INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
@@ -92,7 +92,7 @@ export class StepPipeline {
     pairs.begin();
     this.narrowPhase.begin();
     const binned = grid !== null;
-    if (!binned && parallel && broad instanceof MaxGridBroadPhase) grid = broad.layoutForThreads(bodies);
+    if (!binned && parallel && broad instanceof MaxGridBroadPhase) grid = broad.layoutForThreads(bodies, parallel.threads);
     let pairTests: number;
     if (grid) {
       pairTests = parallel!.findContacts(grid, (broad as MaxGridBroadPhase).coordPad, contacts, binned);
