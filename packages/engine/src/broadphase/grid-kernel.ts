@@ -127,7 +127,14 @@ export class GridKernel {
     const module = kernelModule(shared);
     if (module === null) return null;
     const api = webAssembly()!;
-    const memory = new api.Memory(shared ? { initial: 1, maximum: SHARED_MAXIMUM_PAGES, shared: true } : { initial: 1 });
+    let memory: KernelMemory;
+    try {
+      memory = new api.Memory(shared ? { initial: 1, maximum: SHARED_MAXIMUM_PAGES, shared: true } : { initial: 1 });
+    } catch {
+      // A shared memory reserves its maximum in address space, which a constrained runtime may
+      // refuse: the grid then keeps the TypeScript path, on SharedArrayBuffers.
+      return null;
+    }
     return GridKernel.on(memory, module, shared, pairRegions);
   }
 
