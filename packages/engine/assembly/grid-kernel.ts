@@ -93,38 +93,36 @@ export function scan(
         const ay = load<f64>(sortedY + at);
         const ar = load<f64>(sortedR + at) + pad;
         const a = load<i32>(sortedSlot + (<usize>k << 2));
-        for (let m = k + 1; m < sameRowEnd; m++) {
-          const other = <usize>m << 3;
-          const reach = ar + load<f64>(sortedR + other);
-          const dx = load<f64>(sortedX + other) - ax;
-          const dy = load<f64>(sortedY + other) - ay;
-          if (dx * dx + dy * dy <= reach * reach) {
-            if (found < capacity) {
-              const out = pairs + (<usize>found << 3);
-              store<i32>(out, a);
-              store<i32>(out, load<i32>(sortedSlot + (<usize>m << 2)), 4);
-            }
-            found++;
-          }
-        }
-        for (let m = from; m < to; m++) {
-          const other = <usize>m << 3;
-          const reach = ar + load<f64>(sortedR + other);
-          const dx = load<f64>(sortedX + other) - ax;
-          const dy = load<f64>(sortedY + other) - ay;
-          if (dx * dx + dy * dy <= reach * reach) {
-            if (found < capacity) {
-              const out = pairs + (<usize>found << 3);
-              store<i32>(out, a);
-              store<i32>(out, load<i32>(sortedSlot + (<usize>m << 2)), 4);
-            }
-            found++;
-          }
-        }
+        found = pushOverlaps(k + 1, sameRowEnd, ax, ay, ar, a, sortedSlot, sortedX, sortedY, sortedR, pairs, capacity, found);
+        found = pushOverlaps(from, to, ax, ay, ar, a, sortedSlot, sortedX, sortedY, sortedR, pairs, capacity, found);
         examinedHere += <i64>(sameRowEnd - k - 1 + (to - from));
       }
     }
   }
   examinedPairs = examinedHere;
+  return found;
+}
+
+/** Writes (a, other) for each body in [from, to) whose padded circle overlaps a's; returns the new pair count. */
+// @ts-ignore: decorator
+@inline
+function pushOverlaps(
+  from: i32, to: i32, ax: f64, ay: f64, ar: f64, a: i32,
+  sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize, pairs: usize, capacity: i32, found: i32,
+): i32 {
+  for (let m = from; m < to; m++) {
+    const other = <usize>m << 3;
+    const reach = ar + load<f64>(sortedR + other);
+    const dx = load<f64>(sortedX + other) - ax;
+    const dy = load<f64>(sortedY + other) - ay;
+    if (dx * dx + dy * dy <= reach * reach) {
+      if (found < capacity) {
+        const out = pairs + (<usize>found << 3);
+        store<i32>(out, a);
+        store<i32>(out, load<i32>(sortedSlot + (<usize>m << 2)), 4);
+      }
+      found++;
+    }
+  }
   return found;
 }
