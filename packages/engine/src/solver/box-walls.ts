@@ -39,15 +39,15 @@ export function bounceOffBox(
     if (px < r || px > width - r) {
       const e = t === TypeCode.dynamic ? mixRestitution(restitution[i], wallRestitution) : 1;
       fold(px, vx[i], r, width - r, Math.abs(vx[i]) < restitutionThreshold ? 0 : e);
-      x[i] = foldedPosition;
-      vx[i] = foldedVelocity;
+      x[i] = folded[0];
+      vx[i] = folded[1];
     }
     const py = y[i];
     if (py < r || py > height - r) {
       const e = t === TypeCode.dynamic ? mixRestitution(restitution[i], wallRestitution) : 1;
       fold(py, vy[i], r, height - r, Math.abs(vy[i]) < restitutionThreshold ? 0 : e);
-      y[i] = foldedPosition;
-      vy[i] = foldedVelocity;
+      y[i] = folded[0];
+      vy[i] = folded[1];
     }
   }
 }
@@ -118,9 +118,9 @@ function clampBody(bodies: BodyStore, i: number, width: number, height: number):
   else if (py > height - r) y[i] = height - r;
 }
 
-// Results of `fold`, kept at module scope so the hot loop returns two numbers without allocating.
-let foldedPosition = 0;
-let foldedVelocity = 0;
+// Results of `fold` (position, velocity), in a typed array so the hot loop returns two numbers
+// without allocating: a double stored in a module-level `let` is boxed, one heap number per store.
+const folded = new Float64Array(2);
 
 function fold(p: number, v: number, lo: number, hi: number, e: number): void {
   for (let bounce = 0; bounce < MAX_BOUNCES; bounce++) {
@@ -145,6 +145,6 @@ function fold(p: number, v: number, lo: number, hi: number, e: number): void {
       p = Math.min(hi, Math.max(lo, lo + u));
     }
   }
-  foldedPosition = p;
-  foldedVelocity = v;
+  folded[0] = p;
+  folded[1] = v;
 }
