@@ -4,14 +4,17 @@
 // and passes as byte offsets, so its pairs, and every result downstream, are the same bits as the
 // TypeScript path's.
 //
-// Why WebAssembly for these two loops: V8 re-checks each typed array's map, length and base
-// pointer on every access inside a loop (nothing is hoisted), which made them about 2x the same
-// loops in C; here the memory base stays in a register and bounds are checked by guard pages.
+// Why WebAssembly for these two loops: in V8's optimized code every typed-array access inside a
+// loop re-checks the array's map, base pointer and length (nothing is hoisted; seen with
+// --print-opt-code), which made them about 2x the same loops in C; here the memory base stays in
+// a register and bounds are checked by guard pages.
 // Measured at 64,000 bodies: bin 1.6-1.7 ms in TS, 0.9 in WebAssembly; scan 2.6-3.1 ms against
-// 1.8-2.1 (C: bin 0.7, scan 1.6). No SIMD: the scan is bound by branches (about 2.5 pair tests
-// per body, in short loops of varying length), not by arithmetic, so lanes would mostly idle.
+// 1.8-2.1 (C: bin 0.7-0.8, scan 1.6-1.9). SIMD was not tried: the scan examines about 2.1 pairs
+// per body (137,000 per step at 64,000 bodies) in short loops of varying length, so branches
+// rather than arithmetic bound it, and lanes would mostly idle.
 
-// 64-bit: a Max Grid over sizes 1:100 examines billions of pairs per step at 64,000 bodies.
+// 64-bit: a Max Grid over sizes 1:100 examines 67 million pairs per step at 64,000 bodies (scene
+// `mixed`, measured), about 1,000 per body, so a world of 2 million such bodies would pass 2^31.
 let examinedPairs: i64 = 0;
 
 /** Pairs examined by the last `scan` (CellGrid.scanRows' return value). */

@@ -50,15 +50,14 @@ export class CellGrid {
   /** Threads that scan a shared grid, each into its own pair buffer; this grid's scans use `pairRegion`. */
   private threads = 1;
   pairRegion = 0;
-  /** The most pairs a shared scan found beyond its buffer: the caller grows the buffers after the stage. */
-  pairsWanted = 0;
   private kernelViews = -1;
-  // Slot-ordered views of the bodies' columns that the kernel bins from, remade only when the
-  // columns or the count change, so that a warm step allocates nothing.
-  private sourceX: Float64Array | null = null;
-  private sourceY: Float64Array | null = null;
-  private sourceR: Float64Array | null = null;
-  private sourceColumns: Float64Array | null = null;
+  // Views of the bodies' columns over slots 0..n-1, which the kernel bins from, remade only when
+  // the store reallocates its columns (its layoutVersion) or n changes: a warm step allocates nothing.
+  private sourceX = new Float64Array(0);
+  private sourceY = new Float64Array(0);
+  private sourceR = new Float64Array(0);
+  private sourceStore: BodyStore | null = null;
+  private sourceLayout = -1;
 
   /**
    * Sizes the grid over the extent [minX, maxX] x [minY, maxY] with cells of at least
@@ -111,15 +110,16 @@ export class CellGrid {
     const { x, y, radius } = bodies;
     const kernel = this.kernel;
     if (kernel && slots === null) {
-      if (this.sourceColumns !== x || this.sourceX!.length !== n || this.sourceY!.buffer !== y.buffer || this.sourceR!.buffer !== radius.buffer) {
-        this.sourceColumns = x;
+      if (this.sourceStore !== bodies || this.sourceLayout !== bodies.layoutVersion || this.sourceX.length !== n) {
+        this.sourceStore = bodies;
+        this.sourceLayout = bodies.layoutVersion;
         this.sourceX = x.subarray(0, n);
         this.sourceY = y.subarray(0, n);
         this.sourceR = radius.subarray(0, n);
       }
-      kernel.inputX.set(this.sourceX!);
-      kernel.inputY.set(this.sourceY!);
-      kernel.inputR.set(this.sourceR!);
+      kernel.inputX.set(this.sourceX);
+      kernel.inputY.set(this.sourceY);
+      kernel.inputR.set(this.sourceR);
       kernel.bin(n, minX, minY, inv, columns, cells, 1 + RADIUS_PAD);
       return;
     }
@@ -174,19 +174,18 @@ export class CellGrid {
         for (let p = base; p < base + 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
         return kernel.examined;
       }
-      // A shared buffer overflowed: this band takes the TypeScript loops, the same pairs.
-      this.pairsWanted = Math.max(this.pairsWanted, found);
+      // A shared buffer overflowed: this band takes the TypeScript loops, the same pairs; the
+      // parallel step grows the buffers after the stage (growPairBuffers).
     }
     return this.scanRowsInScript(out, pad, rowFrom, rowTo);
   }
 
-  /** Grows a shared grid's pair buffers to `pairsWanted`, between stages; true when they grew. */
-  growPairBuffers(): boolean {
+  /** Grows a shared grid's pair buffers to hold `pairs` pairs each, between stages. */
+  growPairBuffers(pairs: number): void {
     const kernel = this.kernel;
-    if (!kernel || this.pairsWanted <= kernel.pairCapacity) return false;
-    kernel.growPairs(this.pairsWanted);
+    if (!kernel || pairs <= kernel.pairCapacity) return;
+    kernel.growPairs(pairs);
     this.adoptKernelViews(kernel);
-    return true;
   }
 
   /** scanRows' TypeScript loops. */

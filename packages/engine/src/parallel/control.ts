@@ -1,4 +1,3 @@
-import type { KernelLayout, KernelMemory } from '../broadphase/grid-kernel.js';
 /**
  * The control block shared by the threads of a parallel step: one Int32Array for commands,
  * barriers and integer parameters, one Float64Array for real parameters, one for per-thread
@@ -6,6 +5,9 @@ import type { KernelLayout, KernelMemory } from '../broadphase/grid-kernel.js';
  * share, then waits for DONE to count the others in. Atomics order everything: a thread that sees
  * a new SEQ also sees every plain write made before it, and likewise for DONE.
  */
+
+import type { KernelLayout, KernelMemory } from '../broadphase/grid-kernel.js';
+
 export const MAX_THREADS = 16;
 
 export const Slot = {

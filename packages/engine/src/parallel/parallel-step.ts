@@ -194,6 +194,7 @@ export class ParallelStep {
     while (this.growOverflowingLists()) this.run(Command.scan);
 
     let examined = 0;
+    let mostCandidates = 0;
     this.candidates = 0;
     this.filtered = 0;
     this.narrowMs = this.results[Result.narrowMs];
@@ -203,11 +204,11 @@ export class ParallelStep {
       this.candidates += this.results[at + Result.candidates];
       this.filtered += this.results[at + Result.filtered];
       contacts.append(this.caller.contactLo[t], this.caller.contactHi[t], c[Slot.contactCount + t]);
-      // Every candidate went through the thread's pair buffer: one that overflowed scanned in
-      // TypeScript this time, and all buffers grow before the next step's scan.
-      grid.pairsWanted = Math.max(grid.pairsWanted, this.results[at + Result.candidates]);
+      mostCandidates = Math.max(mostCandidates, this.results[at + Result.candidates]);
     }
-    grid.growPairBuffers();
+    // Every candidate went through its thread's pair buffer: a thread that overflowed its buffer
+    // scanned in TypeScript this time, and all buffers grow before the next step's scan.
+    grid.growPairBuffers(mostCandidates);
     return examined;
   }
 
