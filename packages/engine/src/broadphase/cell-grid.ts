@@ -52,7 +52,7 @@ export class CellGrid {
   pairRegion = 0;
   private kernelViews = -1;
   // Views of the bodies' columns over slots 0..n-1, which the kernel bins from, remade only when
-  // the store reallocates its columns (its layoutVersion) or n changes: a warm step allocates nothing.
+  // the store reallocates its columns (its layoutVersion) or n changes: a warm step makes no views.
   private sourceX = new Float64Array(0);
   private sourceY = new Float64Array(0);
   private sourceR = new Float64Array(0);

@@ -38,7 +38,9 @@ export interface StepSettings {
  *
  * The broad-phase hands candidates to the narrow-phase in chunks (see PairSink), so those two
  * interleave; their times are separated by timing the narrow-phase inside the sink. Everything
- * here works on buffers that persist between steps: a warm step allocates nothing.
+ * here works on buffers that persist between steps: a warm step allocates no buffers. (It still
+ * boxes a few hundred bytes of numbers per step, the stage timers' readings and doubles passed to
+ * calls V8 does not inline: 228 B at 2,000 bodies with maxgrid, sampled with V8's heap profiler.)
  *
  * With `parallel` attached, motion, the Max Grid and narrow-phase, solve and correct run on
  * several threads (see ParallelStep), the rest as here; the result is the same bits either way.
