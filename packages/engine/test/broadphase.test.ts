@@ -3,6 +3,7 @@ import fc from 'fast-check';
 import { BodyStore } from '../src/store/body-store.js';
 import { PairSink, type PairConsumer } from '../src/store/pair-sink.js';
 import { BROADPHASES, BROADPHASE_NAMES } from '../src/broadphase/registry.js';
+import { storeOf } from './helpers.js';
 import { TypeCode } from '../src/store/body-types.js';
 
 /** Collects every candidate pair as "lo,hi" strings: test code, so strings are fine here. */
@@ -31,15 +32,6 @@ const circles = fc.array(
   }),
   { minLength: 0, maxLength: 150 },
 );
-
-function storeOf(list: { x: number; y: number; r: number }[], holes: number[] = []): BodyStore {
-  const store = new BodyStore();
-  for (const c of list) {
-    store.add({ x: c.x, y: c.y, vx: 0, vy: 0, radius: c.r, mass: 1, restitution: 1, type: TypeCode.dynamic });
-  }
-  for (const slot of holes) if (slot < store.slotCount && store.type[slot] !== TypeCode.free) store.remove(slot);
-  return store;
-}
 
 describe('broad-phase contract', () => {
   it.each(BROADPHASE_NAMES)('%s is conservative, reports each pair once and never a free slot', (name) => {

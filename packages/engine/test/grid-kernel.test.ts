@@ -2,11 +2,11 @@ import { afterEach, describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
-import { BodyStore } from '../src/store/body-store.js';
-import { TypeCode } from '../src/store/body-types.js';
+import type { BodyStore } from '../src/store/body-store.js';
 import { CellGrid } from '../src/broadphase/cell-grid.js';
 import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import type { PairSink } from '../src/store/pair-sink.js';
+import { storeOf } from './helpers.js';
 
 // The grid's WebAssembly kernel must be the TypeScript loops bit for bit: same pairs in the same
 // order, so every world steps to the same state whichever path its grids took.
@@ -37,14 +37,6 @@ function pairsOf(grid: CellGrid, store: BodyStore, cellSize: number): { pairs: n
   grid.build(store, null, 0, store.slotCount, minX, minY, maxX, maxY, cellSize, 4 * store.slotCount + 64);
   const examined = grid.scanSelf(sink, 0);
   return { pairs, examined };
-}
-
-function storeOf(list: { x: number; y: number; r: number }[]): BodyStore {
-  const store = new BodyStore();
-  for (const c of list) {
-    store.add({ x: c.x, y: c.y, vx: 0, vy: 0, radius: c.r, mass: 1, restitution: 1, type: TypeCode.dynamic, category: 1, mask: 0xffffffff, gravityScale: 1, linearDamping: 0 });
-  }
-  return store;
 }
 
 function runHash(build: () => World, steps: number, kernel: boolean, mutate?: (world: World, step: number) => void): string {

@@ -1,5 +1,7 @@
 import fc from 'fast-check';
 import { World, BROADPHASE_NAMES, type WorldOptions } from '../src/index.js';
+import { BodyStore } from '../src/store/body-store.js';
+import { TypeCode } from '../src/store/body-types.js';
 
 export interface CircleSpec {
   x: number;
@@ -98,3 +100,13 @@ export function randomWorld(n: number, seed: number, options: WorldOptions = {},
 }
 
 export { BROADPHASE_NAMES };
+
+/** A body store of resting dynamic circles (x, y, radius r), then with the given slots destroyed. */
+export function storeOf(list: { x: number; y: number; r: number }[], holes: number[] = []): BodyStore {
+  const store = new BodyStore();
+  for (const c of list) {
+    store.add({ x: c.x, y: c.y, vx: 0, vy: 0, radius: c.r, mass: 1, restitution: 1, type: TypeCode.dynamic, category: 1, mask: 0xffffffff, gravityScale: 1, linearDamping: 0 });
+  }
+  for (const slot of holes) if (slot < store.slotCount && store.type[slot] !== TypeCode.free) store.remove(slot);
+  return store;
+}
