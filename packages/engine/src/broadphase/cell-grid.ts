@@ -110,6 +110,8 @@ export class CellGrid {
     const { x, y, radius } = bodies;
     const kernel = this.kernel;
     if (kernel && slots === null) {
+      kernel.ensureInputs(n);
+      if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
       if (this.sourceStore !== bodies || this.sourceLayout !== bodies.layoutVersion || this.sourceX.length !== n) {
         this.sourceStore = bodies;
         this.sourceLayout = bodies.layoutVersion;

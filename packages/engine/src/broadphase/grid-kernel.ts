@@ -81,6 +81,7 @@ function kernelModule(shared: boolean): object | null {
 /** Where a shared grid's arrays lie in its memory, for the threads that scan it. */
 export interface KernelLayout {
   bodyCapacity: number;
+  inputCapacity: number;
   cellCapacity: number;
   pairCapacity: number;
   pairRegions: number;
@@ -88,11 +89,13 @@ export interface KernelLayout {
 
 /**
  * One grid's WebAssembly memory. Layout, by byte offset: the float64 arrays (sorted x, y, r, then
- * the input copies of x, y, r), the int32 ones (binOf, sortedSlot, cellStart), and the pair buffer
+ * the input copies of x, y, r, if any), the int32 ones (binOf, sortedSlot, cellStart), and the pair buffer
  * last, so that the pair buffer can grow without moving anything else.
  */
 export class GridKernel {
   bodyCapacity = 0;
+  /** Room for input copies, made only by grids that bin slots 0..n-1 here (see ensureInputs). */
+  inputCapacity = 0;
   cellCapacity = 0;
   pairCapacity = FIRST_PAIR_CAPACITY;
 
@@ -145,6 +148,7 @@ export class GridKernel {
     const kernel = GridKernel.on(memory, module, true, layout.pairRegions);
     kernel.pairCapacity = layout.pairCapacity;
     kernel.bodyCapacity = layout.bodyCapacity;
+    kernel.inputCapacity = layout.inputCapacity;
     kernel.cellCapacity = layout.cellCapacity;
     kernel.place();
     return kernel;
@@ -165,8 +169,8 @@ export class GridKernel {
   ) {}
 
   get layout(): KernelLayout {
-    const { bodyCapacity, cellCapacity, pairCapacity, pairRegions } = this;
-    return { bodyCapacity, cellCapacity, pairCapacity, pairRegions };
+    const { bodyCapacity, inputCapacity, cellCapacity, pairCapacity, pairRegions } = this;
+    return { bodyCapacity, inputCapacity, cellCapacity, pairCapacity, pairRegions };
   }
 
   /**
@@ -180,6 +184,17 @@ export class GridKernel {
     this.place();
   }
 
+  /**
+   * Makes room for input copies of n bodies. Only grids that bin slots 0..n-1 in the kernel need
+   * them (not hgrid's levels, which bin slot lists, nor a parallel step's grid, which its threads
+   * bin): 24 bytes per body. Like `ensure`, it may move the arrays, so call it before binning.
+   */
+  ensureInputs(n: number): void {
+    if (this.inputCapacity >= n) return;
+    this.inputCapacity = grownCapacity(this.inputCapacity, n);
+    this.place();
+  }
+
   /** Grows the pair buffers to hold at least `pairs` pairs each; the other arrays keep their place and contents. */
   growPairs(pairs: number): void {
     this.pairCapacity = grownCapacity(this.pairCapacity, pairs);
@@ -188,14 +203,15 @@ export class GridKernel {
 
   private place(): void {
     const floats = this.bodyCapacity * 8;
+    const inputs = this.inputCapacity * 8;
     const ints = this.bodyCapacity * 4;
     this.sortedXAt = 0;
     this.sortedYAt = floats;
     this.sortedRAt = 2 * floats;
     this.inputXAt = 3 * floats;
-    this.inputYAt = 4 * floats;
-    this.inputRAt = 5 * floats;
-    this.binOfAt = 6 * floats;
+    this.inputYAt = this.inputXAt + inputs;
+    this.inputRAt = this.inputYAt + inputs;
+    this.binOfAt = this.inputRAt + inputs;
     this.sortedSlotAt = this.binOfAt + ints;
     this.cellStartAt = this.sortedSlotAt + ints;
     this.pairsAt = this.cellStartAt + this.cellCapacity * 4;
@@ -209,9 +225,10 @@ export class GridKernel {
     if (bytes > have) this.memory.grow(Math.ceil((bytes - have) / PAGE_BYTES));
     const buffer = this.memory.buffer;
     const bodies = this.bodyCapacity;
-    this.inputX = new Float64Array(buffer, this.inputXAt, bodies);
-    this.inputY = new Float64Array(buffer, this.inputYAt, bodies);
-    this.inputR = new Float64Array(buffer, this.inputRAt, bodies);
+    const inputs = this.inputCapacity;
+    this.inputX = new Float64Array(buffer, this.inputXAt, inputs);
+    this.inputY = new Float64Array(buffer, this.inputYAt, inputs);
+    this.inputR = new Float64Array(buffer, this.inputRAt, inputs);
     this.cellStart = new Int32Array(buffer, this.cellStartAt, this.cellCapacity);
     this.binOf = new Int32Array(buffer, this.binOfAt, bodies);
     this.sortedSlot = new Int32Array(buffer, this.sortedSlotAt, bodies);
