@@ -75,6 +75,21 @@ describe('parallel step', () => {
     expect(pairCapacity).toBeGreaterThan(1024);
   });
 
+  it('keeps the same bits when a world with holes scans its shared grid serially and overflows its pair buffer', async () => {
+    // Holes send the Max Grid down the serial path on the grid the threads share; more than the
+    // first 1,024 pairs make that scan overflow its shared pair buffer, which it cannot grow while
+    // threads may read it, so it takes the TypeScript loops.
+    const build = () => buildWorld(buildScene('uniform', { n: 6000, fill: 0.6, maxSpeed: 400 }), { broadphase: 'maxgrid' });
+    let most = 0;
+    const holes = (world: World, step: number) => {
+      if (step === 0) for (const handle of world.handles().slice(0, 50)) world.destroyBody(handle);
+      most = Math.max(most, world.stats.candidatePairs);
+    };
+    const serial = await hashWith(build, 0, 20, holes);
+    expect(most).toBeGreaterThan(1024);
+    expect(await hashWith(build, 2, 20, holes)).toBe(serial);
+  });
+
   it('falls back to serial stages where it must and still matches: hgrid, CCD and segments, sleeping, events, forces', async () => {
     await expectSameBits(() => buildWorld(buildScene('mixed', { n: 3000 }), { broadphase: 'auto' }), 30);
     // Static pegs and segments: continuous sweeps between motion and the walls, segment contacts.

@@ -12,7 +12,8 @@ import { GridKernel, gridKernelEnabled, type KernelLayout, type KernelMemory } f
  *
  * Where WebAssembly is available the arrays live in a GridKernel's memory and binning (of slots
  * 0..n-1) and scanning run there, with the same results bit for bit; the loops below are the
- * TypeScript path, used without WebAssembly, for grids over slot lists, and by parallel threads.
+ * TypeScript path, used without WebAssembly, for bins over slot lists, for grids a parallel step's
+ * threads bin, and for a serial scan whose shared pair buffer overflowed.
  *
  * Correctness rests on one rule, kept by the callers: the cell size is at least the largest
  * contact distance between a body in this grid and any body tested against it, so touching
@@ -50,6 +51,8 @@ export class CellGrid {
   /** Threads that scan a shared grid, each into its own pair buffer; this grid's scans use `pairRegion`. */
   private threads = 1;
   pairRegion = 0;
+  /** Pairs the last kernel scan found (see scanRowsOrOverflow). */
+  pairsFound = 0;
   private kernelViews = -1;
   // Views of the bodies' columns over slots 0..n-1, which the kernel bins from, remade only when
   // the store reallocates its columns (its layoutVersion) or n changes: a warm step makes no views.
@@ -166,28 +169,37 @@ export class CellGrid {
    * disjoint sets of pairs, whose union is scanSelf's, so threads can scan bands side by side.
    */
   scanRows(out: PairSink, pad: number, rowFrom: number, rowTo: number): number {
-    const kernel = this.kernel;
-    if (kernel) {
-      const found = kernel.scan(this.columns, this.rows, rowFrom, rowTo, pad, this.pairRegion);
-      if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
-      if (found <= kernel.pairCapacity) {
-        const pairs = kernel.pairs;
-        const base = 2 * this.pairRegion * kernel.pairCapacity;
-        for (let p = base; p < base + 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
-        return kernel.examined;
-      }
-      // A shared buffer overflowed: this band takes the TypeScript loops, the same pairs; the
-      // parallel step grows the buffers after the stage (growPairBuffers).
-    }
-    return this.scanRowsInScript(out, pad, rowFrom, rowTo);
+    const examined = this.scanRowsOrOverflow(out, pad, rowFrom, rowTo);
+    // Only a shared grid overflows (a private one grows and rescans): scanned serially, say in a
+    // world with holes between parallel steps, its band takes the TypeScript loops instead.
+    return examined >= 0 ? examined : this.scanRowsInScript(out, pad, rowFrom, rowTo);
   }
 
-  /** Grows a shared grid's pair buffers to hold `pairs` pairs each, between stages. */
-  growPairBuffers(pairs: number): void {
+  /**
+   * scanRows for the threads of a parallel step: returns -1, having pushed nothing, when this
+   * thread's shared pair buffer is too small; `pairsFound` then says how many pairs it needs, and
+   * the step grows the buffers (growPairBuffers) and scans again, as it does for contact lists.
+   */
+  scanRowsOrOverflow(out: PairSink, pad: number, rowFrom: number, rowTo: number): number {
     const kernel = this.kernel;
-    if (!kernel || pairs <= kernel.pairCapacity) return;
+    if (!kernel) return this.scanRowsInScript(out, pad, rowFrom, rowTo);
+    const found = kernel.scan(this.columns, this.rows, rowFrom, rowTo, pad, this.pairRegion);
+    if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
+    this.pairsFound = found;
+    if (found > kernel.pairCapacity) return -1;
+    const pairs = kernel.pairs;
+    const base = 2 * this.pairRegion * kernel.pairCapacity;
+    for (let p = base; p < base + 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
+    return kernel.examined;
+  }
+
+  /** Grows a shared grid's pair buffers to hold `pairs` pairs each, between stages; true when they grew. */
+  growPairBuffers(pairs: number): boolean {
+    const kernel = this.kernel;
+    if (!kernel || pairs <= kernel.pairCapacity) return false;
     kernel.growPairs(pairs);
     this.adoptKernelViews(kernel);
+    return true;
   }
 
   /** scanRows' TypeScript loops. */

@@ -252,7 +252,7 @@ export class GridKernel {
    * CellGrid.scanRows into pair buffer `region` (pairs from index 2 * region * pairCapacity):
    * returns the pair count, which exceeds pairCapacity when the buffer overflowed. A private
    * kernel then grows the buffer and scans again; a shared one cannot grow while other threads
-   * read it, so its caller falls back to the TypeScript scan and grows the buffer after the stage.
+   * read it, so the parallel step grows it between stages and runs the scan stage again.
    * `examined` then holds the pairs examined.
    */
   scan(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, region = 0): number {

@@ -256,12 +256,14 @@ export class ThreadKernels {
     contacts.count = 0;
     this.sink.begin();
     this.narrowPhase.begin();
-    const examined = this.grid.scanRows(this.sink, this.params[Param.coordPad], rowFrom, rowTo);
+    const examined = this.grid.scanRowsOrOverflow(this.sink, this.params[Param.coordPad], rowFrom, rowTo);
     this.sink.flush();
     const r = this.results;
     const at = this.index * RESULT_STRIDE;
-    r[at + Result.examined] = examined;
-    r[at + Result.candidates] = this.sink.total;
+    r[at + Result.examined] = Math.max(examined, 0);
+    // On overflow nothing was pushed: report the pairs needed, which exceed the buffer, and the
+    // caller grows the buffers and runs the scan again.
+    r[at + Result.candidates] = examined < 0 ? this.grid.pairsFound : this.sink.total;
     r[at + Result.filtered] = this.narrowPhase.filtered;
     r[at + Result.narrowMs] = this.sink.consumerMs;
     c[Slot.contactCount + this.index] = contacts.count;

@@ -191,10 +191,11 @@ export class ParallelStep {
     this.run(Command.count);
     this.run(Command.scatter);
     this.run(Command.scan);
-    while (this.growOverflowingLists()) this.run(Command.scan);
+    // Contact lists and pair buffers that overflowed grow, and the scan runs again (both may grow
+    // in one round: no short-circuit).
+    while (+this.growOverflowingLists() | +this.growOverflowingPairBuffers(grid)) this.run(Command.scan);
 
     let examined = 0;
-    let mostCandidates = 0;
     this.candidates = 0;
     this.filtered = 0;
     this.narrowMs = this.results[Result.narrowMs];
@@ -204,12 +205,18 @@ export class ParallelStep {
       this.candidates += this.results[at + Result.candidates];
       this.filtered += this.results[at + Result.filtered];
       contacts.append(this.caller.contactLo[t], this.caller.contactHi[t], c[Slot.contactCount + t]);
-      mostCandidates = Math.max(mostCandidates, this.results[at + Result.candidates]);
     }
-    // Every candidate went through its thread's pair buffer: a thread that overflowed its buffer
-    // scanned in TypeScript this time, and all buffers grow before the next step's scan.
-    grid.growPairBuffers(mostCandidates);
     return examined;
+  }
+
+  /**
+   * Grows the grid kernel's pair buffers when a thread's scan needed more than its buffer (it then
+   * reported the pairs needed as its candidates and pushed none); true when the scan must rerun.
+   */
+  private growOverflowingPairBuffers(grid: CellGrid): boolean {
+    let most = 0;
+    for (let t = 0; t < this.threads; t++) most = Math.max(most, this.results[t * RESULT_STRIDE + Result.candidates]);
+    return grid.growPairBuffers(most);
   }
 
   /**
