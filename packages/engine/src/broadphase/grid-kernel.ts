@@ -1,5 +1,8 @@
 import { GRID_KERNEL_SHARED_WASM, GRID_KERNEL_WASM } from '../generated/grid-kernel-wasm.js';
 import { grownCapacity } from '../util/grow.js';
+import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
+
+export type { KernelMemory };
 
 /**
  * The WebAssembly side of CellGrid: its arrays laid out in one WebAssembly memory, and the two hot
@@ -12,12 +15,6 @@ import { grownCapacity } from '../util/grow.js';
  * for the measured difference.
  */
 
-// The slice of the WebAssembly API used here, typed locally: the engine compiles against plain
-// ES2022, whose lib has no WebAssembly declarations.
-export interface KernelMemory {
-  readonly buffer: ArrayBuffer | SharedArrayBuffer;
-  grow(pages: number): number;
-}
 interface KernelExports {
   bin(
     xs: number, ys: number, rs: number, n: number,
@@ -30,13 +27,7 @@ interface KernelExports {
   ): number;
   examined(): number;
 }
-interface WebAssemblyApi {
-  Memory: new (descriptor: { initial: number; maximum?: number; shared?: boolean }) => KernelMemory;
-  Module: new (bytes: Uint8Array) => object;
-  Instance: new (module: object, imports: object) => { exports: unknown };
-}
 
-const PAGE_BYTES = 65536;
 const FIRST_PAIR_CAPACITY = 1024;
 
 /** The shared module's declared maximum, in pages (see scripts/build-kernel.mjs). */
@@ -57,23 +48,12 @@ export function gridKernelEnabled(): boolean {
   return enabled;
 }
 
-function webAssembly(): WebAssemblyApi | null {
-  return (globalThis as { WebAssembly?: WebAssemblyApi }).WebAssembly ?? null;
-}
-
 /** The compiled kernel module for a private or a shared memory, or null where this runtime lacks one. */
 function kernelModule(shared: boolean): object | null {
   const key = shared ? 'shared' : 'private';
   const known = compiled[key];
   if (known !== undefined) return known;
-  const api = webAssembly();
-  let module: object | null = null;
-  try {
-    // Synchronous compile: the module is about 1 KB, under the 4 KB that browsers allow on the main thread.
-    if (api && (!shared || typeof SharedArrayBuffer === 'function')) module = new api.Module(shared ? GRID_KERNEL_SHARED_WASM : GRID_KERNEL_WASM);
-  } catch {
-    module = null; // e.g. a runtime without WebAssembly threads: the TypeScript path serves
-  }
+  const module = shared && typeof SharedArrayBuffer !== 'function' ? null : compileKernel(shared ? GRID_KERNEL_SHARED_WASM : GRID_KERNEL_WASM);
   compiled[key] = module;
   return module;
 }
@@ -155,9 +135,7 @@ export class GridKernel {
   }
 
   private static on(memory: KernelMemory, module: object, shared: boolean, pairRegions: number): GridKernel {
-    const api = webAssembly()!;
-    const instance = new api.Instance(module, { env: { memory } });
-    return new GridKernel(memory, instance.exports as KernelExports, shared, pairRegions);
+    return new GridKernel(memory, instantiateKernel<KernelExports>(module, memory), shared, pairRegions);
   }
 
   private constructor(

@@ -16,9 +16,10 @@ export function integrateSemiImplicitEuler(
   to = bodies.slotCount,
 ): void {
   if (needsGeneralMotion(bodies)) return general(bodies, gx, gy, dt, from, to);
-  const { x, y, vx, vy, type } = bodies;
   const dvx = gx * dt;
   const dvy = gy * dt;
+  if (bodies.kernel) return bodies.kernel.integrateSemiImplicit(from, to, dvx, dvy, dt);
+  const { x, y, vx, vy, type } = bodies;
   for (let i = from; i < to; i++) {
     const t = type[i];
     if (t === TypeCode.dynamic) {

@@ -20,6 +20,8 @@ const MAX_BOUNCES = 16;
  *
  * Kinematic bodies are contained too, with restitution 1: they keep the speed they were given, but
  * the box is the world's domain and nothing ends a step outside it.
+ *
+ * Where the store has a body kernel, assembly/body-kernel.ts runs this same loop.
  */
 export function bounceOffBox(
   bodies: BodyStore,
@@ -30,6 +32,7 @@ export function bounceOffBox(
   from = 0,
   to = bodies.slotCount,
 ): void {
+  if (bodies.kernel) return bodies.kernel.bounceOffBox(from, to, width, height, wallRestitution, restitutionThreshold);
   const { x, y, vx, vy, radius, restitution, type } = bodies;
   for (let i = from; i < to; i++) {
     const t = type[i];

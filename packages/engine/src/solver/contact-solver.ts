@@ -30,6 +30,10 @@ export interface SolverSettings {
 
 export function solveContacts(bodies: BodyStore, contacts: ContactBuffer, events: ContactEvents | null, settings: SolverSettings): void {
   const { lo, hi, count } = contacts;
+  // The kernel's loop is resolveContact without hit events or waking.
+  if (bodies.kernel && events === null && bodies.sleepingCount === 0) {
+    return bodies.kernel.solveContacts(lo, hi, count, settings.restitutionThreshold);
+  }
   for (let k = 0; k < count; k++) resolveContact(bodies, lo[k], hi[k], settings, events);
 }
 

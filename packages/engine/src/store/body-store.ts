@@ -1,5 +1,6 @@
 import { TypeCode, ShapeCode } from './body-types.js';
-import { grownCapacity, grow } from '../util/grow.js';
+import { grownCapacity, grow, type Column } from '../util/grow.js';
+import { BodyKernel } from './body-kernel.js';
 
 /**
  * Handles pack a slot index and that slot's generation: `generation * SLOT_SPACE + slot`. The
@@ -25,6 +26,14 @@ export interface NewBody {
   linearDamping: number;
 }
 
+/** Every column, widest elements first so that each starts aligned in a kernel's memory. */
+const COLUMN_NAMES = [
+  'x', 'y', 'vx', 'vy', 'radius', 'mass', 'invMass', 'restitution', 'gravityScale', 'linearDamping', 'forceX', 'forceY',
+  'generation', 'category', 'mask', 'sleepTime',
+  'type', 'shape', 'asleep',
+] as const;
+type ColumnName = (typeof COLUMN_NAMES)[number];
+
 /**
  * Structure-of-arrays body storage indexed by slot. Slots are the engine's canonical body order:
  * they never move while a body lives, so anything ordered by slot is independent of how a
@@ -33,6 +42,9 @@ export interface NewBody {
  *
  * Float64 everywhere on the hot state: the engine promises energy conservation to round-off and
  * bit-identical results, and Float32 would spend that on 8 bytes per column.
+ *
+ * Unshared columns live in one WebAssembly memory where the runtime has it (see BodyKernel), so
+ * that the plain stages can run there; they are ordinary typed arrays to everything else.
  */
 export class BodyStore {
   capacity = 0;
@@ -86,6 +98,11 @@ export class BodyStore {
   layoutVersion = 0;
   /** Columns live on SharedArrayBuffers (a parallel step is attached). */
   shared = false;
+  /**
+   * The columns' WebAssembly memory and the stages' kernel over it, or null: columns then are
+   * plain (or shared) typed arrays and every stage runs its TypeScript loop.
+   */
+  kernel: BodyKernel | null = null;
 
   private freeSlots = new Int32Array(0);
   private freeCount = 0;
@@ -240,6 +257,7 @@ export class BodyStore {
   }
 
   memoryBytes(): number {
+    if (this.kernel) return this.kernel.memoryBytes() + this.freeSlots.byteLength;
     return (
       this.x.byteLength * 12 +
       this.type.byteLength * 3 +
@@ -270,25 +288,15 @@ export class BodyStore {
 
   private reallocate(capacity: number): void {
     const shared = this.shared;
-    this.x = grow(this.x, capacity, shared);
-    this.y = grow(this.y, capacity, shared);
-    this.vx = grow(this.vx, capacity, shared);
-    this.vy = grow(this.vy, capacity, shared);
-    this.radius = grow(this.radius, capacity, shared);
-    this.mass = grow(this.mass, capacity, shared);
-    this.invMass = grow(this.invMass, capacity, shared);
-    this.restitution = grow(this.restitution, capacity, shared);
-    this.type = grow(this.type, capacity, shared);
-    this.shape = grow(this.shape, capacity, shared);
-    this.generation = grow(this.generation, capacity, shared);
-    this.category = grow(this.category, capacity, shared);
-    this.mask = grow(this.mask, capacity, shared);
-    this.gravityScale = grow(this.gravityScale, capacity, shared);
-    this.linearDamping = grow(this.linearDamping, capacity, shared);
-    this.forceX = grow(this.forceX, capacity, shared);
-    this.forceY = grow(this.forceY, capacity, shared);
-    this.sleepTime = grow(this.sleepTime, capacity, shared);
-    this.asleep = grow(this.asleep, capacity, shared);
+    const columns = this as unknown as Record<ColumnName, Column>;
+    const bytesPerBody = COLUMN_NAMES.reduce((sum, name) => sum + columns[name].BYTES_PER_ELEMENT, 0);
+    // Shared columns (a parallel step's threads read them) stay plain SharedArrayBuffers.
+    const kernel = shared ? null : BodyKernel.create(capacity, bytesPerBody, COLUMN_NAMES.length);
+    for (const name of COLUMN_NAMES) {
+      columns[name] = kernel ? kernel.place(columns[name], capacity) : grow(columns[name], capacity, shared);
+    }
+    kernel?.bind(this);
+    this.kernel = kernel;
     this.capacity = capacity;
     this.layoutVersion++;
   }

@@ -1,0 +1,162 @@
+import { BODY_KERNEL_WASM } from '../generated/body-kernel-wasm.js';
+import type { Column } from '../util/grow.js';
+import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
+
+/**
+ * The body columns of a single-threaded world, laid out in one WebAssembly memory, and the plain
+ * cases of three stages compiled from assembly/body-kernel.ts over them: integration, the box
+ * walls and the contact solve. Same operations, same order, same bits as the TypeScript loops,
+ * which remain the general path (forces, damping, sleepers, events), the path for shared columns
+ * (a parallel step's), and the one wherever WebAssembly is missing.
+ *
+ * Why: V8 re-checks each typed array's map, base and length on every access inside a loop, and
+ * these loops touch 4 to 7 columns per body. Measured at 64,000 bodies (see docs/engine.md):
+ * integrate 0.6 ms in TypeScript, walls 0.5 ms, against about 0.2 ms each here.
+ *
+ * The store owns the layout: it places each column with `place` when it (re)allocates, always in a
+ * fresh memory, so views taken before a growth stay readable, exactly as with plain typed arrays.
+ */
+
+interface BodyKernelExports {
+  integrateSemiImplicit(xs: number, ys: number, vxs: number, vys: number, types: number, from: number, to: number, dvx: number, dvy: number, dt: number): void;
+  integrateExplicit(xs: number, ys: number, vxs: number, vys: number, types: number, from: number, to: number, dvx: number, dvy: number, dt: number): void;
+  bounceOffBox(
+    xs: number, ys: number, vxs: number, vys: number, rs: number, es: number, types: number, from: number, to: number,
+    width: number, height: number, wallRestitution: number, restitutionThreshold: number,
+  ): void;
+  solveContacts(
+    xs: number, ys: number, vxs: number, vys: number, rs: number, invMasses: number, es: number,
+    los: number, his: number, count: number, restitutionThreshold: number,
+  ): void;
+}
+
+/** The columns the kernel reads: the store's, under the same names. */
+export interface KernelColumns {
+  x: Float64Array;
+  y: Float64Array;
+  vx: Float64Array;
+  vy: Float64Array;
+  radius: Float64Array;
+  invMass: Float64Array;
+  restitution: Float64Array;
+  type: Uint8Array;
+}
+
+/** Contacts copied into the memory per solve call: 16 KB of scratch at the start of the memory. */
+const CONTACT_CHUNK = 2048;
+const SCRATCH_BYTES = CONTACT_CHUNK * 8;
+/** Room to start each column on an 8-byte boundary. */
+const ALIGN = 8;
+
+let compiled: object | null | undefined;
+let enabled = true;
+
+/**
+ * Whether body stores laid out from now on use the kernel. For tests and measurements that compare
+ * the two paths; not part of the public API.
+ */
+export function setBodyKernelEnabled(on: boolean): void {
+  enabled = on;
+}
+
+type ColumnConstructor = { new (buffer: ArrayBuffer, byteOffset: number, length: number): Column; readonly BYTES_PER_ELEMENT: number };
+
+export class BodyKernel {
+  private next = SCRATCH_BYTES;
+  // Byte offsets of the columns the kernel reads, taken in `bind`.
+  private xAt = 0;
+  private yAt = 0;
+  private vxAt = 0;
+  private vyAt = 0;
+  private radiusAt = 0;
+  private invMassAt = 0;
+  private restitutionAt = 0;
+  private typeAt = 0;
+  private readonly scratchLo: Int32Array;
+  private readonly scratchHi: Int32Array;
+
+  /**
+   * A kernel whose memory holds `columns` columns of `capacity` elements totalling `bytesPerBody`
+   * bytes per body, or null where this runtime has no WebAssembly or the kernel is switched off.
+   */
+  static create(capacity: number, bytesPerBody: number, columns: number): BodyKernel | null {
+    if (!enabled) return null;
+    if (compiled === undefined) compiled = compileKernel(BODY_KERNEL_WASM);
+    if (compiled === null) return null;
+    const bytes = SCRATCH_BYTES + capacity * bytesPerBody + columns * ALIGN;
+    let memory: KernelMemory;
+    try {
+      memory = new (webAssembly()!).Memory({ initial: Math.ceil(bytes / PAGE_BYTES) });
+    } catch {
+      return null; // out of address space or memory: the plain typed arrays may still fit
+    }
+    return new BodyKernel(memory, instantiateKernel<BodyKernelExports>(compiled, memory));
+  }
+
+  private constructor(
+    private readonly memory: KernelMemory,
+    private readonly fn: BodyKernelExports,
+  ) {
+    const buffer = memory.buffer as ArrayBuffer;
+    this.scratchLo = new Int32Array(buffer, 0, CONTACT_CHUNK);
+    this.scratchHi = new Int32Array(buffer, CONTACT_CHUNK * 4, CONTACT_CHUNK);
+  }
+
+  /** A zeroed column of `old`'s kind with `capacity` elements in this memory, holding as much of `old` as fits. */
+  place<T extends Column>(old: T, capacity: number): T {
+    const Ctor = old.constructor as ColumnConstructor;
+    const at = Math.ceil(this.next / ALIGN) * ALIGN;
+    const column = new Ctor(this.memory.buffer as ArrayBuffer, at, capacity) as T;
+    column.set(old.subarray(0, Math.min(old.length, capacity)) as never);
+    this.next = at + capacity * Ctor.BYTES_PER_ELEMENT;
+    return column;
+  }
+
+  /** Notes where the columns the kernel reads were placed. */
+  bind(c: KernelColumns): void {
+    this.xAt = c.x.byteOffset;
+    this.yAt = c.y.byteOffset;
+    this.vxAt = c.vx.byteOffset;
+    this.vyAt = c.vy.byteOffset;
+    this.radiusAt = c.radius.byteOffset;
+    this.invMassAt = c.invMass.byteOffset;
+    this.restitutionAt = c.restitution.byteOffset;
+    this.typeAt = c.type.byteOffset;
+  }
+
+  memoryBytes(): number {
+    return this.memory.buffer.byteLength;
+  }
+
+  integrateSemiImplicit(from: number, to: number, dvx: number, dvy: number, dt: number): void {
+    this.fn.integrateSemiImplicit(this.xAt, this.yAt, this.vxAt, this.vyAt, this.typeAt, from, to, dvx, dvy, dt);
+  }
+
+  integrateExplicit(from: number, to: number, dvx: number, dvy: number, dt: number): void {
+    this.fn.integrateExplicit(this.xAt, this.yAt, this.vxAt, this.vyAt, this.typeAt, from, to, dvx, dvy, dt);
+  }
+
+  bounceOffBox(from: number, to: number, width: number, height: number, wallRestitution: number, restitutionThreshold: number): void {
+    this.fn.bounceOffBox(
+      this.xAt, this.yAt, this.vxAt, this.vyAt, this.radiusAt, this.restitutionAt, this.typeAt, from, to,
+      width, height, wallRestitution, restitutionThreshold,
+    );
+  }
+
+  /** Contacts lo[k], hi[k] for k in [0, count), in order, copied in chunks into the scratch area. */
+  solveContacts(lo: Int32Array, hi: Int32Array, count: number, restitutionThreshold: number): void {
+    const { scratchLo, scratchHi } = this;
+    for (let from = 0; from < count; from += CONTACT_CHUNK) {
+      const to = Math.min(count, from + CONTACT_CHUNK);
+      // Element by element: subarray() would allocate two views per chunk.
+      for (let k = from; k < to; k++) {
+        scratchLo[k - from] = lo[k];
+        scratchHi[k - from] = hi[k];
+      }
+      this.fn.solveContacts(
+        this.xAt, this.yAt, this.vxAt, this.vyAt, this.radiusAt, this.invMassAt, this.restitutionAt,
+        scratchLo.byteOffset, scratchHi.byteOffset, to - from, restitutionThreshold,
+      );
+    }
+  }
+}

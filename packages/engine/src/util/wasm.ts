@@ -1,0 +1,41 @@
+/**
+ * The slice of the WebAssembly API the kernels use, typed locally: the engine compiles against
+ * plain ES2022, whose lib has no WebAssembly declarations.
+ */
+export interface KernelMemory {
+  readonly buffer: ArrayBuffer | SharedArrayBuffer;
+  grow(pages: number): number;
+}
+
+interface WebAssemblyApi {
+  Memory: new (descriptor: { initial: number; maximum?: number; shared?: boolean }) => KernelMemory;
+  Module: new (bytes: Uint8Array) => object;
+  Instance: new (module: object, imports: object) => { exports: unknown };
+}
+
+export const PAGE_BYTES = 65536;
+
+/** This runtime's WebAssembly, or null where it has none (the TypeScript paths then serve). */
+export function webAssembly(): WebAssemblyApi | null {
+  return (globalThis as { WebAssembly?: WebAssemblyApi }).WebAssembly ?? null;
+}
+
+/**
+ * Compiles kernel bytes synchronously, or gives null where that fails (no WebAssembly, or no
+ * threads for a shared-memory module). Kernels stay under the 4 KB that browsers allow to compile
+ * synchronously on the main thread.
+ */
+export function compileKernel(bytes: Uint8Array): object | null {
+  const api = webAssembly();
+  if (api === null) return null;
+  try {
+    return new api.Module(bytes);
+  } catch {
+    return null;
+  }
+}
+
+/** An instance of `module` over `memory`, its exports typed by the caller. */
+export function instantiateKernel<T>(module: object, memory: KernelMemory): T {
+  return new (webAssembly()!).Instance(module, { env: { memory } }).exports as T;
+}
