@@ -5,7 +5,8 @@ import type { ContactEvents } from '../store/contact-events.js';
 import type { BroadPhase } from '../broadphase/broadphase.js';
 import { NarrowPhase } from '../narrowphase/narrowphase.js';
 import { INTEGRATORS, type IntegratorName } from '../integrate/integrator.js';
-import { clearForces } from '../integrate/motion.js';
+import { clearForces, needsGeneralMotion } from '../integrate/motion.js';
+import type { BodyKernel } from '../store/body-kernel.js';
 import { bounceOffBox, clampIntoBox } from '../solver/box-walls.js';
 import { solveContacts, type SolverSettings } from '../solver/contact-solver.js';
 import { updateSleep } from '../solver/sleep.js';
@@ -82,12 +83,15 @@ export class StepPipeline {
     const bouncedInMotion = parallel !== null && !sweep;
     const binInMotion = bouncedInMotion && box !== null && bodies.liveCount === bodies.slotCount && broad instanceof MaxGridBroadPhase;
     let grid = binInMotion ? (broad as MaxGridBroadPhase).layoutForThreads(bodies, parallel!.threads) : null;
+    // A single-threaded world whose columns are in the body kernel does the same in one pass there.
+    const kernel = parallel === null && !sweep && box !== null && !needsGeneralMotion(bodies) ? bodies.kernel : null;
     if (parallel) parallel.motion(this.motionSettings(dt), bouncedInMotion, grid, grid ? (broad as MaxGridBroadPhase).coordPad : 0);
+    else if (kernel) this.moveInBox(kernel, box!, dt);
     else INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
 
     if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold);
-    if (box && !bouncedInMotion) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
+    if (box && !bouncedInMotion && kernel === null) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
     const t2 = nowMs();
 
     contacts.clear();
@@ -144,6 +148,12 @@ export class StepPipeline {
     stats.correctMs = t5 - t4;
     stats.reportMs = t6 - t5;
     stats.totalMs = t6 - t0;
+  }
+
+  private moveInBox(kernel: BodyKernel, box: { width: number; height: number }, dt: number): void {
+    const { gravity, wallRestitution, solver } = this.settings;
+    const explicit = this.integrator === 'explicit-euler';
+    kernel.moveInBox(0, this.bodies.slotCount, gravity.x * dt, gravity.y * dt, dt, explicit, box.width, box.height, wallRestitution, solver.restitutionThreshold);
   }
 
   private readonly motion = {

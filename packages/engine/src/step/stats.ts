@@ -25,8 +25,10 @@ export interface StepStats {
   /** Dynamic bodies asleep after the step. */
   sleepingBodies: number;
   /**
-   * With worker threads and no continuous sweeps, this also covers the box walls (boundaryMs is
-   * then 0) and, in a box, binning bodies into the Max Grid.
+   * Without continuous sweeps, this also covers the box walls (boundaryMs is then 0) when the
+   * world runs on worker threads, or moves its bodies in the body kernel (a single-threaded world
+   * with a box and no forces, damping, gravity scales or sleepers); with worker threads in a box
+   * it also covers binning bodies into the Max Grid.
    */
   integrateMs: number;
   /** Continuous collision against static shapes, then the box walls. */

@@ -24,6 +24,11 @@ interface BodyKernelExports {
     xs: number, ys: number, vxs: number, vys: number, rs: number, es: number, types: number, from: number, to: number,
     width: number, height: number, wallRestitution: number, restitutionThreshold: number,
   ): void;
+  moveInBox(
+    xs: number, ys: number, vxs: number, vys: number, rs: number, es: number, types: number, from: number, to: number,
+    dvx: number, dvy: number, dt: number, explicit: boolean,
+    width: number, height: number, wallRestitution: number, restitutionThreshold: number,
+  ): void;
   solveContacts(
     xs: number, ys: number, vxs: number, vys: number, rs: number, invMasses: number, es: number,
     los: number, his: number, count: number, restitutionThreshold: number,
@@ -140,6 +145,17 @@ export class BodyKernel {
     this.fn.bounceOffBox(
       this.xAt, this.yAt, this.vxAt, this.vyAt, this.radiusAt, this.restitutionAt, this.typeAt, from, to,
       width, height, wallRestitution, restitutionThreshold,
+    );
+  }
+
+  /** The integrator's plain loop, then bounceOffBox, in one pass over slots [from, to). */
+  moveInBox(
+    from: number, to: number, dvx: number, dvy: number, dt: number, explicit: boolean,
+    width: number, height: number, wallRestitution: number, restitutionThreshold: number,
+  ): void {
+    this.fn.moveInBox(
+      this.xAt, this.yAt, this.vxAt, this.vyAt, this.radiusAt, this.restitutionAt, this.typeAt, from, to,
+      dvx, dvy, dt, explicit, width, height, wallRestitution, restitutionThreshold,
     );
   }
 
