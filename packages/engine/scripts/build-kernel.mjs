@@ -1,10 +1,9 @@
 // Compiles the AssemblyScript kernels in assembly/ into TypeScript modules in src/generated/ that
 // export the WebAssembly bytes, so that the engine ships no separate .wasm file and has no runtime
 // dependency: Node, Vite and bundlers load them as ordinary TypeScript/JavaScript.
-// - grid-kernel.ts -> grid-kernel-wasm.ts, twice: for a private memory, and for a shared one (the
-//   grids of a parallel step, whose threads all scan it);
-// - body-kernel.ts -> body-kernel-wasm.ts, for a private memory (shared body columns, those of a
-//   parallel step, keep the TypeScript stages).
+// - grid-kernel.ts -> grid-kernel-wasm.ts, and body-kernel.ts -> body-kernel-wasm.ts, each twice:
+//   for a private memory, and for a shared one (a parallel step's grid and body columns, which its
+//   threads all work on).
 // Each output is skipped when it is newer than its source and this script.
 import { execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
@@ -18,7 +17,7 @@ const outDir = join(root, 'src', 'generated');
 const script = fileURLToPath(import.meta.url);
 
 // 2 GiB: a shared memory reserves its maximum up front (address space only), and 2 GiB holds the
-// grid of the largest world handles allow (2^24 bodies).
+// grid, or the body columns, of the largest world handles allow (2^24 bodies).
 const SHARED_MAXIMUM_PAGES = 32768;
 
 const KERNELS = [
@@ -34,7 +33,18 @@ const KERNELS = [
       },
     ],
   },
-  { source: 'body-kernel.ts', out: 'body-kernel-wasm.ts', variants: [{ name: 'BODY_KERNEL_WASM', flags: [] }] },
+  {
+    source: 'body-kernel.ts',
+    out: 'body-kernel-wasm.ts',
+    variants: [
+      { name: 'BODY_KERNEL_WASM', flags: [] },
+      {
+        name: 'BODY_KERNEL_SHARED_WASM',
+        doc: `/** For a shared memory of at most ${SHARED_MAXIMUM_PAGES} pages (body-kernel.ts creates it). */\n`,
+        flags: ['--enable', 'threads', '--sharedMemory', '--maximumMemory', String(SHARED_MAXIMUM_PAGES)],
+      },
+    ],
+  },
 ];
 
 // -O3, no runtime (the kernels allocate nothing), no assertions (the callers validate offsets),

@@ -2,6 +2,8 @@ import type { CellGrid } from '../src/broadphase/cell-grid.js';
 import { describe, expect, it } from 'vitest';
 import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
+import type { BodyStore } from '../src/store/body-store.js';
+import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
 
 // Worker threads load the compiled engine (dist/), which `npm test` builds first.
 
@@ -36,6 +38,25 @@ const uniform = (n: number, options: WorldOptions = {}, params: Record<string, n
 describe('parallel step', () => {
   it('gives the serial step bit for bit with 1, 2 and 3 threads (elastic uniform scene)', async () => {
     await expectSameBits(uniform(4000), 60);
+  });
+
+  it('runs the body kernel on shared columns, in every thread, and matches a serial world without any kernel', async () => {
+    const build = uniform(4000, { gravity: { x: 0, y: -60 } });
+    const world = build();
+    await world.startWorkers(2, { minBodies: 0 });
+    try {
+      const kernel = (world as unknown as { bodies: BodyStore }).bodies.kernel;
+      expect(kernel?.sharedMemory).toBeTruthy();
+      for (let s = 0; s < 60; s++) world.step(1 / 60);
+    } finally {
+      world.stopWorkers();
+    }
+    setBodyKernelEnabled(false);
+    try {
+      expect(await hashWith(build, 0, 60)).toBe(world.stateHash());
+    } finally {
+      setBodyKernelEnabled(true);
+    }
   });
 
   it('matches the golden seed-box hash with gravity and walls, on the default broad-phase', async () => {

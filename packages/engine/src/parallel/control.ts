@@ -7,6 +7,7 @@
  */
 
 import type { KernelLayout, KernelMemory } from '../broadphase/grid-kernel.js';
+import type { Column } from '../util/grow.js';
 
 export const MAX_THREADS = 16;
 
@@ -121,7 +122,10 @@ export type BodyColumnName = (typeof BODY_COLUMNS)[number];
 export interface BufferMessage {
   kind: 'buffers';
   epoch: number;
-  bodies: Record<BodyColumnName, SharedArrayBuffer>;
+  /** Views of the shared columns (all on one memory when the store has a body kernel). */
+  bodies: Record<BodyColumnName, Column>;
+  /** The body kernel's shared memory, which the views lie in; null without a kernel. */
+  bodyKernel: KernelMemory | null;
   cellStart: SharedArrayBuffer;
   binOf: SharedArrayBuffer;
   sortedSlot: SharedArrayBuffer;

@@ -5,12 +5,14 @@ import { NarrowPhase } from '../narrowphase/narrowphase.js';
 import { PairSink } from '../store/pair-sink.js';
 import type { ContactSink } from '../store/contact-buffer.js';
 import { INTEGRATORS } from '../integrate/integrator.js';
+import { needsGeneralMotion } from '../integrate/motion.js';
 import { bounceOffBox, clampContactBodiesInRange } from '../solver/box-walls.js';
 import { EscapeLog, solveContactBlock, type SolverSettings } from '../solver/contact-solver.js';
 import { grownCapacity } from '../util/grow.js';
 import { nowMs } from '../util/timer.js';
 import { BODY_COLUMNS, Command, INTEGRATOR_IDS, Param, RESULT_STRIDE, Result, Slot, shareStart, type BufferMessage } from './control.js';
 import type { Column } from '../util/grow.js';
+import { BodyKernel } from '../store/body-kernel.js';
 
 /** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2. */
 const MOTION_CHUNK = 4096;
@@ -73,10 +75,14 @@ export class ThreadKernels {
   /** Installs the caller's buffers in a worker (the caller's own thread already holds them). */
   install(message: BufferMessage): void {
     const columns = this.bodies as unknown as Record<string, Column>;
-    for (const name of BODY_COLUMNS) {
-      const Ctor = columns[name].constructor as new (buffer: SharedArrayBuffer) => Column;
-      columns[name] = new Ctor(message.bodies[name]);
+    for (const name of BODY_COLUMNS) columns[name] = message.bodies[name];
+    let kernel: BodyKernel | null = null;
+    if (message.bodyKernel) {
+      kernel = BodyKernel.attach(message.bodyKernel);
+      if (!kernel) throw new Error(`worker ${this.index} cannot run the body WebAssembly kernel on shared memory`);
+      kernel.bind(this.bodies);
     }
+    this.bodies.kernel = kernel;
     const grid = this.grid;
     grid.pairRegion = this.index;
     if (message.gridKernel) {
@@ -155,15 +161,26 @@ export class ThreadKernels {
     const total = c[Slot.slotCount];
     const from = this.shareFrom(total);
     const to = this.shareEnd(total);
-    const integrate = INTEGRATORS[INTEGRATOR_IDS[c[Slot.integrator]]];
+    const integrator = INTEGRATOR_IDS[c[Slot.integrator]];
+    const integrate = INTEGRATORS[integrator];
     const bounce = c[Slot.bounce] === 1;
     // Only for worlds without holes, where slot k is body k and both shares are the same range.
     const bin = c[Slot.binInMotion] === 1;
+    // Plain motion in a box: the body kernel integrates and bounces in one pass.
+    const kernel = bounce && !needsGeneralMotion(this.bodies) ? this.bodies.kernel : null;
+    const dt = p[Param.dt];
     // In cache-sized chunks, so that the walls test bodies integration has just brought in.
     for (let at = from; at < to; at += MOTION_CHUNK) {
       const end = Math.min(at + MOTION_CHUNK, to);
-      integrate(this.bodies, p[Param.gravityX], p[Param.gravityY], p[Param.dt], at, end);
-      if (bounce) bounceOffBox(this.bodies, p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold], at, end);
+      if (kernel) {
+        kernel.moveInBox(
+          at, end, p[Param.gravityX] * dt, p[Param.gravityY] * dt, dt, integrator === 'explicit-euler',
+          p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold],
+        );
+      } else {
+        integrate(this.bodies, p[Param.gravityX], p[Param.gravityY], dt, at, end);
+        if (bounce) bounceOffBox(this.bodies, p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold], at, end);
+      }
       if (bin) this.binRange(at, end);
     }
   }

@@ -1,7 +1,7 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { ContactBuffer } from '../store/contact-buffer.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
-import { grownCapacity } from '../util/grow.js';
+import { grownCapacity, type Column } from '../util/grow.js';
 import { EscapeLog, resolveContact, type SolverSettings } from '../solver/contact-solver.js';
 import { clampBodies } from '../solver/box-walls.js';
 import { nowMs } from '../util/timer.js';
@@ -368,14 +368,15 @@ export class ParallelStep {
     this.sentContacts = this.canonical.layoutVersion;
     if (this.workers.length === 0) return;
     const epoch = ++this.epoch;
-    const columns = this.bodies as unknown as Record<BodyColumnName, { buffer: SharedArrayBuffer }>;
-    const bodies = {} as Record<BodyColumnName, SharedArrayBuffer>;
-    for (const name of BODY_COLUMNS) bodies[name] = columns[name].buffer;
+    const columns = this.bodies as unknown as Record<BodyColumnName, Column>;
+    const bodies = {} as Record<BodyColumnName, Column>;
+    for (const name of BODY_COLUMNS) bodies[name] = columns[name];
     const k = this.caller;
     const message: BufferMessage = {
       kind: 'buffers',
       epoch,
       bodies,
+      bodyKernel: this.bodies.kernel?.sharedMemory ?? null,
       cellStart: grid.cellStart.buffer as SharedArrayBuffer,
       binOf: grid.binOf.buffer as SharedArrayBuffer,
       sortedSlot: grid.sortedSlot.buffer as SharedArrayBuffer,

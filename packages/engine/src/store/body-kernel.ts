@@ -1,13 +1,14 @@
-import { BODY_KERNEL_WASM } from '../generated/body-kernel-wasm.js';
+import { BODY_KERNEL_SHARED_WASM, BODY_KERNEL_WASM } from '../generated/body-kernel-wasm.js';
 import type { Column } from '../util/grow.js';
 import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
 
 /**
- * The body columns of a single-threaded world, laid out in one WebAssembly memory, and the plain
- * cases of three stages compiled from assembly/body-kernel.ts over them: integration, the box
- * walls and the contact solve. Same operations, same order, same bits as the TypeScript loops,
- * which remain the general path (forces, damping, sleepers, events), the path for shared columns
- * (a parallel step's), and the one wherever WebAssembly is missing.
+ * The body columns laid out in one WebAssembly memory, and the plain cases of three stages
+ * compiled from assembly/body-kernel.ts over them: integration, the box walls and the contact
+ * solve. Same operations, same order, same bits as the TypeScript loops, which remain the general
+ * path (forces, damping, sleepers, events) and the one wherever WebAssembly is missing. A parallel
+ * step's columns live in a shared memory, over which each worker thread instantiates the kernel
+ * too (see `attach`).
  *
  * Why: V8 re-checks each typed array's map, base and length on every access inside a loop, and
  * these loops touch 4 to 7 columns per body. Measured at 64,000 bodies (see docs/engine.md):
@@ -53,8 +54,17 @@ const SCRATCH_BYTES = CONTACT_CHUNK * 8;
 /** Room to start each column on an 8-byte boundary. */
 const ALIGN = 8;
 
-let compiled: object | null | undefined;
+/** The shared module's declared maximum, in pages (see scripts/build-kernel.mjs). */
+const SHARED_MAXIMUM_PAGES = 32768;
+
+const compiled: { private?: object | null; shared?: object | null } = {};
 let enabled = true;
+
+function kernelModule(shared: boolean): object | null {
+  const key = shared ? 'shared' : 'private';
+  if (compiled[key] === undefined) compiled[key] = compileKernel(shared ? BODY_KERNEL_SHARED_WASM : BODY_KERNEL_WASM);
+  return compiled[key]!;
+}
 
 /**
  * Whether body stores laid out from now on use the kernel. For tests and measurements that compare
@@ -82,25 +92,34 @@ export class BodyKernel {
 
   /**
    * A kernel whose memory holds `columns` columns of `capacity` elements totalling `bytesPerBody`
-   * bytes per body, or null where this runtime has no WebAssembly or the kernel is switched off.
+   * bytes per body, shared between threads or not, or null where this runtime has no WebAssembly
+   * (or no shared WebAssembly memory) or the kernel is switched off.
    */
-  static create(capacity: number, bytesPerBody: number, columns: number): BodyKernel | null {
+  static create(capacity: number, bytesPerBody: number, columns: number, shared: boolean): BodyKernel | null {
     if (!enabled) return null;
-    if (compiled === undefined) compiled = compileKernel(BODY_KERNEL_WASM);
-    if (compiled === null) return null;
-    const bytes = SCRATCH_BYTES + capacity * bytesPerBody + columns * ALIGN;
+    const module = kernelModule(shared);
+    if (module === null) return null;
+    const pages = Math.ceil((SCRATCH_BYTES + capacity * bytesPerBody + columns * ALIGN) / PAGE_BYTES);
+    if (shared && pages > SHARED_MAXIMUM_PAGES) return null;
     let memory: KernelMemory;
     try {
-      memory = new (webAssembly()!).Memory({ initial: Math.ceil(bytes / PAGE_BYTES) });
+      memory = new (webAssembly()!).Memory(shared ? { initial: pages, maximum: SHARED_MAXIMUM_PAGES, shared: true } : { initial: pages });
     } catch {
       return null; // out of address space or memory: the plain typed arrays may still fit
     }
-    return new BodyKernel(memory, instantiateKernel<BodyKernelExports>(compiled, memory));
+    return new BodyKernel(memory, instantiateKernel<BodyKernelExports>(module, memory), shared);
+  }
+
+  /** A worker thread's kernel over the caller's shared memory (see `sharedMemory`); bind it to the columns. */
+  static attach(memory: KernelMemory): BodyKernel | null {
+    const module = kernelModule(true);
+    return module === null ? null : new BodyKernel(memory, instantiateKernel<BodyKernelExports>(module, memory), true);
   }
 
   private constructor(
     private readonly memory: KernelMemory,
     private readonly fn: BodyKernelExports,
+    private readonly shared: boolean,
   ) {
     const buffer = memory.buffer as ArrayBuffer;
     this.scratchLo = new Int32Array(buffer, 0, CONTACT_CHUNK);
@@ -127,6 +146,11 @@ export class BodyKernel {
     this.invMassAt = c.invMass.byteOffset;
     this.restitutionAt = c.restitution.byteOffset;
     this.typeAt = c.type.byteOffset;
+  }
+
+  /** The memory, for worker threads to attach to, when it is shared. */
+  get sharedMemory(): KernelMemory | null {
+    return this.shared ? this.memory : null;
   }
 
   memoryBytes(): number {

@@ -43,8 +43,9 @@ type ColumnName = (typeof COLUMN_NAMES)[number];
  * Float64 everywhere on the hot state: the engine promises energy conservation to round-off and
  * bit-identical results, and Float32 would spend that on 8 bytes per column.
  *
- * Unshared columns live in one WebAssembly memory where the runtime has it (see BodyKernel), so
- * that the plain stages can run there; they are ordinary typed arrays to everything else.
+ * The columns live in one WebAssembly memory where the runtime has it (see BodyKernel), shared
+ * when a parallel step is attached, so that the plain stages can run there; they are ordinary
+ * typed arrays to everything else.
  */
 export class BodyStore {
   capacity = 0;
@@ -290,8 +291,7 @@ export class BodyStore {
     const shared = this.shared;
     const columns = this as unknown as Record<ColumnName, Column>;
     const bytesPerBody = COLUMN_NAMES.reduce((sum, name) => sum + columns[name].BYTES_PER_ELEMENT, 0);
-    // Shared columns (a parallel step's threads read them) stay plain SharedArrayBuffers.
-    const kernel = shared ? null : BodyKernel.create(capacity, bytesPerBody, COLUMN_NAMES.length);
+    const kernel = BodyKernel.create(capacity, bytesPerBody, COLUMN_NAMES.length, shared);
     for (const name of COLUMN_NAMES) {
       columns[name] = kernel ? kernel.place(columns[name], capacity) : grow(columns[name], capacity, shared);
     }
