@@ -23,18 +23,19 @@ export function examined(): f64 {
 }
 
 /**
- * Counting sort of bodies 0..n-1 (positions and radii at xs, ys, rs) into `cells` row-major cells:
- * cellStart (cells + 2 int32) ends as each cell's first index, sorted* hold the bodies in cell
- * order, binOf is scratch. `radiusScale` pads radii as fat-bounds.ts does.
+ * Counting sort of n bodies into `cells` row-major cells: slots 0..n-1, or the n int32 slots at
+ * `slots` when it is not 0; positions and radii are read at xs, ys, rs by slot. cellStart
+ * (cells + 2 int32) ends as each cell's first index, sorted* hold the bodies in cell order, binOf
+ * is scratch. `radiusScale` pads radii as fat-bounds.ts does.
  */
 export function bin(
-  xs: usize, ys: usize, rs: usize, n: i32,
+  xs: usize, ys: usize, rs: usize, slots: usize, n: i32,
   minX: f64, minY: f64, inverse: f64, columns: i32, cells: i32, radiusScale: f64,
   cellStart: usize, binOf: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
 ): void {
   memory.fill(cellStart, 0, (<usize>cells + 2) << 2);
   for (let k: i32 = 0; k < n; k++) {
-    const at = <usize>k << 3;
+    const at = <usize>slotAt(slots, k) << 3;
     // Offsets are >= 0 and below 2^31: truncation is the TypeScript path's `| 0`.
     const c = <i32>((load<f64>(ys + at) - minY) * inverse) * columns + <i32>((load<f64>(xs + at) - minX) * inverse);
     store<i32>(binOf + (<usize>k << 2), c);
@@ -52,15 +53,23 @@ export function bin(
     const counter = cellStart + (<usize>load<i32>(binOf + (<usize>k << 2)) << 2);
     const slot = load<i32>(counter) - 1;
     store<i32>(counter, slot);
-    const from = <usize>k << 3;
+    const i = slotAt(slots, k);
+    const from = <usize>i << 3;
     const to = <usize>slot << 3;
-    store<i32>(sortedSlot + (<usize>slot << 2), k);
+    store<i32>(sortedSlot + (<usize>slot << 2), i);
     store<f64>(sortedX + to, load<f64>(xs + from));
     store<f64>(sortedY + to, load<f64>(ys + from));
     store<f64>(sortedR + to, load<f64>(rs + from) * radiusScale);
   }
   store<i32>(cellStart + (<usize>cells << 2), n);
   store<i32>(cellStart + ((<usize>cells + 1) << 2), n);
+}
+
+/** The k-th body to bin: slot k, or the k-th of a slot list. */
+// @ts-ignore: decorator
+@inline
+function slotAt(slots: usize, k: i32): i32 {
+  return slots == 0 ? k : load<i32>(slots + (<usize>k << 2));
 }
 
 /**
@@ -101,6 +110,27 @@ export function scan(
         examinedHere += <i64>(sameRowEnd - k - 1 + (to - from));
       }
     }
+  }
+  examinedPairs = examinedHere;
+  return found;
+}
+
+/**
+ * CellGrid.scanWindow: the circle (px, py, reach) of body `slot`, from another grid, against the
+ * bodies of cells [c0, c1] x [r0, r1] here, one range per row; writes pairs (slot, other) as `scan`
+ * does and returns how many it found.
+ */
+export function scanWindow(
+  cellStart: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
+  columns: i32, c0: i32, c1: i32, r0: i32, r1: i32, px: f64, py: f64, reach: f64, slot: i32, pairs: usize, capacity: i32,
+): i32 {
+  let found: i32 = 0;
+  let examinedHere: i64 = 0;
+  for (let row = r0; row <= r1; row++) {
+    const from = load<i32>(cellStart + (<usize>(row * columns + c0) << 2));
+    const to = load<i32>(cellStart + (<usize>(row * columns + c1 + 1) << 2));
+    found = pushOverlaps(from, to, px, py, reach, slot, sortedSlot, sortedX, sortedY, sortedR, pairs, capacity, found);
+    examinedHere += <i64>(to - from);
   }
   examinedPairs = examinedHere;
   return found;

@@ -119,6 +119,51 @@ describe('mixed sizes (report 3.2: Max Grid degrades when sizes differ by an ord
     expect(contacts.hgrid).toBe(contacts.maxgrid);
   });
 
+  it.each([
+    // A few large circles among many small: pairs across levels are found from each large one, through the window of small cells it reaches.
+    ['few large circles (windows from the coarse side)', { n: 3000, seed: 4, ratio: 100, largeFraction: 0.003, maxSpeed: 400 }],
+    // Many coarse circles: from each small one, through the 3x3 coarse cells around it.
+    ['many coarse circles (3x3 lookups from the fine side)', { n: 3000, seed: 4, ratio: 3, largeFraction: 0.3, maxSpeed: 400 }],
+  ])('hgrid steps %s to the same state as maxgrid, with contacts across levels', async (_label, params) => {
+    const { buildScene, buildWorld } = await import('@maxgrid/scenes');
+    const scene = buildScene('mixed', params);
+    const hgrid = buildWorld(scene, { broadphase: 'hgrid' });
+    const grid = buildWorld(scene, { broadphase: 'maxgrid' });
+    const large = Math.round(params.n * params.largeFraction);
+    let across = 0;
+    for (let s = 0; s < 120; s++) {
+      hgrid.step(1 / 60);
+      grid.step(1 / 60);
+      // Large circles are created first: slots below `large`. A contact across levels pairs one with a small circle.
+      const { lo, hi, count } = (hgrid as unknown as { pipeline: { contacts: { lo: Int32Array; hi: Int32Array; count: number } } }).pipeline.contacts;
+      for (let k = 0; k < count; k++) if (lo[k] < large && hi[k] >= large) across++;
+      expect(hgrid.stats.contacts).toBe(grid.stats.contacts);
+    }
+    expect(across).toBeGreaterThan(10);
+    expect(hgrid.stateHash()).toBe(grid.stateHash());
+  });
+
+  it('hgrid re-buckets its levels when bodies come and go, and stays with maxgrid', async () => {
+    const { World } = await import('../src/index.js');
+    const build = (broadphase: 'hgrid' | 'maxgrid') => {
+      const world = new World({ broadphase, bounds: { width: 600, height: 600 } });
+      for (let k = 0; k < 400; k++) world.createCircle({ x: 15 + (k % 20) * 28, y: 15 + Math.floor(k / 20) * 28, radius: 3 + (k % 3), vx: (k % 7) * 20 - 60, vy: (k % 5) * 20 - 40 });
+      return world;
+    };
+    const worlds = [build('hgrid'), build('maxgrid')];
+    for (let s = 0; s < 60; s++) {
+      for (const world of worlds) {
+        // Step 10: larger circles (a new level, and the smallest radius changes); 30: holes; 45: a smaller circle.
+        if (s === 10) for (let k = 0; k < 6; k++) world.createCircle({ x: 80 + k * 90, y: 300, radius: 30, vx: 50, vy: -50 });
+        if (s === 30) for (let h = 0; h < 400; h += 3) world.destroyBody(h);
+        if (s === 45) world.createCircle({ x: 300, y: 590, radius: 1, vy: -300 });
+        world.step(1 / 60);
+      }
+      expect(worlds[0].stats.contacts, `step ${s}`).toBe(worlds[1].stats.contacts);
+    }
+    expect(worlds[0].stateHash()).toBe(worlds[1].stateHash());
+  });
+
   it('auto uses maxgrid when sizes are similar', async () => {
     const { buildScene, buildWorld } = await import('@maxgrid/scenes');
     const scene = buildScene('uniform', { n: 2000, seed: 2 });

@@ -11,9 +11,10 @@ import { GridKernel, gridKernelEnabled, type KernelLayout, type KernelMemory } f
  * slots. Cells are row-major, so a run of cells in one row is one contiguous range of bodies.
  *
  * Where WebAssembly is available the arrays live in a GridKernel's memory and binning (of slots
- * 0..n-1) and scanning run there, with the same results bit for bit; the loops below are the
- * TypeScript path, used without WebAssembly, for bins over slot lists, for grids a parallel step's
- * threads bin, and for a serial scan whose shared pair buffer overflowed.
+ * 0..n-1, or of a slot list holding at least a quarter of the slots) and scanning run there, with
+ * the same results bit for bit; the loops below are the TypeScript path, used without WebAssembly,
+ * for bins over sparser slot lists, for grids a parallel step's threads bin, and for a serial scan
+ * whose shared pair buffer overflowed.
  *
  * Correctness rests on one rule, kept by the callers: the cell size is at least the largest
  * contact distance between a body in this grid and any body tested against it, so touching
@@ -61,6 +62,10 @@ export class CellGrid {
   private sourceR = new Float64Array(0);
   private sourceStore: BodyStore | null = null;
   private sourceLayout = -1;
+  // The view of a slot list's [offset, offset + n) copied for the kernel, remade when any changes.
+  private listSource: Int32Array | null = null;
+  private listOffset = -1;
+  private listView: Int32Array = new Int32Array(0);
 
   /**
    * Sizes the grid over the extent [minX, maxX] x [minY, maxY] with cells of at least
@@ -112,20 +117,33 @@ export class CellGrid {
     const cells = columns * rows;
     const { x, y, radius } = bodies;
     const kernel = this.kernel;
-    if (kernel && slots === null) {
-      kernel.ensureInputs(n);
+    // The kernel reads whole columns, copied in one block each: slots 0..n-1, or for a slot list
+    // every slot up to slotCount, which pays when the list holds at least a quarter of them (a
+    // world with holes, hgrid's fullest levels); sparser lists bin in the loops below.
+    const span = slots === null ? n : bodies.slotCount;
+    if (kernel && (slots === null || 4 * n >= span)) {
+      kernel.ensureInputs(span);
+      if (slots !== null) kernel.ensureSlotList(n);
       if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
-      if (this.sourceStore !== bodies || this.sourceLayout !== bodies.layoutVersion || this.sourceX.length !== n) {
+      if (this.sourceStore !== bodies || this.sourceLayout !== bodies.layoutVersion || this.sourceX.length !== span) {
         this.sourceStore = bodies;
         this.sourceLayout = bodies.layoutVersion;
-        this.sourceX = x.subarray(0, n);
-        this.sourceY = y.subarray(0, n);
-        this.sourceR = radius.subarray(0, n);
+        this.sourceX = x.subarray(0, span);
+        this.sourceY = y.subarray(0, span);
+        this.sourceR = radius.subarray(0, span);
       }
       kernel.inputX.set(this.sourceX);
       kernel.inputY.set(this.sourceY);
       kernel.inputR.set(this.sourceR);
-      kernel.bin(n, minX, minY, inv, columns, cells, 1 + RADIUS_PAD);
+      if (slots !== null) {
+        if (this.listSource !== slots || this.listOffset !== offset || this.listView.length !== n) {
+          this.listSource = slots;
+          this.listOffset = offset;
+          this.listView = slots.subarray(offset, offset + n);
+        }
+        kernel.slotList.set(this.listView);
+      }
+      kernel.bin(n, slots !== null, minX, minY, inv, columns, cells, 1 + RADIUS_PAD);
       return;
     }
     const { cellStart, binOf, sortedSlot, sortedX, sortedY, sortedR } = this;
@@ -263,6 +281,36 @@ export class CellGrid {
     const r0 = Math.max(row - 1, 0);
     const r1 = Math.min(row + 1, rows - 1);
     if (c0 > c1 || r0 > r1) return 0;
+    let examined = 0;
+    for (let r = r0; r <= r1; r++) {
+      examined += pushOverlaps(this, cellStart[r * columns + c0], cellStart[r * columns + c1 + 1], px, py, reach, slot, out);
+    }
+    return examined;
+  }
+
+  /**
+   * Examines a body of another grid, the circle (px, py, reach), against every body here whose
+   * centre lies within `halfWidth` of (px, py) on both axes: the cells of that window, one range
+   * per row. Used across hierarchy levels from the coarser side when that side has far fewer
+   * bodies; `halfWidth` must cover reach plus this grid's largest padded radius. Returns the
+   * number of pairs examined.
+   */
+  scanWindow(px: number, py: number, reach: number, slot: number, halfWidth: number, out: PairSink): number {
+    const { columns, rows, cellStart } = this;
+    const c0 = Math.max(this.columnOf(px - halfWidth), 0);
+    const c1 = Math.min(this.columnOf(px + halfWidth), columns - 1);
+    const r0 = Math.max(this.rowOf(py - halfWidth), 0);
+    const r1 = Math.min(this.rowOf(py + halfWidth), rows - 1);
+    if (c0 > c1 || r0 > r1) return 0;
+    const kernel = this.kernel;
+    // A shared kernel's pair buffer cannot grow mid-step; such grids take the loop below.
+    if (kernel && !kernel.shared) {
+      const found = kernel.scanWindow(columns, c0, c1, r0, r1, px, py, reach, slot);
+      if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
+      const pairs = kernel.pairs;
+      for (let p = 0; p < 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
+      return kernel.examined;
+    }
     let examined = 0;
     for (let r = r0; r <= r1; r++) {
       examined += pushOverlaps(this, cellStart[r * columns + c0], cellStart[r * columns + c1 + 1], px, py, reach, slot, out);

@@ -17,13 +17,18 @@ export type { KernelMemory };
 
 interface KernelExports {
   bin(
-    xs: number, ys: number, rs: number, n: number,
+    xs: number, ys: number, rs: number, slots: number, n: number,
     minX: number, minY: number, inverse: number, columns: number, cells: number, radiusScale: number,
     cellStart: number, binOf: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
   ): void;
   scan(
     cellStart: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
     columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, pairs: number, capacity: number,
+  ): number;
+  scanWindow(
+    cellStart: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
+    columns: number, c0: number, c1: number, r0: number, r1: number, px: number, py: number, reach: number, slot: number,
+    pairs: number, capacity: number,
   ): number;
   examined(): number;
 }
@@ -62,6 +67,7 @@ function kernelModule(shared: boolean): object | null {
 export interface KernelLayout {
   bodyCapacity: number;
   inputCapacity: number;
+  slotListCapacity: number;
   cellCapacity: number;
   pairCapacity: number;
   pairRegions: number;
@@ -69,13 +75,15 @@ export interface KernelLayout {
 
 /**
  * One grid's WebAssembly memory. Layout, by byte offset: the float64 arrays (sorted x, y, r, then
- * the input copies of x, y, r, if any), the int32 ones (binOf, sortedSlot, cellStart), and the pair buffer
+ * the input copies of x, y, r, if any), the int32 ones (slot list if any, binOf, sortedSlot, cellStart), and the pair buffer
  * last, so that the pair buffer can grow without moving anything else.
  */
 export class GridKernel {
   bodyCapacity = 0;
-  /** Room for input copies, made only by grids that bin slots 0..n-1 here (see ensureInputs). */
+  /** Room for input copies, made only by grids that bin here (see ensureInputs). */
   inputCapacity = 0;
+  /** Room for a slot list, made only by grids that bin one here (see ensureSlotList). */
+  slotListCapacity = 0;
   cellCapacity = 0;
   pairCapacity = FIRST_PAIR_CAPACITY;
 
@@ -83,6 +91,7 @@ export class GridKernel {
   private inputXAt = 0;
   private inputYAt = 0;
   private inputRAt = 0;
+  private slotListAt = 0;
   private cellStartAt = 0;
   private binOfAt = 0;
   private sortedSlotAt = 0;
@@ -95,6 +104,7 @@ export class GridKernel {
   inputX: Float64Array = new Float64Array(0);
   inputY: Float64Array = new Float64Array(0);
   inputR: Float64Array = new Float64Array(0);
+  slotList: Int32Array = new Int32Array(0);
   cellStart: Int32Array = new Int32Array(0);
   binOf: Int32Array = new Int32Array(0);
   sortedSlot: Int32Array = new Int32Array(0);
@@ -129,6 +139,7 @@ export class GridKernel {
     kernel.pairCapacity = layout.pairCapacity;
     kernel.bodyCapacity = layout.bodyCapacity;
     kernel.inputCapacity = layout.inputCapacity;
+    kernel.slotListCapacity = layout.slotListCapacity;
     kernel.cellCapacity = layout.cellCapacity;
     kernel.place();
     return kernel;
@@ -147,8 +158,8 @@ export class GridKernel {
   ) {}
 
   get layout(): KernelLayout {
-    const { bodyCapacity, inputCapacity, cellCapacity, pairCapacity, pairRegions } = this;
-    return { bodyCapacity, inputCapacity, cellCapacity, pairCapacity, pairRegions };
+    const { bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions } = this;
+    return { bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions };
   }
 
   /**
@@ -173,6 +184,13 @@ export class GridKernel {
     this.place();
   }
 
+  /** Makes room for a slot list of n slots (bins of slot lists, see CellGrid.bin); may move the arrays, as ensureInputs. */
+  ensureSlotList(n: number): void {
+    if (this.slotListCapacity >= n) return;
+    this.slotListCapacity = grownCapacity(this.slotListCapacity, n);
+    this.place();
+  }
+
   /** Grows the pair buffers to hold at least `pairs` pairs each; the other arrays keep their place and contents. */
   growPairs(pairs: number): void {
     this.pairCapacity = grownCapacity(this.pairCapacity, pairs);
@@ -189,7 +207,8 @@ export class GridKernel {
     this.inputXAt = 3 * floats;
     this.inputYAt = this.inputXAt + inputs;
     this.inputRAt = this.inputYAt + inputs;
-    this.binOfAt = this.inputRAt + inputs;
+    this.slotListAt = this.inputRAt + inputs;
+    this.binOfAt = this.slotListAt + this.slotListCapacity * 4;
     this.sortedSlotAt = this.binOfAt + ints;
     this.cellStartAt = this.sortedSlotAt + ints;
     this.pairsAt = this.cellStartAt + this.cellCapacity * 4;
@@ -207,6 +226,7 @@ export class GridKernel {
     this.inputX = new Float64Array(buffer, this.inputXAt, inputs);
     this.inputY = new Float64Array(buffer, this.inputYAt, inputs);
     this.inputR = new Float64Array(buffer, this.inputRAt, inputs);
+    this.slotList = new Int32Array(buffer, this.slotListAt, this.slotListCapacity);
     this.cellStart = new Int32Array(buffer, this.cellStartAt, this.cellCapacity);
     this.binOf = new Int32Array(buffer, this.binOfAt, bodies);
     this.sortedSlot = new Int32Array(buffer, this.sortedSlotAt, bodies);
@@ -217,10 +237,14 @@ export class GridKernel {
     this.viewVersion++;
   }
 
-  /** CellGrid.bin over inputX/Y/R[0..n), which the caller has filled. */
-  bin(n: number, minX: number, minY: number, inverse: number, columns: number, cells: number, radiusScale: number): void {
+  /**
+   * CellGrid.bin over inputX/Y/R, which the caller has filled: of slots 0..n-1, or with `slotList`
+   * of the n slots in slotList[0..n) (and inputs filled up to the largest of them).
+   */
+  bin(n: number, slotList: boolean, minX: number, minY: number, inverse: number, columns: number, cells: number, radiusScale: number): void {
+    // Offset 0 means "no list": the sorted x column always lies there, ahead of the slot list.
     this.fn.bin(
-      this.inputXAt, this.inputYAt, this.inputRAt, n,
+      this.inputXAt, this.inputYAt, this.inputRAt, slotList ? this.slotListAt : 0, n,
       minX, minY, inverse, columns, cells, radiusScale,
       this.cellStartAt, this.binOfAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
     );
@@ -240,6 +264,18 @@ export class GridKernel {
       found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, region);
     }
     return found;
+  }
+
+  /** CellGrid.scanWindow into pair buffer 0, growing it (private kernels only) until the pairs fit. */
+  scanWindow(columns: number, c0: number, c1: number, r0: number, r1: number, px: number, py: number, reach: number, slot: number): number {
+    for (;;) {
+      const found = this.fn.scanWindow(
+        this.cellStartAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
+        columns, c0, c1, r0, r1, px, py, reach, slot, this.pairsAt, this.pairCapacity,
+      );
+      if (found <= this.pairCapacity || this.shared) return found;
+      this.growPairs(found);
+    }
   }
 
   get examined(): number {
