@@ -65,6 +65,64 @@ export function bin(
   store<i32>(cellStart + ((<usize>cells + 1) << 2), n);
 }
 
+// The three passes of a parallel bin (src/parallel/kernels.ts), each on one thread's share: the
+// cells of a body range, then per band of cells the count, and the prefix sums and scatter. Same
+// formulas and order as `bin`, so the layout is the serial one.
+
+/** Each body's cell for bodies [from, to), from positions at xs, ys. */
+export function cellsOf(xs: usize, ys: usize, from: i32, to: i32, minX: f64, minY: f64, inverse: f64, columns: i32, binOf: usize): void {
+  for (let k = from; k < to; k++) {
+    const at = <usize>k << 3;
+    const c = <i32>((load<f64>(ys + at) - minY) * inverse) * columns + <i32>((load<f64>(xs + at) - minX) * inverse);
+    store<i32>(binOf + (<usize>k << 2), c);
+  }
+}
+
+/** Counts the bodies 0..n-1 of each cell in [from, to) into cellStart; returns how many that is. */
+export function countCells(binOf: usize, n: i32, from: i32, to: i32, cellStart: usize): i32 {
+  memory.fill(cellStart + (<usize>from << 2), 0, <usize>(to - from) << 2);
+  let mine: i32 = 0;
+  for (let k: i32 = 0; k < n; k++) {
+    const cell = load<i32>(binOf + (<usize>k << 2));
+    if (cell >= from && cell < to) {
+      const counter = cellStart + (<usize>cell << 2);
+      store<i32>(counter, load<i32>(counter) + 1);
+      mine++;
+    }
+  }
+  return mine;
+}
+
+/**
+ * Prefix sums over the cells [from, to), starting from `before` bodies in earlier cells, then the
+ * scatter of their bodies from the back (slots ascending inside each cell, as in `bin`).
+ */
+export function scatterCells(
+  binOf: usize, n: i32, from: i32, to: i32, before: i32, cellStart: usize,
+  xs: usize, ys: usize, rs: usize, radiusScale: f64,
+  sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
+): void {
+  let end = before;
+  for (let cell = from; cell < to; cell++) {
+    const counter = cellStart + (<usize>cell << 2);
+    end += load<i32>(counter);
+    store<i32>(counter, end);
+  }
+  for (let k: i32 = n - 1; k >= 0; k--) {
+    const cell = load<i32>(binOf + (<usize>k << 2));
+    if (cell < from || cell >= to) continue;
+    const counter = cellStart + (<usize>cell << 2);
+    const slot = load<i32>(counter) - 1;
+    store<i32>(counter, slot);
+    const src = <usize>k << 3;
+    const dst = <usize>slot << 3;
+    store<i32>(sortedSlot + (<usize>slot << 2), k);
+    store<f64>(sortedX + dst, load<f64>(xs + src));
+    store<f64>(sortedY + dst, load<f64>(ys + src));
+    store<f64>(sortedR + dst, load<f64>(rs + src) * radiusScale);
+  }
+}
+
 /** The k-th body to bin: slot k, or the k-th of a slot list. */
 // @ts-ignore: decorator
 @inline

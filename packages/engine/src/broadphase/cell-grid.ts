@@ -358,6 +358,8 @@ export class CellGrid {
     const kernel = this.kernel;
     if (kernel) {
       kernel.ensure(n, cells);
+      // A parallel step's threads copy positions and radii in before their bin passes.
+      if (shared) kernel.ensureInputs(n);
       if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
       return;
     }
@@ -373,6 +375,12 @@ export class CellGrid {
     this.sortedY = allocateLike(this.sortedY, capacity, shared);
     this.sortedR = allocateLike(this.sortedR, capacity, shared);
     this.layoutVersion++;
+  }
+
+  /** The kernel of a shared grid, whose bin passes a parallel step's threads run; null otherwise. */
+  get sharedKernel(): GridKernel | null {
+    const kernel = this.kernel;
+    return kernel && kernel.shared ? kernel : null;
   }
 
   /** The shared memory and layout that worker threads attach to, or null on the TypeScript path. */

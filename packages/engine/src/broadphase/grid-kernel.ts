@@ -30,6 +30,13 @@ interface KernelExports {
     columns: number, c0: number, c1: number, r0: number, r1: number, px: number, py: number, reach: number, slot: number,
     pairs: number, capacity: number,
   ): number;
+  cellsOf(xs: number, ys: number, from: number, to: number, minX: number, minY: number, inverse: number, columns: number, binOf: number): void;
+  countCells(binOf: number, n: number, from: number, to: number, cellStart: number): number;
+  scatterCells(
+    binOf: number, n: number, from: number, to: number, before: number, cellStart: number,
+    xs: number, ys: number, rs: number, radiusScale: number,
+    sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
+  ): void;
   examined(): number;
 }
 
@@ -174,9 +181,9 @@ export class GridKernel {
   }
 
   /**
-   * Makes room for input copies of n bodies. Only grids that bin slots 0..n-1 in the kernel need
-   * them (not hgrid's levels, which bin slot lists, nor a parallel step's grid, which its threads
-   * bin): 24 bytes per body. Like `ensure`, it may move the arrays, so call it before binning.
+   * Makes room for input copies of n bodies (24 bytes per body), which only grids that bin in the
+   * kernel need: not the smaller hgrid levels, which bin sparse slot lists in TypeScript. Like
+   * `ensure`, it may move the arrays, so call it before binning.
    */
   ensureInputs(n: number): void {
     if (this.inputCapacity >= n) return;
@@ -276,6 +283,24 @@ export class GridKernel {
       if (found <= this.pairCapacity || this.shared) return found;
       this.growPairs(found);
     }
+  }
+
+  // A parallel bin's passes (see assembly/grid-kernel.ts), over the input copies.
+
+  cellsOf(from: number, to: number, minX: number, minY: number, inverse: number, columns: number): void {
+    this.fn.cellsOf(this.inputXAt, this.inputYAt, from, to, minX, minY, inverse, columns, this.binOfAt);
+  }
+
+  countCells(n: number, from: number, to: number): number {
+    return this.fn.countCells(this.binOfAt, n, from, to, this.cellStartAt);
+  }
+
+  scatterCells(n: number, from: number, to: number, before: number, radiusScale: number): void {
+    this.fn.scatterCells(
+      this.binOfAt, n, from, to, before, this.cellStartAt,
+      this.inputXAt, this.inputYAt, this.inputRAt, radiusScale,
+      this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
+    );
   }
 
   get examined(): number {

@@ -60,6 +60,8 @@ export class ThreadKernels {
   private readonly narrowPhase: NarrowPhase;
   private readonly sink: PairSink;
 
+  private readonly chunkViews = new ChunkViews();
+
   constructor(
     readonly index: number,
     readonly control: Int32Array,
@@ -168,6 +170,7 @@ export class ThreadKernels {
     const bin = c[Slot.binInMotion] === 1;
     // Plain motion in a box: the body kernel integrates and bounces in one pass.
     const kernel = bounce && !needsGeneralMotion(this.bodies) ? this.bodies.kernel : null;
+    if (bin && this.grid.sharedKernel) this.chunkViews.prepare(this.bodies, from, to);
     const dt = p[Param.dt];
     // In cache-sized chunks, so that the walls test bodies integration has just brought in.
     for (let at = from; at < to; at += MOTION_CHUNK) {
@@ -183,13 +186,22 @@ export class ThreadKernels {
       }
       if (bin) this.binRange(at, end);
     }
+    if (bin) this.copyRadii(from, to);
   }
 
   private bin(): void {
     const total = this.control[Slot.bodyCount];
     const from = this.shareFrom(total);
     const to = this.shareEnd(total);
-    this.binRange(from, to);
+    if (this.grid.sharedKernel) this.chunkViews.prepare(this.bodies, from, to);
+    for (let at = from; at < to; at += MOTION_CHUNK) this.binRange(at, Math.min(at + MOTION_CHUNK, to));
+    this.copyRadii(from, to);
+  }
+
+  /** For the grid kernel's scatter: the radii of a body range, into its memory (binRange copies positions). */
+  private copyRadii(from: number, to: number): void {
+    const kernel = this.grid.sharedKernel;
+    if (kernel) kernel.inputR.set(this.chunkViews.radius, from);
   }
 
   /** Each body's cell, for a body range: the same formula as CellGrid.bin. */
@@ -202,6 +214,15 @@ export class ThreadKernels {
     const minX = p[Param.originX];
     const minY = p[Param.originY];
     const inv = p[Param.inverseCell];
+    const kernel = this.grid.sharedKernel;
+    if (kernel) {
+      // The grid kernel's passes read the bodies from its own memory: copy this range in first.
+      const chunk = this.chunkViews.indexOf(from);
+      kernel.inputX.set(this.chunkViews.x[chunk], from);
+      kernel.inputY.set(this.chunkViews.y[chunk], from);
+      kernel.cellsOf(from, to, minX, minY, inv, columns);
+      return;
+    }
     for (let k = from; k < to; k++) binOf[k] = ((y[k] - minY) * inv | 0) * columns + ((x[k] - minX) * inv | 0);
   }
 
@@ -215,6 +236,11 @@ export class ThreadKernels {
     const from = this.shareFrom(total);
     const to = this.shareEnd(total);
     const n = c[Slot.bodyCount];
+    const kernel = this.grid.sharedKernel;
+    if (kernel) {
+      c[Slot.blockTotal + this.index] = kernel.countCells(n, from, to);
+      return;
+    }
     const { binOf, cellStart } = this.grid;
     cellStart.fill(0, from, to);
     let mine = 0;
@@ -243,6 +269,15 @@ export class ThreadKernels {
     const { binOf, cellStart, sortedSlot, sortedX, sortedY, sortedR } = this.grid;
     let end = 0;
     for (let t = 0; t < this.index; t++) end += c[Slot.blockTotal + t];
+    const kernel = this.grid.sharedKernel;
+    if (kernel) {
+      kernel.scatterCells(n, from, to, end, 1 + RADIUS_PAD);
+      if (this.index === threads - 1) {
+        cellStart[cells] = n;
+        cellStart[cells + 1] = n;
+      }
+      return;
+    }
     for (let cell = from; cell < to; cell++) {
       end += cellStart[cell];
       cellStart[cell] = end;
@@ -333,4 +368,39 @@ export class ThreadKernels {
 /** A worker's private body store and grid, whose buffers `install` replaces with shared ones. */
 export function workerKernels(index: number, control: Int32Array, params: Float64Array, results: Float64Array): ThreadKernels {
   return new ThreadKernels(index, control, params, results, new BodyStore(), new CellGrid());
+}
+
+/**
+ * Views of the position columns over each MOTION_CHUNK of one thread's share, and of the radius
+ * column over the whole share, for copying them into the grid kernel's memory a block at a time.
+ * Made again only when the share or the columns change: subarray() allocates, and this runs
+ * every step.
+ */
+class ChunkViews {
+  x: Float64Array[] = [];
+  y: Float64Array[] = [];
+  radius = new Float64Array(0);
+  private source: Float64Array | null = null;
+  private from = -1;
+  private to = -1;
+
+  prepare(bodies: BodyStore, from: number, to: number): void {
+    if (this.source === bodies.x && this.from === from && this.to === to) return;
+    this.source = bodies.x;
+    this.from = from;
+    this.to = to;
+    this.x = [];
+    this.y = [];
+    for (let at = from; at < to; at += MOTION_CHUNK) {
+      const end = Math.min(at + MOTION_CHUNK, to);
+      this.x.push(bodies.x.subarray(at, end));
+      this.y.push(bodies.y.subarray(at, end));
+    }
+    this.radius = bodies.radius.subarray(from, to);
+  }
+
+  /** The chunk that starts at body `at`. */
+  indexOf(at: number): number {
+    return (at - this.from) / MOTION_CHUNK;
+  }
 }
