@@ -190,6 +190,7 @@ export class ParallelStep {
     }
     this.run(Command.count);
     this.run(Command.scatter);
+    this.growAhead(grid);
     this.run(Command.scan);
     // Contact lists and pair buffers that overflowed grow, and the scan runs again (both may grow
     // in one round: no short-circuit).
@@ -397,12 +398,30 @@ export class ParallelStep {
     this.awaitWorkers();
   }
 
+  /**
+   * Before a step's scan: grows each contact list, and the pair buffers, that the last step filled
+   * past three quarters. Counts change little from one step to the next, and a list that overflows
+   * costs a second scan of the whole grid: at 1,000,000 bodies, whose contacts climb from 3,000 to
+   * 48,000 over the first ten steps, three of the first fifteen steps scanned twice or three times.
+   */
+  private growAhead(grid: CellGrid): void {
+    this.growLists(4 / 3);
+    let most = 0;
+    for (let t = 0; t < this.threads; t++) most = Math.max(most, this.results[t * RESULT_STRIDE + Result.candidates]);
+    grid.growPairBuffers(Math.ceil((most * 4) / 3));
+  }
+
   /** Enlarges every contact list that overflowed in the last scan; true when the scan must rerun. */
   private growOverflowingLists(): boolean {
+    return this.growLists(1);
+  }
+
+  /** Enlarges every contact list whose last count times `headroom` exceeds it; true when any grew. */
+  private growLists(headroom: number): boolean {
     const k = this.caller;
     let grew = false;
     for (let t = 0; t < this.threads; t++) {
-      const needed = this.control[Slot.contactCount + t];
+      const needed = Math.ceil(this.control[Slot.contactCount + t] * headroom);
       if (needed <= k.contactLo[t].length) continue;
       const capacity = grownCapacity(k.contactLo[t].length, needed);
       k.contactLo[t] = new Int32Array(new SharedArrayBuffer(capacity * 4));
