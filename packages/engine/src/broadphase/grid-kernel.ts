@@ -93,6 +93,8 @@ export class GridKernel {
   slotListCapacity = 0;
   cellCapacity = 0;
   pairCapacity = FIRST_PAIR_CAPACITY;
+  /** Pairs the last full scan found (a private kernel's scans grow the buffer ahead of it). */
+  private lastFound = 0;
 
   // Byte offsets of each array.
   private inputXAt = 0;
@@ -265,11 +267,14 @@ export class GridKernel {
    * `examined` then holds the pairs examined.
    */
   scan(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, region = 0): number {
+    // Pair counts change little between steps: grow ahead of a full buffer rather than scan twice.
+    if (!this.shared && 4 * this.lastFound > 3 * this.pairCapacity) this.growPairs(Math.ceil((this.lastFound * 4) / 3));
     let found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, region);
     if (found > this.pairCapacity && !this.shared) {
       this.growPairs(found);
       found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, region);
     }
+    this.lastFound = found;
     return found;
   }
 
