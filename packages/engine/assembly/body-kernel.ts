@@ -214,3 +214,79 @@ export function solveContacts(
     store<f64>(ys + j, load<f64>(ys + j) + sj * ny);
   }
 }
+
+/**
+ * ContactBuffer.sortCanonical on `count` (lo, hi) int32 pairs at lo and hi, with scratch of the
+ * same size at tlo and thi: ascending (lo, hi) order, ending back in lo and hi. Few contacts per
+ * slot: byte-wise LSD radix passes over the contacts (buckets: 256 int32). Many: two stable
+ * counting passes keyed by slot (counts: slotCount + 1 int32). Pairs are unique, so the order is
+ * the same whichever sort runs.
+ */
+export function sortContacts(lo: usize, hi: usize, tlo: usize, thi: usize, count: i32, slotCount: i32, counts: usize, buckets: usize): void {
+  if (count < 2) return;
+  if (<i64>count * 8 < <i64>slotCount) {
+    let bytes = 1;
+    while (bytes < 4 && slotCount > (1 << (8 * bytes))) bytes++;
+    let srcLo = lo;
+    let srcHi = hi;
+    let dstLo = tlo;
+    let dstHi = thi;
+    for (let pass = 0; pass < 2 * bytes; pass++) {
+      const keyIsHi = pass < bytes;
+      const shift = 8 * (keyIsHi ? pass : pass - bytes);
+      radixPass(keyIsHi ? srcHi : srcLo, shift, srcLo, srcHi, dstLo, dstHi, count, buckets);
+      const tl = srcLo;
+      srcLo = dstLo;
+      dstLo = tl;
+      const th = srcHi;
+      srcHi = dstHi;
+      dstHi = th;
+    }
+    return; // an even number of passes ends back in lo and hi
+  }
+  countingPass(hi, lo, hi, tlo, thi, count, slotCount, counts);
+  countingPass(tlo, tlo, thi, lo, hi, count, slotCount, counts);
+}
+
+function radixPass(key: usize, shift: i32, srcLo: usize, srcHi: usize, dstLo: usize, dstHi: usize, count: i32, buckets: usize): void {
+  memory.fill(buckets, 0, 256 << 2);
+  for (let k = 0; k < count; k++) {
+    const b = buckets + (<usize>((load<i32>(key + (<usize>k << 2)) >>> shift) & 255) << 2);
+    store<i32>(b, load<i32>(b) + 1);
+  }
+  let sum = 0;
+  for (let b = 0; b < 256; b++) {
+    const at = buckets + (<usize>b << 2);
+    const c = load<i32>(at);
+    store<i32>(at, sum);
+    sum += c;
+  }
+  for (let k = 0; k < count; k++) {
+    const from = <usize>k << 2;
+    const b = buckets + (<usize>((load<i32>(key + from) >>> shift) & 255) << 2);
+    const to = <usize>load<i32>(b) << 2;
+    store<i32>(b, load<i32>(b) + 1);
+    store<i32>(dstLo + to, load<i32>(srcLo + from));
+    store<i32>(dstHi + to, load<i32>(srcHi + from));
+  }
+}
+
+function countingPass(key: usize, srcLo: usize, srcHi: usize, dstLo: usize, dstHi: usize, count: i32, slotCount: i32, counts: usize): void {
+  memory.fill(counts, 0, (<usize>slotCount + 1) << 2);
+  for (let k = 0; k < count; k++) {
+    const c = counts + ((<usize>load<i32>(key + (<usize>k << 2)) + 1) << 2);
+    store<i32>(c, load<i32>(c) + 1);
+  }
+  for (let s = 0; s < slotCount; s++) {
+    const c = counts + ((<usize>s + 1) << 2);
+    store<i32>(c, load<i32>(c) + load<i32>(c - 4));
+  }
+  for (let k = 0; k < count; k++) {
+    const from = <usize>k << 2;
+    const c = counts + (<usize>load<i32>(key + from) << 2);
+    const to = <usize>load<i32>(c) << 2;
+    store<i32>(c, load<i32>(c) + 1);
+    store<i32>(dstLo + to, load<i32>(srcLo + from));
+    store<i32>(dstHi + to, load<i32>(srcHi + from));
+  }
+}

@@ -1,9 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { ContactBuffer } from '../src/store/contact-buffer.js';
+import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
 
 describe('canonical contact order', () => {
-  it('sorts unique (lo, hi) pairs ascending, by counting passes (many contacts) or radix (few)', () => {
+  it.each([
+    ['in WebAssembly', true],
+    ['in TypeScript', false],
+  ])('sorts unique (lo, hi) pairs ascending, by counting passes (many contacts) or radix (few), %s', (_label, kernel) => {
     fc.assert(
       fc.property(fc.integer({ min: 2, max: 70_000 }), fc.array(fc.tuple(fc.nat(), fc.nat()), { maxLength: 400 }), (slots, raw) => {
         const unique = new Map<string, [number, number]>();
@@ -13,9 +17,13 @@ describe('canonical contact order', () => {
           if (i !== j) unique.set(`${Math.min(i, j)},${Math.max(i, j)}`, [Math.min(i, j), Math.max(i, j)]);
         }
         const pairs = [...unique.values()];
+        setBodyKernelEnabled(kernel);
         const buffer = new ContactBuffer();
+        setBodyKernelEnabled(true);
         for (const [lo, hi] of pairs) buffer.push(lo, hi);
         buffer.sortCanonical(slots);
+        // The path under test really ran (the sorter is made at the first sort of two or more pairs).
+        if (pairs.length >= 2) expect(Boolean((buffer as unknown as { sorter: unknown }).sorter)).toBe(kernel);
         const sorted = Array.from({ length: buffer.count }, (_, k) => [buffer.lo[k], buffer.hi[k]]);
         expect(sorted).toEqual(pairs.sort((p, q) => p[0] - q[0] || p[1] - q[1]));
       }),

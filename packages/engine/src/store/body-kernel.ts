@@ -60,15 +60,21 @@ const SHARED_MAXIMUM_PAGES = 32768;
 const compiled: { private?: object | null; shared?: object | null } = {};
 let enabled = true;
 
-function kernelModule(shared: boolean): object | null {
+/** Whether kernels made from now on run (see setBodyKernelEnabled). */
+export function bodyKernelEnabled(): boolean {
+  return enabled;
+}
+
+/** The compiled body kernel for a private or a shared memory, or null where this runtime lacks one. */
+export function kernelModule(shared: boolean): object | null {
   const key = shared ? 'shared' : 'private';
   if (compiled[key] === undefined) compiled[key] = compileKernel(shared ? BODY_KERNEL_SHARED_WASM : BODY_KERNEL_WASM);
   return compiled[key]!;
 }
 
 /**
- * Whether body stores laid out from now on use the kernel. For tests and measurements that compare
- * the two paths; not part of the public API.
+ * Whether body stores laid out, and contact buffers made, from now on use the kernel. For tests
+ * and measurements that compare the two paths; not part of the public API.
  */
 export function setBodyKernelEnabled(on: boolean): void {
   enabled = on;

@@ -1,4 +1,6 @@
 import { grownCapacity, grow } from '../util/grow.js';
+import { ContactSorter } from './contact-sorter.js';
+import { bodyKernelEnabled } from './body-kernel.js';
 
 /** Where the narrow-phase records touching pairs. */
 export interface ContactSink {
@@ -14,7 +16,8 @@ export interface ContactSink {
  * matter of cost. With many contacts per slot, two stable counting passes keyed by slot (by hi,
  * then by lo): O(slots + contacts). With few, as in sparse elastic scenes, byte-wise LSD radix
  * passes over the contacts alone: O(contacts x bytes), independent of the world's size.
- * Nothing is allocated once the scratch has grown.
+ * Nothing is allocated once the scratch has grown. Where WebAssembly is available the same sorts
+ * run there (ContactSorter), on copies of the pairs.
  */
 export class ContactBuffer implements ContactSink {
   lo: Int32Array = new Int32Array(64);
@@ -29,6 +32,10 @@ export class ContactBuffer implements ContactSink {
   private scratchHi: Int32Array = new Int32Array(64);
   private counts = new Int32Array(64);
   private readonly buckets = new Int32Array(256);
+  /** The WebAssembly sort: undefined until the first sort, null on the TypeScript path. */
+  private sorter: ContactSorter | null | undefined = undefined;
+  /** Whether kernels were enabled when this buffer was made (see setBodyKernelEnabled). */
+  private readonly sorterWanted = bodyKernelEnabled();
 
   clear(): void {
     this.count = 0;
@@ -67,11 +74,13 @@ export class ContactBuffer implements ContactSink {
   }
 
   memoryBytes(): number {
-    return (this.lo.byteLength + this.scratchLo.byteLength) * 2 + this.counts.byteLength;
+    return (this.lo.byteLength + this.scratchLo.byteLength) * 2 + this.counts.byteLength + (this.sorter?.memoryBytes() ?? 0);
   }
 
   sortCanonical(slotCount: number): void {
     if (this.count < 2) return;
+    if (this.sorter === undefined) this.sorter = this.sorterWanted ? ContactSorter.create() : null;
+    if (this.sorter) return this.sorter.sort(this.lo, this.hi, this.count, slotCount);
     if (this.counts.length < slotCount + 1) this.counts = new Int32Array(grownCapacity(this.counts.length, slotCount + 1));
     if (this.scratchLo.length < this.lo.length) {
       this.scratchLo = new Int32Array(this.lo.length);
