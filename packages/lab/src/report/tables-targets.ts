@@ -93,7 +93,7 @@ export function targetsTables(r: TargetsResult): Table[] {
       title: `T3 a million: uniform N = ${n(r.t3.n)} (targets: ≤ 200 bytes per body; ns per body ≤ 1.5× the 64k cost)`,
       headers: ['median ms [p25–p75]', 'timed steps', 'engine bytes / body', 'ns / body / step', `ns / body at ${n(o.n)} (T1)`, 'ratio 1M / 64k', 'build ms'],
       rows: [[spreadText(r.t3.ms), String(r.t3.steps), fmt(r.t3.bytesPerBody), fmt(r.t3.nsPerBody), fmt(r.t3.nsPerBodyAt64k), ratioText(r.t3.ratio), fmt(r.t3.buildMs)]],
-      note: 'Engine bytes are `world.memoryBytes()`, the engine\'s own typed arrays.',
+      note: `Engine bytes are \`world.memoryBytes()\`, the engine's own typed arrays. Timed after ${o.bigWarmupSteps} untimed steps, once the scene's contacts have stopped climbing.`,
     },
     t4Table(r),
     {
@@ -161,6 +161,7 @@ export function targetsHeadline(r: TargetsResult): string[] {
 
 function t4Table(r: TargetsResult) {
   const t4 = r.t4;
+  const o = r.meta.options as Record<string, number>;
   return {
     title: `T4 multi-core: uniform N = ${n(t4.n ?? 0)}, 1 thread vs ${t4.threads ?? '–'} threads (target: ≥ 1.6× on 2 cores, same bits; moonshot ≥ 60 steps/s)`,
     headers: ['1 thread median ms [p25–p75]', 'parallel median ms [p25–p75]', 'speed-up', 'parallel steps / s', 'same state hash'],
@@ -171,7 +172,7 @@ function t4Table(r: TargetsResult) {
     ],
     note:
       t4.status === 'ok'
-        ? `Two worlds from one seeded scene, ${t4.steps} timed steps each, alternating step by step; the parallel world uses \`world.startWorkers(${t4.threads})\` (worker_threads). docs/engine.md says what runs on each thread.`
+        ? `Two worlds from one seeded scene, ${t4.steps} timed steps each after ${o.bigWarmupSteps} untimed ones, alternating step by step; the parallel world uses \`world.startWorkers(${t4.threads})\` (worker_threads). docs/engine.md says what runs on each thread.`
         : undefined,
   };
 }
