@@ -169,12 +169,15 @@ function fold(p: f64, v: f64, lo: f64, hi: f64, e: f64): f64 {
 
 /**
  * solveContacts for `count` contacts whose lo and hi slots are at `los` and `his` (int32 each),
- * in that order: contact-solver.ts `resolveContact` without events or sleepers.
+ * in that order: contact-solver.ts `resolveContact` without events or sleepers. With a box
+ * (width > 0), each body that a contact's separation leaves outside it is written to `escapes`
+ * (as EscapeLog.note does), so that the correct stage clamps those alone; returns how many.
  */
 export function solveContacts(
   xs: usize, ys: usize, vxs: usize, vys: usize, rs: usize, invMasses: usize, es: usize,
-  los: usize, his: usize, count: i32, restitutionThreshold: f64,
-): void {
+  los: usize, his: usize, count: i32, restitutionThreshold: f64, width: f64, height: f64, escapes: usize,
+): i32 {
+  let escaped: i32 = 0;
   for (let k = 0; k < count; k++) {
     const i = <usize>load<i32>(los + (<usize>k << 2)) << 3;
     const j = <usize>load<i32>(his + (<usize>k << 2)) << 3;
@@ -212,7 +215,28 @@ export function solveContacts(
     store<f64>(ys + i, load<f64>(ys + i) - si * ny);
     store<f64>(xs + j, load<f64>(xs + j) + sj * nx);
     store<f64>(ys + j, load<f64>(ys + j) + sj * ny);
+    if (width > 0) {
+      if (outside(i, xs, ys, rs, width, height)) {
+        store<i32>(escapes + (<usize>escaped << 2), <i32>(i >> 3));
+        escaped++;
+      }
+      if (outside(j, xs, ys, rs, width, height)) {
+        store<i32>(escapes + (<usize>escaped << 2), <i32>(j >> 3));
+        escaped++;
+      }
+    }
   }
+  return escaped;
+}
+
+/** box-walls.ts `outsideBox` for the body at byte offset `at`. */
+// @ts-ignore: decorator
+@inline
+function outside(at: usize, xs: usize, ys: usize, rs: usize, width: f64, height: f64): bool {
+  const r = load<f64>(rs + at);
+  const px = load<f64>(xs + at);
+  const py = load<f64>(ys + at);
+  return px < r || px > width - r || py < r || py > height - r;
 }
 
 /**

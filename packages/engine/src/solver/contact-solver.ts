@@ -28,13 +28,25 @@ export interface SolverSettings {
   hitThreshold: number;
 }
 
-export function solveContacts(bodies: BodyStore, contacts: ContactBuffer, events: ContactEvents | null, settings: SolverSettings): void {
+/**
+ * Returns true when the body kernel solved and, given a box, noted in `bodies.kernel.escaped` every
+ * body separation left outside it: the correct stage then clamps those alone (see EscapeLog).
+ */
+export function solveContacts(
+  bodies: BodyStore,
+  contacts: ContactBuffer,
+  events: ContactEvents | null,
+  settings: SolverSettings,
+  box: { width: number; height: number } | null = null,
+): boolean {
   const { lo, hi, count } = contacts;
   // The kernel's loop is resolveContact without hit events or waking.
   if (bodies.kernel && events === null && bodies.sleepingCount === 0) {
-    return bodies.kernel.solveContacts(lo, hi, count, settings.restitutionThreshold);
+    bodies.kernel.solveContacts(lo, hi, count, settings.restitutionThreshold, box);
+    return true;
   }
   for (let k = 0; k < count; k++) resolveContact(bodies, lo[k], hi[k], settings, events);
+  return false;
 }
 
 /**

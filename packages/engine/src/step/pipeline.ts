@@ -7,7 +7,7 @@ import { NarrowPhase } from '../narrowphase/narrowphase.js';
 import { INTEGRATORS, type IntegratorName } from '../integrate/integrator.js';
 import { clearForces, needsGeneralMotion } from '../integrate/motion.js';
 import type { BodyKernel } from '../store/body-kernel.js';
-import { bounceOffBox, clampIntoBox } from '../solver/box-walls.js';
+import { bounceOffBox, clampBodies, clampIntoBox } from '../solver/box-walls.js';
 import { solveContacts, type SolverSettings } from '../solver/contact-solver.js';
 import { updateSleep } from '../solver/sleep.js';
 import { ContinuousCollision } from '../solver/continuous.js';
@@ -112,13 +112,14 @@ export class StepPipeline {
     events?.clear();
     const solvedInParallel = parallel !== null && events === null && bodies.sleepingCount === 0;
     if (solvedInParallel) parallel.solve(settings.solver, box);
-    else solveContacts(bodies, contacts, events, settings.solver);
+    const escapesNoted = !solvedInParallel && solveContacts(bodies, contacts, events, settings.solver, box);
     const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver.restitutionThreshold);
     const t4 = nowMs();
 
     if (box) {
       if (solvedInParallel && segmentContacts === 0) parallel.clampEscaped(box);
       else if (parallel && segmentContacts === 0) parallel.clamp(box);
+      else if (escapesNoted && segmentContacts === 0) clampBodies(bodies, bodies.kernel!.escaped, 0, bodies.kernel!.escapedCount, box.width, box.height);
       else clampIntoBox(bodies, box.width, box.height, segmentContacts > 0 ? null : contacts);
     }
     const t5 = nowMs();

@@ -1,5 +1,5 @@
 import { BODY_KERNEL_SHARED_WASM, BODY_KERNEL_WASM } from '../generated/body-kernel-wasm.js';
-import type { Column } from '../util/grow.js';
+import { grownCapacity, type Column } from '../util/grow.js';
 import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
 
 /**
@@ -32,8 +32,8 @@ interface BodyKernelExports {
   ): void;
   solveContacts(
     xs: number, ys: number, vxs: number, vys: number, rs: number, invMasses: number, es: number,
-    los: number, his: number, count: number, restitutionThreshold: number,
-  ): void;
+    los: number, his: number, count: number, restitutionThreshold: number, width: number, height: number, escapes: number,
+  ): number;
 }
 
 /** The columns the kernel reads: the store's, under the same names. */
@@ -48,9 +48,12 @@ export interface KernelColumns {
   type: Uint8Array;
 }
 
-/** Contacts copied into the memory per solve call: 16 KB of scratch at the start of the memory. */
+/**
+ * Contacts copied into the memory per solve call, and room for the bodies they may leave outside
+ * the box (two per contact): 32 KB of scratch at the start of the memory.
+ */
 const CONTACT_CHUNK = 2048;
-const SCRATCH_BYTES = CONTACT_CHUNK * 8;
+const SCRATCH_BYTES = CONTACT_CHUNK * 16;
 /** Room to start each column on an 8-byte boundary. */
 const ALIGN = 8;
 
@@ -95,6 +98,10 @@ export class BodyKernel {
   private typeAt = 0;
   private readonly scratchLo: Int32Array;
   private readonly scratchHi: Int32Array;
+  private readonly scratchEscapes: Int32Array;
+  /** Bodies the last solveContacts in a box left outside it: escaped[0..escapedCount). */
+  escaped = new Int32Array(64);
+  escapedCount = 0;
 
   /**
    * A kernel whose memory holds `columns` columns of `capacity` elements totalling `bytesPerBody`
@@ -130,6 +137,7 @@ export class BodyKernel {
     const buffer = memory.buffer as ArrayBuffer;
     this.scratchLo = new Int32Array(buffer, 0, CONTACT_CHUNK);
     this.scratchHi = new Int32Array(buffer, CONTACT_CHUNK * 4, CONTACT_CHUNK);
+    this.scratchEscapes = new Int32Array(buffer, CONTACT_CHUNK * 8, 2 * CONTACT_CHUNK);
   }
 
   /** A zeroed column of `old`'s kind with `capacity` elements in this memory, holding as much of `old` as fits. */
@@ -189,9 +197,15 @@ export class BodyKernel {
     );
   }
 
-  /** Contacts lo[k], hi[k] for k in [0, count), in order, copied in chunks into the scratch area. */
-  solveContacts(lo: Int32Array, hi: Int32Array, count: number, restitutionThreshold: number): void {
-    const { scratchLo, scratchHi } = this;
+  /**
+   * Contacts lo[k], hi[k] for k in [0, count), in order, copied in chunks into the scratch area.
+   * With a box, notes the bodies separation left outside it in `escaped` (see clampBodies).
+   */
+  solveContacts(lo: Int32Array, hi: Int32Array, count: number, restitutionThreshold: number, box: { width: number; height: number } | null): void {
+    const { scratchLo, scratchHi, scratchEscapes } = this;
+    const width = box ? box.width : 0;
+    const height = box ? box.height : 0;
+    this.escapedCount = 0;
     for (let from = 0; from < count; from += CONTACT_CHUNK) {
       const to = Math.min(count, from + CONTACT_CHUNK);
       // Element by element: subarray() would allocate two views per chunk.
@@ -199,10 +213,22 @@ export class BodyKernel {
         scratchLo[k - from] = lo[k];
         scratchHi[k - from] = hi[k];
       }
-      this.fn.solveContacts(
+      const escaped = this.fn.solveContacts(
         this.xAt, this.yAt, this.vxAt, this.vyAt, this.radiusAt, this.invMassAt, this.restitutionAt,
-        scratchLo.byteOffset, scratchHi.byteOffset, to - from, restitutionThreshold,
+        scratchLo.byteOffset, scratchHi.byteOffset, to - from, restitutionThreshold, width, height, scratchEscapes.byteOffset,
       );
+      if (escaped > 0) this.keepEscapes(escaped);
     }
+  }
+
+  private keepEscapes(n: number): void {
+    const at = this.escapedCount;
+    if (at + n > this.escaped.length) {
+      const grown = new Int32Array(grownCapacity(this.escaped.length, at + n));
+      grown.set(this.escaped);
+      this.escaped = grown;
+    }
+    for (let e = 0; e < n; e++) this.escaped[at + e] = this.scratchEscapes[e];
+    this.escapedCount = at + n;
   }
 }
