@@ -80,6 +80,20 @@ describe('parallel step', () => {
     await expectSameBits(uniform(2000), 40, during);
   });
 
+  it('keeps the same bits when a destroyed body\'s slot is reused at once by a body of another size', async () => {
+    // No holes remain, so the threads keep binning in motion: the new radius must reach the grid.
+    const during = (world: World, step: number) => {
+      if (step % 5 !== 2) return;
+      const handle = world.handles()[(step * 37) % 2000];
+      const { x, y } = world.getCircle(handle);
+      const radius = 2 + (step % 9);
+      const { width, height } = world.box!;
+      world.destroyBody(handle);
+      world.createCircle({ x: Math.min(Math.max(x, radius), width - radius), y: Math.min(Math.max(y, radius), height - radius), radius, vx: 30, vy: -20 });
+    };
+    await expectSameBits(uniform(2000), 40, during);
+  });
+
   it('keeps the same bits in a crowded scene whose contacts overflow the threads\' first contact lists', async () => {
     let most = 0;
     const build = () => buildWorld(buildScene('uniform', { n: 6000, fill: 0.6, maxSpeed: 400 }), { broadphase: 'maxgrid' });

@@ -33,6 +33,8 @@ export const Slot = {
   contactTotal: 16,
   /** 1: motion also computes each body's cell (the grid is laid out before motion). */
   binInMotion: 17,
+  /** The body store's membershipVersion (mod 2^32): radii change only when it does. */
+  membership: 18,
   /** MAX_THREADS cells: bodies in each thread's cell range, for the prefix sums. */
   blockTotal: 32,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */

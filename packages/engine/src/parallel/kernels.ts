@@ -13,6 +13,7 @@ import { nowMs } from '../util/timer.js';
 import { BODY_COLUMNS, Command, INTEGRATOR_IDS, Param, RESULT_STRIDE, Result, Slot, shareStart, type BufferMessage } from './control.js';
 import type { Column } from '../util/grow.js';
 import { BodyKernel } from '../store/body-kernel.js';
+import type { GridKernel } from '../broadphase/grid-kernel.js';
 
 /** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2. */
 const MOTION_CHUNK = 4096;
@@ -61,6 +62,12 @@ export class ThreadKernels {
   private readonly sink: PairSink;
 
   private readonly chunkViews = new ChunkViews();
+  // What the grid kernel's radius copy was made for (see copyRadii).
+  private radiiCopied: Float64Array | null = null;
+  private radiiMembership = 0;
+  private radiiKernel: GridKernel | null = null;
+  private radiiLayout = -1;
+  private radiiFrom = -1;
 
   constructor(
     readonly index: number,
@@ -201,7 +208,18 @@ export class ThreadKernels {
   /** For the grid kernel's scatter: the radii of a body range, into its memory (binRange copies positions). */
   private copyRadii(from: number, to: number): void {
     const kernel = this.grid.sharedKernel;
-    if (kernel) kernel.inputR.set(this.chunkViews.radius, from);
+    if (!kernel) return;
+    // Radii change only with membership, and the copy survives until the grid's arrays move.
+    const membership = this.control[Slot.membership];
+    const radius = this.chunkViews.radius;
+    const same = this.radiiCopied === radius && this.radiiMembership === membership && this.radiiFrom === from;
+    if (same && this.radiiKernel === kernel && this.radiiLayout === kernel.viewVersion) return;
+    kernel.inputR.set(radius, from);
+    this.radiiCopied = radius;
+    this.radiiMembership = membership;
+    this.radiiKernel = kernel;
+    this.radiiLayout = kernel.viewVersion;
+    this.radiiFrom = from;
   }
 
   /** Each body's cell, for a body range: the same formula as CellGrid.bin. */

@@ -157,6 +157,7 @@ export class ParallelStep {
   motion(settings: MotionSettings, bounce: boolean, grid: CellGrid | null, coordPad: number): void {
     if (grid) this.useGrid(grid, coordPad);
     this.control[Slot.binInMotion] = grid ? 1 : 0;
+    this.control[Slot.membership] = this.bodies.membershipVersion | 0;
     const c = this.control;
     const p = this.params;
     const b = this.bodies;
