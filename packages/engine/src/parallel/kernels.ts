@@ -87,7 +87,7 @@ export class ThreadKernels {
     for (const name of BODY_COLUMNS) columns[name] = message.bodies[name];
     let kernel: BodyKernel | null = null;
     if (message.bodyKernel) {
-      kernel = BodyKernel.attach(message.bodyKernel);
+      kernel = BodyKernel.attach(message.bodyKernel, this.index);
       if (!kernel) throw new Error(`worker ${this.index} cannot run the body WebAssembly kernel on shared memory`);
       kernel.bind(this.bodies);
     }

@@ -77,6 +77,9 @@ export function solveContactBlock(
     mark[hi[k]] = stamp;
   }
   let waiting = 0;
+  // With the body kernel, the contacts not deferred are queued and resolved there, in order: which
+  // are deferred depends on the marks alone, not on what resolving does.
+  const kernel = bodies.kernel;
   for (let k = from; k < to; k++) {
     const i = lo[k];
     const j = hi[k];
@@ -86,8 +89,17 @@ export function solveContactBlock(
       deferred[from + waiting++] = k;
       continue;
     }
+    if (kernel) {
+      kernel.queue(i, j);
+      continue;
+    }
     resolveContact(bodies, i, j, settings, null);
     escapes.note(bodies, i, j);
+  }
+  if (kernel) {
+    // The log carries the box's size (width 0: no box, nothing to note).
+    kernel.solveQueue(settings.restitutionThreshold, escapes.width > 0 ? escapes : null);
+    escapes.noteSlots(kernel.escaped, kernel.escapedCount);
   }
   return waiting;
 }
@@ -111,6 +123,11 @@ export class EscapeLog {
     this.count = 0;
     this.width = width;
     this.height = height;
+  }
+
+  /** Notes slots already known to be outside (the body kernel's solve found them). */
+  noteSlots(slots: Int32Array, count: number): void {
+    for (let e = 0; e < count; e++) this.list[this.at + this.count++] = slots[e];
   }
 
   note(bodies: BodyStore, i: number, j: number): void {

@@ -54,6 +54,8 @@ export interface KernelColumns {
  */
 const CONTACT_CHUNK = 2048;
 const SCRATCH_BYTES = CONTACT_CHUNK * 16;
+/** A shared memory has one scratch area per thread of a parallel step (at most 16, control.ts MAX_THREADS). */
+const SHARED_SCRATCH_AREAS = 16;
 /** Room to start each column on an 8-byte boundary. */
 const ALIGN = 8;
 
@@ -86,7 +88,7 @@ export function setBodyKernelEnabled(on: boolean): void {
 type ColumnConstructor = { new (buffer: ArrayBuffer, byteOffset: number, length: number): Column; readonly BYTES_PER_ELEMENT: number };
 
 export class BodyKernel {
-  private next = SCRATCH_BYTES;
+  private next: number;
   // Byte offsets of the columns the kernel reads, taken in `bind`.
   private xAt = 0;
   private yAt = 0;
@@ -112,7 +114,8 @@ export class BodyKernel {
     if (!enabled) return null;
     const module = kernelModule(shared);
     if (module === null) return null;
-    const pages = Math.ceil((SCRATCH_BYTES + capacity * bytesPerBody + columns * ALIGN) / PAGE_BYTES);
+    const scratch = SCRATCH_BYTES * (shared ? SHARED_SCRATCH_AREAS : 1);
+    const pages = Math.ceil((scratch + capacity * bytesPerBody + columns * ALIGN) / PAGE_BYTES);
     if (shared && pages > SHARED_MAXIMUM_PAGES) return null;
     let memory: KernelMemory;
     try {
@@ -120,24 +123,32 @@ export class BodyKernel {
     } catch {
       return null; // out of address space or memory: the plain typed arrays may still fit
     }
-    return new BodyKernel(memory, instantiateKernel<BodyKernelExports>(module, memory), shared);
+    const kernel = new BodyKernel(memory, instantiateKernel<BodyKernelExports>(module, memory), shared, 0);
+    kernel.next = scratch;
+    return kernel;
   }
 
-  /** A worker thread's kernel over the caller's shared memory (see `sharedMemory`); bind it to the columns. */
-  static attach(memory: KernelMemory): BodyKernel | null {
+  /**
+   * Thread `index`'s kernel over the caller's shared memory (see `sharedMemory`), with its own
+   * scratch area; bind it to the columns.
+   */
+  static attach(memory: KernelMemory, index: number): BodyKernel | null {
     const module = kernelModule(true);
-    return module === null ? null : new BodyKernel(memory, instantiateKernel<BodyKernelExports>(module, memory), true);
+    return module === null ? null : new BodyKernel(memory, instantiateKernel<BodyKernelExports>(module, memory), true, index);
   }
 
   private constructor(
     private readonly memory: KernelMemory,
     private readonly fn: BodyKernelExports,
     private readonly shared: boolean,
+    scratchArea: number,
   ) {
     const buffer = memory.buffer as ArrayBuffer;
-    this.scratchLo = new Int32Array(buffer, 0, CONTACT_CHUNK);
-    this.scratchHi = new Int32Array(buffer, CONTACT_CHUNK * 4, CONTACT_CHUNK);
-    this.scratchEscapes = new Int32Array(buffer, CONTACT_CHUNK * 8, 2 * CONTACT_CHUNK);
+    const at = scratchArea * SCRATCH_BYTES;
+    this.scratchLo = new Int32Array(buffer, at, CONTACT_CHUNK);
+    this.scratchHi = new Int32Array(buffer, at + CONTACT_CHUNK * 4, CONTACT_CHUNK);
+    this.scratchEscapes = new Int32Array(buffer, at + CONTACT_CHUNK * 8, 2 * CONTACT_CHUNK);
+    this.next = SCRATCH_BYTES;
   }
 
   /** A zeroed column of `old`'s kind with `capacity` elements in this memory, holding as much of `old` as fits. */
@@ -219,6 +230,32 @@ export class BodyKernel {
       );
       if (escaped > 0) this.keepEscapes(escaped);
     }
+  }
+
+  /** Contacts waiting for solveQueue: queueLo/queueHi[0..queued). */
+  private queueLo = new Int32Array(64);
+  private queueHi = new Int32Array(64);
+  private queued = 0;
+
+  /** Queues contact (i, j) for solveQueue: a parallel step's solve block, minus what it defers. */
+  queue(i: number, j: number): void {
+    if (this.queued === this.queueLo.length) {
+      const capacity = grownCapacity(this.queueLo.length, this.queued + 1);
+      const lo = new Int32Array(capacity);
+      const hi = new Int32Array(capacity);
+      lo.set(this.queueLo);
+      hi.set(this.queueHi);
+      this.queueLo = lo;
+      this.queueHi = hi;
+    }
+    this.queueLo[this.queued] = i;
+    this.queueHi[this.queued++] = j;
+  }
+
+  /** solveContacts over the queued contacts, in the order queued, then empties the queue. */
+  solveQueue(restitutionThreshold: number, box: { width: number; height: number } | null): void {
+    this.solveContacts(this.queueLo, this.queueHi, this.queued, restitutionThreshold, box);
+    this.queued = 0;
   }
 
   private keepEscapes(n: number): void {
