@@ -3,6 +3,7 @@ import type { PairSink } from '../store/pair-sink.js';
 import { allocateLike, grownCapacity } from '../util/grow.js';
 import { RADIUS_PAD } from './fat-bounds.js';
 import { GridKernel, gridKernelEnabled, type KernelLayout, type KernelMemory } from './grid-kernel.js';
+import { pushOverlaps, scanRowsInScript } from './cell-grid-scan.js';
 
 /**
  * One uniform grid over a set of bodies, built by counting sort: count per cell, prefix sum,
@@ -190,7 +191,7 @@ export class CellGrid {
     const examined = this.scanRowsOrOverflow(out, pad, rowFrom, rowTo);
     // Only a shared grid overflows (a private one grows and rescans): scanned serially, say in a
     // world with holes between parallel steps, its band takes the TypeScript loops instead.
-    return examined >= 0 ? examined : this.scanRowsInScript(out, pad, rowFrom, rowTo);
+    return examined >= 0 ? examined : scanRowsInScript(this, out, pad, rowFrom, rowTo);
   }
 
   /**
@@ -200,7 +201,7 @@ export class CellGrid {
    */
   scanRowsOrOverflow(out: PairSink, pad: number, rowFrom: number, rowTo: number): number {
     const kernel = this.kernel;
-    if (!kernel) return this.scanRowsInScript(out, pad, rowFrom, rowTo);
+    if (!kernel) return scanRowsInScript(this, out, pad, rowFrom, rowTo);
     const found = kernel.scan(this.columns, this.rows, rowFrom, rowTo, pad, this.pairRegion);
     if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
     this.pairsFound = found;
@@ -218,52 +219,6 @@ export class CellGrid {
     kernel.growPairs(pairs);
     this.adoptKernelViews(kernel);
     return true;
-  }
-
-  /** scanRows' TypeScript loops. */
-  private scanRowsInScript(out: PairSink, pad: number, rowFrom: number, rowTo: number): number {
-    const { cellStart, sortedSlot, sortedX, sortedY, sortedR, columns, rows } = this;
-    let examined = 0;
-    // Cell by cell, row-major: each cell's two neighbour ranges are found once for all its bodies,
-    // and no per-body cell index is needed. Empty cells cost one comparison.
-    for (let row = rowFrom; row < rowTo; row++) {
-      const rowStart = row * columns;
-      const hasBelow = row + 1 < rows;
-      for (let column = 0; column < columns; column++) {
-        const c = rowStart + column;
-        const first = cellStart[c];
-        const last = cellStart[c + 1];
-        if (first === last) continue;
-        const sameRowEnd = cellStart[column + 1 < columns ? c + 2 : c + 1];
-        let from = 0;
-        let to = 0;
-        if (hasBelow) {
-          const below = c + columns;
-          from = cellStart[column > 0 ? below - 1 : below];
-          to = cellStart[column + 1 < columns ? below + 2 : below + 1];
-        }
-        for (let k = first; k < last; k++) {
-          const ax = sortedX[k];
-          const ay = sortedY[k];
-          const ar = sortedR[k] + pad;
-          const a = sortedSlot[k];
-          for (let m = k + 1; m < sameRowEnd; m++) {
-            const reach = ar + sortedR[m];
-            const dx = sortedX[m] - ax;
-            const dy = sortedY[m] - ay;
-            if (dx * dx + dy * dy <= reach * reach) out.push(a, sortedSlot[m]);
-          }
-          for (let m = from; m < to; m++) {
-            const reach = ar + sortedR[m];
-            const dx = sortedX[m] - ax;
-            const dy = sortedY[m] - ay;
-            if (dx * dx + dy * dy <= reach * reach) out.push(a, sortedSlot[m]);
-          }
-          examined += sameRowEnd - k - 1 + (to - from);
-        }
-      }
-    }
-    return examined;
   }
 
   /**
@@ -408,25 +363,4 @@ export class CellGrid {
     this.kernelViews = kernel.viewVersion;
     this.layoutVersion++;
   }
-}
-
-/** Pushes (slot, other) for each body in [from, to) whose padded circle overlaps the given one. */
-function pushOverlaps(
-  grid: CellGrid,
-  from: number,
-  to: number,
-  ax: number,
-  ay: number,
-  ar: number,
-  slot: number,
-  out: PairSink,
-): number {
-  const { sortedX, sortedY, sortedR, sortedSlot } = grid;
-  for (let m = from; m < to; m++) {
-    const reach = ar + sortedR[m];
-    const dx = sortedX[m] - ax;
-    const dy = sortedY[m] - ay;
-    if (dx * dx + dy * dy <= reach * reach) out.push(slot, sortedSlot[m]);
-  }
-  return to - from;
 }

@@ -13,7 +13,7 @@ import { nowMs } from '../util/timer.js';
 import { BODY_COLUMNS, Command, INTEGRATOR_IDS, Param, RESULT_STRIDE, Result, Slot, shareStart, type BufferMessage } from './control.js';
 import type { Column } from '../util/grow.js';
 import { BodyKernel } from '../store/body-kernel.js';
-import type { GridKernel } from '../broadphase/grid-kernel.js';
+import { GridInputs } from './grid-inputs.js';
 
 /** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2. */
 const MOTION_CHUNK = 4096;
@@ -61,13 +61,7 @@ export class ThreadKernels {
   private readonly narrowPhase: NarrowPhase;
   private readonly sink: PairSink;
 
-  private readonly chunkViews = new ChunkViews();
-  // What the grid kernel's radius copy was made for (see copyRadii).
-  private radiiCopied: Float64Array | null = null;
-  private radiiMembership = 0;
-  private radiiKernel: GridKernel | null = null;
-  private radiiLayout = -1;
-  private radiiFrom = -1;
+  private readonly inputs = new GridInputs(MOTION_CHUNK);
 
   constructor(
     readonly index: number,
@@ -177,7 +171,7 @@ export class ThreadKernels {
     const bin = c[Slot.binInMotion] === 1;
     // Plain motion in a box: the body kernel integrates and bounces in one pass.
     const kernel = bounce && !needsGeneralMotion(this.bodies) ? this.bodies.kernel : null;
-    if (bin && this.grid.sharedKernel) this.chunkViews.prepare(this.bodies, from, to);
+    if (bin && this.grid.sharedKernel) this.inputs.prepare(this.bodies, from, to);
     const dt = p[Param.dt];
     // In cache-sized chunks, so that the walls test bodies integration has just brought in.
     for (let at = from; at < to; at += MOTION_CHUNK) {
@@ -193,33 +187,22 @@ export class ThreadKernels {
       }
       if (bin) this.binRange(at, end);
     }
-    if (bin) this.copyRadii(from, to);
+    if (bin) this.copyRadii();
   }
 
   private bin(): void {
     const total = this.control[Slot.bodyCount];
     const from = this.shareFrom(total);
     const to = this.shareEnd(total);
-    if (this.grid.sharedKernel) this.chunkViews.prepare(this.bodies, from, to);
+    if (this.grid.sharedKernel) this.inputs.prepare(this.bodies, from, to);
     for (let at = from; at < to; at += MOTION_CHUNK) this.binRange(at, Math.min(at + MOTION_CHUNK, to));
-    this.copyRadii(from, to);
+    this.copyRadii();
   }
 
-  /** For the grid kernel's scatter: the radii of a body range, into its memory (binRange copies positions). */
-  private copyRadii(from: number, to: number): void {
+  /** For the grid kernel's scatter: this thread's radii (binRange copies positions). */
+  private copyRadii(): void {
     const kernel = this.grid.sharedKernel;
-    if (!kernel) return;
-    // Radii change only with membership, and the copy survives until the grid's arrays move.
-    const membership = this.control[Slot.membership];
-    const radius = this.chunkViews.radius;
-    const same = this.radiiCopied === radius && this.radiiMembership === membership && this.radiiFrom === from;
-    if (same && this.radiiKernel === kernel && this.radiiLayout === kernel.viewVersion) return;
-    kernel.inputR.set(radius, from);
-    this.radiiCopied = radius;
-    this.radiiMembership = membership;
-    this.radiiKernel = kernel;
-    this.radiiLayout = kernel.viewVersion;
-    this.radiiFrom = from;
+    if (kernel) this.inputs.copyRadii(kernel, this.control[Slot.membership]);
   }
 
   /** Each body's cell, for a body range: the same formula as CellGrid.bin. */
@@ -235,9 +218,7 @@ export class ThreadKernels {
     const kernel = this.grid.sharedKernel;
     if (kernel) {
       // The grid kernel's passes read the bodies from its own memory: copy this range in first.
-      const chunk = this.chunkViews.indexOf(from);
-      kernel.inputX.set(this.chunkViews.x[chunk], from);
-      kernel.inputY.set(this.chunkViews.y[chunk], from);
+      this.inputs.copyPositions(kernel, from);
       kernel.cellsOf(from, to, minX, minY, inv, columns);
       return;
     }
@@ -386,39 +367,4 @@ export class ThreadKernels {
 /** A worker's private body store and grid, whose buffers `install` replaces with shared ones. */
 export function workerKernels(index: number, control: Int32Array, params: Float64Array, results: Float64Array): ThreadKernels {
   return new ThreadKernels(index, control, params, results, new BodyStore(), new CellGrid());
-}
-
-/**
- * Views of the position columns over each MOTION_CHUNK of one thread's share, and of the radius
- * column over the whole share, for copying them into the grid kernel's memory a block at a time.
- * Made again only when the share or the columns change: subarray() allocates, and this runs
- * every step.
- */
-class ChunkViews {
-  x: Float64Array[] = [];
-  y: Float64Array[] = [];
-  radius = new Float64Array(0);
-  private source: Float64Array | null = null;
-  private from = -1;
-  private to = -1;
-
-  prepare(bodies: BodyStore, from: number, to: number): void {
-    if (this.source === bodies.x && this.from === from && this.to === to) return;
-    this.source = bodies.x;
-    this.from = from;
-    this.to = to;
-    this.x = [];
-    this.y = [];
-    for (let at = from; at < to; at += MOTION_CHUNK) {
-      const end = Math.min(at + MOTION_CHUNK, to);
-      this.x.push(bodies.x.subarray(at, end));
-      this.y.push(bodies.y.subarray(at, end));
-    }
-    this.radius = bodies.radius.subarray(from, to);
-  }
-
-  /** The chunk that starts at body `at`. */
-  indexOf(at: number): number {
-    return (at - this.from) / MOTION_CHUNK;
-  }
 }
