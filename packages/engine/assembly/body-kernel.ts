@@ -314,3 +314,49 @@ function countingPass(key: usize, srcLo: usize, srcHi: usize, dstLo: usize, dstH
     store<i32>(dstHi + to, load<i32>(srcHi + from));
   }
 }
+
+// Pairs the last narrowPhase dropped by collision layers (NarrowPhase.filtered).
+let filteredPairs: i32 = 0;
+
+export function filtered(): i32 {
+  return filteredPairs;
+}
+
+/**
+ * NarrowPhase.consume for `count` candidate pairs (as[k], bs[k]): drops pairs with no awake
+ * dynamic body, then pairs filtered by collision layers (counted), then writes each overlapping
+ * pair as (lo, hi) at outLo/outHi; returns how many.
+ */
+export function narrowPhase(
+  xs: usize, ys: usize, rs: usize, types: usize, asleeps: usize, categories: usize, masks: usize,
+  as: usize, bs: usize, count: i32, outLo: usize, outHi: usize,
+): i32 {
+  let found: i32 = 0;
+  let filteredHere: i32 = 0;
+  for (let k = 0; k < count; k++) {
+    const i = <usize>load<i32>(as + (<usize>k << 2));
+    const j = <usize>load<i32>(bs + (<usize>k << 2));
+    const ti = load<u8>(types + i);
+    const tj = load<u8>(types + j);
+    const movingI = ti == KINEMATIC || (ti == DYNAMIC && load<u8>(asleeps + i) == 0);
+    const movingJ = tj == KINEMATIC || (tj == DYNAMIC && load<u8>(asleeps + j) == 0);
+    if (!(movingI || movingJ)) continue;
+    if (ti != DYNAMIC && tj != DYNAMIC) continue;
+    if ((load<u32>(categories + (i << 2)) & load<u32>(masks + (j << 2))) == 0 || (load<u32>(categories + (j << 2)) & load<u32>(masks + (i << 2))) == 0) {
+      filteredHere++;
+      continue;
+    }
+    // circle-circle.ts circlesOverlap.
+    const dx = load<f64>(xs + (j << 3)) - load<f64>(xs + (i << 3));
+    const dy = load<f64>(ys + (j << 3)) - load<f64>(ys + (i << 3));
+    const reach = load<f64>(rs + (i << 3)) + load<f64>(rs + (j << 3));
+    if (dx * dx + dy * dy < reach * reach) {
+      const at = <usize>found << 2;
+      store<i32>(outLo + at, <i32>(i < j ? i : j));
+      store<i32>(outHi + at, <i32>(i < j ? j : i));
+      found++;
+    }
+  }
+  filteredPairs = filteredHere;
+  return found;
+}

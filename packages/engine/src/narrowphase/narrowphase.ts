@@ -30,6 +30,11 @@ export class NarrowPhase implements PairConsumer {
 
   consume(a: Int32Array, b: Int32Array, count: number): void {
     const bodies = this.bodies;
+    // The same filters and test, in the body kernel where the columns live there.
+    if (bodies.kernel) {
+      this.filtered += bodies.kernel.narrowPhase(a, b, count, this.contacts);
+      return;
+    }
     const { type, asleep, category, mask } = bodies;
     const contacts = this.contacts;
     for (let k = 0; k < count; k++) {

@@ -1,5 +1,6 @@
 import { BODY_KERNEL_SHARED_WASM, BODY_KERNEL_WASM } from '../generated/body-kernel-wasm.js';
 import { grownCapacity, type Column } from '../util/grow.js';
+import type { ContactSink } from './contact-buffer.js';
 import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
 
 /**
@@ -30,6 +31,11 @@ interface BodyKernelExports {
     dvx: number, dvy: number, dt: number, explicit: boolean,
     width: number, height: number, wallRestitution: number, restitutionThreshold: number,
   ): void;
+  narrowPhase(
+    xs: number, ys: number, rs: number, types: number, asleeps: number, categories: number, masks: number,
+    as: number, bs: number, count: number, outLo: number, outHi: number,
+  ): number;
+  filtered(): number;
   solveContacts(
     xs: number, ys: number, vxs: number, vys: number, rs: number, invMasses: number, es: number,
     los: number, his: number, count: number, restitutionThreshold: number, width: number, height: number, escapes: number,
@@ -46,6 +52,9 @@ export interface KernelColumns {
   invMass: Float64Array;
   restitution: Float64Array;
   type: Uint8Array;
+  asleep: Uint8Array;
+  category: Uint32Array;
+  mask: Uint32Array;
 }
 
 /**
@@ -98,6 +107,9 @@ export class BodyKernel {
   private invMassAt = 0;
   private restitutionAt = 0;
   private typeAt = 0;
+  private asleepAt = 0;
+  private categoryAt = 0;
+  private maskAt = 0;
   private readonly scratchLo: Int32Array;
   private readonly scratchHi: Int32Array;
   private readonly scratchEscapes: Int32Array;
@@ -171,6 +183,9 @@ export class BodyKernel {
     this.invMassAt = c.invMass.byteOffset;
     this.restitutionAt = c.restitution.byteOffset;
     this.typeAt = c.type.byteOffset;
+    this.asleepAt = c.asleep.byteOffset;
+    this.categoryAt = c.category.byteOffset;
+    this.maskAt = c.mask.byteOffset;
   }
 
   /** The memory, for worker threads to attach to, when it is shared. */
@@ -230,6 +245,32 @@ export class BodyKernel {
       );
       if (escaped > 0) this.keepEscapes(escaped);
     }
+  }
+
+  /**
+   * NarrowPhase.consume over candidate pairs a[k], b[k] for k in [0, count), copied into the
+   * scratch area in chunks: pushes each touching pair to `contacts` as (lo, hi), in order, and
+   * returns how many pairs collision layers filtered.
+   */
+  narrowPhase(a: Int32Array, b: Int32Array, count: number, contacts: ContactSink): number {
+    const { scratchLo, scratchHi, scratchEscapes } = this;
+    const outHiAt = scratchEscapes.byteOffset + CONTACT_CHUNK * 4;
+    let filtered = 0;
+    for (let from = 0; from < count; from += CONTACT_CHUNK) {
+      const to = Math.min(count, from + CONTACT_CHUNK);
+      for (let k = from; k < to; k++) {
+        scratchLo[k - from] = a[k];
+        scratchHi[k - from] = b[k];
+      }
+      const found = this.fn.narrowPhase(
+        this.xAt, this.yAt, this.radiusAt, this.typeAt, this.asleepAt, this.categoryAt, this.maskAt,
+        scratchLo.byteOffset, scratchHi.byteOffset, to - from, scratchEscapes.byteOffset, outHiAt,
+      );
+      filtered += this.fn.filtered();
+      // Contacts out: the first half of the escapes area holds lo, the second hi.
+      for (let k = 0; k < found; k++) contacts.push(scratchEscapes[k], scratchEscapes[CONTACT_CHUNK + k]);
+    }
+    return filtered;
   }
 
   /** Contacts waiting for solveQueue: queueLo/queueHi[0..queued). */
