@@ -14,46 +14,45 @@ const KINEMATIC: u8 = 2;
 const DYNAMIC: u8 = 3;
 const MAX_BOUNCES = 16; // box-walls.ts
 
-/** integrateSemiImplicitEuler's plain loop over slots [from, to). */
-export function integrateSemiImplicit(
-  xs: usize, ys: usize, vxs: usize, vys: usize, types: usize, from: i32, to: i32, dvx: f64, dvy: f64, dt: f64,
+/**
+ * The plain loop of integrateSemiImplicitEuler, or with `explicit` of integrateExplicitEuler, over
+ * slots [from, to).
+ */
+export function integrate(
+  xs: usize, ys: usize, vxs: usize, vys: usize, types: usize, from: i32, to: i32, dvx: f64, dvy: f64, dt: f64, explicit: bool,
 ): void {
-  for (let i = from; i < to; i++) {
-    const t = load<u8>(types + <usize>i);
-    const at = <usize>i << 3;
-    if (t == DYNAMIC) {
-      const vx = load<f64>(vxs + at) + dvx;
-      const vy = load<f64>(vys + at) + dvy;
-      store<f64>(vxs + at, vx);
-      store<f64>(vys + at, vy);
-      store<f64>(xs + at, load<f64>(xs + at) + vx * dt);
-      store<f64>(ys + at, load<f64>(ys + at) + vy * dt);
-    } else if (t == KINEMATIC) {
-      store<f64>(xs + at, load<f64>(xs + at) + load<f64>(vxs + at) * dt);
-      store<f64>(ys + at, load<f64>(ys + at) + load<f64>(vys + at) * dt);
-    }
-  }
+  for (let i = from; i < to; i++) advance(<usize>i << 3, load<u8>(types + <usize>i), xs, ys, vxs, vys, dvx, dvy, dt, explicit);
 }
 
-/** integrateExplicitEuler's plain loop over slots [from, to). */
-export function integrateExplicit(
-  xs: usize, ys: usize, vxs: usize, vys: usize, types: usize, from: i32, to: i32, dvx: f64, dvy: f64, dt: f64,
-): void {
-  for (let i = from; i < to; i++) {
-    const t = load<u8>(types + <usize>i);
-    const at = <usize>i << 3;
-    if (t == DYNAMIC) {
-      const vx = load<f64>(vxs + at);
-      const vy = load<f64>(vys + at);
+/** One body's step of `integrate` (byte offset `at`, type t); false for bodies that do not move. */
+// @ts-ignore: decorator
+@inline
+function advance(at: usize, t: u8, xs: usize, ys: usize, vxs: usize, vys: usize, dvx: f64, dvy: f64, dt: f64, explicit: bool): bool {
+  if (t == DYNAMIC) {
+    const vx = load<f64>(vxs + at);
+    const vy = load<f64>(vys + at);
+    if (explicit) {
+      // Position with the velocity from before the step, then velocity.
       store<f64>(xs + at, load<f64>(xs + at) + vx * dt);
       store<f64>(ys + at, load<f64>(ys + at) + vy * dt);
       store<f64>(vxs + at, vx + dvx);
       store<f64>(vys + at, vy + dvy);
-    } else if (t == KINEMATIC) {
-      store<f64>(xs + at, load<f64>(xs + at) + load<f64>(vxs + at) * dt);
-      store<f64>(ys + at, load<f64>(ys + at) + load<f64>(vys + at) * dt);
+    } else {
+      const ux = vx + dvx;
+      const uy = vy + dvy;
+      store<f64>(vxs + at, ux);
+      store<f64>(vys + at, uy);
+      store<f64>(xs + at, load<f64>(xs + at) + ux * dt);
+      store<f64>(ys + at, load<f64>(ys + at) + uy * dt);
     }
+    return true;
   }
+  if (t == KINEMATIC) {
+    store<f64>(xs + at, load<f64>(xs + at) + load<f64>(vxs + at) * dt);
+    store<f64>(ys + at, load<f64>(ys + at) + load<f64>(vys + at) * dt);
+    return true;
+  }
+  return false;
 }
 
 // fold's results: a module global, not a boxed pair (AssemblyScript has no tuples).
@@ -72,7 +71,7 @@ export function bounceOffBox(
 }
 
 /**
- * integrateSemiImplicit (or integrateExplicit) then bounceOffBox, body by body in one pass over
+ * `integrate` then bounceOffBox, body by body in one pass over
  * the columns, for steps with nothing between the two stages (no continuous sweeps). Each body's
  * update reads only that body, so the result is the two passes' bits.
  */
@@ -84,29 +83,9 @@ export function moveInBox(
   for (let i = from; i < to; i++) {
     const t = load<u8>(types + <usize>i);
     const at = <usize>i << 3;
-    if (t == DYNAMIC) {
-      const vx = load<f64>(vxs + at);
-      const vy = load<f64>(vys + at);
-      if (explicit) {
-        store<f64>(xs + at, load<f64>(xs + at) + vx * dt);
-        store<f64>(ys + at, load<f64>(ys + at) + vy * dt);
-        store<f64>(vxs + at, vx + dvx);
-        store<f64>(vys + at, vy + dvy);
-      } else {
-        const ux = vx + dvx;
-        const uy = vy + dvy;
-        store<f64>(vxs + at, ux);
-        store<f64>(vys + at, uy);
-        store<f64>(xs + at, load<f64>(xs + at) + ux * dt);
-        store<f64>(ys + at, load<f64>(ys + at) + uy * dt);
-      }
-    } else if (t == KINEMATIC) {
-      store<f64>(xs + at, load<f64>(xs + at) + load<f64>(vxs + at) * dt);
-      store<f64>(ys + at, load<f64>(ys + at) + load<f64>(vys + at) * dt);
-    } else {
-      continue;
+    if (advance(at, t, xs, ys, vxs, vys, dvx, dvy, dt, explicit)) {
+      bounce(at, t, xs, ys, vxs, vys, rs, es, width, height, wallRestitution, restitutionThreshold);
     }
-    bounce(at, t, xs, ys, vxs, vys, rs, es, width, height, wallRestitution, restitutionThreshold);
   }
 }
 

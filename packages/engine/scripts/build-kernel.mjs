@@ -20,30 +20,23 @@ const script = fileURLToPath(import.meta.url);
 // grid, or the body columns, of the largest world handles allow (2^24 bodies).
 const SHARED_MAXIMUM_PAGES = 32768;
 
+/** A kernel's variant for a shared memory (a parallel step's threads all work on it). */
+const sharedVariant = (name, source) => ({
+  name,
+  doc: `/** For a shared memory of at most ${SHARED_MAXIMUM_PAGES} pages (${source} creates it). */\n`,
+  flags: ['--enable', 'threads', '--sharedMemory', '--maximumMemory', String(SHARED_MAXIMUM_PAGES)],
+});
+
 const KERNELS = [
   {
     source: 'grid-kernel.ts',
     out: 'grid-kernel-wasm.ts',
-    variants: [
-      { name: 'GRID_KERNEL_WASM', flags: [] },
-      {
-        name: 'GRID_KERNEL_SHARED_WASM',
-        doc: `/** For a shared memory of at most ${SHARED_MAXIMUM_PAGES} pages (grid-kernel.ts creates it). */\n`,
-        flags: ['--enable', 'threads', '--sharedMemory', '--maximumMemory', String(SHARED_MAXIMUM_PAGES)],
-      },
-    ],
+    variants: [{ name: 'GRID_KERNEL_WASM', flags: [] }, sharedVariant('GRID_KERNEL_SHARED_WASM', 'src/broadphase/grid-kernel.ts')],
   },
   {
     source: 'body-kernel.ts',
     out: 'body-kernel-wasm.ts',
-    variants: [
-      { name: 'BODY_KERNEL_WASM', flags: [] },
-      {
-        name: 'BODY_KERNEL_SHARED_WASM',
-        doc: `/** For a shared memory of at most ${SHARED_MAXIMUM_PAGES} pages (body-kernel.ts creates it). */\n`,
-        flags: ['--enable', 'threads', '--sharedMemory', '--maximumMemory', String(SHARED_MAXIMUM_PAGES)],
-      },
-    ],
+    variants: [{ name: 'BODY_KERNEL_WASM', flags: [] }, sharedVariant('BODY_KERNEL_SHARED_WASM', 'src/store/body-kernel.ts')],
   },
 ];
 

@@ -1,6 +1,7 @@
 import { afterEach, describe, expect, it } from 'vitest';
 import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
+import { hashWithPath } from './helpers.js';
 import { BodyStore } from '../src/store/body-store.js';
 import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
 
@@ -10,17 +11,7 @@ import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
 afterEach(() => setBodyKernelEnabled(true));
 
 function runHash(build: () => World, steps: number, kernel: boolean, mutate?: (world: World, step: number) => void): string {
-  setBodyKernelEnabled(kernel);
-  try {
-    const world = build();
-    for (let s = 0; s < steps; s++) {
-      mutate?.(world, s);
-      world.step(1 / 60);
-    }
-    return world.stateHash();
-  } finally {
-    setBodyKernelEnabled(true);
-  }
+  return hashWithPath(setBodyKernelEnabled, kernel, build, steps, mutate);
 }
 
 /** Circles in a box with mixed restitutions, types and speeds; some cross the box 100 times a step, past the 16 bounces after which walls fold the path in closed form. */

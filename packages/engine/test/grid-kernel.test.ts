@@ -6,7 +6,7 @@ import type { BodyStore } from '../src/store/body-store.js';
 import { CellGrid } from '../src/broadphase/cell-grid.js';
 import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import type { PairSink } from '../src/store/pair-sink.js';
-import { storeOf } from './helpers.js';
+import { storeOf, hashWithPath } from './helpers.js';
 
 // The grid's WebAssembly kernel must be the TypeScript loops bit for bit: same pairs in the same
 // order, so every world steps to the same state whichever path its grids took.
@@ -40,17 +40,7 @@ function pairsOf(grid: CellGrid, store: BodyStore, cellSize: number): { pairs: n
 }
 
 function runHash(build: () => World, steps: number, kernel: boolean, mutate?: (world: World, step: number) => void): string {
-  setGridKernelEnabled(kernel);
-  const world = build();
-  try {
-    for (let s = 0; s < steps; s++) {
-      mutate?.(world, s);
-      world.step(1 / 60);
-    }
-    return world.stateHash();
-  } finally {
-    setGridKernelEnabled(true);
-  }
+  return hashWithPath(setGridKernelEnabled, kernel, build, steps, mutate);
 }
 
 describe('grid WebAssembly kernel', () => {

@@ -110,3 +110,28 @@ export function storeOf(list: { x: number; y: number; r: number }[], holes: numb
   for (const slot of holes) if (slot < store.slotCount && store.type[slot] !== TypeCode.free) store.remove(slot);
   return store;
 }
+
+/**
+ * Steps a world from `build` with one of the engine's path switches (setGridKernelEnabled,
+ * setBodyKernelEnabled) set to `on` while it is built and stepped, and returns its state hash;
+ * `mutate` runs before each step.
+ */
+export function hashWithPath(
+  setEnabled: (on: boolean) => void,
+  on: boolean,
+  build: () => World,
+  steps: number,
+  mutate?: (world: World, step: number) => void,
+): string {
+  setEnabled(on);
+  try {
+    const world = build();
+    for (let s = 0; s < steps; s++) {
+      mutate?.(world, s);
+      world.step(1 / 60);
+    }
+    return world.stateHash();
+  } finally {
+    setEnabled(true);
+  }
+}

@@ -20,8 +20,7 @@ import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelM
  */
 
 interface BodyKernelExports {
-  integrateSemiImplicit(xs: number, ys: number, vxs: number, vys: number, types: number, from: number, to: number, dvx: number, dvy: number, dt: number): void;
-  integrateExplicit(xs: number, ys: number, vxs: number, vys: number, types: number, from: number, to: number, dvx: number, dvy: number, dt: number): void;
+  integrate(xs: number, ys: number, vxs: number, vys: number, types: number, from: number, to: number, dvx: number, dvy: number, dt: number, explicit: boolean): void;
   bounceOffBox(
     xs: number, ys: number, vxs: number, vys: number, rs: number, es: number, types: number, from: number, to: number,
     width: number, height: number, wallRestitution: number, restitutionThreshold: number,
@@ -198,11 +197,11 @@ export class BodyKernel {
   }
 
   integrateSemiImplicit(from: number, to: number, dvx: number, dvy: number, dt: number): void {
-    this.fn.integrateSemiImplicit(this.xAt, this.yAt, this.vxAt, this.vyAt, this.typeAt, from, to, dvx, dvy, dt);
+    this.fn.integrate(this.xAt, this.yAt, this.vxAt, this.vyAt, this.typeAt, from, to, dvx, dvy, dt, false);
   }
 
   integrateExplicit(from: number, to: number, dvx: number, dvy: number, dt: number): void {
-    this.fn.integrateExplicit(this.xAt, this.yAt, this.vxAt, this.vyAt, this.typeAt, from, to, dvx, dvy, dt);
+    this.fn.integrate(this.xAt, this.yAt, this.vxAt, this.vyAt, this.typeAt, from, to, dvx, dvy, dt, true);
   }
 
   bounceOffBox(from: number, to: number, width: number, height: number, wallRestitution: number, restitutionThreshold: number): void {
@@ -234,11 +233,7 @@ export class BodyKernel {
     this.escapedCount = 0;
     for (let from = 0; from < count; from += CONTACT_CHUNK) {
       const to = Math.min(count, from + CONTACT_CHUNK);
-      // Element by element: subarray() would allocate two views per chunk.
-      for (let k = from; k < to; k++) {
-        scratchLo[k - from] = lo[k];
-        scratchHi[k - from] = hi[k];
-      }
+      this.copyToScratch(lo, hi, from, to);
       const escaped = this.fn.solveContacts(
         this.xAt, this.yAt, this.vxAt, this.vyAt, this.radiusAt, this.invMassAt, this.restitutionAt,
         scratchLo.byteOffset, scratchHi.byteOffset, to - from, restitutionThreshold, width, height, scratchEscapes.byteOffset,
@@ -258,10 +253,7 @@ export class BodyKernel {
     let filtered = 0;
     for (let from = 0; from < count; from += CONTACT_CHUNK) {
       const to = Math.min(count, from + CONTACT_CHUNK);
-      for (let k = from; k < to; k++) {
-        scratchLo[k - from] = a[k];
-        scratchHi[k - from] = b[k];
-      }
+      this.copyToScratch(a, b, from, to);
       const found = this.fn.narrowPhase(
         this.xAt, this.yAt, this.radiusAt, this.typeAt, this.asleepAt, this.categoryAt, this.maskAt,
         scratchLo.byteOffset, scratchHi.byteOffset, to - from, scratchEscapes.byteOffset, outHiAt,
@@ -297,6 +289,15 @@ export class BodyKernel {
   solveQueue(restitutionThreshold: number, box: { width: number; height: number } | null): void {
     this.solveContacts(this.queueLo, this.queueHi, this.queued, restitutionThreshold, box);
     this.queued = 0;
+  }
+
+  /** Pairs lo[k], hi[k] for k in [from, to) into the scratch area; element by element, since subarray() would allocate two views per chunk. */
+  private copyToScratch(lo: Int32Array, hi: Int32Array, from: number, to: number): void {
+    const { scratchLo, scratchHi } = this;
+    for (let k = from; k < to; k++) {
+      scratchLo[k - from] = lo[k];
+      scratchHi[k - from] = hi[k];
+    }
   }
 
   private keepEscapes(n: number): void {
