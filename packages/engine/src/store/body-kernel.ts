@@ -57,8 +57,9 @@ export interface KernelColumns {
 }
 
 /**
- * Contacts copied into the memory per solve call, and room for the bodies they may leave outside
- * the box (two per contact): 32 KB of scratch at the start of the memory.
+ * Pairs copied into the memory per solve or narrow-phase call, and room for what comes out: the
+ * bodies a solve leaves outside the box (two per contact), or the narrow-phase's contacts. 32 KB
+ * of scratch at the start of the memory (per thread in a shared one).
  */
 const CONTACT_CHUNK = 2048;
 const SCRATCH_BYTES = CONTACT_CHUNK * 16;
