@@ -101,6 +101,20 @@ describe('grid WebAssembly kernel', () => {
     expect(runHash(build, 40, true)).toBe(runHash(build, 40, false));
   });
 
+  it('agrees when a destroyed body\'s slot is reused at once by a larger body (the radii it copies must follow)', () => {
+    const build = () => buildWorld(buildScene('uniform', { n: 1500, seed: 9 }), { broadphase: 'maxgrid' });
+    const mutate = (world: World, step: number) => {
+      if (step % 3 !== 1) return;
+      const handle = world.handles()[(step * 53) % 1500];
+      const { x, y } = world.getCircle(handle);
+      const { width, height } = world.box!;
+      world.destroyBody(handle);
+      // Up to the largest radius in the scene, so the grid's cells stay the same size.
+      world.createCircle({ x: Math.min(Math.max(x, 8), width - 8), y: Math.min(Math.max(y, 8), height - 8), radius: 8, vx: -40, vy: 25 });
+    };
+    expect(runHash(build, 45, true, mutate)).toBe(runHash(build, 45, false, mutate));
+  });
+
   it('agrees through growth, holes and an unbounded world', () => {
     const build = () => {
       const world = new World({ broadphase: 'maxgrid', gravity: { x: 0, y: -50 } });
