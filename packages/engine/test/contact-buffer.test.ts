@@ -31,3 +31,44 @@ describe('canonical contact order', () => {
     );
   });
 });
+
+describe('merging sorted contact lists (a parallel step\'s threads each sort their own)', () => {
+  const sortedPairs = (seed: number, n: number, slots: number): [number, number][] => {
+    const unique = new Map<string, [number, number]>();
+    let s = seed;
+    const next = () => ((s = (s * 1103515245 + 12345) % 2 ** 31), s % slots);
+    while (unique.size < n) {
+      const i = next();
+      const j = next();
+      if (i !== j) unique.set(`${Math.min(i, j)},${Math.max(i, j)}`, [Math.min(i, j), Math.max(i, j)]);
+    }
+    return [...unique.values()].sort((p, q) => p[0] - q[0] || p[1] - q[1]);
+  };
+  const arrays = (pairs: [number, number][]) => [Int32Array.from(pairs, (p) => p[0]), Int32Array.from(pairs, (p) => p[1])] as const;
+  const contents = (buffer: ContactBuffer) => Array.from({ length: buffer.count }, (_, k) => [buffer.lo[k], buffer.hi[k]]);
+
+  it('merges disjoint sorted lists into canonical order, leaving the sort nothing to do', () => {
+    // Split one sorted set into three interleaved lists, as bands of rows split a step's contacts.
+    const all = sortedPairs(7, 900, 5000);
+    const lists = [0, 1, 2].map((t) => all.filter((_, k) => (k * 7919) % 3 === t));
+    const buffer = new ContactBuffer();
+    buffer.clear();
+    for (const list of lists) buffer.mergeSorted(...arrays(list), list.length);
+    expect(contents(buffer)).toEqual(all);
+    // Sorting again must not change anything (and, the buffer being known ordered, does nothing).
+    buffer.sortCanonical(5000);
+    expect(contents(buffer)).toEqual(all);
+  });
+
+  it('appends instead when the buffer is not in order, and the sort still gives canonical order', () => {
+    const all = sortedPairs(11, 400, 3000);
+    const [first, second] = [all.filter((_, k) => k % 2 === 0), all.filter((_, k) => k % 2 === 1)];
+    const buffer = new ContactBuffer();
+    buffer.clear();
+    for (let k = first.length - 1; k >= 0; k--) buffer.push(first[k][0], first[k][1]);
+    buffer.mergeSorted(...arrays(second), second.length);
+    expect(buffer.count).toBe(all.length);
+    buffer.sortCanonical(3000);
+    expect(contents(buffer)).toEqual(all);
+  });
+});

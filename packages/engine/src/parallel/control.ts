@@ -43,7 +43,9 @@ export const Slot = {
   deferredCount: 80,
   /** MAX_THREADS cells: bodies each thread's solve block left outside the box. */
   escapedCount: 96,
-  length: 112,
+  /** MAX_THREADS cells: 1 when the thread sorted its contact list into canonical order. */
+  listSorted: 112,
+  length: 128,
 } as const;
 
 export const Param = {

@@ -14,6 +14,7 @@ import { BODY_COLUMNS, Command, INTEGRATOR_IDS, Param, RESULT_STRIDE, Result, Sl
 import type { Column } from '../util/grow.js';
 import { BodyKernel } from '../store/body-kernel.js';
 import { GridInputs } from './grid-inputs.js';
+import { ContactSorter } from '../store/contact-sorter.js';
 
 /** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2. */
 const MOTION_CHUNK = 4096;
@@ -62,6 +63,8 @@ export class ThreadKernels {
   private readonly sink: PairSink;
 
   private readonly inputs = new GridInputs(MOTION_CHUNK);
+  /** This thread's contact-list sort: undefined until the first, null without WebAssembly. */
+  private sorter: ContactSorter | null | undefined = undefined;
 
   constructor(
     readonly index: number,
@@ -318,6 +321,18 @@ export class ThreadKernels {
     r[at + Result.filtered] = this.narrowPhase.filtered;
     r[at + Result.narrowMs] = this.sink.consumerMs;
     c[Slot.contactCount + this.index] = contacts.count;
+    // Each thread puts its own list in canonical order, so that the caller merges the lists
+    // instead of sorting them all on one thread.
+    c[Slot.listSorted + this.index] = contacts.count <= contacts.lo.length && this.sortList(c[Slot.slotCount]) ? 1 : 0;
+  }
+
+  /** Sorts this thread's contact list with the WebAssembly sort; false where there is none. */
+  private sortList(slotCount: number): boolean {
+    if (this.sorter === undefined) this.sorter = ContactSorter.create();
+    if (this.sorter === null) return false;
+    const { lo, hi, count } = this.contacts;
+    this.sorter.sort(lo, hi, count, slotCount);
+    return true;
   }
 
   /** The first row whose first cell starts at or after thread w's share of the bodies. */

@@ -206,7 +206,11 @@ export class ParallelStep {
       examined += this.results[at + Result.examined];
       this.candidates += this.results[at + Result.candidates];
       this.filtered += this.results[at + Result.filtered];
-      contacts.append(this.caller.contactLo[t], this.caller.contactHi[t], c[Slot.contactCount + t]);
+      const lo = this.caller.contactLo[t];
+      const hi = this.caller.contactHi[t];
+      // Lists their threads sorted merge in order; then the step's sort has nothing left to do.
+      if (c[Slot.listSorted + t] === 1) contacts.mergeSorted(lo, hi, c[Slot.contactCount + t]);
+      else contacts.append(lo, hi, c[Slot.contactCount + t]);
     }
     return examined;
   }

@@ -32,6 +32,8 @@ export class ContactBuffer implements ContactSink {
   private scratchHi: Int32Array = new Int32Array(64);
   private counts = new Int32Array(64);
   private readonly buckets = new Int32Array(256);
+  /** The pairs are in canonical order: nothing changed them since clear, sortCanonical or a merge. */
+  private ordered = true;
   /** The WebAssembly sort: undefined until the first sort, null on the TypeScript path. */
   private sorter: ContactSorter | null | undefined = undefined;
   /** Whether kernels were enabled when this buffer was made (see setBodyKernelEnabled). */
@@ -39,6 +41,7 @@ export class ContactBuffer implements ContactSink {
 
   clear(): void {
     this.count = 0;
+    this.ordered = true;
   }
 
   /** Moves the pair arrays onto shared memory (or back). */
@@ -51,6 +54,7 @@ export class ContactBuffer implements ContactSink {
   }
 
   push(lo: number, hi: number): void {
+    this.ordered = false;
     if (this.count === this.lo.length) this.growPairs(this.count + 1);
     this.lo[this.count] = lo;
     this.hi[this.count] = hi;
@@ -62,6 +66,7 @@ export class ContactBuffer implements ContactSink {
    * `set(subarray(...))`: a subarray is a new object, and this runs every parallel step.
    */
   append(lo: Int32Array, hi: Int32Array, count: number): void {
+    if (count > 0) this.ordered = false;
     const at = this.count;
     if (at + count > this.lo.length) this.growPairs(at + count);
     const toLo = this.lo;
@@ -77,7 +82,35 @@ export class ContactBuffer implements ContactSink {
     return (this.lo.byteLength + this.scratchLo.byteLength) * 2 + this.counts.byteLength + (this.sorter?.memoryBytes() ?? 0);
   }
 
+  /**
+   * Adds `count` pairs that are in canonical order themselves (a parallel step's thread sorted its
+   * list): merged in, from the back, when this buffer is in canonical order too, so that
+   * sortCanonical then has nothing to do; appended otherwise.
+   */
+  mergeSorted(lo: Int32Array, hi: Int32Array, count: number): void {
+    if (!this.ordered) return this.append(lo, hi, count);
+    const total = this.count + count;
+    if (total > this.lo.length) this.growPairs(total);
+    const toLo = this.lo;
+    const toHi = this.hi;
+    let a = this.count - 1;
+    let b = count - 1;
+    for (let at = total - 1; b >= 0; at--) {
+      // Pairs are unique, so the two never tie.
+      if (a >= 0 && (toLo[a] > lo[b] || (toLo[a] === lo[b] && toHi[a] > hi[b]))) {
+        toLo[at] = toLo[a];
+        toHi[at] = toHi[a--];
+      } else {
+        toLo[at] = lo[b];
+        toHi[at] = hi[b--];
+      }
+    }
+    this.count = total;
+  }
+
   sortCanonical(slotCount: number): void {
+    if (this.ordered) return;
+    this.ordered = true;
     if (this.count < 2) return;
     if (this.sorter === undefined) this.sorter = this.sorterWanted ? ContactSorter.create() : null;
     if (this.sorter) return this.sorter.sort(this.lo, this.hi, this.count, slotCount);
