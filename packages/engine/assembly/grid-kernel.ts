@@ -36,8 +36,7 @@ export function bin(
   memory.fill(cellStart, 0, (<usize>cells + 2) << 2);
   for (let k: i32 = 0; k < n; k++) {
     const at = <usize>slotAt(slots, k) << 3;
-    // Offsets are >= 0 and below 2^31: truncation is the TypeScript path's `| 0`.
-    const c = <i32>((load<f64>(ys + at) - minY) * inverse) * columns + <i32>((load<f64>(xs + at) - minX) * inverse);
+    const c = cellOf(load<f64>(ys + at), minY, inverse) * columns + cellOf(load<f64>(xs + at), minX, inverse);
     store<i32>(binOf + (<usize>k << 2), c);
     const counter = cellStart + (<usize>c << 2);
     store<i32>(counter, load<i32>(counter) + 1);
@@ -73,7 +72,7 @@ export function bin(
 export function cellsOf(xs: usize, ys: usize, from: i32, to: i32, minX: f64, minY: f64, inverse: f64, columns: i32, binOf: usize): void {
   for (let k = from; k < to; k++) {
     const at = <usize>k << 3;
-    const c = <i32>((load<f64>(ys + at) - minY) * inverse) * columns + <i32>((load<f64>(xs + at) - minX) * inverse);
+    const c = cellOf(load<f64>(ys + at), minY, inverse) * columns + cellOf(load<f64>(xs + at), minX, inverse);
     store<i32>(binOf + (<usize>k << 2), c);
   }
 }
@@ -121,6 +120,20 @@ export function scatterCells(
     store<f64>(sortedY + dst, load<f64>(ys + src));
     store<f64>(sortedR + dst, load<f64>(rs + src) * radiusScale);
   }
+}
+
+/**
+ * The TypeScript path's `(p - origin) * inverse | 0`. Offsets are >= 0, where flooring is
+ * truncating, and adding 2^52 to a whole number below 2^52 leaves it in the low bits of the
+ * double, which are then exactly `| 0` (ToInt32) of it; infinities and NaN (as arithmetic makes
+ * it) give 0, as there.
+ * Why not `<i32>`: V8 compiles WebAssembly's f64-to-i32 conversions with range checks, and this
+ * way computing cells for 500,000 bodies took 1.3 ms against 3.2 (trunc_sat) and 1.7-2.2 (trapping).
+ */
+// @ts-ignore: decorator
+@inline
+function cellOf(p: f64, origin: f64, inverse: f64): i32 {
+  return <i32>reinterpret<i64>(floor((p - origin) * inverse) + 4503599627370496.0);
 }
 
 /** The k-th body to bin: slot k, or the k-th of a slot list. */
