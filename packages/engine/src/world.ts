@@ -412,7 +412,10 @@ export class World {
     return used instanceof MaxGridBroadPhase ? used.geometry : null;
   }
 
-  /** Bytes held by the engine's typed arrays: body columns, broad-phase and contact scratch. */
+  /**
+   * Bytes held by the engine's typed arrays and WebAssembly memories (whole 64 KiB pages): body
+   * columns, broad-phase and contact scratch.
+   */
   memoryBytes(): number {
     return this.bodies.memoryBytes() + this.segments.memoryBytes() + this.pipeline.memoryBytes();
   }

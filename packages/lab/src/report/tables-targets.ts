@@ -93,7 +93,7 @@ export function targetsTables(r: TargetsResult): Table[] {
       title: `T3 a million: uniform N = ${n(r.t3.n)} (targets: ≤ 200 bytes per body; ns per body ≤ 1.5× the 64k cost)`,
       headers: ['median ms [p25–p75]', 'timed steps', 'engine bytes / body', 'ns / body / step', `ns / body at ${n(o.n)} (T1)`, 'ratio 1M / 64k', 'build ms'],
       rows: [[spreadText(r.t3.ms), String(r.t3.steps), fmt(r.t3.bytesPerBody), fmt(r.t3.nsPerBody), fmt(r.t3.nsPerBodyAt64k), ratioText(r.t3.ratio), fmt(r.t3.buildMs)]],
-      note: `Engine bytes are \`world.memoryBytes()\`, the engine's own typed arrays. Timed after ${o.bigWarmupSteps} untimed steps, once the scene's contacts have stopped climbing.`,
+      note: `Engine bytes are \`world.memoryBytes()\`, the engine's own typed arrays and WebAssembly memories. Timed after ${o.bigWarmupSteps} untimed steps, once the scene's contacts have stopped climbing.`,
     },
     t4Table(r),
     {
