@@ -63,10 +63,6 @@ export class CellGrid {
   private sourceR = new Float64Array(0);
   private sourceStore: BodyStore | null = null;
   private sourceLayout = -1;
-  // What the kernel's radius copy was made from (see bin).
-  private radiiOf: Float64Array | null = null;
-  private radiiMembership = -1;
-  private radiiViews = -1;
   // The view of a slot list's [offset, offset + n) copied for the kernel, remade when any changes.
   private listSource: Int32Array | null = null;
   private listOffset = -1;
@@ -139,13 +135,7 @@ export class CellGrid {
       }
       kernel.inputX.set(this.sourceX);
       kernel.inputY.set(this.sourceY);
-      // Radii change only with membership: the copy stands until that changes or the arrays move.
-      if (this.radiiOf !== this.sourceR || this.radiiMembership !== bodies.membershipVersion || this.radiiViews !== kernel.viewVersion) {
-        kernel.inputR.set(this.sourceR);
-        this.radiiOf = this.sourceR;
-        this.radiiMembership = bodies.membershipVersion;
-        this.radiiViews = kernel.viewVersion;
-      }
+      kernel.copyRadii(this.sourceR, 0, bodies.membershipVersion);
       if (slots !== null) {
         if (this.listSource !== slots || this.listOffset !== offset || this.listView.length !== n) {
           this.listSource = slots;

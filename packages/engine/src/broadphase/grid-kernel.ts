@@ -93,6 +93,11 @@ export class GridKernel {
   slotListCapacity = 0;
   cellCapacity = 0;
   pairCapacity = FIRST_PAIR_CAPACITY;
+  // What the last copyRadii copied.
+  private radiiOf: Float64Array | null = null;
+  private radiiAt = -1;
+  private radiiMembership = 0;
+  private radiiViews = -1;
   /** Pairs the last full scan found (a private kernel's scans grow the buffer ahead of it). */
   private lastFound = 0;
 
@@ -288,6 +293,20 @@ export class GridKernel {
       if (found <= this.pairCapacity || this.shared) return found;
       this.growPairs(found);
     }
+  }
+
+  /**
+   * Copies `radius` into inputR from index `at`, unless this very copy is still there: radii never
+   * change while a body lives, so only a change of membership (`membership`, the store's
+   * membershipVersion) or a move of the arrays calls for it again.
+   */
+  copyRadii(radius: Float64Array, at: number, membership: number): void {
+    if (this.radiiOf === radius && this.radiiAt === at && this.radiiMembership === membership && this.radiiViews === this.viewVersion) return;
+    this.inputR.set(radius, at);
+    this.radiiOf = radius;
+    this.radiiAt = at;
+    this.radiiMembership = membership;
+    this.radiiViews = this.viewVersion;
   }
 
   // A parallel bin's passes (see assembly/grid-kernel.ts), over the input copies.

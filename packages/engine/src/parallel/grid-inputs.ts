@@ -5,7 +5,7 @@ import type { GridKernel } from '../broadphase/grid-kernel.js';
  * One thread's copies of body positions and radii into a shared grid kernel's memory, where the
  * kernel's bin passes read them (the kernel cannot see the body memory). Positions go over a
  * cache-sized chunk at a time, right after motion wrote them; radii, which never change while a
- * body lives, only when membership or the grid's arrays changed. Copies are one memcpy per column
+ * body lives, only when membership or the grid's arrays changed (GridKernel.copyRadii). Copies are one memcpy per column
  * through views made once per share, because subarray() allocates and this runs every step.
  */
 export class GridInputs {
@@ -15,11 +15,6 @@ export class GridInputs {
   private source: Float64Array | null = null;
   private from = -1;
   private to = -1;
-  // What the last radius copy was made for.
-  private radiiOf: Float64Array | null = null;
-  private radiiMembership = 0;
-  private radiiKernel: GridKernel | null = null;
-  private radiiLayout = -1;
 
   constructor(private readonly chunk: number) {}
 
@@ -46,14 +41,8 @@ export class GridInputs {
     kernel.inputY.set(this.y[chunk], at);
   }
 
-  /** Copies the share's radii, unless the copy made last is still there. */
+  /** Copies the share's radii, unless the kernel still holds this copy (see GridKernel.copyRadii). */
   copyRadii(kernel: GridKernel, membership: number): void {
-    const radius = this.radius;
-    if (this.radiiOf === radius && this.radiiMembership === membership && this.radiiKernel === kernel && this.radiiLayout === kernel.viewVersion) return;
-    kernel.inputR.set(radius, this.from);
-    this.radiiOf = radius;
-    this.radiiMembership = membership;
-    this.radiiKernel = kernel;
-    this.radiiLayout = kernel.viewVersion;
+    kernel.copyRadii(this.radius, this.from, membership);
   }
 }

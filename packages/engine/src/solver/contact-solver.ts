@@ -42,7 +42,7 @@ export function solveContacts(
   const { lo, hi, count } = contacts;
   // The kernel's loop is resolveContact without hit events or waking.
   if (bodies.kernel && events === null && bodies.sleepingCount === 0) {
-    bodies.kernel.solveContacts(lo, hi, count, settings.restitutionThreshold, box);
+    bodies.kernel.solveContacts(lo, hi, count, settings.restitutionThreshold, box?.width ?? 0, box?.height ?? 0);
     return true;
   }
   for (let k = 0; k < count; k++) resolveContact(bodies, lo[k], hi[k], settings, events);
@@ -97,8 +97,7 @@ export function solveContactBlock(
     escapes.note(bodies, i, j);
   }
   if (kernel) {
-    // The log carries the box's size (width 0: no box, nothing to note).
-    kernel.solveQueue(settings.restitutionThreshold, escapes.width > 0 ? escapes : null);
+    kernel.solveQueue(settings.restitutionThreshold, escapes.width, escapes.height);
     escapes.noteSlots(kernel.escaped, kernel.escapedCount);
   }
   return waiting;
