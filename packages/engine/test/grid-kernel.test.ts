@@ -4,7 +4,7 @@ import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
 import type { BodyStore } from '../src/store/body-store.js';
 import { CellGrid } from '../src/broadphase/cell-grid.js';
-import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
+import { CELL_CHUNK, GridKernel, setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import type { PairSink } from '../src/store/pair-sink.js';
 import { storeOf, hashWithPath } from './helpers.js';
 
@@ -127,5 +127,65 @@ describe('grid WebAssembly kernel', () => {
       if (step === 20) for (let h = 0; h < 800; h += 7) world.destroyBody(h);
     };
     expect(runHash(build, 40, true, mutate)).toBe(runHash(build, 40, false, mutate));
+  });
+  it('lays out a parallel bin (cells per body share, count and scatter per band) exactly as one serial bin', () => {
+    // The threads' passes run here one after another. Small grids put band edges inside many
+    // chunks of CELL_CHUNK bodies; bodies sorted by row make most chunks lie inside one band, as a
+    // world created row by row does, and shuffled ones make every chunk span bands.
+    const columns = 9;
+    const rows = 7;
+    const cells = columns * rows;
+    fc.assert(
+      fc.property(
+        fc.integer({ min: 1, max: 5 * CELL_CHUNK + 300 }),
+        fc.integer({ min: 1, max: 5 }),
+        fc.boolean(),
+        fc.integer({ min: 0, max: 2 ** 31 - 1 }),
+        (n, threads, sortedByRow, seed) => {
+          let state = seed;
+          const random = () => ((state = (Math.imul(state, 1103515245) + 12345) >>> 0) / 2 ** 32);
+          const x = Float64Array.from({ length: n }, () => random() * columns);
+          const y = Float64Array.from({ length: n }, () => random() * rows);
+          const r = Float64Array.from({ length: n }, () => 0.1 + random());
+          if (sortedByRow) y.sort();
+          const serial = GridKernel.create(false)!;
+          const parallel = GridKernel.create(true, threads)!;
+          for (const kernel of [serial, parallel]) {
+            kernel.ensure(n, cells);
+            kernel.ensureInputs(n);
+            kernel.inputX.set(x);
+            kernel.inputY.set(y);
+            kernel.inputR.set(r);
+          }
+          serial.bin(n, false, 0, 0, 1, columns, cells, 1.5);
+          // Body shares cut on chunk boundaries, as the threads' motion cuts them.
+          const cut = (t: number) => (t === threads ? n : Math.floor(Math.floor((n * t) / threads) / CELL_CHUNK) * CELL_CHUNK);
+          for (let t = 0; t < threads; t++) parallel.cellsOf(cut(t), cut(t + 1), 0, 0, 1, columns);
+          // Bands of cells cut where threads cut them, and also right at chunks' extremes, where
+          // "this chunk lies inside the band" and "this chunk misses it" change.
+          const edges = new Set([0, cells]);
+          for (let t = 1; t < threads; t++) edges.add(Math.floor((cells * t) / threads));
+          const chunkCells = parallel.chunkCells;
+          for (let e = 0; e < 2 * Math.ceil(n / CELL_CHUNK); e++) if (random() < 0.4) edges.add(chunkCells[e] + Math.floor(random() * 3) - 1);
+          const band = [...edges].filter((cell) => cell >= 0 && cell <= cells).sort((a, b) => a - b);
+          const mine: number[] = [];
+          for (let t = 0; t + 1 < band.length; t++) mine.push(parallel.countCells(n, band[t], band[t + 1]));
+          let before = 0;
+          for (let t = 0; t + 1 < band.length; t++) {
+            parallel.scatterCells(n, band[t], band[t + 1], before, 1.5);
+            before += mine[t];
+          }
+          parallel.cellStart[cells] = n;
+          parallel.cellStart[cells + 1] = n;
+          expect(before).toBe(n);
+          expect(parallel.cellStart.subarray(0, cells + 2)).toEqual(serial.cellStart.subarray(0, cells + 2));
+          expect(parallel.sortedSlot.subarray(0, n)).toEqual(serial.sortedSlot.subarray(0, n));
+          expect(parallel.sortedX.subarray(0, n)).toEqual(serial.sortedX.subarray(0, n));
+          expect(parallel.sortedY.subarray(0, n)).toEqual(serial.sortedY.subarray(0, n));
+          expect(parallel.sortedR.subarray(0, n)).toEqual(serial.sortedR.subarray(0, n));
+        },
+      ),
+      { numRuns: 60 },
+    );
   });
 });

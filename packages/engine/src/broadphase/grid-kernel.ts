@@ -30,10 +30,12 @@ interface KernelExports {
     columns: number, c0: number, c1: number, r0: number, r1: number, px: number, py: number, reach: number, slot: number,
     pairs: number, capacity: number,
   ): number;
-  cellsOf(xs: number, ys: number, from: number, to: number, minX: number, minY: number, inverse: number, columns: number, binOf: number): void;
-  countCells(binOf: number, n: number, from: number, to: number, cellStart: number): number;
+  cellsOf(
+    xs: number, ys: number, from: number, to: number, minX: number, minY: number, inverse: number, columns: number, binOf: number, chunkCells: number,
+  ): void;
+  countCells(binOf: number, n: number, from: number, to: number, cellStart: number, chunkCells: number): number;
   scatterCells(
-    binOf: number, n: number, from: number, to: number, before: number, cellStart: number,
+    binOf: number, n: number, from: number, to: number, before: number, cellStart: number, chunkCells: number,
     xs: number, ys: number, rs: number, radiusScale: number,
     sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
   ): void;
@@ -41,6 +43,12 @@ interface KernelExports {
 }
 
 const FIRST_PAIR_CAPACITY = 1024;
+
+/**
+ * Bodies per chunk of a parallel bin's chunk cell ranges (CHUNK_SHIFT in assembly/grid-kernel.ts):
+ * each thread's share of the cells pass starts on a multiple of it.
+ */
+export const CELL_CHUNK = 1024;
 
 /** The shared module's declared maximum, in pages (see scripts/build-kernel.mjs). */
 const SHARED_MAXIMUM_PAGES = 32768;
@@ -82,8 +90,9 @@ export interface KernelLayout {
 
 /**
  * One grid's WebAssembly memory. Layout, by byte offset: the float64 arrays (sorted x, y, r, then
- * the input copies of x, y, r, if any), the int32 ones (slot list if any, binOf, sortedSlot, cellStart), and the pair buffer
- * last, so that the pair buffer can grow without moving anything else.
+ * the input copies of x, y, r, if any), the int32 ones (chunk cell ranges and slot list if any,
+ * binOf, sortedSlot, cellStart), and the pair buffer last, so that the pair buffer can grow
+ * without moving anything else.
  */
 export class GridKernel {
   bodyCapacity = 0;
@@ -105,6 +114,7 @@ export class GridKernel {
   private inputXAt = 0;
   private inputYAt = 0;
   private inputRAt = 0;
+  private chunkCellsAt = 0;
   private slotListAt = 0;
   private cellStartAt = 0;
   private binOfAt = 0;
@@ -118,6 +128,8 @@ export class GridKernel {
   inputX: Float64Array = new Float64Array(0);
   inputY: Float64Array = new Float64Array(0);
   inputR: Float64Array = new Float64Array(0);
+  /** Per chunk of CELL_CHUNK input bodies, its smallest and largest cell (see cellsOf). */
+  chunkCells: Int32Array = new Int32Array(0);
   slotList: Int32Array = new Int32Array(0);
   cellStart: Int32Array = new Int32Array(0);
   binOf: Int32Array = new Int32Array(0);
@@ -211,6 +223,11 @@ export class GridKernel {
     this.reserve();
   }
 
+  /** Two int32 per chunk of the input copies (cellsOf's chunk cell ranges). */
+  private get chunkCellsLength(): number {
+    return 2 * Math.ceil(this.inputCapacity / CELL_CHUNK);
+  }
+
   private place(): void {
     const floats = this.bodyCapacity * 8;
     const inputs = this.inputCapacity * 8;
@@ -221,7 +238,8 @@ export class GridKernel {
     this.inputXAt = 3 * floats;
     this.inputYAt = this.inputXAt + inputs;
     this.inputRAt = this.inputYAt + inputs;
-    this.slotListAt = this.inputRAt + inputs;
+    this.chunkCellsAt = this.inputRAt + inputs;
+    this.slotListAt = this.chunkCellsAt + this.chunkCellsLength * 4;
     this.binOfAt = this.slotListAt + this.slotListCapacity * 4;
     this.sortedSlotAt = this.binOfAt + ints;
     this.cellStartAt = this.sortedSlotAt + ints;
@@ -240,6 +258,7 @@ export class GridKernel {
     this.inputX = new Float64Array(buffer, this.inputXAt, inputs);
     this.inputY = new Float64Array(buffer, this.inputYAt, inputs);
     this.inputR = new Float64Array(buffer, this.inputRAt, inputs);
+    this.chunkCells = new Int32Array(buffer, this.chunkCellsAt, this.chunkCellsLength);
     this.slotList = new Int32Array(buffer, this.slotListAt, this.slotListCapacity);
     this.cellStart = new Int32Array(buffer, this.cellStartAt, this.cellCapacity);
     this.binOf = new Int32Array(buffer, this.binOfAt, bodies);
@@ -311,17 +330,18 @@ export class GridKernel {
 
   // A parallel bin's passes (see assembly/grid-kernel.ts), over the input copies.
 
+  /** Cells of bodies [from, to), and their chunks' cell ranges: `from` must be a multiple of CELL_CHUNK. */
   cellsOf(from: number, to: number, minX: number, minY: number, inverse: number, columns: number): void {
-    this.fn.cellsOf(this.inputXAt, this.inputYAt, from, to, minX, minY, inverse, columns, this.binOfAt);
+    this.fn.cellsOf(this.inputXAt, this.inputYAt, from, to, minX, minY, inverse, columns, this.binOfAt, this.chunkCellsAt);
   }
 
   countCells(n: number, from: number, to: number): number {
-    return this.fn.countCells(this.binOfAt, n, from, to, this.cellStartAt);
+    return this.fn.countCells(this.binOfAt, n, from, to, this.cellStartAt, this.chunkCellsAt);
   }
 
   scatterCells(n: number, from: number, to: number, before: number, radiusScale: number): void {
     this.fn.scatterCells(
-      this.binOfAt, n, from, to, before, this.cellStartAt,
+      this.binOfAt, n, from, to, before, this.cellStartAt, this.chunkCellsAt,
       this.inputXAt, this.inputYAt, this.inputRAt, radiusScale,
       this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
     );

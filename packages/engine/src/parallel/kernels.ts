@@ -1,5 +1,6 @@
 import { BodyStore } from '../store/body-store.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
+import { CELL_CHUNK } from '../broadphase/grid-kernel.js';
 import { RADIUS_PAD } from '../broadphase/fat-bounds.js';
 import { NarrowPhase } from '../narrowphase/narrowphase.js';
 import { PairSink } from '../store/pair-sink.js';
@@ -16,8 +17,8 @@ import { BodyKernel } from '../store/body-kernel.js';
 import { GridInputs } from './grid-inputs.js';
 import { ContactSorter } from '../store/contact-sorter.js';
 
-/** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2. */
-const MOTION_CHUNK = 4096;
+/** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2 (and a multiple of CELL_CHUNK). */
+const MOTION_CHUNK = 4 * CELL_CHUNK;
 
 /**
  * A thread's contact list on shared memory. It never grows (only the caller may allocate shared
@@ -161,12 +162,24 @@ export class ThreadKernels {
     return shareStart(total, this.index + 1, this.control[Slot.threads]);
   }
 
+  /**
+   * This thread's share of `total` bodies for the passes that compute cells, cut on multiples of
+   * CELL_CHUNK so that each chunk's cell range (GridKernel.cellsOf) has one writer.
+   */
+  private bodyShareFrom(total: number): number {
+    return chunkAligned(total, this.index, this.control[Slot.threads]);
+  }
+
+  private bodyShareEnd(total: number): number {
+    return chunkAligned(total, this.index + 1, this.control[Slot.threads]);
+  }
+
   private motion(): void {
     const c = this.control;
     const p = this.params;
     const total = c[Slot.slotCount];
-    const from = this.shareFrom(total);
-    const to = this.shareEnd(total);
+    const from = this.bodyShareFrom(total);
+    const to = this.bodyShareEnd(total);
     const integrator = INTEGRATOR_IDS[c[Slot.integrator]];
     const integrate = INTEGRATORS[integrator];
     const bounce = c[Slot.bounce] === 1;
@@ -195,8 +208,8 @@ export class ThreadKernels {
 
   private bin(): void {
     const total = this.control[Slot.bodyCount];
-    const from = this.shareFrom(total);
-    const to = this.shareEnd(total);
+    const from = this.bodyShareFrom(total);
+    const to = this.bodyShareEnd(total);
     if (this.grid.sharedKernel) this.inputs.prepare(this.bodies, from, to);
     for (let at = from; at < to; at += MOTION_CHUNK) this.binRange(at, Math.min(at + MOTION_CHUNK, to));
     this.copyRadii();
@@ -377,6 +390,11 @@ export class ThreadKernels {
     c[Slot.deferredCount + this.index] = solveContactBlock(this.bodies, this.canonicalLo, this.canonicalHi, from, to, settings, this.mark, ++this.stamp, this.deferred, this.escapes);
     c[Slot.escapedCount + this.index] = this.escapes.count;
   }
+}
+
+/** Thread w's first body in a share cut on multiples of CELL_CHUNK. */
+function chunkAligned(total: number, w: number, threads: number): number {
+  return w >= threads ? total : Math.floor(shareStart(total, w, threads) / CELL_CHUNK) * CELL_CHUNK;
 }
 
 /** A worker's private body store and grid, whose buffers `install` replaces with shared ones. */
