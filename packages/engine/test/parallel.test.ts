@@ -4,6 +4,7 @@ import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
 import type { BodyStore } from '../src/store/body-store.js';
 import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
+import { spinBudget, spinWhileEqual } from '../src/parallel/host.js';
 
 // Worker threads load the compiled engine (dist/), which `npm test` builds first.
 
@@ -200,5 +201,18 @@ describe('parallel step', () => {
     }
     world.stopWorkers();
     expect(world.stateHash()).toBe(before);
+  });
+
+  it('polls for the next command only where threads fit the cores, and stops polling when the budget runs out', () => {
+    expect(spinBudget(2, 2)).toBeGreaterThan(0);
+    expect(spinBudget(3, 2)).toBe(0);
+    expect(spinBudget(2, 0)).toBe(0);
+    const flag = new Int32Array(new SharedArrayBuffer(4));
+    const started = performance.now();
+    expect(spinWhileEqual(flag, 0, 0, 2000)).toBe(false);
+    expect(performance.now() - started).toBeGreaterThanOrEqual(2);
+    flag[0] = 1;
+    expect(spinWhileEqual(flag, 0, 0, 2000)).toBe(true);
+    expect(spinWhileEqual(flag, 0, 1, 0)).toBe(false);
   });
 });

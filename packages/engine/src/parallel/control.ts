@@ -35,6 +35,11 @@ export const Slot = {
   binInMotion: 17,
   /** The body store's membershipVersion (mod 2^32): radii change only when it does. */
   membership: 18,
+  /**
+   * How long a thread that has finished its share keeps polling for the next command before it
+   * sleeps, in microseconds: 0 where threads outnumber cores (see spinBudget in host.ts).
+   */
+  spinMicroseconds: 19,
   /** MAX_THREADS cells: bodies in each thread's cell range, for the prefix sums. */
   blockTotal: 32,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */

@@ -20,9 +20,9 @@ import {
   type BufferMessage,
 } from './control.js';
 import { ThreadKernels } from './kernels.js';
-import { canBlock, startWorker, threadsUnavailable, type WorkerHandle } from './host.js';
+import { canBlock, hardwareThreads, spinBudget, spinWhileEqual, startWorker, threadsUnavailable, type WorkerHandle } from './host.js';
 
-/** Polls of DONE before the caller sleeps in Atomics.wait (where it may); see worker-entry.ts. */
+/** Polls of DONE before the caller sleeps in Atomics.wait (where it may), besides the spin budget (host.ts spinBudget). */
 const SPIN = 5_000;
 
 /**
@@ -130,6 +130,7 @@ export class ParallelStep {
     const control = new Int32Array(new SharedArrayBuffer(Slot.length * 4));
     const params = new Float64Array(new SharedArrayBuffer(Param.length * 8));
     const results = new Float64Array(new SharedArrayBuffer(RESULT_STRIDE * MAX_THREADS * 8));
+    control[Slot.spinMicroseconds] = spinBudget(threads, await hardwareThreads());
     const workers: WorkerHandle[] = [];
     try {
       for (let index = 1; index < threads; index++) {
@@ -338,6 +339,7 @@ export class ParallelStep {
       const done = Atomics.load(c, Slot.done);
       if (done >= expected) break;
       if (spin < SPIN) continue;
+      if (spin === SPIN && spinWhileEqual(c, Slot.done, done, c[Slot.spinMicroseconds])) continue;
       if (since === 0) since = nowMs();
       else if (nowMs() - since > STALL_MS) {
         throw new Error(
