@@ -70,12 +70,30 @@ describe('parallel step', () => {
       const kernel = (world as unknown as { bodies: BodyStore }).bodies.kernel;
       expect(kernel?.sharedMemory).toBeTruthy();
       for (let s = 0; s < 60; s++) world.step(1 / 60);
+      // The threads' grid lives in the same memory, past the columns, and reads them in place.
+      const grid = (world as unknown as { pipeline: { broadPhase: { grid: CellGrid } } }).pipeline.broadPhase.grid;
+      const gridKernel = grid.sharedKernel!;
+      expect(gridKernel.memory).toBe(kernel!.sharedMemory);
+      expect(gridKernel.base).toBe(kernel!.memoryBytes());
+      expect(gridKernel.memoryBytes()).toBe(gridKernel.memory.buffer.byteLength - kernel!.memoryBytes());
     } finally {
       world.stopWorkers();
     }
     setBodyKernelEnabled(false);
     try {
       expect(await hashWith(build, 0, 60)).toBe(world.stateHash());
+      // Without the body kernel the grid kernel keeps a memory of its own, and the threads copy
+      // positions and radii into it.
+      const copying = build();
+      await copying.startWorkers(2, { minBodies: 0 });
+      try {
+        for (let s = 0; s < 60; s++) copying.step(1 / 60);
+        const grid = (copying as unknown as { pipeline: { broadPhase: { grid: CellGrid } } }).pipeline.broadPhase.grid;
+        expect(grid.sharedKernel?.base).toBe(0);
+      } finally {
+        copying.stopWorkers();
+      }
+      expect(copying.stateHash()).toBe(world.stateHash());
     } finally {
       setBodyKernelEnabled(true);
     }

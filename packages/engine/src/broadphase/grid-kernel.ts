@@ -80,6 +80,7 @@ function kernelModule(shared: boolean): object | null {
 
 /** Where a shared grid's arrays lie in its memory, for the threads that scan it. */
 export interface KernelLayout {
+  base: number;
   bodyCapacity: number;
   inputCapacity: number;
   slotListCapacity: number;
@@ -95,6 +96,12 @@ export interface KernelLayout {
  * without moving anything else.
  */
 export class GridKernel {
+  /**
+   * Where this grid's arrays start: 0 in a memory of its own; past the body columns when it lives
+   * in a parallel world's shared body memory (see `inside`), where its passes read the bodies'
+   * positions and radii in place instead of copies.
+   */
+  readonly base: number;
   bodyCapacity = 0;
   /** Room for input copies, made only by grids that bin here (see ensureInputs). */
   inputCapacity = 0;
@@ -157,11 +164,22 @@ export class GridKernel {
     return GridKernel.on(memory, module, shared, pairRegions);
   }
 
+  /**
+   * A shared kernel whose arrays lie in `memory` from byte `base` on, growing it as they need:
+   * the body columns' shared memory, whose columns end before `base`. Growing a shared memory
+   * moves and detaches nothing, so the columns' views stay valid. Null where this runtime lacks
+   * shared WebAssembly memory.
+   */
+  static inside(memory: KernelMemory, base: number, pairRegions: number): GridKernel | null {
+    const module = kernelModule(true);
+    return module === null ? null : GridKernel.on(memory, module, true, pairRegions, base);
+  }
+
   /** A worker's kernel over the caller's shared memory and layout (see `layout`). */
   static attach(memory: KernelMemory, layout: KernelLayout): GridKernel | null {
     const module = kernelModule(true);
     if (module === null) return null;
-    const kernel = GridKernel.on(memory, module, true, layout.pairRegions);
+    const kernel = GridKernel.on(memory, module, true, layout.pairRegions, layout.base);
     kernel.pairCapacity = layout.pairCapacity;
     kernel.bodyCapacity = layout.bodyCapacity;
     kernel.inputCapacity = layout.inputCapacity;
@@ -171,8 +189,8 @@ export class GridKernel {
     return kernel;
   }
 
-  private static on(memory: KernelMemory, module: object, shared: boolean, pairRegions: number): GridKernel {
-    return new GridKernel(memory, instantiateKernel<KernelExports>(module, memory), shared, pairRegions);
+  private static on(memory: KernelMemory, module: object, shared: boolean, pairRegions: number, base = 0): GridKernel {
+    return new GridKernel(memory, instantiateKernel<KernelExports>(module, memory), shared, pairRegions, base);
   }
 
   private constructor(
@@ -181,11 +199,14 @@ export class GridKernel {
     readonly shared: boolean,
     /** Pair buffers, one per thread that scans (1 for a private grid). */
     readonly pairRegions: number,
-  ) {}
+    base: number,
+  ) {
+    this.base = base;
+  }
 
   get layout(): KernelLayout {
-    const { bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions } = this;
-    return { bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions };
+    const { base, bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions } = this;
+    return { base, bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions };
   }
 
   /**
@@ -223,19 +244,19 @@ export class GridKernel {
     this.reserve();
   }
 
-  /** Two int32 per chunk of the input copies (cellsOf's chunk cell ranges). */
+  /** Two int32 per chunk of bodies (cellsOf's chunk cell ranges), for the shared grids that use them. */
   private get chunkCellsLength(): number {
-    return 2 * Math.ceil(this.inputCapacity / CELL_CHUNK);
+    return this.shared ? 2 * Math.ceil(this.bodyCapacity / CELL_CHUNK) : 0;
   }
 
   private place(): void {
     const floats = this.bodyCapacity * 8;
     const inputs = this.inputCapacity * 8;
     const ints = this.bodyCapacity * 4;
-    this.sortedXAt = 0;
-    this.sortedYAt = floats;
-    this.sortedRAt = 2 * floats;
-    this.inputXAt = 3 * floats;
+    this.sortedXAt = this.base;
+    this.sortedYAt = this.sortedXAt + floats;
+    this.sortedRAt = this.sortedYAt + floats;
+    this.inputXAt = this.sortedRAt + floats;
     this.inputYAt = this.inputXAt + inputs;
     this.inputRAt = this.inputYAt + inputs;
     this.chunkCellsAt = this.inputRAt + inputs;
@@ -275,7 +296,7 @@ export class GridKernel {
    * of the n slots in slotList[0..n) (and inputs filled up to the largest of them).
    */
   bin(n: number, slotList: boolean, minX: number, minY: number, inverse: number, columns: number, cells: number, radiusScale: number): void {
-    // Offset 0 means "no list": the sorted x column always lies there, ahead of the slot list.
+    // Offset 0 means "no list": no slot list starts there, the sorted x column lies ahead of it.
     this.fn.bin(
       this.inputXAt, this.inputYAt, this.inputRAt, slotList ? this.slotListAt : 0, n,
       minX, minY, inverse, columns, cells, radiusScale,
@@ -330,19 +351,24 @@ export class GridKernel {
 
   // A parallel bin's passes (see assembly/grid-kernel.ts), over the input copies.
 
-  /** Cells of bodies [from, to), and their chunks' cell ranges: `from` must be a multiple of CELL_CHUNK. */
-  cellsOf(from: number, to: number, minX: number, minY: number, inverse: number, columns: number): void {
-    this.fn.cellsOf(this.inputXAt, this.inputYAt, from, to, minX, minY, inverse, columns, this.binOfAt, this.chunkCellsAt);
+  /**
+   * Cells of bodies [from, to), and their chunks' cell ranges: `from` must be a multiple of
+   * CELL_CHUNK. Positions are read at byte offsets xs, ys: the body columns themselves for a grid
+   * `inside` their memory, otherwise the input copies.
+   */
+  cellsOf(from: number, to: number, minX: number, minY: number, inverse: number, columns: number, xs = this.inputXAt, ys = this.inputYAt): void {
+    this.fn.cellsOf(xs, ys, from, to, minX, minY, inverse, columns, this.binOfAt, this.chunkCellsAt);
   }
 
   countCells(n: number, from: number, to: number): number {
     return this.fn.countCells(this.binOfAt, n, from, to, this.cellStartAt, this.chunkCellsAt);
   }
 
-  scatterCells(n: number, from: number, to: number, before: number, radiusScale: number): void {
+  /** Prefix sums and scatter of the cells [from, to); bodies are read as cellsOf reads them, radii at rs. */
+  scatterCells(n: number, from: number, to: number, before: number, radiusScale: number, xs = this.inputXAt, ys = this.inputYAt, rs = this.inputRAt): void {
     this.fn.scatterCells(
       this.binOfAt, n, from, to, before, this.cellStartAt, this.chunkCellsAt,
-      this.inputXAt, this.inputYAt, this.inputRAt, radiusScale,
+      xs, ys, rs, radiusScale,
       this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
     );
   }
@@ -351,8 +377,9 @@ export class GridKernel {
     return this.fn.examined();
   }
 
+  /** Bytes this grid takes: all of its own memory, or what it added to the body memory it lives in. */
   memoryBytes(): number {
-    return this.memory.buffer.byteLength;
+    return this.memory.buffer.byteLength - this.base;
   }
 
   private scanOnce(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, region: number): number {

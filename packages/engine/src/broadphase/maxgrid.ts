@@ -49,6 +49,7 @@ export class MaxGridBroadPhase implements BroadPhase {
    */
   layoutForThreads(bodies: BodyStore, threads: number): CellGrid | null {
     this.grid.setShared(true, threads);
+    this.grid.useArena(bodies.kernel);
     const live = this.live;
     live.measure(bodies);
     if (live.count < 2 || !live.dense) return null;

@@ -2,11 +2,13 @@ import type { BodyStore } from '../store/body-store.js';
 import type { GridKernel } from '../broadphase/grid-kernel.js';
 
 /**
- * One thread's copies of body positions and radii into a shared grid kernel's memory, where the
- * kernel's bin passes read them (the kernel cannot see the body memory). Positions go over a
+ * One thread's copies of body positions and radii into a shared grid kernel's memory of its own,
+ * where the kernel's bin passes read them: only for a grid that could not live in the body memory
+ * (CellGrid.useArena), such as one whose bodies have no WebAssembly memory. Positions go over a
  * cache-sized chunk at a time, right after motion wrote them; radii, which never change while a
- * body lives, only when membership or the grid's arrays changed (GridKernel.copyRadii). Copies are one memcpy per column
- * through views made once per share, because subarray() allocates and this runs every step.
+ * body lives, only when membership or the grid's arrays changed (GridKernel.copyRadii). Copies
+ * are one memcpy per column through views made once per share, because subarray() allocates and
+ * this runs every step.
  */
 export class GridInputs {
   private x: Float64Array[] = [];

@@ -1,6 +1,6 @@
 import { BodyStore } from '../store/body-store.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
-import { CELL_CHUNK } from '../broadphase/grid-kernel.js';
+import { CELL_CHUNK, type GridKernel } from '../broadphase/grid-kernel.js';
 import { RADIUS_PAD } from '../broadphase/fat-bounds.js';
 import { NarrowPhase } from '../narrowphase/narrowphase.js';
 import { PairSink } from '../store/pair-sink.js';
@@ -187,7 +187,7 @@ export class ThreadKernels {
     const bin = c[Slot.binInMotion] === 1;
     // Plain motion in a box: the body kernel integrates and bounces in one pass.
     const kernel = bounce && !needsGeneralMotion(this.bodies) ? this.bodies.kernel : null;
-    if (bin && this.grid.sharedKernel) this.inputs.prepare(this.bodies, from, to);
+    if (bin) this.prepareInputs(from, to);
     const dt = p[Param.dt];
     // In cache-sized chunks, so that the walls test bodies integration has just brought in.
     for (let at = from; at < to; at += MOTION_CHUNK) {
@@ -210,14 +210,24 @@ export class ThreadKernels {
     const total = this.control[Slot.bodyCount];
     const from = this.bodyShareFrom(total);
     const to = this.bodyShareEnd(total);
-    if (this.grid.sharedKernel) this.inputs.prepare(this.bodies, from, to);
+    this.prepareInputs(from, to);
     for (let at = from; at < to; at += MOTION_CHUNK) this.binRange(at, Math.min(at + MOTION_CHUNK, to));
     this.copyRadii();
   }
 
+  /** The grid kernel that bins from copies of the bodies (not one in their memory), or null. */
+  private get copyingKernel(): GridKernel | null {
+    const kernel = this.grid.sharedKernel;
+    return kernel && kernel.base === 0 ? kernel : null;
+  }
+
+  private prepareInputs(from: number, to: number): void {
+    if (this.copyingKernel) this.inputs.prepare(this.bodies, from, to);
+  }
+
   /** For the grid kernel's scatter: this thread's radii (binRange copies positions). */
   private copyRadii(): void {
-    const kernel = this.grid.sharedKernel;
+    const kernel = this.copyingKernel;
     if (kernel) this.inputs.copyRadii(kernel, this.control[Slot.membership]);
   }
 
@@ -232,6 +242,11 @@ export class ThreadKernels {
     const minY = p[Param.originY];
     const inv = p[Param.inverseCell];
     const kernel = this.grid.sharedKernel;
+    if (kernel && kernel.base > 0) {
+      // In the body memory: the kernel reads the columns in place.
+      kernel.cellsOf(from, to, minX, minY, inv, columns, x.byteOffset, y.byteOffset);
+      return;
+    }
     if (kernel) {
       // The grid kernel's passes read the bodies from its own memory: copy this range in first.
       this.inputs.copyPositions(kernel, from);
@@ -286,7 +301,9 @@ export class ThreadKernels {
     for (let t = 0; t < this.index; t++) end += c[Slot.blockTotal + t];
     const kernel = this.grid.sharedKernel;
     if (kernel) {
-      kernel.scatterCells(n, from, to, end, 1 + RADIUS_PAD);
+      const { x, y, radius } = this.bodies;
+      if (kernel.base > 0) kernel.scatterCells(n, from, to, end, 1 + RADIUS_PAD, x.byteOffset, y.byteOffset, radius.byteOffset);
+      else kernel.scatterCells(n, from, to, end, 1 + RADIUS_PAD);
       if (this.index === threads - 1) {
         cellStart[cells] = n;
         cellStart[cells + 1] = n;

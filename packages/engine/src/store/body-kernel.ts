@@ -138,6 +138,7 @@ export class BodyKernel {
     }
     const kernel = new BodyKernel(memory, instantiateKernel<BodyKernelExports>(module, memory), shared, 0);
     kernel.next = scratch;
+    kernel.ownBytes = memory.buffer.byteLength;
     return kernel;
   }
 
@@ -194,8 +195,14 @@ export class BodyKernel {
     return this.shared ? this.memory : null;
   }
 
+  /**
+   * Bytes of the memory as created, which the columns and scratch areas fill: a parallel step's
+   * grid lives past them in a shared memory (GridKernel.inside), grows it, and counts that part.
+   */
+  ownBytes = 0;
+
   memoryBytes(): number {
-    return this.memory.buffer.byteLength;
+    return this.ownBytes;
   }
 
   integrateSemiImplicit(from: number, to: number, dvx: number, dvy: number, dt: number): void {
