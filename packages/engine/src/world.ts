@@ -244,8 +244,7 @@ export class World {
     const s = this.slot(handle);
     const c = layerBits('category', category);
     const m = layerBits('mask', mask);
-    this.bodies.category[s] = c;
-    this.bodies.mask[s] = m;
+    this.bodies.setFilter(s, c, m);
     this.bodies.wake(s);
   }
 

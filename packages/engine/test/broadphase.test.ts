@@ -12,6 +12,9 @@ class Collector implements PairConsumer {
   consume(a: Int32Array, b: Int32Array, count: number): void {
     for (let k = 0; k < count; k++) this.pairs.push(a[k] < b[k] ? `${a[k]},${b[k]}` : `${b[k]},${a[k]}`);
   }
+  accept(): void {
+    throw new Error('a broad-phase pushed a contact while contactsDirect was off');
+  }
 }
 
 function candidates(store: BodyStore, name: (typeof BROADPHASE_NAMES)[number]): string[] {

@@ -72,4 +72,15 @@ describe('merging sorted contact lists (a parallel step\'s threads each sort the
     buffer.sortCanonical(3000);
     expect(contents(buffer)).toEqual(all);
   });
+
+  it('takes interleaved pairs (a scan\'s contacts) past its capacity, and no longer counts as ordered', () => {
+    const all = sortedPairs(13, 300, 2000);
+    const interleaved = Int32Array.from(all.flat());
+    const buffer = new ContactBuffer();
+    buffer.clear();
+    buffer.pushPairs(interleaved, 0, 2 * 100);
+    buffer.pushPairs(interleaved, 2 * 100, interleaved.length);
+    expect(contents(buffer)).toEqual(all);
+    expect((buffer as unknown as { ordered: boolean }).ordered).toBe(false);
+  });
 });

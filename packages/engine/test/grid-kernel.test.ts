@@ -157,7 +157,7 @@ describe('grid WebAssembly kernel', () => {
             kernel.inputY.set(y);
             kernel.inputR.set(r);
           }
-          serial.bin(n, false, 0, 0, 1, columns, cells, 1.5);
+          serial.bin(n, false, 0, 0, 1, columns, cells);
           // Body shares cut on chunk boundaries, as the threads' motion cuts them.
           const cut = (t: number) => (t === threads ? n : Math.floor(Math.floor((n * t) / threads) / CELL_CHUNK) * CELL_CHUNK);
           for (let t = 0; t < threads; t++) parallel.cellsOf(cut(t), cut(t + 1), 0, 0, 1, columns);
@@ -172,7 +172,7 @@ describe('grid WebAssembly kernel', () => {
           for (let t = 0; t + 1 < band.length; t++) mine.push(parallel.countCells(n, band[t], band[t + 1]));
           let before = 0;
           for (let t = 0; t + 1 < band.length; t++) {
-            parallel.scatterCells(n, band[t], band[t + 1], before, 1.5);
+            parallel.scatterCells(n, band[t], band[t + 1], before);
             before += mine[t];
           }
           parallel.cellStart[cells] = n;
@@ -187,5 +187,70 @@ describe('grid WebAssembly kernel', () => {
       ),
       { numRuns: 60 },
     );
+  });
+  describe('touching test in the scan (worlds where every pair collides)', () => {
+    /** Per step: contacts, candidates and, at the end, the state hash, with the grid kernel on or off. */
+    function trace(on: boolean, build: () => World, steps: number, mutate?: (world: World, step: number) => void): string[] {
+      const out: string[] = [];
+      hashWithPath(setGridKernelEnabled, on, build, steps, (world, step) => {
+        mutate?.(world, step);
+        if (step > 0) out.push(`${world.stats.contacts}/${world.stats.candidatePairs}/${world.stats.filteredPairs}`);
+      });
+      return out;
+    }
+
+    it('gives the narrow-phase\'s contacts and candidate counts, step by step, and the same bits', () => {
+      const build = () => buildWorld(buildScene('uniform', { n: 3000, seed: 4, fill: 0.5 }), { broadphase: 'maxgrid' });
+      expect(trace(true, build, 40)).toEqual(trace(false, build, 40));
+      expect(runHash(build, 40, true)).toBe(runHash(build, 40, false));
+    });
+
+    it('hands the pairs to the narrow-phase again while a pair of static, kinematic, sleeping or filtered bodies touches', () => {
+      const build = () => {
+        const world = new World({ broadphase: 'maxgrid', bounds: { width: 400, height: 400 }, gravity: { x: 0, y: 0 } });
+        for (let k = 0; k < 600; k++) {
+          world.createCircle({ x: 10 + (k % 30) * 9, y: 10 + Math.floor(k / 30) * 9, radius: 5, vx: ((k * 37) % 11) - 5, vy: ((k * 53) % 13) - 6 });
+        }
+        return world;
+      };
+      // In a corner of their own, a touching pair per phase, each of which the narrow-phase drops.
+      let pair: number[] = [];
+      const mutate = (world: World, step: number) => {
+        if (step % 5 !== 0 || step === 0) return;
+        for (const handle of pair) world.destroyBody(handle);
+        const at = (dx: number, options: object) => world.createCircle({ x: 350 + dx, y: 350, radius: 4, ...options });
+        const phase = step / 5;
+        if (phase === 1) pair = [at(0, { type: 'static' }), at(5, { type: 'static' })];
+        else if (phase === 2) pair = [at(0, { type: 'kinematic' }), at(5, { type: 'static' })];
+        else if (phase === 3) {
+          pair = [at(0, {}), at(5, {})];
+          for (const handle of pair) world.setAwake(handle, false);
+        } else if (phase === 4) pair = [at(0, { category: 2, mask: 2 }), at(5, {})];
+        else pair = [];
+      };
+      const on = trace(true, build, 30, mutate);
+      expect(on).toEqual(trace(false, build, 30, mutate));
+      expect(runHash(build, 30, true, mutate)).toBe(runHash(build, 30, false, mutate));
+    });
+
+    it('knows when every pair collides', () => {
+      const world = new World({ broadphase: 'maxgrid' });
+      const store = (world as unknown as { bodies: BodyStore }).bodies;
+      const a = world.createCircle({ x: 0, y: 0, radius: 1 });
+      const b = world.createCircle({ x: 1, y: 0, radius: 1, category: 0 });
+      expect(store.everyPairCollides).toBe(false);
+      world.destroyBody(b);
+      expect(store.everyPairCollides).toBe(true);
+      const c = world.createCircle({ x: 5, y: 0, radius: 1, type: 'kinematic' });
+      expect(store.everyPairCollides).toBe(false);
+      world.setType(c, 'dynamic');
+      expect(store.everyPairCollides).toBe(true);
+      world.setCollisionFilter(a, 1, 3);
+      expect(store.everyPairCollides).toBe(false);
+      world.destroyBody(a);
+      expect(store.everyPairCollides).toBe(true);
+      world.setAwake(c, false);
+      expect(store.everyPairCollides).toBe(false);
+    });
   });
 });

@@ -1,5 +1,6 @@
 import type { PairSink } from '../store/pair-sink.js';
 import type { CellGrid } from './cell-grid.js';
+import { RADIUS_PAD } from './fat-bounds.js';
 
 // The TypeScript scan loops of CellGrid: the path without WebAssembly, and for a serial scan of a
 // shared grid whose pair buffer overflowed.
@@ -29,16 +30,16 @@ export function scanRowsInScript(grid: CellGrid, out: PairSink, pad: number, row
       for (let k = first; k < last; k++) {
         const ax = sortedX[k];
         const ay = sortedY[k];
-        const ar = sortedR[k] + pad;
+        const ar = sortedR[k] * (1 + RADIUS_PAD) + pad;
         const a = sortedSlot[k];
         for (let m = k + 1; m < sameRowEnd; m++) {
-          const reach = ar + sortedR[m];
+          const reach = ar + sortedR[m] * (1 + RADIUS_PAD);
           const dx = sortedX[m] - ax;
           const dy = sortedY[m] - ay;
           if (dx * dx + dy * dy <= reach * reach) out.push(a, sortedSlot[m]);
         }
         for (let m = from; m < to; m++) {
-          const reach = ar + sortedR[m];
+          const reach = ar + sortedR[m] * (1 + RADIUS_PAD);
           const dx = sortedX[m] - ax;
           const dy = sortedY[m] - ay;
           if (dx * dx + dy * dy <= reach * reach) out.push(a, sortedSlot[m]);
@@ -63,7 +64,7 @@ export function pushOverlaps(
 ): number {
   const { sortedX, sortedY, sortedR, sortedSlot } = grid;
   for (let m = from; m < to; m++) {
-    const reach = ar + sortedR[m];
+    const reach = ar + sortedR[m] * (1 + RADIUS_PAD);
     const dx = sortedX[m] - ax;
     const dy = sortedY[m] - ay;
     if (dx * dx + dy * dy <= reach * reach) out.push(slot, sortedSlot[m]);

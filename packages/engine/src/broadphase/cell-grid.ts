@@ -2,15 +2,16 @@ import type { BodyStore } from '../store/body-store.js';
 import type { BodyKernel } from '../store/body-kernel.js';
 import type { PairSink } from '../store/pair-sink.js';
 import { allocateLike, grownCapacity } from '../util/grow.js';
-import { RADIUS_PAD } from './fat-bounds.js';
 import { GridKernel, gridKernelEnabled, type KernelLayout, type KernelMemory } from './grid-kernel.js';
 import { pushOverlaps, scanRowsInScript } from './cell-grid-scan.js';
 
 /**
  * One uniform grid over a set of bodies, built by counting sort: count per cell, prefix sum,
  * scatter. O(bodies + cells), nothing allocated per cell, and the scatter copies each body's x, y
- * and (padded) radius into cell order so that scans read memory sequentially instead of chasing
- * slots. Cells are row-major, so a run of cells in one row is one contiguous range of bodies.
+ * and radius into cell order so that scans read memory sequentially instead of chasing slots
+ * (radii as they are: scans pad them as fat-bounds.ts says while reading them, which gives the
+ * same bits as padding them here, and leaves the exact radius for a touching test). Cells are
+ * row-major, so a run of cells in one row is one contiguous range of bodies.
  *
  * Where WebAssembly is available the arrays live in a GridKernel's memory and binning (of slots
  * 0..n-1, or of a slot list holding at least a quarter of the slots) and scanning run there, with
@@ -147,7 +148,7 @@ export class CellGrid {
         }
         kernel.slotList.set(this.listView);
       }
-      kernel.bin(n, slots !== null, minX, minY, inv, columns, cells, 1 + RADIUS_PAD);
+      kernel.bin(n, slots !== null, minX, minY, inv, columns, cells);
       return;
     }
     const { cellStart, binOf, sortedSlot, sortedX, sortedY, sortedR } = this;
@@ -169,7 +170,7 @@ export class CellGrid {
       sortedSlot[at] = i;
       sortedX[at] = x[i];
       sortedY[at] = y[i];
-      sortedR[at] = radius[i] * (1 + RADIUS_PAD);
+      sortedR[at] = radius[i];
     }
     cellStart[cells] = n;
     cellStart[cells + 1] = n;
@@ -205,13 +206,19 @@ export class CellGrid {
   scanRowsOrOverflow(out: PairSink, pad: number, rowFrom: number, rowTo: number): number {
     const kernel = this.kernel;
     if (!kernel) return scanRowsInScript(this, out, pad, rowFrom, rowTo);
-    const found = kernel.scan(this.columns, this.rows, rowFrom, rowTo, pad, this.pairRegion);
+    const touching = out.contactsDirect;
+    const found = kernel.scan(this.columns, this.rows, rowFrom, rowTo, pad, touching, this.pairRegion);
     if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
     this.pairsFound = found;
     if (found > kernel.pairCapacity) return -1;
     const pairs = kernel.pairs;
     const base = 2 * this.pairRegion * kernel.pairCapacity;
-    for (let p = base; p < base + 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
+    if (touching) {
+      // The kernel tested the pairs for touching already (see assembly `scan`): these are contacts.
+      out.pushContacts(pairs, base, base + 2 * found, kernel.candidates);
+    } else {
+      for (let p = base; p < base + 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
+    }
     return kernel.examined;
   }
 

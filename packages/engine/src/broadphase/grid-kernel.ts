@@ -1,5 +1,6 @@
 import { GRID_KERNEL_SHARED_WASM, GRID_KERNEL_WASM } from '../generated/grid-kernel-wasm.js';
 import { grownCapacity } from '../util/grow.js';
+import { RADIUS_PAD } from './fat-bounds.js';
 import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
 
 export type { KernelMemory };
@@ -18,16 +19,16 @@ export type { KernelMemory };
 interface KernelExports {
   bin(
     xs: number, ys: number, rs: number, slots: number, n: number,
-    minX: number, minY: number, inverse: number, columns: number, cells: number, radiusScale: number,
+    minX: number, minY: number, inverse: number, columns: number, cells: number,
     cellStart: number, binOf: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
   ): void;
   scan(
     cellStart: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
-    columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, pairs: number, capacity: number,
+    columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, radiusScale: number, touching: boolean, pairs: number, capacity: number,
   ): number;
   scanWindow(
     cellStart: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
-    columns: number, c0: number, c1: number, r0: number, r1: number, px: number, py: number, reach: number, slot: number,
+    columns: number, c0: number, c1: number, r0: number, r1: number, px: number, py: number, reach: number, radiusScale: number, slot: number,
     pairs: number, capacity: number,
   ): number;
   cellsOf(
@@ -36,10 +37,11 @@ interface KernelExports {
   countCells(binOf: number, n: number, from: number, to: number, cellStart: number, chunkCells: number): number;
   scatterCells(
     binOf: number, n: number, from: number, to: number, before: number, cellStart: number, chunkCells: number,
-    xs: number, ys: number, rs: number, radiusScale: number,
+    xs: number, ys: number, rs: number,
     sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
   ): void;
   examined(): number;
+  candidates(): number;
 }
 
 const FIRST_PAIR_CAPACITY = 1024;
@@ -295,11 +297,11 @@ export class GridKernel {
    * CellGrid.bin over inputX/Y/R, which the caller has filled: of slots 0..n-1, or with `slotList`
    * of the n slots in slotList[0..n) (and inputs filled up to the largest of them).
    */
-  bin(n: number, slotList: boolean, minX: number, minY: number, inverse: number, columns: number, cells: number, radiusScale: number): void {
+  bin(n: number, slotList: boolean, minX: number, minY: number, inverse: number, columns: number, cells: number): void {
     // Offset 0 means "no list": no slot list starts there, the sorted x column lies ahead of it.
     this.fn.bin(
       this.inputXAt, this.inputYAt, this.inputRAt, slotList ? this.slotListAt : 0, n,
-      minX, minY, inverse, columns, cells, radiusScale,
+      minX, minY, inverse, columns, cells,
       this.cellStartAt, this.binOfAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
     );
   }
@@ -311,13 +313,13 @@ export class GridKernel {
    * read it, so the parallel step grows it between stages and runs the scan stage again.
    * `examined` then holds the pairs examined.
    */
-  scan(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, region = 0): number {
+  scan(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, touching: boolean, region = 0): number {
     // Pair counts change little between steps: grow ahead of a full buffer rather than scan twice.
     if (!this.shared && 4 * this.lastFound > 3 * this.pairCapacity) this.growPairs(Math.ceil((this.lastFound * 4) / 3));
-    let found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, region);
+    let found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, touching, region);
     if (found > this.pairCapacity && !this.shared) {
       this.growPairs(found);
-      found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, region);
+      found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, touching, region);
     }
     this.lastFound = found;
     return found;
@@ -328,7 +330,7 @@ export class GridKernel {
     for (;;) {
       const found = this.fn.scanWindow(
         this.cellStartAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
-        columns, c0, c1, r0, r1, px, py, reach, slot, this.pairsAt, this.pairCapacity,
+        columns, c0, c1, r0, r1, px, py, reach, 1 + RADIUS_PAD, slot, this.pairsAt, this.pairCapacity,
       );
       if (found <= this.pairCapacity || this.shared) return found;
       this.growPairs(found);
@@ -365,10 +367,10 @@ export class GridKernel {
   }
 
   /** Prefix sums and scatter of the cells [from, to); bodies are read as cellsOf reads them, radii at rs. */
-  scatterCells(n: number, from: number, to: number, before: number, radiusScale: number, xs = this.inputXAt, ys = this.inputYAt, rs = this.inputRAt): void {
+  scatterCells(n: number, from: number, to: number, before: number, xs = this.inputXAt, ys = this.inputYAt, rs = this.inputRAt): void {
     this.fn.scatterCells(
       this.binOfAt, n, from, to, before, this.cellStartAt, this.chunkCellsAt,
-      xs, ys, rs, radiusScale,
+      xs, ys, rs,
       this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
     );
   }
@@ -382,10 +384,15 @@ export class GridKernel {
     return this.memory.buffer.byteLength - this.base;
   }
 
-  private scanOnce(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, region: number): number {
+  private scanOnce(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, touching: boolean, region: number): number {
     return this.fn.scan(
       this.cellStartAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
-      columns, rows, rowFrom, rowTo, pad, this.pairsAt + region * this.pairCapacity * 8, this.pairCapacity,
+      columns, rows, rowFrom, rowTo, pad, 1 + RADIUS_PAD, touching, this.pairsAt + region * this.pairCapacity * 8, this.pairCapacity,
     );
+  }
+
+  /** Pairs whose padded circles overlapped in the last scan, touching or not (see assembly `scan`). */
+  get candidates(): number {
+    return this.fn.candidates();
   }
 }

@@ -2,6 +2,7 @@ import type { BroadPhase } from './broadphase.js';
 import type { BodyStore } from '../store/body-store.js';
 import type { PairSink } from '../store/pair-sink.js';
 import { CellGrid } from './cell-grid.js';
+import { RADIUS_PAD } from './fat-bounds.js';
 import { LiveExtent } from './live-extent.js';
 import { grownCapacity } from '../util/grow.js';
 
@@ -151,13 +152,13 @@ function lookAcross(fine: CellGrid, coarse: CellGrid, pad: number, out: PairSink
   if (fromCoarse < fromFine) {
     const { sortedX, sortedY, sortedR, sortedSlot } = coarse;
     for (let k = 0; k < coarse.count; k++) {
-      const reach = sortedR[k] + pad;
+      const reach = sortedR[k] * (1 + RADIUS_PAD) + pad;
       examined += fine.scanWindow(sortedX[k], sortedY[k], reach, sortedSlot[k], reach + fine.cellSize / 2, out);
     }
   } else {
     const { sortedX, sortedY, sortedR, sortedSlot } = fine;
     for (let k = 0; k < fine.count; k++) {
-      examined += coarse.scanAround(sortedX[k], sortedY[k], sortedR[k] + pad, sortedSlot[k], out);
+      examined += coarse.scanAround(sortedX[k], sortedY[k], sortedR[k] * (1 + RADIUS_PAD) + pad, sortedSlot[k], out);
     }
   }
   return examined;

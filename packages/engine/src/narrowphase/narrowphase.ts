@@ -28,6 +28,10 @@ export class NarrowPhase implements PairConsumer {
     this.filtered = 0;
   }
 
+  accept(pairs: Int32Array, from: number, to: number): void {
+    this.contacts.pushPairs(pairs, from, to);
+  }
+
   consume(a: Int32Array, b: Int32Array, count: number): void {
     const bodies = this.bodies;
     // The same filters and test, in the body kernel where the columns live there.

@@ -40,6 +40,8 @@ export const Slot = {
    * sleeps, in microseconds: 0 where threads outnumber cores (see spinBudget in host.ts).
    */
   spinMicroseconds: 19,
+  /** 1 when every pair of bodies collides, so scans hand over contacts (PairSink.contactsDirect). */
+  everyPairCollides: 20,
   /** MAX_THREADS cells: bodies in each thread's cell range, for the prefix sums. */
   blockTotal: 32,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */

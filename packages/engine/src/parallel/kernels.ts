@@ -1,7 +1,6 @@
 import { BodyStore } from '../store/body-store.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
 import { CELL_CHUNK, type GridKernel } from '../broadphase/grid-kernel.js';
-import { RADIUS_PAD } from '../broadphase/fat-bounds.js';
 import { NarrowPhase } from '../narrowphase/narrowphase.js';
 import { PairSink } from '../store/pair-sink.js';
 import type { ContactSink } from '../store/contact-buffer.js';
@@ -38,6 +37,18 @@ export class BoundedContactList implements ContactSink {
       this.lo[k] = lo;
       this.hi[k] = hi;
     }
+  }
+
+  pushPairs(pairs: Int32Array, from: number, to: number): void {
+    const { lo, hi } = this;
+    let k = this.count;
+    for (let p = from; p < to; p += 2, k++) {
+      if (k < lo.length) {
+        lo[k] = pairs[p];
+        hi[k] = pairs[p + 1];
+      }
+    }
+    this.count = k;
   }
 }
 
@@ -302,8 +313,8 @@ export class ThreadKernels {
     const kernel = this.grid.sharedKernel;
     if (kernel) {
       const { x, y, radius } = this.bodies;
-      if (kernel.base > 0) kernel.scatterCells(n, from, to, end, 1 + RADIUS_PAD, x.byteOffset, y.byteOffset, radius.byteOffset);
-      else kernel.scatterCells(n, from, to, end, 1 + RADIUS_PAD);
+      if (kernel.base > 0) kernel.scatterCells(n, from, to, end, x.byteOffset, y.byteOffset, radius.byteOffset);
+      else kernel.scatterCells(n, from, to, end);
       if (this.index === threads - 1) {
         cellStart[cells] = n;
         cellStart[cells + 1] = n;
@@ -322,7 +333,7 @@ export class ThreadKernels {
       sortedSlot[at] = k;
       sortedX[at] = x[k];
       sortedY[at] = y[k];
-      sortedR[at] = radius[k] * (1 + RADIUS_PAD);
+      sortedR[at] = radius[k];
     }
     if (this.index === threads - 1) {
       cellStart[cells] = n;
@@ -339,6 +350,7 @@ export class ThreadKernels {
     const contacts = this.contacts;
     contacts.count = 0;
     this.sink.begin();
+    this.sink.contactsDirect = c[Slot.everyPairCollides] === 1;
     this.narrowPhase.begin();
     const examined = this.grid.scanRowsOrOverflow(this.sink, this.params[Param.coordPad], rowFrom, rowTo);
     this.sink.flush();

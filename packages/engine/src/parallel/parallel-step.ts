@@ -186,6 +186,7 @@ export class ParallelStep {
    */
   findContacts(grid: CellGrid, coordPad: number, contacts: ContactBuffer, binned: boolean): number {
     const c = this.control;
+    c[Slot.everyPairCollides] = this.bodies.everyPairCollides ? 1 : 0;
     if (!binned) {
       this.useGrid(grid, coordPad);
       this.run(Command.bin);

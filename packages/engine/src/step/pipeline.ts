@@ -98,6 +98,7 @@ export class StepPipeline {
 
     contacts.clear();
     pairs.begin();
+    pairs.contactsDirect = bodies.everyPairCollides;
     this.narrowPhase.begin();
     const binned = grid !== null;
     if (!binned && parallel && broad instanceof MaxGridBroadPhase) grid = broad.layoutForThreads(bodies, parallel.threads);

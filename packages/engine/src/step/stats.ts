@@ -34,7 +34,11 @@ export interface StepStats {
   /** Continuous collision against static shapes, then the box walls. */
   boundaryMs: number;
   broadphaseMs: number;
-  /** With worker threads (startWorkers): the calling thread's own narrow-phase time. */
+  /**
+   * With worker threads (startWorkers): the calling thread's own narrow-phase time. Near 0 where
+   * the Max Grid's WebAssembly scan tests touching itself (worlds where every pair collides): that
+   * time is then in broadphaseMs.
+   */
   narrowphaseMs: number;
   /** Canonical contact ordering plus impulses and separation. */
   solveMs: number;

@@ -10,6 +10,8 @@ import { BodyKernel } from './body-kernel.js';
  */
 export const SLOT_SPACE = 2 ** 24;
 const MAX_GENERATION = 2 ** 28;
+/** A mask with every collision layer. */
+const ALL_LAYERS = 0xffffffff;
 
 export interface NewBody {
   x: number;
@@ -86,6 +88,9 @@ export class BodyStore {
   sleepingCount = 0;
   /** Static bodies: continuous collision sweeps fast bodies against them. */
   staticCount = 0;
+  kinematicCount = 0;
+  /** Bodies whose collision filter can refuse a pair: a mask without every bit, or no category bit. */
+  selectiveFilterCount = 0;
   /** True between applyForce and the next step. */
   forcesPending = false;
   /**
@@ -155,8 +160,10 @@ export class BodyStore {
     this.mass[slot] = body.mass;
     this.restitution[slot] = body.restitution;
     this.shape[slot] = ShapeCode.circle;
-    this.category[slot] = body.category;
-    this.mask[slot] = body.mask;
+    // Open first (a fresh slot holds zeros), so that setFilter counts this body from nothing.
+    this.category[slot] = 1;
+    this.mask[slot] = ALL_LAYERS;
+    this.setFilter(slot, body.category, body.mask);
     this.gravityScale[slot] = body.gravityScale;
     this.linearDamping[slot] = body.linearDamping;
     this.forceX[slot] = 0;
@@ -175,7 +182,8 @@ export class BodyStore {
   remove(slot: number): void {
     if (this.gravityScale[slot] !== 1 || this.linearDamping[slot] !== 0) this.customMotionCount--;
     this.wake(slot);
-    if (this.type[slot] === TypeCode.static) this.staticCount--;
+    this.setFilter(slot, 1, ALL_LAYERS);
+    this.countType(this.type[slot], -1);
     this.type[slot] = TypeCode.free;
     this.vx[slot] = 0;
     this.vy[slot] = 0;
@@ -221,14 +229,37 @@ export class BodyStore {
 
   setTypeCode(slot: number, code: number): void {
     this.wake(slot);
-    if (this.type[slot] === TypeCode.static) this.staticCount--;
-    if (code === TypeCode.static) this.staticCount++;
+    this.countType(this.type[slot], -1);
+    this.countType(code, 1);
     this.type[slot] = code;
     this.invMass[slot] = code === TypeCode.dynamic ? 1 / this.mass[slot] : 0;
     if (code === TypeCode.static) {
       this.vx[slot] = 0;
       this.vy[slot] = 0;
     }
+  }
+
+  private countType(code: number, change: number): void {
+    if (code === TypeCode.static) this.staticCount += change;
+    else if (code === TypeCode.kinematic) this.kinematicCount += change;
+  }
+
+  /** Sets a live body's collision layers (see World.setCollisionFilter), keeping selectiveFilterCount. */
+  setFilter(slot: number, category: number, mask: number): void {
+    const wasSelective = this.mask[slot] !== ALL_LAYERS || this.category[slot] === 0;
+    const isSelective = mask !== ALL_LAYERS || category === 0;
+    this.selectiveFilterCount += Number(isSelective) - Number(wasSelective);
+    this.category[slot] = category;
+    this.mask[slot] = mask;
+  }
+
+  /**
+   * True when the narrow-phase would pass every pair of live bodies to the circle test alone: every
+   * body dynamic and awake, and every filter open (each body has a category bit, and every mask
+   * has every bit). Only circles exist today; polygons will add their shape count here.
+   */
+  get everyPairCollides(): boolean {
+    return this.staticCount === 0 && this.kinematicCount === 0 && this.sleepingCount === 0 && this.selectiveFilterCount === 0;
   }
 
   minRadius(): number {

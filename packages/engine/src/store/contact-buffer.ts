@@ -5,6 +5,8 @@ import { bodyKernelEnabled } from './body-kernel.js';
 /** Where the narrow-phase records touching pairs. */
 export interface ContactSink {
   push(lo: number, hi: number): void;
+  /** Pushes the pairs (pairs[p], pairs[p + 1]) for p = from, from + 2, ... below `to`. */
+  pushPairs(pairs: Int32Array, from: number, to: number): void;
 }
 
 /**
@@ -59,6 +61,20 @@ export class ContactBuffer implements ContactSink {
     this.lo[this.count] = lo;
     this.hi[this.count] = hi;
     this.count++;
+  }
+
+  pushPairs(pairs: Int32Array, from: number, to: number): void {
+    if (to > from) this.ordered = false;
+    const at = this.count;
+    const count = (to - from) >> 1;
+    if (at + count > this.lo.length) this.growPairs(at + count);
+    const toLo = this.lo;
+    const toHi = this.hi;
+    for (let k = 0; k < count; k++) {
+      toLo[at + k] = pairs[from + 2 * k];
+      toHi[at + k] = pairs[from + 2 * k + 1];
+    }
+    this.count = at + count;
   }
 
   /**

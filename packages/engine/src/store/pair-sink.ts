@@ -1,6 +1,8 @@
 /** What consumes candidate pairs in chunks: the narrow-phase. */
 export interface PairConsumer {
   consume(a: Int32Array, b: Int32Array, count: number): void;
+  /** Contacts (lo < hi) a broad-phase found touching itself, which need no test (see contactsDirect): pairs as ContactSink.pushPairs takes them. */
+  accept(pairs: Int32Array, from: number, to: number): void;
 }
 
 /**
@@ -20,6 +22,12 @@ export class PairSink {
   total = 0;
   /** Time spent inside the consumer, so the caller can split broad-phase from narrow-phase time. */
   consumerMs = 0;
+  /**
+   * Set by the step when every pair of its bodies collides (BodyStore.everyPairCollides), so the
+   * narrow-phase would only test each pair for touching: a broad-phase that can test as it finds
+   * may then hand over contacts (pushContact, addCandidates) instead of candidates.
+   */
+  contactsDirect = false;
 
   constructor(
     private readonly consumer: PairConsumer,
@@ -37,6 +45,15 @@ export class PairSink {
     this.a[k] = i;
     this.b[k] = j;
     if (++this.pending === PairSink.CHUNK) this.flush();
+  }
+
+  /**
+   * Touching pairs, as (lo, hi) in pairs[from..to), that the broad-phase found and tested while
+   * `contactsDirect`, out of `candidates` pairs whose padded circles overlapped.
+   */
+  pushContacts(pairs: Int32Array, from: number, to: number, candidates: number): void {
+    this.total += candidates;
+    this.consumer.accept(pairs, from, to);
   }
 
   memoryBytes(): number {
