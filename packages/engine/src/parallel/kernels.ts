@@ -3,7 +3,6 @@ import { CellGrid } from '../broadphase/cell-grid.js';
 import { CELL_CHUNK, type GridKernel } from '../broadphase/grid-kernel.js';
 import { NarrowPhase } from '../narrowphase/narrowphase.js';
 import { PairSink } from '../store/pair-sink.js';
-import type { ContactSink } from '../store/contact-buffer.js';
 import { INTEGRATORS } from '../integrate/integrator.js';
 import { needsGeneralMotion } from '../integrate/motion.js';
 import { bounceOffBox, clampContactBodiesInRange } from '../solver/box-walls.js';
@@ -14,43 +13,11 @@ import { BODY_COLUMNS, Command, INTEGRATOR_IDS, Param, RESULT_STRIDE, Result, Sl
 import type { Column } from '../util/grow.js';
 import { BodyKernel } from '../store/body-kernel.js';
 import { GridInputs } from './grid-inputs.js';
+import { BoundedContactList } from './bounded-contact-list.js';
 import { ContactSorter } from '../store/contact-sorter.js';
 
 /** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2 (and a multiple of CELL_CHUNK). */
 const MOTION_CHUNK = 4 * CELL_CHUNK;
-
-/**
- * A thread's contact list on shared memory. It never grows (only the caller may allocate shared
- * memory that every thread sees): past its capacity it keeps counting, and the caller enlarges
- * it and runs the scan again, which is pure, so nothing is lost.
- */
-export class BoundedContactList implements ContactSink {
-  count = 0;
-  constructor(
-    public lo: Int32Array,
-    public hi: Int32Array,
-  ) {}
-
-  push(lo: number, hi: number): void {
-    const k = this.count++;
-    if (k < this.lo.length) {
-      this.lo[k] = lo;
-      this.hi[k] = hi;
-    }
-  }
-
-  pushPairs(pairs: Int32Array, from: number, to: number): void {
-    const { lo, hi } = this;
-    let k = this.count;
-    for (let p = from; p < to; p += 2, k++) {
-      if (k < lo.length) {
-        lo[k] = pairs[p];
-        hi[k] = pairs[p + 1];
-      }
-    }
-    this.count = k;
-  }
-}
 
 /**
  * One thread's side of a parallel step: the caller (thread 0) and every worker run the same

@@ -4,7 +4,6 @@ import { CellGrid } from '../broadphase/cell-grid.js';
 import { grownCapacity, type Column } from '../util/grow.js';
 import { EscapeLog, resolveContact, type SolverSettings } from '../solver/contact-solver.js';
 import { clampBodies } from '../solver/box-walls.js';
-import { nowMs } from '../util/timer.js';
 import type { IntegratorName } from '../integrate/integrator.js';
 import {
   BODY_COLUMNS,
@@ -20,10 +19,8 @@ import {
   type BufferMessage,
 } from './control.js';
 import { ThreadKernels } from './kernels.js';
-import { canBlock, hardwareThreads, spinBudget, spinWhileEqual, startWorker, threadsUnavailable, type WorkerHandle } from './host.js';
-
-/** Polls of DONE before the caller sleeps in Atomics.wait (where it may), besides the spin budget (host.ts spinBudget). */
-const SPIN = 5_000;
+import { hardwareThreads, spinBudget, startWorker, threadsUnavailable, type WorkerHandle } from './host.js';
+import { awaitWorkers, publishCommand } from './handoff.js';
 
 /**
  * Worlds with fewer live bodies step on one thread by default: each parallel stage costs a
@@ -32,12 +29,6 @@ const SPIN = 5_000;
  * 1M 1.5-1.7x faster on two).
  */
 export const DEFAULT_MIN_BODIES = 32_768;
-
-/**
- * A worker silent this long is taken as lost (killed, or its thread starved) and the step fails
- * with an error instead of hanging. No share of a step comes near it: a million bodies take ~0.1 s.
- */
-const STALL_MS = 20_000;
 
 export function checkWorkerCount(threads: number): void {
   if (!Number.isSafeInteger(threads) || threads < 1 || threads > MAX_THREADS) {
@@ -325,34 +316,11 @@ export class ParallelStep {
   }
 
   private publish(command: number): void {
-    const c = this.control;
-    c[Slot.command] = command;
-    Atomics.store(c, Slot.done, 0);
-    Atomics.add(c, Slot.seq, 1);
-    Atomics.notify(c, Slot.seq);
+    publishCommand(this.control, command);
   }
 
   private awaitWorkers(): void {
-    const c = this.control;
-    const expected = this.workers.length;
-    let since = 0;
-    for (let spin = 0; ; spin++) {
-      const done = Atomics.load(c, Slot.done);
-      if (done >= expected) break;
-      if (spin < SPIN) continue;
-      if (spin === SPIN && spinWhileEqual(c, Slot.done, done, c[Slot.spinMicroseconds])) continue;
-      if (since === 0) since = nowMs();
-      else if (nowMs() - since > STALL_MS) {
-        throw new Error(
-          `parallel step stalled: ${done} of ${expected} workers finished command ${c[Slot.command]} within ${STALL_MS} ms`,
-        );
-      }
-      if (canBlock) Atomics.wait(c, Slot.done, done, 20);
-    }
-    if (Atomics.load(c, Slot.failed) !== 0) {
-      Atomics.store(c, Slot.failed, 0);
-      throw new Error('a worker thread failed during the step (its error was posted to the console of the thread that started it)');
-    }
+    awaitWorkers(this.control, this.workers.length);
   }
 
   /**
