@@ -67,6 +67,8 @@ export const Param = {
   originY: 8,
   inverseCell: 9,
   coordPad: 10,
+  /** The largest radius of a live body (see BodyKernel.moveInBox). */
+  maxRadius: 11,
   length: 16,
 } as const;
 

@@ -173,7 +173,7 @@ export class ThreadKernels {
       if (kernel) {
         kernel.moveInBox(
           at, end, p[Param.gravityX] * dt, p[Param.gravityY] * dt, dt, integrator === 'explicit-euler',
-          p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold],
+          p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold], p[Param.maxRadius],
         );
       } else {
         integrate(this.bodies, p[Param.gravityX], p[Param.gravityY], dt, at, end);

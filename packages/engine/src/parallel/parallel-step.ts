@@ -166,6 +166,7 @@ export class ParallelStep {
     p[Param.boxHeight] = settings.box?.height ?? 0;
     p[Param.wallRestitution] = settings.wallRestitution;
     p[Param.restitutionThreshold] = settings.restitutionThreshold;
+    p[Param.maxRadius] = b.maxRadius();
     this.run(Command.motion);
   }
 

@@ -157,7 +157,8 @@ export class StepPipeline {
   private moveInBox(kernel: BodyKernel, box: { width: number; height: number }, dt: number): void {
     const { gravity, wallRestitution, solver } = this.settings;
     const explicit = this.integrator === 'explicit-euler';
-    kernel.moveInBox(0, this.bodies.slotCount, gravity.x * dt, gravity.y * dt, dt, explicit, box.width, box.height, wallRestitution, solver.restitutionThreshold);
+    const bodies = this.bodies;
+    kernel.moveInBox(0, bodies.slotCount, gravity.x * dt, gravity.y * dt, dt, explicit, box.width, box.height, wallRestitution, solver.restitutionThreshold, bodies.maxRadius());
   }
 
   private readonly motion = {

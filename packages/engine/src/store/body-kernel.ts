@@ -29,7 +29,7 @@ interface BodyKernelExports {
   moveInBox(
     xs: number, ys: number, vxs: number, vys: number, rs: number, es: number, types: number, from: number, to: number,
     dvx: number, dvy: number, dt: number, explicit: boolean,
-    width: number, height: number, wallRestitution: number, restitutionThreshold: number,
+    width: number, height: number, wallRestitution: number, restitutionThreshold: number, maxRadius: number,
   ): void;
   narrowPhase(
     xs: number, ys: number, rs: number, types: number, asleeps: number, categories: number, masks: number,
@@ -221,13 +221,14 @@ export class BodyKernel {
   }
 
   /** The integrator's plain loop, then bounceOffBox, in one pass over slots [from, to). */
+  /** `maxRadius`: at least every moving body's radius (see assembly `moveInBox`). */
   moveInBox(
     from: number, to: number, dvx: number, dvy: number, dt: number, explicit: boolean,
-    width: number, height: number, wallRestitution: number, restitutionThreshold: number,
+    width: number, height: number, wallRestitution: number, restitutionThreshold: number, maxRadius: number,
   ): void {
     this.fn.moveInBox(
       this.xAt, this.yAt, this.vxAt, this.vyAt, this.radiusAt, this.restitutionAt, this.typeAt, from, to,
-      dvx, dvy, dt, explicit, width, height, wallRestitution, restitutionThreshold,
+      dvx, dvy, dt, explicit, width, height, wallRestitution, restitutionThreshold, maxRadius,
     );
   }
 
