@@ -41,7 +41,7 @@ export interface StepSettings {
  * interleave; their times are separated by timing the narrow-phase inside the sink. Everything
  * here works on buffers that persist between steps: a warm step allocates no buffers. (It still
  * boxes a few hundred bytes of numbers per step, the stage timers' readings and doubles passed to
- * calls V8 does not inline: 0.6-0.8 KB at 2,000 bodies with maxgrid, 0.7 with sap, 0.9 with hgrid,
+ * calls V8 does not inline: 0.6-0.8 KB at 2,000 bodies with maxgrid, 0.7 with sap, 0.8 with hgrid,
  * sampled with V8's heap profiler every 32 bytes, collected objects included. An earlier figure
  * here, 228 B, was low: the build before the WebAssembly kernels gives 0.67 KB measured this way.)
  *
