@@ -4,7 +4,8 @@ import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
 import type { BodyStore } from '../src/store/body-store.js';
 import { CellGrid } from '../src/broadphase/cell-grid.js';
-import { CELL_CHUNK, GridKernel, setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
+import { ARENA_LIMIT_BYTES, CELL_CHUNK, GridKernel, setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
+import { BodyKernel } from '../src/store/body-kernel.js';
 import type { PairSink } from '../src/store/pair-sink.js';
 import { storeOf, hashWithPath } from './helpers.js';
 
@@ -252,5 +253,22 @@ describe('grid WebAssembly kernel', () => {
       world.setAwake(c, false);
       expect(store.everyPairCollides).toBe(false);
     });
+  });
+  it('lives in a shared body memory past its columns, unless they fill half its maximum', () => {
+    const bodies = BodyKernel.create(1000, 100, 20, true)!;
+    const gridIn = (fill: number) => {
+      const grid = new CellGrid();
+      grid.setShared(true, 2);
+      // The same memory, reporting `fill` bytes of columns.
+      grid.useArena(Object.assign(Object.create(bodies) as BodyKernel, { memoryBytes: () => fill }));
+      grid.layout(0, 0, 100, 100, 4, 1000, 500);
+      return grid.sharedKernel!;
+    };
+    const inside = gridIn(bodies.memoryBytes());
+    expect(inside.memory).toBe(bodies.sharedMemory);
+    expect(inside.base).toBe(bodies.memoryBytes());
+    const apart = gridIn(ARENA_LIMIT_BYTES + 1);
+    expect(apart.base).toBe(0);
+    expect(apart.memory).not.toBe(bodies.sharedMemory);
   });
 });

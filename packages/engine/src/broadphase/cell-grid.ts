@@ -2,7 +2,7 @@ import type { BodyStore } from '../store/body-store.js';
 import type { BodyKernel } from '../store/body-kernel.js';
 import type { PairSink } from '../store/pair-sink.js';
 import { allocateLike, grownCapacity } from '../util/grow.js';
-import { GridKernel, gridKernelEnabled, type KernelLayout, type KernelMemory } from './grid-kernel.js';
+import { ARENA_LIMIT_BYTES, GridKernel, gridKernelEnabled, type KernelLayout, type KernelMemory } from './grid-kernel.js';
 import { pushOverlaps, scanRowsInScript } from './cell-grid-scan.js';
 
 /**
@@ -321,10 +321,11 @@ export class CellGrid {
    * For a shared grid: puts its kernel in `bodies`' shared memory, past the columns, from the next
    * layout on, so that the threads' bin passes read positions and radii in place rather than
    * copying them in first (1M bodies, 2 threads: the copies took 1.2-1.5 ms of each thread's
-   * motion). Null, or a kernel without shared memory, keeps a memory of the grid's own.
+   * motion). Null, a kernel without shared memory, or one whose columns already fill half its
+   * maximum (ARENA_LIMIT_BYTES), keeps a memory of the grid's own.
    */
   useArena(bodies: BodyKernel | null): void {
-    this.arena = bodies?.sharedMemory ? bodies : null;
+    this.arena = bodies?.sharedMemory && bodies.memoryBytes() <= ARENA_LIMIT_BYTES ? bodies : null;
   }
 
   private ensure(n: number, cells: number): void {

@@ -55,6 +55,13 @@ export const CELL_CHUNK = 1024;
 /** The shared module's declared maximum, in pages (see scripts/build-kernel.mjs). */
 const SHARED_MAXIMUM_PAGES = 32768;
 
+/**
+ * A grid lives in a body memory (GridKernel.inside) only while the columns take at most half of
+ * the shared maximum: the grid (about 44 bytes a body at 1M bodies, plus pair buffers) then has
+ * room to grow, which it must be able to do mid-step. Past it, the grid keeps a memory of its own.
+ */
+export const ARENA_LIMIT_BYTES = (SHARED_MAXIMUM_PAGES * PAGE_BYTES) / 2;
+
 const compiled: { private?: object | null; shared?: object | null } = {};
 let enabled = true;
 
