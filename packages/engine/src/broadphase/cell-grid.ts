@@ -332,7 +332,7 @@ export class CellGrid {
     const shared = this.shared;
     const arena = shared ? this.arena : null;
     // A kernel in a body memory the bodies have left (they grew into a fresh one) would read stale columns.
-    const strayed = this.kernel && this.kernel.base > 0 && this.kernel.memory !== arena?.sharedMemory;
+    const strayed = this.kernel && this.kernel.inBodyMemory && this.kernel.memory !== arena?.sharedMemory;
     if (this.kernel === undefined || strayed) {
       this.kernel = !this.kernelWanted ? null : arena ? GridKernel.inside(arena.sharedMemory!, arena.ownBytes, this.threads) : GridKernel.create(shared, this.threads);
       this.kernelViews = -1;
@@ -341,7 +341,7 @@ export class CellGrid {
     if (kernel) {
       kernel.ensure(n, cells);
       // Outside the body memory, a parallel step's threads copy positions and radii in before their bin passes.
-      if (shared && kernel.base === 0) kernel.ensureInputs(n);
+      if (shared && !kernel.inBodyMemory) kernel.ensureInputs(n);
       if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
       return;
     }

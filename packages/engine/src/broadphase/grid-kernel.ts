@@ -213,6 +213,11 @@ export class GridKernel {
     this.base = base;
   }
 
+  /** Whether this grid lives in a body memory (see `inside`), where its passes read the columns in place. */
+  get inBodyMemory(): boolean {
+    return this.base > 0;
+  }
+
   get layout(): KernelLayout {
     const { base, bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions } = this;
     return { base, bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions };

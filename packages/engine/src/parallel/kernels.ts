@@ -196,7 +196,7 @@ export class ThreadKernels {
   /** The grid kernel that bins from copies of the bodies (not one in their memory), or null. */
   private get copyingKernel(): GridKernel | null {
     const kernel = this.grid.sharedKernel;
-    return kernel && kernel.base === 0 ? kernel : null;
+    return kernel && !kernel.inBodyMemory ? kernel : null;
   }
 
   private prepareInputs(from: number, to: number): void {
@@ -220,7 +220,7 @@ export class ThreadKernels {
     const minY = p[Param.originY];
     const inv = p[Param.inverseCell];
     const kernel = this.grid.sharedKernel;
-    if (kernel && kernel.base > 0) {
+    if (kernel && kernel.inBodyMemory) {
       // In the body memory: the kernel reads the columns in place.
       kernel.cellsOf(from, to, minX, minY, inv, columns, x.byteOffset, y.byteOffset);
       return;
@@ -280,7 +280,7 @@ export class ThreadKernels {
     const kernel = this.grid.sharedKernel;
     if (kernel) {
       const { x, y, radius } = this.bodies;
-      if (kernel.base > 0) kernel.scatterCells(n, from, to, end, x.byteOffset, y.byteOffset, radius.byteOffset);
+      if (kernel.inBodyMemory) kernel.scatterCells(n, from, to, end, x.byteOffset, y.byteOffset, radius.byteOffset);
       else kernel.scatterCells(n, from, to, end);
       if (this.index === threads - 1) {
         cellStart[cells] = n;
