@@ -144,7 +144,7 @@ export class GridKernel {
   inputX: Float64Array = new Float64Array(0);
   inputY: Float64Array = new Float64Array(0);
   inputR: Float64Array = new Float64Array(0);
-  /** Per chunk of CELL_CHUNK input bodies, its smallest and largest cell (see cellsOf). */
+  /** Per chunk of CELL_CHUNK bodies, its smallest and largest cell (see cellsOf). */
   chunkCells: Int32Array = new Int32Array(0);
   slotList: Int32Array = new Int32Array(0);
   cellStart: Int32Array = new Int32Array(0);
