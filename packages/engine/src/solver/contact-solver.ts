@@ -72,9 +72,12 @@ export function solveContactBlock(
   deferred: Int32Array,
   escapes: EscapeLog,
 ): number {
+  // Only bodies this block can touch need marks: in canonical order every contact of the block has
+  // lo >= lo[from] (and hi > lo), while earlier contacts have lo <= lo[from].
+  const least = from < to ? lo[from] : 0;
   for (let k = 0; k < from; k++) {
-    mark[lo[k]] = stamp;
-    mark[hi[k]] = stamp;
+    if (lo[k] >= least) mark[lo[k]] = stamp;
+    if (hi[k] >= least) mark[hi[k]] = stamp;
   }
   let waiting = 0;
   // With the body kernel, the contacts not deferred are queued and resolved there, in order: which
