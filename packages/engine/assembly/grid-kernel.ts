@@ -234,19 +234,24 @@ function slotAt(slots: usize, k: i32): i32 {
  */
 export function scan(
   cellStart: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
-  columns: i32, rows: i32, rowFrom: i32, rowTo: i32, pad: f64, radiusScale: f64, touching: bool, pairs: usize, capacity: i32,
+  columns: i32, rows: i32, rowFrom: i32, rowTo: i32, minX: f64, inverse: f64,
+  pad: f64, radiusScale: f64, touching: bool, pairs: usize, capacity: i32,
 ): i32 {
   candidatesFound = 0;
   let found: i32 = 0;
   let examinedHere: i64 = 0;
+  // Body by body, in cell order, each body's column recomputed as the bin computed it: the same
+  // ranges, pairs and order as CellGrid.scanRows' cell-by-cell loop, without visiting the empty
+  // cells (about 40 % of them at the uniform scene's density), whose tests mispredict.
   for (let row = rowFrom; row < rowTo; row++) {
     const rowStart = row * columns;
     const hasBelow = row + 1 < rows;
-    for (let column: i32 = 0; column < columns; column++) {
+    const rowEnd = load<i32>(cellStart + (<usize>(rowStart + columns) << 2));
+    for (let k = load<i32>(cellStart + (<usize>rowStart << 2)); k < rowEnd; k++) {
+      const at = <usize>k << 3;
+      const ax = load<f64>(sortedX + at);
+      const column = cellOf(ax, minX, inverse);
       const c = rowStart + column;
-      const first = load<i32>(cellStart + (<usize>c << 2));
-      const last = load<i32>(cellStart + (<usize>(c + 1) << 2));
-      if (first == last) continue;
       const sameRowEnd = load<i32>(cellStart + (<usize>(column + 1 < columns ? c + 2 : c + 1) << 2));
       let from: i32 = 0;
       let to: i32 = 0;
@@ -255,17 +260,13 @@ export function scan(
         from = load<i32>(cellStart + (<usize>(column > 0 ? below - 1 : below) << 2));
         to = load<i32>(cellStart + (<usize>(column + 1 < columns ? below + 2 : below + 1) << 2));
       }
-      for (let k = first; k < last; k++) {
-        const at = <usize>k << 3;
-        const ax = load<f64>(sortedX + at);
-        const ay = load<f64>(sortedY + at);
-        const radius = load<f64>(sortedR + at);
-        const ar = radius * radiusScale + pad;
-        const a = load<i32>(sortedSlot + (<usize>k << 2));
-        found = pushOverlaps(k + 1, sameRowEnd, ax, ay, ar, radius, a, radiusScale, touching, sortedSlot, sortedX, sortedY, sortedR, pairs, capacity, found);
-        found = pushOverlaps(from, to, ax, ay, ar, radius, a, radiusScale, touching, sortedSlot, sortedX, sortedY, sortedR, pairs, capacity, found);
-        examinedHere += <i64>(sameRowEnd - k - 1 + (to - from));
-      }
+      const ay = load<f64>(sortedY + at);
+      const radius = load<f64>(sortedR + at);
+      const ar = radius * radiusScale + pad;
+      const a = load<i32>(sortedSlot + (<usize>k << 2));
+      found = pushOverlaps(k + 1, sameRowEnd, ax, ay, ar, radius, a, radiusScale, touching, sortedSlot, sortedX, sortedY, sortedR, pairs, capacity, found);
+      found = pushOverlaps(from, to, ax, ay, ar, radius, a, radiusScale, touching, sortedSlot, sortedX, sortedY, sortedR, pairs, capacity, found);
+      examinedHere += <i64>(sameRowEnd - k - 1 + (to - from));
     }
   }
   examinedPairs = examinedHere;

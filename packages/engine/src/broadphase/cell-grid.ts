@@ -207,7 +207,7 @@ export class CellGrid {
     const kernel = this.kernel;
     if (!kernel) return scanRowsInScript(this, out, pad, rowFrom, rowTo);
     const touching = out.contactsDirect;
-    const found = kernel.scan(this.columns, this.rows, rowFrom, rowTo, pad, touching, this.pairRegion);
+    const found = kernel.scan(this.columns, this.rows, rowFrom, rowTo, this.originX, this.inverse, pad, touching, this.pairRegion);
     if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
     this.pairsFound = found;
     if (found > kernel.pairCapacity) return -1;

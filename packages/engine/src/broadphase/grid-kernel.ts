@@ -24,7 +24,8 @@ interface KernelExports {
   ): void;
   scan(
     cellStart: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
-    columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, radiusScale: number, touching: boolean, pairs: number, capacity: number,
+    columns: number, rows: number, rowFrom: number, rowTo: number, minX: number, inverse: number,
+    pad: number, radiusScale: number, touching: boolean, pairs: number, capacity: number,
   ): number;
   scanWindow(
     cellStart: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
@@ -325,13 +326,13 @@ export class GridKernel {
    * read it, so the parallel step grows it between stages and runs the scan stage again.
    * `examined` then holds the pairs examined.
    */
-  scan(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, touching: boolean, region = 0): number {
+  scan(columns: number, rows: number, rowFrom: number, rowTo: number, originX: number, inverse: number, pad: number, touching: boolean, region = 0): number {
     // Pair counts change little between steps: grow ahead of a full buffer rather than scan twice.
     if (!this.shared && 4 * this.lastFound > 3 * this.pairCapacity) this.growPairs(Math.ceil((this.lastFound * 4) / 3));
-    let found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, touching, region);
+    let found = this.scanOnce(columns, rows, rowFrom, rowTo, originX, inverse, pad, touching, region);
     if (found > this.pairCapacity && !this.shared) {
       this.growPairs(found);
-      found = this.scanOnce(columns, rows, rowFrom, rowTo, pad, touching, region);
+      found = this.scanOnce(columns, rows, rowFrom, rowTo, originX, inverse, pad, touching, region);
     }
     this.lastFound = found;
     return found;
@@ -396,10 +397,12 @@ export class GridKernel {
     return this.memory.buffer.byteLength - this.base;
   }
 
-  private scanOnce(columns: number, rows: number, rowFrom: number, rowTo: number, pad: number, touching: boolean, region: number): number {
+  private scanOnce(
+    columns: number, rows: number, rowFrom: number, rowTo: number, originX: number, inverse: number, pad: number, touching: boolean, region: number,
+  ): number {
     return this.fn.scan(
       this.cellStartAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
-      columns, rows, rowFrom, rowTo, pad, 1 + RADIUS_PAD, touching, this.pairsAt + region * this.pairCapacity * 8, this.pairCapacity,
+      columns, rows, rowFrom, rowTo, originX, inverse, pad, 1 + RADIUS_PAD, touching, this.pairsAt + region * this.pairCapacity * 8, this.pairCapacity,
     );
   }
 

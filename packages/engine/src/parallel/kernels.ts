@@ -105,9 +105,13 @@ export class ThreadKernels {
     b.forcesPending = c[Slot.forcesPending] === 1;
     b.sleepingCount = c[Slot.sleeping];
     const g = this.grid;
+    const p = this.params;
     g.columns = c[Slot.columns];
     g.rows = c[Slot.rows];
     g.count = c[Slot.bodyCount];
+    g.originX = p[Param.originX];
+    g.originY = p[Param.originY];
+    g.inverse = p[Param.inverseCell];
   }
 
   run(command: number): void {
