@@ -88,6 +88,7 @@ export class BodyStore {
   sleepingCount = 0;
   /** Static bodies: continuous collision sweeps fast bodies against them. */
   staticCount = 0;
+  /** Kinematic bodies: with static ones and sleepers, pairs the narrow-phase may drop (everyPairCollides). */
   kinematicCount = 0;
   /** Bodies whose collision filter can refuse a pair: a mask without every bit, or no category bit. */
   selectiveFilterCount = 0;
@@ -182,6 +183,7 @@ export class BodyStore {
   remove(slot: number): void {
     if (this.gravityScale[slot] !== 1 || this.linearDamping[slot] !== 0) this.customMotionCount--;
     this.wake(slot);
+    // Uncounted: the freed slot holds an open filter and no type, as a fresh one would.
     this.setFilter(slot, 1, ALL_LAYERS);
     this.countType(this.type[slot], -1);
     this.type[slot] = TypeCode.free;

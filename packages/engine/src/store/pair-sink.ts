@@ -25,7 +25,7 @@ export class PairSink {
   /**
    * Set by the step when every pair of its bodies collides (BodyStore.everyPairCollides), so the
    * narrow-phase would only test each pair for touching: a broad-phase that can test as it finds
-   * may then hand over contacts (pushContact, addCandidates) instead of candidates.
+   * may then hand over contacts (pushContacts) instead of candidates.
    */
   contactsDirect = false;
 
