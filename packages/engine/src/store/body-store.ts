@@ -183,7 +183,7 @@ export class BodyStore {
   remove(slot: number): void {
     if (this.gravityScale[slot] !== 1 || this.linearDamping[slot] !== 0) this.customMotionCount--;
     this.wake(slot);
-    // Uncounted: the freed slot holds an open filter and no type, as a fresh one would.
+    // Out of the counts: a freed slot keeps an open filter, which add() then counts from.
     this.setFilter(slot, 1, ALL_LAYERS);
     this.countType(this.type[slot], -1);
     this.type[slot] = TypeCode.free;
