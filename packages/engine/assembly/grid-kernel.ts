@@ -242,7 +242,7 @@ export function scan(
   let examinedHere: i64 = 0;
   // Body by body, in cell order, each body's column recomputed as the bin computed it: the same
   // ranges, pairs and order as CellGrid.scanRows' cell-by-cell loop, without visiting the empty
-  // cells (about 40 % of them at the uniform scene's density), whose tests mispredict.
+  // cells (49 % of them on `uniform`, 0.545 bodies per cell, at 64k and at 1M), whose tests mispredict.
   for (let row = rowFrom; row < rowTo; row++) {
     const rowStart = row * columns;
     const hasBelow = row + 1 < rows;

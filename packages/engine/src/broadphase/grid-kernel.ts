@@ -58,7 +58,7 @@ const SHARED_MAXIMUM_PAGES = 32768;
 
 /**
  * A grid lives in a body memory (GridKernel.inside) only while the columns take at most half of
- * the shared maximum: the grid (about 44 bytes a body at 1M bodies, plus pair buffers) then has
+ * the shared maximum: the grid (40 bytes a body at 1M bodies on `uniform`, pair buffers included) then has
  * room to grow, which it must be able to do mid-step. Past it, the grid keeps a memory of its own.
  */
 export const ARENA_LIMIT_BYTES = (SHARED_MAXIMUM_PAGES * PAGE_BYTES) / 2;
