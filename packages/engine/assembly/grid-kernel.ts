@@ -56,16 +56,7 @@ export function bin(
   }
   // From the back with pre-decrement: slots ascend inside each cell, as in CellGrid.bin.
   for (let k: i32 = n - 1; k >= 0; k--) {
-    const counter = cellStart + (<usize>load<i32>(binOf + (<usize>k << 2)) << 2);
-    const slot = load<i32>(counter) - 1;
-    store<i32>(counter, slot);
-    const i = slotAt(slots, k);
-    const from = <usize>i << 3;
-    const to = <usize>slot << 3;
-    store<i32>(sortedSlot + (<usize>slot << 2), i);
-    store<f64>(sortedX + to, load<f64>(xs + from));
-    store<f64>(sortedY + to, load<f64>(ys + from));
-    store<f64>(sortedR + to, load<f64>(rs + from));
+    scatterOne(slotAt(slots, k), load<i32>(binOf + (<usize>k << 2)), cellStart, xs, ys, rs, sortedSlot, sortedX, sortedY, sortedR);
   }
   store<i32>(cellStart + (<usize>cells << 2), n);
   store<i32>(cellStart + ((<usize>cells + 1) << 2), n);
@@ -180,19 +171,19 @@ export function scatterCells(
   }
 }
 
-/** Body k into the last free place of its cell: the scatter step of `bin`. */
+/** The body in slot i into the last free place of its cell (pre-decrement): the scatter step of `bin` and `scatterCells`. */
 // @ts-ignore: decorator
 @inline
 function scatterOne(
-  k: i32, cell: i32, cellStart: usize, xs: usize, ys: usize, rs: usize,
+  i: i32, cell: i32, cellStart: usize, xs: usize, ys: usize, rs: usize,
   sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
 ): void {
   const counter = cellStart + (<usize>cell << 2);
   const slot = load<i32>(counter) - 1;
   store<i32>(counter, slot);
-  const src = <usize>k << 3;
+  const src = <usize>i << 3;
   const dst = <usize>slot << 3;
-  store<i32>(sortedSlot + (<usize>slot << 2), k);
+  store<i32>(sortedSlot + (<usize>slot << 2), i);
   store<f64>(sortedX + dst, load<f64>(xs + src));
   store<f64>(sortedY + dst, load<f64>(ys + src));
   store<f64>(sortedR + dst, load<f64>(rs + src));
