@@ -79,10 +79,11 @@ export async function hardwareThreads(): Promise<number> {
 
 /**
  * How long a thread that finished its share polls for the next command before it sleeps, in
- * microseconds. Commands inside a step follow each other within about a millisecond, and a
- * sleeping worker (Atomics.waitAsync) takes a few hundred microseconds to wake: 1M bodies on 2
- * threads spent 0.85-1.1 ms a step in such gaps with a 2,000-poll spin, 0.10-0.14 ms with a 1 ms
- * one (steps 44.6-46.5 ms against 41.6-42.6). Polling holds a core, though, so where threads
+ * microseconds. Commands inside a step follow each other within about a millisecond, and waking
+ * a sleeping worker (Atomics.waitAsync) costs each stage: 1M bodies on 2 threads spent 0.85-1.1 ms
+ * a step (five stages) between the threads' work and the next stage with a 2,000-poll spin, and
+ * 0.10-0.14 ms with long polling; whole-step medians, polling on and off in paired rounds, stayed
+ * within the host's noise (43.0/44.3, 43.9/44.3, 44.7/48.8, 46.8/43.0 ms). Polling holds a core, though, so where threads
  * outnumber cores (or the count is unknown) it stays a short count of polls: 3 threads on 2 cores
  * at 20k bodies stepped in 20.6 ms with 20,000 polls, 4.2 with 2,000.
  */
