@@ -1,5 +1,6 @@
 import { Controls } from './controls.js';
 import { download, toCsv, toJson } from './data-export.js';
+import { FrameLog, type FrameSample } from './frame-log.js';
 import { attachPointer } from './interaction.js';
 import { MonitorPanel } from './monitor/panel.js';
 import { QueryTool } from './query-tool.js';
@@ -38,6 +39,8 @@ const sim = new Simulation();
 const view = new ViewTransform();
 const monitor = new MonitorPanel(sim.recorder);
 const query = new QueryTool(byId('query-readout'));
+/** Frames of the current world: cleared on rebuild, so its steps add up to the world's own. */
+const frameLog = new FrameLog();
 const renderers: Partial<Record<RendererName, Renderer>> = { canvas: new Canvas2DRenderer(canvas2d) };
 let renderer: Renderer = renderers.canvas as Renderer;
 
@@ -85,6 +88,7 @@ function rebuild(next: Settings): void {
     sim.rebuild(wanted);
   }
   settings = wanted;
+  frameLog.clear();
   sim.setThreads(settings.threads, threadsFailed);
   query.clear();
   query.setTool(settings.tool);
@@ -188,6 +192,25 @@ settings.renderer = selectRenderer(settings.renderer);
 controls.show(settings);
 saveUrl();
 
+declare global {
+  interface Window {
+    /** Per-frame timings, read by the lab's sandbox-render experiment (see frame-log.ts). */
+    __sandboxFrames?: { read(): FrameSample; clear(): void; webglDevice(): string | null };
+  }
+}
+window.__sandboxFrames = {
+  read: () => ({
+    ...frameLog.frames(),
+    droppedSteps: sim.droppedSteps,
+    simulatedSeconds: sim.time,
+    bodies: sim.world.bodyCount,
+    renderer: settings.renderer,
+    threads: sim.world.workerCount,
+  }),
+  clear: () => frameLog.clear(),
+  webglDevice: () => (renderers.webgl instanceof WebGLRenderer ? renderers.webgl.device : null),
+};
+
 let last = performance.now();
 function frame(now: number): void {
   requestAnimationFrame(frame);
@@ -201,7 +224,9 @@ function frame(now: number): void {
     pendingScene = null;
     rebuild(next);
   }
-  sim.advance(elapsed);
+  const stepStart = performance.now();
+  const steps = sim.advance(elapsed);
+  const drawStart = performance.now();
   resize();
   shapes.segments = overlayOptions.segments = sim.segments;
   shapes.staticCircles = sim.staticCircles;
@@ -212,6 +237,7 @@ function frame(now: number): void {
   overlayOptions.held = sim.dragging;
   query.update(sim.world);
   overlay.draw(sim.world, view, overlayOptions);
+  frameLog.record(now, drawStart - stepStart, performance.now() - drawStart, steps);
   monitor.update(now, sim, forceStats);
   forceStats = false;
 }

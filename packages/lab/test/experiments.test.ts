@@ -163,7 +163,7 @@ describe('targets', () => {
   it('measures T1, T2, T3, T4, T5 on small sizes, records T6 skipped with its reason; JSON validates', async () => {
     const options = { ...targets.options('quick', {}), n: 1500, bigN: 4000, rounds: 1, stepsPerRound: 1, warmupSteps: 1, bigSteps: 1, bigWarmupSteps: 0, parallelSteps: 3 };
     // The browser is left out here (Chromium start-up is slow); the lab's e2e test drives the page hook T6 uses.
-    const host = { cBaseline, browser: async () => 'no browser in this test' };
+    const host = { cBaseline, browser: async () => 'no browser in this test', sandbox: async () => 'no browser in this test' };
     const result = await targets.run(options, { ...ctx(targets.defaultEngines), host });
     expectValid(targets.schema, result);
     expect(result.t1.timings.map((t) => t.engine)).toEqual(targets.defaultEngines);

@@ -53,7 +53,7 @@ describe('C baseline (native/maxgrid.c)', () => {
   });
 
   it('records "skipped" with the reason when there is no C compiler, and its JSON still validates', async () => {
-    const host = { cBaseline: async () => 'no C compiler (test)', browser: async () => 'no browser (test)' };
+    const host = { cBaseline: async () => 'no C compiler (test)', browser: async () => 'no browser (test)', sandbox: async () => 'no browser (test)' };
     const result = await cMaxgrid.run({ ...cMaxgrid.options('quick', {}), ns: [100] }, ctx(host));
     expect(result.compiler).toEqual({ status: 'skipped', reason: 'no C compiler (test)' });
     expect(result.rows).toEqual([]);

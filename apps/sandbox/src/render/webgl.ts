@@ -68,12 +68,17 @@ export class WebGLRenderer implements Renderer {
   private gpuCapacity = 0;
   private colorVersion = -1;
   private colorCapacity = 0;
+  /** The GPU (or software rasteriser) behind the context, as the browser names it. */
+  readonly device: string;
 
   /** Throws when WebGL 2 is unavailable; the caller falls back to canvas 2D. */
   constructor(readonly canvas: HTMLCanvasElement) {
     const gl = canvas.getContext('webgl2', { alpha: false, antialias: false, preserveDrawingBuffer: false });
     if (!gl) throw new Error('this browser gives no WebGL 2 context');
     this.gl = gl;
+    // Chromium names the real GPU only through this extension; without it, a generic "WebKit WebGL".
+    const debug = gl.getExtension('WEBGL_debug_renderer_info');
+    this.device = String(gl.getParameter(debug ? debug.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
     this.program = link(gl, VERTEX, FRAGMENT);
     this.uScale = gl.getUniformLocation(this.program, 'u_scale');
     this.uOffset = gl.getUniformLocation(this.program, 'u_offset');

@@ -195,6 +195,29 @@ describe('2D sandbox', () => {
     await page.close();
   });
 
+  it("logs every frame for the lab: the frame log's steps add up to the world's, and it names the WebGL device", async () => {
+    const { page, errors } = await openPage(browser, '/?scene=uniform&n=300&renderer=webgl');
+    await stepsPass(page, 0, 20);
+    // Paused, the log and the world's clock are read at the same moment.
+    await page.getByRole('button', { name: 'Pause', exact: true }).click();
+    const log = await page.evaluate(() => window.__sandboxFrames!.read());
+    expect(log).toMatchObject({ renderer: 'webgl', bodies: 300, threads: 1 });
+    const steps = log.steps.reduce((a, b) => a + b, 0);
+    expect(steps).toBeGreaterThanOrEqual(20);
+    expect(steps).toBe(Math.round(log.simulatedSeconds * 60));
+    for (let i = 1; i < log.start.length; i++) expect(log.start[i]).toBeGreaterThan(log.start[i - 1]);
+    expect(log.stepMs.length).toBe(log.start.length);
+    expect(Math.min(...log.stepMs, ...log.drawMs)).toBeGreaterThanOrEqual(0);
+    expect(await page.evaluate(() => window.__sandboxFrames!.webglDevice())).toMatch(/\S/);
+    // A rebuilt world starts a new log.
+    await page.getByRole('button', { name: 'Reset', exact: true }).click();
+    await expect.poll(() => stat(page, 'steps'), POLL).toBe(0);
+    const rebuilt = await page.evaluate(() => window.__sandboxFrames!.read());
+    expect(rebuilt.steps.reduce((a, b) => a + b, 0)).toBe(0);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
   it('pauses, steps once and resets', async () => {
     const { page, errors } = await openPage(browser, '/?n=100');
     await stepsPass(page, 0, 5);

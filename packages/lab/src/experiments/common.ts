@@ -65,6 +65,46 @@ export interface BrowserHost {
   close(): Promise<void>;
 }
 
+/** What the sandbox page's `window.__sandboxFrames.read()` returns (apps/sandbox/src/frame-log.ts). */
+export interface FrameSample {
+  /** requestAnimationFrame timestamps (ms), one per frame, oldest first. */
+  start: number[];
+  /** Per frame: time spent stepping the world (all the fixed steps the frame ran). */
+  stepMs: number[];
+  /** Per frame: time spent drawing, CPU side (uploads and draw calls, not the GPU's own work). */
+  drawMs: number[];
+  /** Per frame: fixed steps run. */
+  steps: number[];
+  /** Steps the simulation dropped since the page loaded (it runs slow rather than spiral). */
+  droppedSteps: number;
+  /** Simulated seconds since the current world was built. */
+  simulatedSeconds: number;
+  bodies: number;
+  renderer: string;
+  threads: number;
+}
+
+/** One timed stretch of the live sandbox page. */
+export interface SandboxRun {
+  frames: FrameSample;
+  /** Steps dropped during the timed stretch. */
+  droppedSteps: number;
+  /** The WebGL context's GPU as the browser names it; null when the page draws with canvas 2D. */
+  webglDevice: string | null;
+  /** The page's notice line: says when it fell back (no WebGL, workers that did not start). */
+  notice: string;
+  devicePixelRatio: number;
+}
+
+/** The sandbox page open in a browser tab. */
+export interface SandboxHost {
+  runtime: string;
+  settings: Record<string, string>;
+  /** Loads the sandbox with this query string, lets it run `warmupSeconds`, then times `seconds`. */
+  measure(query: string, warmupSeconds: number, seconds: number): Promise<SandboxRun>;
+  close(): Promise<void>;
+}
+
 /**
  * Node-only capabilities, each resolving to a skip reason (a string) where unavailable, so that
  * an experiment records "skipped: ..." rather than failing on a machine without gcc or Chromium.
@@ -72,6 +112,7 @@ export interface BrowserHost {
 export interface Host {
   cBaseline(): Promise<CBaseline | string>;
   browser(): Promise<BrowserHost | string>;
+  sandbox(): Promise<SandboxHost | string>;
 }
 
 export function makeMeta(experiment: string, ctx: RunContext, options: object): Meta {

@@ -10,5 +10,9 @@ export function nodeHost(): Host {
       const { chromiumHost } = await import('./chromium.js');
       return chromiumHost();
     },
+    async sandbox() {
+      const { sandboxHost } = await import('./chromium.js');
+      return sandboxHost();
+    },
   };
 }
