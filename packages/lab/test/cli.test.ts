@@ -45,14 +45,14 @@ describe('lab CLI', () => {
     });
   });
 
-  it('writes JSON, CSV, SVG and PNG charts and an HTML report into --out', async () => {
+  it('writes JSON, CSV, markdown, SVG and PNG charts and an HTML report into --out', async () => {
     const out = mkdtempSync(join(tmpdir(), 'lab-cli-'));
     try {
       const { code, stderr } = await lab('scale', '--n', '100,400', '--out', out);
       expect(code, stderr).toBe(0);
       const files = readdirSync(out).sort();
       expect(files).toEqual(
-        ['scale-bytes-per-body.png', 'scale-bytes-per-body.svg', 'scale-ns-per-body.png', 'scale-ns-per-body.svg', 'scale.csv', 'scale.html', 'scale.json'].sort(),
+        ['scale-bytes-per-body.png', 'scale-bytes-per-body.svg', 'scale-ns-per-body.png', 'scale-ns-per-body.svg', 'scale.csv', 'scale.html', 'scale.json', 'scale.md'].sort(),
       );
       const result = JSON.parse(readFileSync(join(out, 'scale.json'), 'utf8'));
       const validate = new Ajv({ strict: false }).compile(scale.schema);
@@ -62,6 +62,9 @@ describe('lab CLI', () => {
       expect(readFileSync(join(out, 'scale-ns-per-body.png')).subarray(1, 4).toString()).toBe('PNG');
       expect(readFileSync(join(out, 'scale.csv'), 'utf8').split('\n')[0]).toMatch(/^n,engine,median_ms/);
       expect(existsSync(join(out, 'scale.html'))).toBe(true);
+      const md = readFileSync(join(out, 'scale.md'), 'utf8');
+      expect(md).toContain(`Produced by \`npm run lab -- scale --n 100,400 --out ${out}\``);
+      expect(md).toMatch(/\n\| N \| engine \|/);
     } finally {
       rmSync(out, { recursive: true, force: true });
     }

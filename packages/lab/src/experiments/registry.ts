@@ -16,6 +16,16 @@ import {
   type FalsePositiveResult,
 } from './false-positives.js';
 import { cMaxgridCharts, cMaxgridCsv, cMaxgridDefaults, cMaxgridSchema, runCMaxgrid, type CMaxgridOptions, type CMaxgridResult } from './c-maxgrid.js';
+import {
+  runSandboxRender,
+  sandboxRenderCsv,
+  sandboxRenderDefaults,
+  sandboxRenderHeadline,
+  sandboxRenderSchema,
+  sandboxRenderTables,
+  type SandboxRenderOptions,
+  type SandboxRenderResult,
+} from './sandbox-render.js';
 import { runSapSleep, sapSleepCharts, sapSleepCsv, sapSleepDefaults, sapSleepSchema, type SapSleepOptions, type SapSleepResult } from './sap-sleep.js';
 import { runTargets, targetsDefaults, targetsSchema, type TargetsOptions, type TargetsResult } from './targets.js';
 import { targetsCsv } from './targets-csv.js';
@@ -191,6 +201,25 @@ export const targets: Experiment<TargetsOptions, TargetsResult> = {
   headline: targetsHeadline,
 };
 
+export const sandboxRender: Experiment<SandboxRenderOptions, SandboxRenderResult> = {
+  name: 'sandbox-render',
+  description: "Issue 5's T7: the sandbox page live in headless Chromium with 100,000 circles, WebGL and canvas 2D, frame by frame",
+  schema: sandboxRenderSchema,
+  defaultEngines: ['maxgrid:maxgrid'],
+  nodeOnly: true,
+  options(profile, o) {
+    reject('sandbox-render', o, ['ns', 'seconds']);
+    if (o.ns && o.ns.length !== 1) throw new RangeError(`option --n takes one value for experiment 'sandbox-render' (the page's circle count), got ${o.ns.join(',')}`);
+    const d = sandboxRenderDefaults(profile);
+    return { ...d, n: o.ns?.[0] ?? d.n, seconds: o.seconds ?? d.seconds };
+  },
+  run: runSandboxRender,
+  csv: sandboxRenderCsv,
+  charts: () => [],
+  tables: sandboxRenderTables,
+  headline: sandboxRenderHeadline,
+};
+
 // The registry stores experiments of different option and result types side by side.
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 export type AnyExperiment = Experiment<any, any>;
@@ -203,6 +232,7 @@ export const EXPERIMENTS: Record<string, AnyExperiment> = {
   'sap-sleep': sapSleep,
   'c-maxgrid': cMaxgrid,
   targets,
+  'sandbox-render': sandboxRender,
 };
 
 /** Every experiment; `results` (Node only) runs them all and writes docs/results.md. */

@@ -12,7 +12,7 @@ import { makeMeta, metaSchema, now, spread, spreadSchema, type Meta, type Profil
  * T3 a million bodies: bytes per body and ns per body against 64k; T5 `mixed` at ratio 100 with
  * maxgrid:auto, hgrid and maxgrid against their `uniform` cost, and against Rapier; T6 the same
  * maxgrid step in headless Chromium against Node; T4 the million-body world on 1 thread against
- * `threads` threads. T7 (sandbox with WebGL) is recorded as not measured, with the reason.
+ * `threads` threads. T7 (the sandbox page with WebGL) is the `sandbox-render` experiment's; this one points there.
  */
 export interface TargetsOptions {
   n: number;
@@ -149,7 +149,8 @@ export async function runTargets(o: TargetsOptions, ctx: RunContext): Promise<Ta
   const notMeasured = [
     {
       target: 'T7 sandbox 100k with WebGL',
-      reason: 'needs a GPU machine: headless Chromium here renders WebGL with SwiftShader (CPU), so a frame rate would measure the software rasteriser; not measured by this command',
+      reason:
+        'measured by its own experiment, `npm run lab -- sandbox-render`, which times the live sandbox page frame by frame; where Chromium has no GPU it renders WebGL with SwiftShader (CPU) and says so',
     },
   ];
   return { meta, t1, t2, t3, t4, t5, t6, notMeasured };

@@ -3,6 +3,7 @@ import type { Engine } from '../engines/adapter.js';
 import type { Profile } from '../experiments/common.js';
 import type { AnyExperiment, Overrides } from '../experiments/registry.js';
 import { htmlReport, tablesFor } from '../report/html.js';
+import { markdownTable } from '../report/tables.js';
 import { loadEnginesNode } from './engines.js';
 import { nodeEnvironment } from './machine.js';
 import { writeCharts, writeText } from './output.js';
@@ -45,12 +46,29 @@ export async function runExperiment(req: RunRequest): Promise<Omit<RunOutput, 's
   }
 }
 
-/** JSON, CSV, SVG and PNG charts and a self-contained HTML report, all into `dir`. */
+/** The experiment's section as docs/results.md has it, with the command and machine it came from. */
+export function experimentMarkdown(experiment: AnyExperiment, result: Omit<RunOutput, 'svgs'>['result'], command: string): string {
+  const meta = result.meta as unknown as { generatedAt: string; environment: Record<string, string | number> };
+  const e = meta.environment;
+  return [
+    `# maxgrid lab: ${experiment.name}`,
+    '',
+    `${experiment.description}. Produced by \`${command}\` on ${meta.generatedAt.slice(0, 10)}.`,
+    '',
+    `Machine: ${e.cpu}, ${e.cores} cores, ${e.memoryGiB} GiB, ${e.platform}; ${e.runtime}.`,
+    '',
+    ...experiment.headline(result).flatMap((line: string) => [line, '']),
+    ...experiment.tables(result).flatMap((t: Parameters<typeof markdownTable>[0]) => [markdownTable(t), '']),
+  ].join('\n');
+}
+
+/** JSON, CSV, markdown, SVG and PNG charts and a self-contained HTML report, all into `dir`. */
 export function writeExperiment(dir: string, experiment: AnyExperiment, output: Omit<RunOutput, 'svgs'>, command: string): string[] {
   const name = experiment.name;
   const files = [
     writeText(dir, `${name}.json`, JSON.stringify(output.result, null, 1) + '\n'),
     writeText(dir, `${name}.csv`, experiment.csv(output.result)),
+    writeText(dir, `${name}.md`, experimentMarkdown(experiment, output.result, command)),
   ];
   const charts = writeCharts(dir, experiment.charts(output.result));
   files.push(...charts.flatMap((c) => [join(dir, `${c.id}.svg`), join(dir, `${c.id}.png`)]));

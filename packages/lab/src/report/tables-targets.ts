@@ -117,7 +117,7 @@ export function targetsTables(r: TargetsResult): Table[] {
       note: t6.settings ? `Chromium flags: \`${t6.settings.flags}\`; ${t6.settings.page}; rounds alternate Node and Chromium.` : undefined,
     },
     {
-      title: 'T7: not measured by this command',
+      title: 'T7: measured by another command',
       headers: ['target', 'status'],
       rows: r.notMeasured.map((x) => [x.target, x.reason]),
     },
@@ -155,7 +155,7 @@ export function targetsHeadline(r: TargetsResult): string[] {
       .join(', ')} (target ≤ 2×); rapier / maxgrid:auto = ${ratioOrDash(r.t5.rapierOverAuto)} (target ≥ 10×).`,
     `T6: ${r.t6.status === 'ok' ? `Chromium / Node = ${ratioText(r.t6.ratio!)} (target ≤ 1.3×; ${r.t6.runtime}; state hashes ${r.t6.hashesMatch ? 'equal' : 'DIFFER'})` : `skipped: ${r.t6.reason ?? ''}`}.`,
     t4Headline(r),
-    `T7: not measured (see the last table).`,
+    'T7: measured by `npm run lab -- sandbox-render` (see its section).',
   ].flatMap((line) => [line, '']);
 }
 
