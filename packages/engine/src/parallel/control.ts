@@ -42,6 +42,8 @@ export const Slot = {
   spinMicroseconds: 19,
   /** 1 when every pair of bodies collides, so scans hand over contacts (PairSink.contactsDirect). */
   everyPairCollides: 20,
+  /** The next scan block to claim: threads take blocks of rows until none is left (see scan). */
+  scanBlock: 21,
   /** MAX_THREADS cells: bodies in each thread's cell range, for the prefix sums. */
   blockTotal: 32,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */

@@ -18,6 +18,12 @@ import { ContactSorter } from '../store/contact-sorter.js';
 
 /** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2 (and a multiple of CELL_CHUNK). */
 const MOTION_CHUNK = 4 * CELL_CHUNK;
+/**
+ * Scan blocks per thread. More blocks even out threads that run at different speeds (a core shared
+ * with the garbage collector or another process) down to one block's time; each block costs an
+ * atomic add and a binary search over the rows.
+ */
+const SCAN_BLOCKS_PER_THREAD = 8;
 
 /**
  * One thread's side of a parallel step: the caller (thread 0) and every worker run the same
@@ -312,25 +318,36 @@ export class ThreadKernels {
     }
   }
 
-  /** Scans a band of rows holding about 1/threads of the bodies; bands meet where the bodies split. */
+  /**
+   * Scans blocks of rows, each holding about 1/(SCAN_BLOCKS_PER_THREAD * threads) of the bodies,
+   * claimed one at a time from a shared counter: a thread slowed down by anything else on its core
+   * takes fewer blocks instead of holding the others up. Which thread scans which block changes
+   * nothing in the result: each list is sorted into canonical order and the caller merges them.
+   */
   private scan(): void {
     const c = this.control;
     const threads = c[Slot.threads];
-    const rowFrom = this.rowBound(this.index, threads);
-    const rowTo = this.rowBound(this.index + 1, threads);
+    const blocks = threads * SCAN_BLOCKS_PER_THREAD;
     const contacts = this.contacts;
     contacts.count = 0;
     this.sink.begin();
     this.sink.contactsDirect = c[Slot.everyPairCollides] === 1;
     this.narrowPhase.begin();
-    const examined = this.grid.scanRowsOrOverflow(this.sink, this.params[Param.coordPad], rowFrom, rowTo);
+    const pad = this.params[Param.coordPad];
+    let examined = 0;
+    let pairsNeeded = 0;
+    for (let block = Atomics.add(c, Slot.scanBlock, 1); block < blocks; block = Atomics.add(c, Slot.scanBlock, 1)) {
+      const blockExamined = this.grid.scanRowsOrOverflow(this.sink, pad, this.rowBound(block, blocks), this.rowBound(block + 1, blocks));
+      if (blockExamined >= 0) examined += blockExamined;
+      else pairsNeeded = Math.max(pairsNeeded, this.grid.pairsFound);
+    }
     this.sink.flush();
     const r = this.results;
     const at = this.index * RESULT_STRIDE;
-    r[at + Result.examined] = Math.max(examined, 0);
-    // On overflow nothing was pushed: report the pairs needed, which exceed the buffer, and the
-    // caller grows the buffers and runs the scan again.
-    r[at + Result.candidates] = examined < 0 ? this.grid.pairsFound : this.sink.total;
+    r[at + Result.examined] = examined;
+    // A block that overflowed pushed nothing: report the pairs it needs, which exceed the buffer,
+    // and the caller grows the buffers and runs the whole scan again.
+    r[at + Result.candidates] = pairsNeeded > 0 ? pairsNeeded : this.sink.total;
     r[at + Result.filtered] = this.narrowPhase.filtered;
     r[at + Result.narrowMs] = this.sink.consumerMs;
     c[Slot.contactCount + this.index] = contacts.count;
@@ -348,12 +365,12 @@ export class ThreadKernels {
     return true;
   }
 
-  /** The first row whose first cell starts at or after thread w's share of the bodies. */
-  private rowBound(w: number, threads: number): number {
+  /** The first row whose first cell starts at or after share w of `shares` of the bodies. */
+  private rowBound(w: number, shares: number): number {
     const { rows, columns, cellStart } = this.grid;
     if (w === 0) return 0;
-    if (w === threads) return rows;
-    const target = shareStart(this.control[Slot.bodyCount], w, threads);
+    if (w === shares) return rows;
+    const target = shareStart(this.control[Slot.bodyCount], w, shares);
     let lo = 0;
     let hi = rows;
     while (lo < hi) {

@@ -55,9 +55,9 @@ export interface MotionSettings {
  * - motion (integrate, then the box walls, then in a box each body's cell): every body's update
  *   reads only that body;
  * - the Max Grid build (each body's cell per body range, then count and scatter per band of
- *   cells, giving exactly the serial layout) and the scan of row bands with the narrow-phase:
- *   each thread finds a disjoint share of the same contact set, and the step sorts contacts
- *   canonically before solving, as it always does;
+ *   cells, giving exactly the serial layout) and the scan of row blocks, claimed as threads come
+ *   free, with the narrow-phase: each thread finds a disjoint share of the same contact set, and
+ *   the step sorts contacts canonically before solving, as it always does;
  * - solve: the canonical order is cut into one block per thread; each thread resolves the
  *   contacts of its block whose bodies no earlier block touches, and the caller then resolves
  *   the deferred rest in order, so every body sees the serial sequence of updates
@@ -186,10 +186,10 @@ export class ParallelStep {
     this.run(Command.count);
     this.run(Command.scatter);
     this.growAhead(grid);
-    this.run(Command.scan);
+    this.scan();
     // Contact lists and pair buffers that overflowed grow, and the scan runs again (both may grow
     // in one round: no short-circuit).
-    while (+this.growOverflowingLists() | +this.growOverflowingPairBuffers(grid)) this.run(Command.scan);
+    while (+this.growOverflowingLists() | +this.growOverflowingPairBuffers(grid)) this.scan();
 
     let examined = 0;
     this.candidates = 0;
@@ -207,6 +207,12 @@ export class ParallelStep {
       else contacts.append(lo, hi, c[Slot.contactCount + t]);
     }
     return examined;
+  }
+
+  /** Runs the scan with every block unclaimed (threads claim them as they go, see ThreadKernels.scan). */
+  private scan(): void {
+    this.control[Slot.scanBlock] = 0;
+    this.run(Command.scan);
   }
 
   /**
