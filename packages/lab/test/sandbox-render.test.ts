@@ -110,6 +110,7 @@ describe('sandbox-render summary (T7)', () => {
     const csv = sandboxRenderCsv(result).trim().split('\n');
     expect(csv).toHaveLength(1 + options.configs.length);
     expect(sandboxRenderTables(result)[0].rows).toHaveLength(options.configs.length);
+    expect(sandboxRenderHeadline(result)[1]).toBe('');
     expect(sandboxRenderHeadline(result)[0]).toMatch(/^webgl, 1 thread\(s\) \(WebGL on ANGLE \(NVIDIA.*60 fps, 60 steps\/s, 0 dropped: interactive/);
   });
 

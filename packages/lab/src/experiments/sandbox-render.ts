@@ -177,9 +177,10 @@ export function sandboxRenderTables(r: SandboxRenderResult): Table[] {
 
 export function sandboxRenderHeadline(r: SandboxRenderResult): string[] {
   if (r.status === 'skipped') return [`Skipped: ${r.reason ?? ''}.`];
-  return r.runs.map((x) => {
+  // One paragraph per configuration: markdown joins lines without a blank line between them.
+  return r.runs.flatMap((x) => {
     const where = x.device === null ? 'canvas 2D' : x.software ? `WebGL on ${x.device}, a software rasteriser, so this is not a GPU measurement` : `WebGL on ${x.device}`;
-    return `${x.renderer}, ${x.threads} thread(s) (${where}): ${fmt(x.fps)} fps, ${fmt(x.stepsPerSecond)} steps/s, ${x.droppedSteps} dropped: ${x.interactive ? 'interactive' : 'not interactive'} (≥ ${INTERACTIVE_FPS} fps at real time).`;
+    return [`${x.renderer}, ${x.threads} thread(s) (${where}): ${fmt(x.fps)} fps, ${fmt(x.stepsPerSecond)} steps/s, ${x.droppedSteps} dropped: ${x.interactive ? 'interactive' : 'not interactive'} (≥ ${INTERACTIVE_FPS} fps at real time).`, ''];
   });
 }
 

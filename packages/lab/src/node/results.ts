@@ -53,7 +53,7 @@ export async function runResults(req: ResultsRequest): Promise<string[]> {
     '',
     `Produced by one run of \`${req.command}\` (profile **${req.profile}**) on ${new Date().toISOString().slice(0, 10)}; run it again to regenerate this file, the charts and the data in [results/](results/) (JSON, CSV, SVG, PNG, and a self-contained [HTML report](results/report.html)).`,
     '',
-    `Machine: ${environment.cpu}, ${environment.cores} cores, ${environment.memoryGiB} GiB, ${environment.platform}; ${environment.runtime} (V8 ${environment.v8}). Measured in Node, except the browser-parity target (T6), which steps the same world in headless Chromium through the lab page (\`/lab.html\` in the sandbox, which also runs the quick experiments in a browser).`,
+    `Machine: ${environment.cpu}, ${environment.cores} cores, ${environment.memoryGiB} GiB, ${environment.platform}; ${environment.runtime} (V8 ${environment.v8}). Measured in Node, except the browser-parity target (T6), which steps the same world in headless Chromium through the lab page (\`/lab.html\` in the sandbox, which also runs the quick experiments in a browser), and T7 (\`sandbox-render\`), which times the sandbox page itself in headless Chromium: this machine has no GPU, so its WebGL is SwiftShader; [gpu/sandbox-render.md](gpu/sandbox-render.md) is the same command on a GPU machine.`,
     '',
     'The machine is shared and has two cores, so absolute times are noisy: read the ratios, measured in the same run with engines interleaved per N, rather than single times.',
     req.profile === 'quick' ? 'This is the **quick** profile (few N, short runs); `--full` runs the report\'s 10..4200 by 10, 10 s, 10 runs.' : '',
