@@ -27,6 +27,7 @@ import {
   type SandboxRenderResult,
 } from './sandbox-render.js';
 import { runSapSleep, sapSleepCharts, sapSleepCsv, sapSleepDefaults, sapSleepSchema, type SapSleepOptions, type SapSleepResult } from './sap-sleep.js';
+import { runThreads, threadsCsv, threadsDefaults, threadsHeadline, threadsSchema, threadsTables, type ThreadsOptions, type ThreadsResult } from './threads.js';
 import { runTargets, targetsDefaults, targetsSchema, type TargetsOptions, type TargetsResult } from './targets.js';
 import { targetsCsv } from './targets-csv.js';
 import { runScale, scaleCharts, scaleCsv, scaleDefaults, scaleSchema, type ScaleOptions, type ScaleResult } from './scale.js';
@@ -220,6 +221,25 @@ export const sandboxRender: Experiment<SandboxRenderOptions, SandboxRenderResult
   headline: sandboxRenderHeadline,
 };
 
+export const threads: Experiment<ThreadsOptions, ThreadsResult> = {
+  name: 'threads',
+  description: 'The parallel step at 1,000,000 circles on 1, 2, 4, ... threads up to the cores, state hashes checked (--runs: timed steps)',
+  schema: threadsSchema,
+  defaultEngines: ['maxgrid:maxgrid'],
+  nodeOnly: true,
+  options(profile, o) {
+    reject('threads', o, ['ns', 'runs', 'dt']);
+    if (o.ns && o.ns.length !== 1) throw new RangeError(`option --n takes one value for experiment 'threads', got ${o.ns.join(',')}`);
+    const d = threadsDefaults(profile);
+    return { ...d, n: o.ns?.[0] ?? d.n, steps: o.runs ?? d.steps, dt: o.dt ?? d.dt };
+  },
+  run: runThreads,
+  csv: threadsCsv,
+  charts: () => [],
+  tables: threadsTables,
+  headline: threadsHeadline,
+};
+
 // The registry stores experiments of different option and result types side by side.
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 export type AnyExperiment = Experiment<any, any>;
@@ -233,6 +253,7 @@ export const EXPERIMENTS: Record<string, AnyExperiment> = {
   'c-maxgrid': cMaxgrid,
   targets,
   'sandbox-render': sandboxRender,
+  threads,
 };
 
 /** Every experiment; `results` (Node only) runs them all and writes docs/results.md. */

@@ -57,7 +57,9 @@ export function experimentMarkdown(experiment: AnyExperiment, result: Omit<RunOu
     '',
     `Machine: ${e.cpu}, ${e.cores} cores, ${e.memoryGiB} GiB, ${e.platform}; ${e.runtime}.`,
     '',
-    ...experiment.headline(result).flatMap((line: string) => [line, '']),
+    // As docs/results.md has it: headlines carry their own paragraph breaks.
+    ...experiment.headline(result),
+    '',
     ...experiment.tables(result).flatMap((t: Parameters<typeof markdownTable>[0]) => [markdownTable(t), '']),
   ].join('\n');
 }
