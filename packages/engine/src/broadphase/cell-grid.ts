@@ -100,8 +100,11 @@ export class CellGrid {
     let inv = 1 / cellSize;
     let columns = Math.floor((maxX - minX) * inv) + 1;
     let rows = Math.floor((maxY - minY) * inv) + 1;
+    // Grown a quarter at a time: coarser steps overshoot. On `mixed` at 64,000 (1:100), steps of
+    // 1.5 took the small circles' hgrid level from 16 to 36-unit cells and 190,000 pairs examined
+    // a step; quarters stop at 25 units and 92,000 pairs (auto's step 3.3% faster, same contacts).
     while (columns * rows > cellBudget) {
-      cellSize *= 1.5;
+      cellSize *= 1.25;
       inv = 1 / cellSize;
       columns = Math.floor((maxX - minX) * inv) + 1;
       rows = Math.floor((maxY - minY) * inv) + 1;
