@@ -1,6 +1,6 @@
 import type { Table } from '../report/tables.js';
 import { fmt } from '../report/tables.js';
-import { csvLine, makeMeta, metaSchema, spread, spreadSchema, type Meta, type Profile, type RunContext, type SandboxRun, type Spread } from './common.js';
+import { csvLine, makeMeta, metaSchema, quantile, spread, spreadSchema, type Meta, type Profile, type RunContext, type SandboxRun, type Spread } from './common.js';
 
 /**
  * Issue 5, T7: the sandbox page itself, live in headless Chromium, with `n` circles of the
@@ -88,7 +88,6 @@ export function summarise(config: SandboxRenderOptions['configs'][number], run: 
     stepMs += f.stepMs[i];
   }
   const frameMs = spread(intervals);
-  const sorted = [...intervals].sort((a, b) => a - b);
   const stepsPerSecond = steps / seconds;
   const fps = 1000 / frameMs.median;
   return {
@@ -100,7 +99,7 @@ export function summarise(config: SandboxRenderOptions['configs'][number], run: 
     seconds,
     fps,
     frameMs,
-    p95FrameMs: sorted[Math.min(sorted.length - 1, Math.floor(0.95 * sorted.length))],
+    p95FrameMs: quantile([...intervals].sort((a, b) => a - b), 0.95),
     stepsPerSecond,
     droppedSteps: run.droppedSteps,
     msPerStep: steps > 0 ? stepMs / steps : null,

@@ -3,6 +3,7 @@ import type { EngineInfo } from '../engines/adapter.js';
 import type { Profile } from '../experiments/common.js';
 import { EXPERIMENTS } from '../experiments/registry.js';
 import { htmlReport, type ReportSection } from '../report/html.js';
+import { machineLine, sectionMarkdown } from '../report/markdown.js';
 import { engineTable, markdownTable } from '../report/tables.js';
 import { nodeEnvironment } from './machine.js';
 import { writeCharts, writeText } from './output.js';
@@ -35,9 +36,7 @@ export async function runResults(req: ResultsRequest): Promise<string[]> {
     written.push(...charts.flatMap((c) => [join(dir, `${c.id}.svg`), join(dir, `${c.id}.png`)]));
     const tables = EXPERIMENTS[name].tables(result);
     sections.push({ experiment: name, tables, svgs: charts.map((c) => c.svg) });
-    md.push(`## ${experiment.description}`, '', ...experiment.headline(result), '');
-    for (const c of charts) md.push(`![${c.id}](results/${c.id}.png)`, '');
-    for (const t of tables) md.push(markdownTable(t), '');
+    md.push(`## ${experiment.description}`, '', ...sectionMarkdown(experiment, result, charts.map((c) => ({ id: c.id, path: `results/${c.id}.png` }))));
   }
   const environment = nodeEnvironment();
   const engineList = [...engines.values()];
@@ -53,7 +52,7 @@ export async function runResults(req: ResultsRequest): Promise<string[]> {
     '',
     `Produced by one run of \`${req.command}\` (profile **${req.profile}**) on ${new Date().toISOString().slice(0, 10)}; run it again to regenerate this file, the charts and the data in [results/](results/) (JSON, CSV, SVG, PNG, and a self-contained [HTML report](results/report.html)).`,
     '',
-    `Machine: ${environment.cpu}, ${environment.cores} cores, ${environment.memoryGiB} GiB, ${environment.platform}; ${environment.runtime} (V8 ${environment.v8}). Measured in Node, except the browser-parity target (T6), which steps the same world in headless Chromium through the lab page (\`/lab.html\` in the sandbox, which also runs the quick experiments in a browser), and T7 (\`sandbox-render\`), which times the sandbox page itself in headless Chromium: this machine has no GPU, so its WebGL is SwiftShader; [gpu/sandbox-render.md](gpu/sandbox-render.md) is the same command on a GPU machine.`,
+    `${machineLine(environment)}. Measured in Node, except the browser-parity target (T6), which steps the same world in headless Chromium through the lab page (\`/lab.html\` in the sandbox, which also runs the quick experiments in a browser), and T7 (\`sandbox-render\`), which times the sandbox page itself in headless Chromium: this machine has no GPU, so its WebGL is SwiftShader; [gpu/sandbox-render.md](gpu/sandbox-render.md) is the same command on a GPU machine.`,
     '',
     'The machine is shared and has two cores, so absolute times are noisy: read the ratios, measured in the same run with engines interleaved per N, rather than single times.',
     req.profile === 'quick' ? 'This is the **quick** profile (few N, short runs); `--full` runs the report\'s 10..4200 by 10, 10 s, 10 runs.' : '',

@@ -3,7 +3,7 @@ import type { Engine } from '../engines/adapter.js';
 import type { Profile } from '../experiments/common.js';
 import type { AnyExperiment, Overrides } from '../experiments/registry.js';
 import { htmlReport, tablesFor } from '../report/html.js';
-import { markdownTable } from '../report/tables.js';
+import { machineLine, sectionMarkdown } from '../report/markdown.js';
 import { loadEnginesNode } from './engines.js';
 import { nodeEnvironment } from './machine.js';
 import { writeCharts, writeText } from './output.js';
@@ -47,20 +47,16 @@ export async function runExperiment(req: RunRequest): Promise<Omit<RunOutput, 's
 }
 
 /** The experiment's section as docs/results.md has it, with the command and machine it came from. */
-export function experimentMarkdown(experiment: AnyExperiment, result: Omit<RunOutput, 'svgs'>['result'], command: string): string {
+export function experimentMarkdown(experiment: AnyExperiment, result: Omit<RunOutput, 'svgs'>['result'], command: string, chartIds: string[]): string {
   const meta = result.meta as unknown as { generatedAt: string; environment: Record<string, string | number> };
-  const e = meta.environment;
   return [
     `# maxgrid lab: ${experiment.name}`,
     '',
     `${experiment.description}. Produced by \`${command}\` on ${meta.generatedAt.slice(0, 10)}.`,
     '',
-    `Machine: ${e.cpu}, ${e.cores} cores, ${e.memoryGiB} GiB, ${e.platform}; ${e.runtime}.`,
+    `${machineLine(meta.environment)}.`,
     '',
-    // As docs/results.md has it: headlines carry their own paragraph breaks.
-    ...experiment.headline(result),
-    '',
-    ...experiment.tables(result).flatMap((t: Parameters<typeof markdownTable>[0]) => [markdownTable(t), '']),
+    ...sectionMarkdown(experiment, result, chartIds.map((id) => ({ id, path: `${id}.png` }))),
   ].join('\n');
 }
 
@@ -70,10 +66,10 @@ export function writeExperiment(dir: string, experiment: AnyExperiment, output: 
   const files = [
     writeText(dir, `${name}.json`, JSON.stringify(output.result, null, 1) + '\n'),
     writeText(dir, `${name}.csv`, experiment.csv(output.result)),
-    writeText(dir, `${name}.md`, experimentMarkdown(experiment, output.result, command)),
   ];
   const charts = writeCharts(dir, experiment.charts(output.result));
   files.push(...charts.flatMap((c) => [join(dir, `${c.id}.svg`), join(dir, `${c.id}.png`)]));
+  files.push(writeText(dir, `${name}.md`, experimentMarkdown(experiment, output.result, command, charts.map((c) => c.id))));
   const meta = output.result.meta as unknown as { environment: Record<string, string | number> };
   files.push(
     writeText(
