@@ -170,6 +170,9 @@ describe('targets', () => {
     expect(result.t6).toEqual({ status: 'skipped', reason: 'no browser in this test' });
     expect(['ok', 'skipped']).toContain(result.t2.status);
     expect(result.t3.bytesPerBody).toBeGreaterThan(0);
+    // T3's small world is timed alongside the big one, about as long: round(4000 / 1500) steps after each big step.
+    expect(result.t3).toMatchObject({ n: 4000, steps: 1, smallN: 1500, smallSteps: 3 });
+    expect(result.t3.ratio).toBeCloseTo(result.t3.nsPerBody / result.t3.nsPerBodyAt64k, 12);
     expect(Object.keys(result.t5.mixedOverUniform)).toEqual(['maxgrid:maxgrid', 'maxgrid:hgrid', 'maxgrid:auto']);
     // T4 steps a world on 1 thread and on 2: the bits must agree.
     expect(result.t4).toMatchObject({ status: 'ok', n: 4000, threads: 2, steps: 3, hashesMatch: true });

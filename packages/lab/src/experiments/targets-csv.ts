@@ -16,6 +16,7 @@ export function targetsCsv(r: TargetsResult): string {
   } else add('T2', 'status', r.t2.status, r.t2.reason ?? r.t2.status, '');
   add('T3', `bytes per body N=${r.t3.n}`, 'maxgrid:maxgrid', r.t3.bytesPerBody, 'B');
   add('T3', `ns per body per step N=${r.t3.n}`, 'maxgrid:maxgrid', r.t3.nsPerBody, 'ns');
+  add('T3', `ns per body per step N=${r.t3.smallN}, alongside`, 'maxgrid:maxgrid', r.t3.nsPerBodyAt64k, 'ns');
   add('T3', 'ns per body 1M / 64k', 'ratio', r.t3.ratio, 'x');
   if (r.t4.status === 'ok') {
     add('T4', `median step 1 thread N=${r.t4.n}`, 'maxgrid:maxgrid', r.t4.serialMs!.median, 'ms');

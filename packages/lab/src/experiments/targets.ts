@@ -56,7 +56,12 @@ export interface TargetsResult {
   meta: Meta;
   t1: { timings: Timing[]; rapierOverMaxgrid: number | null; box2dOverMaxgrid: number | null };
   t2: { status: 'ok' | 'hash-mismatch' | 'skipped'; reason?: string; compile?: string; comparison?: CComparison };
-  t3: { n: number; ms: Spread; steps: number; memoryBytes: number; bytesPerBody: number; nsPerBody: number; nsPerBodyAt64k: number; ratio: number; buildMs: number };
+  t3: {
+    n: number; ms: Spread; steps: number; memoryBytes: number; bytesPerBody: number; nsPerBody: number;
+    /** The o.n-body world timed alongside (see `million`). */
+    smallN: number; smallMs: Spread; smallSteps: number; nsPerBodyAt64k: number;
+    ratio: number; buildMs: number;
+  };
   t4: MultiCoreResult;
   t5: { timings: Timing[]; mixedOverUniform: Record<string, number>; rapierOverAuto: number | null };
   t6: { status: 'ok' | 'skipped'; reason?: string; runtime?: string; settings?: Record<string, string>; node?: Spread; browser?: Spread; ratio?: number; hashesMatch?: boolean };
@@ -141,7 +146,7 @@ export async function runTargets(o: TargetsOptions, ctx: RunContext): Promise<Ta
   const t6 = await browserParity(o, ctx);
 
   // T3 last: a million bodies hold about 200 MB, freed before anything else runs.
-  const t3 = await million(maxgrids[0], o, ctx, t1Timings.find((t) => t.engine === 'maxgrid:maxgrid')!.nsPerBody);
+  const t3 = await million(maxgrids[0], o, ctx);
 
   // T4 after T3, for the same reason; two million-body worlds.
   const t4 = await multiCore({ n: o.bigN, threads: o.threads, dt: o.dt, steps: o.parallelSteps, warmupSteps: o.bigWarmupSteps }, ctx);
@@ -156,27 +161,49 @@ export async function runTargets(o: TargetsOptions, ctx: RunContext): Promise<Ta
   return { meta, t1, t2, t3, t4, t5, t6, notMeasured };
 }
 
-async function million(engine: Engine, o: TargetsOptions, ctx: RunContext, nsPerBodyAt64k: number): Promise<TargetsResult['t3']> {
+/**
+ * The million-body world, timed step by step alternating with a world of o.n bodies (enough of
+ * its steps after each big one to take about as long), so that the per-body ratio compares two
+ * numbers taken side by side. T1's 64k median, taken minutes earlier, would fold the host's drift
+ * into the ratio: on this 2-core machine memory-bound steps of 1M bodies slow down by up to 1.5x
+ * from one minute to the next while steps of 64k, which fit in cache, do not.
+ */
+async function million(engine: Engine, o: TargetsOptions, ctx: RunContext): Promise<TargetsResult['t3']> {
   ctx.progress?.(0, 1, `T3 building N=${o.bigN}`);
   const b0 = now();
   const sim = engine.create(buildScene('uniform', { n: o.bigN, seed: 1 }));
   const buildMs = now() - b0;
+  const small = engine.create(buildScene('uniform', { n: o.n, seed: 1 }));
   try {
     for (let s = 0; s < o.bigWarmupSteps; s++) sim.step(o.dt);
+    for (let s = 0; s < o.warmupSteps; s++) small.step(o.dt);
+    const smallPerBig = Math.max(1, Math.round(o.bigN / o.n));
     const times: number[] = [];
+    const smallTimes: number[] = [];
     for (let s = 0; s < o.bigSteps; s++) {
       ctx.progress?.(s, o.bigSteps, `T3 N=${o.bigN} step ${s + 1}`);
       const t0 = now();
       sim.step(o.dt);
       times.push(now() - t0);
+      for (let k = 0; k < smallPerBig; k++) {
+        const t1 = now();
+        small.step(o.dt);
+        smallTimes.push(now() - t1);
+      }
       await ctx.yieldToHost?.();
     }
     const ms = spread(times);
+    const smallMs = spread(smallTimes);
     const memoryBytes = sim.memoryBytes!();
     const nsPerBody = (ms.median * 1e6) / o.bigN;
-    return { n: o.bigN, ms, steps: times.length, memoryBytes, bytesPerBody: memoryBytes / o.bigN, nsPerBody, nsPerBodyAt64k, ratio: nsPerBody / nsPerBodyAt64k, buildMs };
+    const nsPerBodyAt64k = (smallMs.median * 1e6) / o.n;
+    return {
+      n: o.bigN, ms, steps: times.length, memoryBytes, bytesPerBody: memoryBytes / o.bigN, nsPerBody,
+      smallN: o.n, smallMs, smallSteps: smallTimes.length, nsPerBodyAt64k, ratio: nsPerBody / nsPerBodyAt64k, buildMs,
+    };
   } finally {
     sim.dispose();
+    small.dispose();
   }
 }
 
@@ -244,7 +271,7 @@ export const targetsSchema = {
     },
     t3: {
       type: 'object',
-      required: ['n', 'ms', 'steps', 'memoryBytes', 'bytesPerBody', 'nsPerBody', 'nsPerBodyAt64k', 'ratio', 'buildMs'],
+      required: ['n', 'ms', 'steps', 'memoryBytes', 'bytesPerBody', 'nsPerBody', 'smallN', 'smallMs', 'smallSteps', 'nsPerBodyAt64k', 'ratio', 'buildMs'],
       properties: {
         n: { type: 'integer', minimum: 1 },
         ms: spreadSchema,
@@ -252,6 +279,9 @@ export const targetsSchema = {
         memoryBytes: { type: 'integer', minimum: 1 },
         bytesPerBody: { type: 'number', exclusiveMinimum: 0 },
         nsPerBody: { type: 'number', minimum: 0 },
+        smallN: { type: 'integer', minimum: 1 },
+        smallMs: spreadSchema,
+        smallSteps: { type: 'integer', minimum: 1 },
         nsPerBodyAt64k: { type: 'number', minimum: 0 },
         ratio: { type: 'number', minimum: 0 },
         buildMs: { type: 'number', minimum: 0 },
