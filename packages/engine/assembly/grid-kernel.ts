@@ -10,9 +10,11 @@
 // a register and bounds are checked by guard pages.
 // Measured at 64,000 bodies: bin 1.6-1.7 ms in TS, 0.9 in WebAssembly; scan 2.6-3.1 ms against
 // 1.8-2.1 (C: bin 0.7-0.8, scan 1.6-1.9); the scan then lost its loop-exit mispredictions (see
-// pushOverlaps) and takes 1.06-1.16. SIMD was not tried: the scan examines about 2.1 pairs per
+// pushOverlaps) and takes 1.06-1.16. SIMD is not used: the scan examines about 2.1 pairs per
 // body (137,000 per step at 64,000 bodies) in ranges of 0 to 3 bodies, so branches rather than
-// arithmetic bound it, and lanes would mostly idle.
+// arithmetic bound it. Tried: one f64x2 test for each range's two-body head, with the scalar tests
+// only when a lane hits. The scan alone took 0.95-0.96x as long (64k and 1M, same pairs), about
+// 2 % of a step, not worth a module that fails to compile where SIMD is missing.
 
 // 64-bit: a Max Grid over sizes 1:100 examines 67 million pairs per step at 64,000 bodies (scene
 // `mixed`, measured), about 1,000 per body, so a world of 2 million such bodies would pass 2^31.
