@@ -4,6 +4,7 @@ import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
 import type { BodyStore } from '../src/store/body-store.js';
 import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
+import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import { spinBudget, spinWhileEqual } from '../src/parallel/host.js';
 
 // Worker threads load the compiled engine (dist/), which `npm test` builds first.
@@ -96,6 +97,28 @@ describe('parallel step', () => {
       expect(copying.stateHash()).toBe(world.stateHash());
     } finally {
       setBodyKernelEnabled(true);
+    }
+  });
+
+  it('gives the same bits with the grid\'s TypeScript passes on SharedArrayBuffers (no grid kernel), as with the kernel', async () => {
+    const build = uniform(5000, {}, { seed: 4 });
+    const withKernel = await hashWith(build, 0, 40);
+    setGridKernelEnabled(false);
+    try {
+      const world = build();
+      await world.startWorkers(2, { minBodies: 0 });
+      try {
+        world.step(1 / 60);
+        const grid = (world as unknown as { pipeline: { broadPhase: { grid: CellGrid } } }).pipeline.broadPhase.grid;
+        expect(grid.usesKernel).toBe(false);
+        expect(grid.sortedX.buffer).toBeInstanceOf(SharedArrayBuffer);
+      } finally {
+        world.stopWorkers();
+      }
+      await expectSameBits(build, 40);
+      expect(await hashWith(build, 2, 40)).toBe(withKernel);
+    } finally {
+      setGridKernelEnabled(true);
     }
   });
 

@@ -15,6 +15,7 @@ import { BodyKernel } from '../store/body-kernel.js';
 import { GridInputs } from './grid-inputs.js';
 import { BoundedContactList } from './bounded-contact-list.js';
 import { ContactSorter } from '../store/contact-sorter.js';
+import { countCellBand, scatterCellBand } from './cell-bands.js';
 
 /** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2 (and a multiple of CELL_CHUNK). */
 const MOTION_CHUNK = 4 * CELL_CHUNK;
@@ -244,78 +245,12 @@ export class ThreadKernels {
     for (let k = from; k < to; k++) binOf[k] = ((y[k] - minY) * inv | 0) * columns + ((x[k] - minX) * inv | 0);
   }
 
-  /**
-   * Counts the bodies of this thread's cell range (a band of whole cells; every thread reads all
-   * of binOf but writes only its own cells, so nothing is merged), and how many that is in all.
-   */
   private count(): void {
-    const c = this.control;
-    const total = c[Slot.columns] * c[Slot.rows];
-    const from = this.shareFrom(total);
-    const to = this.shareEnd(total);
-    const n = c[Slot.bodyCount];
-    const kernel = this.grid.sharedKernel;
-    if (kernel) {
-      c[Slot.blockTotal + this.index] = kernel.countCells(n, from, to);
-      return;
-    }
-    const { binOf, cellStart } = this.grid;
-    cellStart.fill(0, from, to);
-    let mine = 0;
-    for (let k = 0; k < n; k++) {
-      const cell = binOf[k];
-      if (cell >= from && cell < to) {
-        cellStart[cell]++;
-        mine++;
-      }
-    }
-    c[Slot.blockTotal + this.index] = mine;
+    countCellBand(this.grid, this.control, this.index);
   }
 
-  /**
-   * Prefix sums over this thread's cells, offset by the bodies of the cells before them, then the
-   * scatter of this thread's bodies from the back, exactly as CellGrid.bin does for all cells: the
-   * layout is the serial one, with slots ascending inside each cell.
-   */
   private scatter(): void {
-    const c = this.control;
-    const threads = c[Slot.threads];
-    const cells = c[Slot.columns] * c[Slot.rows];
-    const from = this.shareFrom(cells);
-    const to = this.shareEnd(cells);
-    const n = c[Slot.bodyCount];
-    const { binOf, cellStart, sortedSlot, sortedX, sortedY, sortedR } = this.grid;
-    let end = 0;
-    for (let t = 0; t < this.index; t++) end += c[Slot.blockTotal + t];
-    const kernel = this.grid.sharedKernel;
-    if (kernel) {
-      const { x, y, radius } = this.bodies;
-      if (kernel.inBodyMemory) kernel.scatterCells(n, from, to, end, x.byteOffset, y.byteOffset, radius.byteOffset);
-      else kernel.scatterCells(n, from, to, end);
-      if (this.index === threads - 1) {
-        cellStart[cells] = n;
-        cellStart[cells + 1] = n;
-      }
-      return;
-    }
-    for (let cell = from; cell < to; cell++) {
-      end += cellStart[cell];
-      cellStart[cell] = end;
-    }
-    const { x, y, radius } = this.bodies;
-    for (let k = n - 1; k >= 0; k--) {
-      const cell = binOf[k];
-      if (cell < from || cell >= to) continue;
-      const at = --cellStart[cell];
-      sortedSlot[at] = k;
-      sortedX[at] = x[k];
-      sortedY[at] = y[k];
-      sortedR[at] = radius[k];
-    }
-    if (this.index === threads - 1) {
-      cellStart[cells] = n;
-      cellStart[cells + 1] = n;
-    }
+    scatterCellBand(this.grid, this.bodies, this.control, this.index);
   }
 
   /**
