@@ -116,7 +116,9 @@ export function targetsTables(r: TargetsResult): Table[] {
           ? [`skipped: ${t6.reason ?? ''}`, '–', '–', '–', '–']
           : [t6.runtime!, spreadText(t6.node!), spreadText(t6.browser!), ratioText(t6.ratio!), t6.hashesMatch ? 'yes' : 'NO'],
       ],
-      note: t6.settings ? `Chromium flags: \`${t6.settings.flags}\`; ${t6.settings.page}; rounds alternate Node and Chromium.` : undefined,
+      note: t6.settings
+        ? `Chromium flags: \`${t6.settings.flags}\`; ${t6.settings.page}; ${o.parityRounds} rounds of ${o.stepsPerRound * 2} steps on each side after ${o.warmupSteps} warm-up steps, alternating which side goes first.`
+        : undefined,
     },
     {
       title: 'T7: measured by another command',
