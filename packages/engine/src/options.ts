@@ -57,7 +57,10 @@ export interface WorldOptions {
   continuous?: boolean;
   /** Record begin and end touch events each step (see `world.contactEvents()`). Default false. */
   contactEvents?: boolean;
-  /** Record a hit event for each collision whose approach speed is at least this. Default: none. */
+  /**
+   * Record a hit event for each collision between two bodies (a swept impact on a static circle
+   * included; walls and segments excluded) whose approach speed is at least this. Default: none.
+   */
   hitEventThreshold?: number;
 }
 

@@ -54,6 +54,35 @@ describe('contact events', () => {
     expect(world.getCircle(slow).vx).toBeLessThan(0);
   });
 
+  it('a fast body that the continuous sweep bounces off a static circle reports its hit, as a slow one does', () => {
+    // Each shot approaches a static circle head on; 4 units a step is slower than the radius
+    // (a discrete contact), 400 is faster (a sweep, which leaves no overlap for the contacts).
+    const shoot = (speed: number, dt: number) => {
+      const world = new World({ hitEventThreshold: 5, restitution: 1 });
+      const target = world.createCircle({ x: 100, y: 0, radius: 5, type: 'static' });
+      const bullet = world.createCircle({ x: 100 - 10 - speed * dt * 0.5, y: 0, vx: speed, radius: 5 });
+      world.step(dt);
+      const events = world.contactEvents();
+      return { events: pairsOf(events.hitCount, events.hitA, events.hitB), speed: events.hitSpeed[0], swept: world.stats.sweptBodies, vx: world.getCircle(bullet).vx, pair: `${target}-${bullet}` };
+    };
+    const slow = shoot(40, 0.1);
+    expect(slow.swept).toBe(0);
+    expect(slow.events).toEqual([slow.pair]);
+    expect(slow.speed).toBeCloseTo(40, 12);
+    const fast = shoot(4000, 0.1);
+    expect(fast.swept).toBe(1);
+    expect(fast.vx).toBeCloseTo(-4000, 9);
+    expect(fast.events).toEqual([fast.pair]);
+    expect(fast.speed).toBeCloseTo(4000, 9);
+    // Below the threshold, no hit either way.
+    const world = new World({ hitEventThreshold: 5000 });
+    world.createCircle({ x: 100, y: 0, radius: 5, type: 'static' });
+    world.createCircle({ x: 100 - 10 - 200, y: 0, vx: 4000, radius: 5 });
+    world.step(0.1);
+    expect(world.stats.sweptBodies).toBe(1);
+    expect(world.contactEvents().hitCount).toBe(0);
+  });
+
   it('events are off unless asked for', () => {
     expect(() => new World().contactEvents()).toThrow(/contactEvents: true/);
   });

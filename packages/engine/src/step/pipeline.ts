@@ -74,6 +74,8 @@ export class StepPipeline {
     const parallel = this.parallel !== null && bodies.liveCount >= this.parallel.minBodies ? this.parallel : null;
     const box = settings.box;
     const t0 = nowMs();
+    // Cleared first: the sweep records hits on static circles before the solver records its own.
+    events?.clear();
     const sweep = settings.continuous && this.continuous.needed(bodies, this.segments);
     if (sweep) this.continuous.rememberPositions(bodies);
 
@@ -92,7 +94,7 @@ export class StepPipeline {
     else INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
 
-    if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold);
+    if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold, events, settings.solver.hitThreshold);
     if (box && !bouncedInMotion && kernel === null) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
     const t2 = nowMs();
 
@@ -112,7 +114,6 @@ export class StepPipeline {
     const t3 = nowMs();
 
     contacts.sortCanonical(bodies.slotCount);
-    events?.clear();
     const solvedInParallel = parallel !== null && events === null && bodies.sleepingCount === 0;
     if (solvedInParallel) parallel.solve(settings.solver, box);
     const escapesNoted = !solvedInParallel && solveContacts(bodies, contacts, events, settings.solver, box);
