@@ -44,6 +44,8 @@ export const Slot = {
   everyPairCollides: 20,
   /** The next scan block to claim: threads take blocks of rows until none is left (see scan). */
   scanBlock: 21,
+  /** The next motion chunk to claim, likewise (see ThreadKernels.motion). */
+  motionChunk: 22,
   /** MAX_THREADS cells: bodies in each thread's cell range, for the prefix sums. */
   blockTotal: 32,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */

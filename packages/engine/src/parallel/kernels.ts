@@ -163,36 +163,52 @@ export class ThreadKernels {
     return chunkAligned(total, this.index + 1, this.control[Slot.threads]);
   }
 
+  /**
+   * Integrates (and bounces, and bins) the bodies in chunks of MOTION_CHUNK, claimed from a shared
+   * counter as threads come free, as the scan claims its blocks: every chunk's update reads and
+   * writes only its own bodies and cells, so who moves which chunk changes no bit. Only a grid
+   * kernel that bins from copies of the bodies (worlds without a body kernel) keeps fixed shares:
+   * its copies are prepared per share (GridInputs).
+   */
   private motion(): void {
     const c = this.control;
-    const p = this.params;
     const total = c[Slot.slotCount];
-    const from = this.bodyShareFrom(total);
-    const to = this.bodyShareEnd(total);
-    const integrator = INTEGRATOR_IDS[c[Slot.integrator]];
-    const integrate = INTEGRATORS[integrator];
-    const bounce = c[Slot.bounce] === 1;
     // Only for worlds without holes, where slot k is body k and both shares are the same range.
     const bin = c[Slot.binInMotion] === 1;
+    if (bin && this.copyingKernel) {
+      const from = this.bodyShareFrom(total);
+      const to = this.bodyShareEnd(total);
+      this.prepareInputs(from, to);
+      for (let at = from; at < to; at += MOTION_CHUNK) this.moveChunk(at, Math.min(at + MOTION_CHUNK, to), true);
+      this.copyRadii();
+      return;
+    }
+    const chunks = Math.ceil(total / MOTION_CHUNK);
+    for (let chunk = Atomics.add(c, Slot.motionChunk, 1); chunk < chunks; chunk = Atomics.add(c, Slot.motionChunk, 1)) {
+      const at = chunk * MOTION_CHUNK;
+      this.moveChunk(at, Math.min(at + MOTION_CHUNK, total), bin);
+    }
+  }
+
+  /** Motion of bodies [from, to), then, with `bin`, their cells: in cache-sized chunks, so that the walls and the bin read bodies integration has just brought in. */
+  private moveChunk(from: number, to: number, bin: boolean): void {
+    const c = this.control;
+    const p = this.params;
+    const integrator = INTEGRATOR_IDS[c[Slot.integrator]];
+    const bounce = c[Slot.bounce] === 1;
+    const dt = p[Param.dt];
     // Plain motion in a box: the body kernel integrates and bounces in one pass.
     const kernel = bounce && !needsGeneralMotion(this.bodies) ? this.bodies.kernel : null;
-    if (bin) this.prepareInputs(from, to);
-    const dt = p[Param.dt];
-    // In cache-sized chunks, so that the walls test bodies integration has just brought in.
-    for (let at = from; at < to; at += MOTION_CHUNK) {
-      const end = Math.min(at + MOTION_CHUNK, to);
-      if (kernel) {
-        kernel.moveInBox(
-          at, end, p[Param.gravityX] * dt, p[Param.gravityY] * dt, dt, integrator === 'explicit-euler',
-          p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold], p[Param.maxRadius],
-        );
-      } else {
-        integrate(this.bodies, p[Param.gravityX], p[Param.gravityY], dt, at, end);
-        if (bounce) bounceOffBox(this.bodies, p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold], at, end);
-      }
-      if (bin) this.binRange(at, end);
+    if (kernel) {
+      kernel.moveInBox(
+        from, to, p[Param.gravityX] * dt, p[Param.gravityY] * dt, dt, integrator === 'explicit-euler',
+        p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold], p[Param.maxRadius],
+      );
+    } else {
+      INTEGRATORS[integrator](this.bodies, p[Param.gravityX], p[Param.gravityY], dt, from, to);
+      if (bounce) bounceOffBox(this.bodies, p[Param.boxWidth], p[Param.boxHeight], p[Param.wallRestitution], p[Param.restitutionThreshold], from, to);
     }
-    if (bin) this.copyRadii();
+    if (bin) this.binRange(from, to);
   }
 
   private bin(): void {

@@ -167,6 +167,7 @@ export class ParallelStep {
     p[Param.wallRestitution] = settings.wallRestitution;
     p[Param.restitutionThreshold] = settings.restitutionThreshold;
     p[Param.maxRadius] = b.maxRadius();
+    c[Slot.motionChunk] = 0;
     this.run(Command.motion);
   }
 
