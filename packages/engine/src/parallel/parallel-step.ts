@@ -52,8 +52,8 @@ export interface MotionSettings {
  * publishes commands, runs thread 0's share itself and waits for the others.
  *
  * Which stages run in parallel, and why the bits do not change:
- * - motion (integrate, then the box walls, then in a box each body's cell): every body's update
- *   reads only that body;
+ * - motion (integrate, then the box walls, then in a box each body's cell), in chunks claimed as
+ *   threads come free: every body's update reads only that body;
  * - the Max Grid build (each body's cell per body range, then count and scatter per band of
  *   cells, giving exactly the serial layout) and the scan of row blocks, claimed as threads come
  *   free, with the narrow-phase: each thread finds a disjoint share of the same contact set, and
