@@ -1,29 +1,47 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { CellGrid } from '../broadphase/cell-grid.js';
-import { Slot, shareStart } from './control.js';
+import { BANDS_PER_THREAD, Slot, shareStart } from './control.js';
 
 // The two middle passes of a parallel step's counting sort (the first, each body's cell, runs in
-// motion or the bin stage; see ThreadKernels.binRange). Each thread owns a band of whole cells,
-// the same band in both passes, and reads all of binOf but writes only its own cells and their
-// bodies' places, so nothing is merged and the layout is CellGrid.bin's, bit for bit.
+// motion or the bin stage; see ThreadKernels.binRange). The cells are cut into BANDS_PER_THREAD
+// bands per thread, and threads claim bands from a shared counter until none is left, in each
+// pass, as they claim the scan's row blocks. A band's count and scatter read all of binOf (or, with
+// chunk cell ranges, the chunks that reach the band) but write only the band's own cells and their
+// bodies' places, so nothing is merged, whoever runs a band, and the layout is CellGrid.bin's, bit
+// for bit.
 
-/** The band of cells thread `index` owns, as [from, to). */
-function band(control: Int32Array, index: number): [number, number] {
+/** Counts the bodies of every band this thread claims (see countBand). */
+export function countClaimedBands(grid: CellGrid, control: Int32Array): void {
+  const bands = control[Slot.threads] * BANDS_PER_THREAD;
+  for (let band = Atomics.add(control, Slot.countBand, 1); band < bands; band = Atomics.add(control, Slot.countBand, 1)) {
+    countBand(grid, control, band, bands);
+  }
+}
+
+/** Scatters the bodies of every band this thread claims (see scatterBand), once every band is counted. */
+export function scatterClaimedBands(grid: CellGrid, bodies: BodyStore, control: Int32Array): void {
+  const bands = control[Slot.threads] * BANDS_PER_THREAD;
+  for (let band = Atomics.add(control, Slot.scatterBand, 1); band < bands; band = Atomics.add(control, Slot.scatterBand, 1)) {
+    scatterBand(grid, bodies, control, band, bands);
+  }
+}
+
+/** The cells [from, to) of band `band` of `bands`. */
+function cellsOf(control: Int32Array, band: number, bands: number): [number, number] {
   const cells = control[Slot.columns] * control[Slot.rows];
-  const threads = control[Slot.threads];
-  return [shareStart(cells, index, threads), shareStart(cells, index + 1, threads)];
+  return [shareStart(cells, band, bands), shareStart(cells, band + 1, bands)];
 }
 
 /**
- * Counts the bodies of thread `index`'s cells into cellStart, and writes how many that is in all
- * to Slot.blockTotal + index, where the scatter finds the bodies of the bands before its own.
+ * Counts the bodies of the band's cells into cellStart, and writes how many that is in all to
+ * Slot.bandTotal + band, where the scatter finds the bodies of the bands before its own.
  */
-export function countCellBand(grid: CellGrid, control: Int32Array, index: number): void {
-  const [from, to] = band(control, index);
+function countBand(grid: CellGrid, control: Int32Array, band: number, bands: number): void {
+  const [from, to] = cellsOf(control, band, bands);
   const n = control[Slot.bodyCount];
   const kernel = grid.sharedKernel;
   if (kernel) {
-    control[Slot.blockTotal + index] = kernel.countCells(n, from, to);
+    control[Slot.bandTotal + band] = kernel.countCells(n, from, to);
     return;
   }
   const { binOf, cellStart } = grid;
@@ -36,22 +54,20 @@ export function countCellBand(grid: CellGrid, control: Int32Array, index: number
       mine++;
     }
   }
-  control[Slot.blockTotal + index] = mine;
+  control[Slot.bandTotal + band] = mine;
 }
 
 /**
- * Prefix sums over thread `index`'s cells, offset by the bodies of the bands before it, then the
+ * Prefix sums over the band's cells, offset by the bodies of the bands before it, then the
  * scatter of their bodies from the back, as CellGrid.bin does for all cells: slots ascend inside
  * each cell. The last band also writes the two end sentinels.
  */
-export function scatterCellBand(grid: CellGrid, bodies: BodyStore, control: Int32Array, index: number): void {
-  const [from, to] = band(control, index);
-  const cells = control[Slot.columns] * control[Slot.rows];
-  const last = index === control[Slot.threads] - 1;
+function scatterBand(grid: CellGrid, bodies: BodyStore, control: Int32Array, band: number, bands: number): void {
+  const [from, to] = cellsOf(control, band, bands);
   const n = control[Slot.bodyCount];
   const { binOf, cellStart, sortedSlot, sortedX, sortedY, sortedR } = grid;
   let end = 0;
-  for (let t = 0; t < index; t++) end += control[Slot.blockTotal + t];
+  for (let b = 0; b < band; b++) end += control[Slot.bandTotal + b];
   const { x, y, radius } = bodies;
   const kernel = grid.sharedKernel;
   if (kernel) {
@@ -74,7 +90,8 @@ export function scatterCellBand(grid: CellGrid, bodies: BodyStore, control: Int3
       sortedR[at] = radius[k];
     }
   }
-  if (last) {
+  if (band === bands - 1) {
+    const cells = control[Slot.columns] * control[Slot.rows];
     cellStart[cells] = n;
     cellStart[cells + 1] = n;
   }

@@ -46,8 +46,9 @@ export const Slot = {
   scanBlock: 21,
   /** The next motion chunk to claim, likewise (see ThreadKernels.motion). */
   motionChunk: 22,
-  /** MAX_THREADS cells: bodies in each thread's cell range, for the prefix sums. */
-  blockTotal: 32,
+  /** The next band of cells to count, and to scatter, likewise (see cell-bands.ts). */
+  countBand: 23,
+  scatterBand: 24,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */
   contactCount: 64,
   /** MAX_THREADS cells: contacts each thread's solve block deferred. */
@@ -56,8 +57,16 @@ export const Slot = {
   escapedCount: 96,
   /** MAX_THREADS cells: 1 when the thread sorted its contact list into canonical order. */
   listSorted: 112,
-  length: 128,
+  /** MAX_THREADS * BANDS_PER_THREAD cells: bodies in each band of cells, for the prefix sums. */
+  bandTotal: 128,
+  length: 192,
 } as const;
+
+/**
+ * Bands of cells per thread in a parallel bin's count and scatter, claimed as threads come free
+ * (see cell-bands.ts): more bands even out threads that run at different speeds.
+ */
+export const BANDS_PER_THREAD = 4;
 
 export const Param = {
   gravityX: 0,

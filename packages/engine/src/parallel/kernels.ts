@@ -15,7 +15,7 @@ import { BodyKernel } from '../store/body-kernel.js';
 import { GridInputs } from './grid-inputs.js';
 import { BoundedContactList } from './bounded-contact-list.js';
 import { ContactSorter } from '../store/contact-sorter.js';
-import { countCellBand, scatterCellBand } from './cell-bands.js';
+import { countClaimedBands, scatterClaimedBands } from './cell-bands.js';
 
 /** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2 (and a multiple of CELL_CHUNK). */
 const MOTION_CHUNK = 4 * CELL_CHUNK;
@@ -262,11 +262,11 @@ export class ThreadKernels {
   }
 
   private count(): void {
-    countCellBand(this.grid, this.control, this.index);
+    countClaimedBands(this.grid, this.control);
   }
 
   private scatter(): void {
-    scatterCellBand(this.grid, this.bodies, this.control, this.index);
+    scatterClaimedBands(this.grid, this.bodies, this.control);
   }
 
   /**

@@ -55,7 +55,7 @@ export interface MotionSettings {
  * - motion (integrate, then the box walls, then in a box each body's cell), in chunks claimed as
  *   threads come free: every body's update reads only that body;
  * - the Max Grid build (each body's cell per body range, then count and scatter per band of
- *   cells, giving exactly the serial layout) and the scan of row blocks, claimed as threads come
+ *   cells, bands claimed as threads come free, giving exactly the serial layout) and the scan of row blocks, claimed as threads come
  *   free, with the narrow-phase: each thread finds a disjoint share of the same contact set, and
  *   the step sorts contacts canonically before solving, as it always does;
  * - solve: the canonical order is cut into one block per thread; each thread resolves the
@@ -184,6 +184,8 @@ export class ParallelStep {
       this.useGrid(grid, coordPad);
       this.run(Command.bin);
     }
+    c[Slot.countBand] = 0;
+    c[Slot.scatterBand] = 0;
     this.run(Command.count);
     this.run(Command.scatter);
     this.growAhead(grid);
