@@ -26,18 +26,15 @@ export function scatterClaimedBands(grid: CellGrid, bodies: BodyStore, control: 
   }
 }
 
-/** The cells [from, to) of band `band` of `bands`. */
-function cellsOf(control: Int32Array, band: number, bands: number): [number, number] {
-  const cells = control[Slot.columns] * control[Slot.rows];
-  return [shareStart(cells, band, bands), shareStart(cells, band + 1, bands)];
-}
-
 /**
  * Counts the bodies of the band's cells into cellStart, and writes how many that is in all to
  * Slot.bandTotal + band, where the scatter finds the bodies of the bands before its own.
  */
 function countBand(grid: CellGrid, control: Int32Array, band: number, bands: number): void {
-  const [from, to] = cellsOf(control, band, bands);
+  // Two numbers, not a tuple: this runs for every band of every step, which must not allocate.
+  const cells = control[Slot.columns] * control[Slot.rows];
+  const from = shareStart(cells, band, bands);
+  const to = shareStart(cells, band + 1, bands);
   const n = control[Slot.bodyCount];
   const kernel = grid.sharedKernel;
   if (kernel) {
@@ -63,7 +60,9 @@ function countBand(grid: CellGrid, control: Int32Array, band: number, bands: num
  * each cell. The last band also writes the two end sentinels.
  */
 function scatterBand(grid: CellGrid, bodies: BodyStore, control: Int32Array, band: number, bands: number): void {
-  const [from, to] = cellsOf(control, band, bands);
+  const cells = control[Slot.columns] * control[Slot.rows];
+  const from = shareStart(cells, band, bands);
+  const to = shareStart(cells, band + 1, bands);
   const n = control[Slot.bodyCount];
   const { binOf, cellStart, sortedSlot, sortedX, sortedY, sortedR } = grid;
   let end = 0;
@@ -91,7 +90,6 @@ function scatterBand(grid: CellGrid, bodies: BodyStore, control: Int32Array, ban
     }
   }
   if (band === bands - 1) {
-    const cells = control[Slot.columns] * control[Slot.rows];
     cellStart[cells] = n;
     cellStart[cells + 1] = n;
   }

@@ -171,8 +171,9 @@ export async function runTargets(o: TargetsOptions, ctx: RunContext): Promise<Ta
  * The million-body world, timed step by step alternating with a world of o.n bodies (enough of
  * its steps after each big one to take about as long), so that the per-body ratio compares two
  * numbers taken side by side. T1's 64k median, taken minutes earlier, would fold the host's drift
- * into the ratio: on this 2-core machine memory-bound steps of 1M bodies slow down by up to 1.5x
- * from one minute to the next while steps of 64k, which fit in cache, do not.
+ * into the ratio: on this 2-core machine memory-bound steps of 1M bodies slow down by half or more
+ * from one minute to the next (41 to 65 ms within one run of 40 steps), while steps of 64k, which
+ * fit in cache, barely move.
  */
 async function million(engine: Engine, o: TargetsOptions, ctx: RunContext): Promise<TargetsResult['t3']> {
   ctx.progress?.(0, 1, `T3 building N=${o.bigN}`);
