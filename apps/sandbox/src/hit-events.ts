@@ -12,7 +12,7 @@ export class HitEvents {
   enabled = false;
   /** The world's hitEventThreshold: the overlay sizes rings by speed relative to it. */
   threshold = Infinity;
-  /** Hits in the last step, and the fastest approach speed among them (0 when there were none). */
+  /** Hits in the last step, on bodies and on segments, and the fastest approach among them (0 when there were none). */
   count = 0;
   fastest = 0;
   /** Hits since the world was built. */
@@ -40,8 +40,9 @@ export class HitEvents {
     this.step = world.stats.steps;
     if (!this.enabled) return;
     const e = world.contactEvents();
-    this.count = e.hitCount;
-    this.totalHits += e.hitCount;
+    const hits = e.hitCount + e.segmentHitCount;
+    this.count = hits;
+    this.totalHits += hits;
     this.grow(world.views().slotCount);
     let fastest = 0;
     for (let k = 0; k < e.hitCount; k++) {
@@ -51,8 +52,14 @@ export class HitEvents {
       this.mark(world.slotOfHandle(e.hitA[k]), speed);
       this.mark(world.slotOfHandle(e.hitB[k]), speed);
     }
+    // Hits on segments ring the body; segments are drawn apart from bodies.
+    for (let k = 0; k < e.segmentHitCount; k++) {
+      const speed = e.segmentHitSpeed[k];
+      if (speed > fastest) fastest = speed;
+      this.mark(world.slotOfHandle(e.segmentHitBody[k]), speed);
+    }
     this.fastest = fastest;
-    if (e.hitCount > 0) this.lastHitStep = this.step;
+    if (hits > 0) this.lastHitStep = this.step;
   }
 
   /** Whether any ring is still on screen. */

@@ -83,6 +83,39 @@ describe('contact events', () => {
     expect(world.contactEvents().hitCount).toBe(0);
   });
 
+  it('a body hitting a static segment reports a segment hit, swept or not, with both handles and the approach speed', () => {
+    // A horizontal wall (the second segment, so its handle is not 0); a ball falls onto it at
+    // 40 units/s (4 a step, under its radius: a discrete contact) or 4,000 (400 a step: the sweep).
+    const drop = (speed: number) => {
+      const world = new World({ hitEventThreshold: 5 });
+      world.createSegment({ x1: 190, y1: 50, x2: 190, y2: 600 });
+      const wall = world.createSegment({ x1: 0, y1: 0, x2: 200, y2: 0 });
+      const ball = world.createCircle({ x: 50, y: 5 + 1 + speed * 0.1 * 0.5, vy: -speed, radius: 5 });
+      world.step(0.1);
+      const e = world.contactEvents();
+      return { hits: Array.from({ length: e.segmentHitCount }, (_, k) => [e.segmentHitBody[k], e.segmentHitSegment[k], e.segmentHitSpeed[k]]), bodyHits: e.hitCount, swept: world.stats.sweptBodies, wall, ball, vy: world.getCircle(ball).vy };
+    };
+    const slow = drop(40);
+    expect(slow.swept).toBe(0);
+    expect(slow.bodyHits).toBe(0);
+    expect(slow.hits).toHaveLength(1);
+    expect(slow.hits[0].slice(0, 2)).toEqual([slow.ball, slow.wall]);
+    expect(slow.hits[0][2]).toBeCloseTo(40, 12);
+    expect(slow.vy).toBeGreaterThan(0);
+    const fast = drop(4000);
+    expect(fast.swept).toBe(1);
+    expect(fast.hits).toHaveLength(1);
+    expect(fast.hits[0].slice(0, 2)).toEqual([fast.ball, fast.wall]);
+    expect(fast.hits[0][2]).toBeCloseTo(4000, 9);
+    expect(fast.vy).toBeGreaterThan(0);
+    // Below the threshold: the bounce happens, the event does not.
+    const world = new World({ hitEventThreshold: 50 });
+    world.createSegment({ x1: 0, y1: 0, x2: 200, y2: 0 });
+    world.createCircle({ x: 50, y: 8, vy: -40, radius: 5 });
+    world.step(0.1);
+    expect(world.contactEvents().segmentHitCount).toBe(0);
+  });
+
   it('events are off unless asked for', () => {
     expect(() => new World().contactEvents()).toThrow(/contactEvents: true/);
   });

@@ -218,10 +218,12 @@ export class ContinuousCollision {
       ny /= length;
       const vn = vx[i] * nx + vy[i] * ny;
       if (vn < 0) {
-        // A hit on a static circle is a hit between two bodies, as the solver records it for a
-        // discrete contact: without this, the fastest impacts, the swept ones, went unreported.
-        // Walls and segments are not bodies, and hit events name bodies.
-        if (hitStatic >= 0 && events !== null && -vn >= hitThreshold) events.recordHit(bodies, Math.min(i, hitStatic), Math.max(i, hitStatic), -vn);
+        // Recorded as the discrete contacts record them: without this, the fastest impacts, the
+        // swept ones, went unreported. The box walls are not shapes with handles: no hit.
+        if (events !== null && -vn >= hitThreshold) {
+          if (hitStatic >= 0) events.recordHit(bodies, Math.min(i, hitStatic), Math.max(i, hitStatic), -vn);
+          else if (hitSegment >= 0) events.recordSegmentHit(bodies, i, segments, hitSegment, -vn);
+        }
         const bounceE = -vn < restitutionThreshold ? 0 : e;
         vx[i] -= (1 + bounceE) * vn * nx;
         vy[i] -= (1 + bounceE) * vn * ny;

@@ -1,5 +1,6 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { SegmentStore, SegmentGrid } from '../store/segment-store.js';
+import type { ContactEvents } from '../store/contact-events.js';
 import { TypeCode } from '../store/body-types.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
 import { mixRestitution } from './restitution.js';
@@ -12,6 +13,7 @@ const closest = { x: 0, y: 0 };
  * A segment is a capsule of radius `thickness`; a touching circle is pushed out along the normal
  * from the closest point, and its velocity reflected with the pair's restitution if it approaches.
  * A circle whose centre lies exactly on the segment is pushed along the segment's left normal.
+ * An approach at least `hitThreshold` fast is recorded as a segment hit in `events`.
  * Returns the number of circle-segment contacts.
  */
 export function solveSegmentContacts(
@@ -19,6 +21,8 @@ export function solveSegmentContacts(
   segments: SegmentStore,
   grid: SegmentGrid,
   restitutionThreshold: number,
+  events: ContactEvents | null,
+  hitThreshold: number,
 ): number {
   if (segments.count === 0) return 0;
   const { x, y, vx, vy, radius, restitution, type, asleep, category, mask, slotCount } = bodies;
@@ -56,6 +60,7 @@ export function solveSegmentContacts(
       }
       const vn = vx[i] * nx + vy[i] * ny;
       if (vn < 0) {
+        if (events !== null && -vn >= hitThreshold) events.recordSegmentHit(bodies, i, segments, s, -vn);
         const e = -vn < restitutionThreshold ? 0 : mixRestitution(restitution[i], segments.restitution[s]);
         vx[i] -= (1 + e) * vn * nx;
         vy[i] -= (1 + e) * vn * ny;

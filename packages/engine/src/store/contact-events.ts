@@ -1,4 +1,5 @@
 import type { BodyStore } from './body-store.js';
+import type { SegmentStore } from './segment-store.js';
 import type { ContactBuffer } from './contact-buffer.js';
 import { grownCapacity, grow } from '../util/grow.js';
 
@@ -17,6 +18,15 @@ export interface ContactEventsView {
   readonly hitA: Readonly<Float64Array>;
   readonly hitB: Readonly<Float64Array>;
   readonly hitSpeed: Readonly<Float64Array>;
+  /**
+   * Collisions of a body with a static segment at or above the threshold: body handle
+   * segmentHitBody[k], segment handle segmentHitSegment[k] (createSegment's), approach speed
+   * segmentHitSpeed[k], for k < segmentHitCount.
+   */
+  readonly segmentHitCount: number;
+  readonly segmentHitBody: Readonly<Float64Array>;
+  readonly segmentHitSegment: Readonly<Float64Array>;
+  readonly segmentHitSpeed: Readonly<Float64Array>;
 }
 
 /**
@@ -36,6 +46,10 @@ export class ContactEvents implements ContactEventsView {
   hitA = new Float64Array(16);
   hitB = new Float64Array(16);
   hitSpeed = new Float64Array(16);
+  segmentHitCount = 0;
+  segmentHitBody = new Float64Array(16);
+  segmentHitSegment = new Float64Array(16);
+  segmentHitSpeed = new Float64Array(16);
 
   private prevCount = 0;
   private prevLo = new Int32Array(16);
@@ -47,6 +61,7 @@ export class ContactEvents implements ContactEventsView {
     this.beginCount = 0;
     this.endCount = 0;
     this.hitCount = 0;
+    this.segmentHitCount = 0;
   }
 
   recordHit(bodies: BodyStore, i: number, j: number, speed: number): void {
@@ -59,6 +74,19 @@ export class ContactEvents implements ContactEventsView {
     this.hitA[this.hitCount] = bodies.handleOf(i);
     this.hitB[this.hitCount] = bodies.handleOf(j);
     this.hitSpeed[this.hitCount++] = speed;
+  }
+
+  /** A hit of the body in slot i on the segment in slot s. */
+  recordSegmentHit(bodies: BodyStore, i: number, segments: SegmentStore, s: number, speed: number): void {
+    if (this.segmentHitCount === this.segmentHitBody.length) {
+      const capacity = grownCapacity(this.segmentHitBody.length, this.segmentHitCount + 1);
+      this.segmentHitBody = grow(this.segmentHitBody, capacity);
+      this.segmentHitSegment = grow(this.segmentHitSegment, capacity);
+      this.segmentHitSpeed = grow(this.segmentHitSpeed, capacity);
+    }
+    this.segmentHitBody[this.segmentHitCount] = bodies.handleOf(i);
+    this.segmentHitSegment[this.segmentHitCount] = segments.handleOf(s);
+    this.segmentHitSpeed[this.segmentHitCount++] = speed;
   }
 
   /** Diffs the step's canonical contacts against the previous step's, then keeps them. */
@@ -93,7 +121,7 @@ export class ContactEvents implements ContactEventsView {
   }
 
   memoryBytes(): number {
-    return (this.beginA.byteLength + this.endA.byteLength + this.prevLo.byteLength + this.prevHandleLo.byteLength) * 2 + this.hitA.byteLength * 3;
+    return (this.beginA.byteLength + this.endA.byteLength + this.prevLo.byteLength + this.prevHandleLo.byteLength) * 2 + (this.hitA.byteLength + this.segmentHitBody.byteLength) * 3;
   }
 
   private keep(bodies: BodyStore, contacts: ContactBuffer): void {

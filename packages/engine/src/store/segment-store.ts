@@ -52,6 +52,11 @@ export class SegmentStore {
     this.live[slot] = 1;
     this.count++;
     this.version++;
+    return this.handleOf(slot);
+  }
+
+  /** The handle of the live segment in `slot`. */
+  handleOf(slot: number): number {
     return this.generation[slot] * SLOT_SPACE + slot;
   }
 
