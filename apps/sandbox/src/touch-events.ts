@@ -1,6 +1,6 @@
 import type { World } from '@maxgrid/engine';
 
-/** Steps a body stays highlighted after it began touching another: long enough to be seen. */
+/** Steps a body stays highlighted after it began touching another, or a segment: long enough to be seen. */
 export const FLASH_STEPS = 8;
 
 /**
@@ -32,9 +32,10 @@ export class TouchEvents {
     this.step = world.stats.steps;
     if (!this.enabled) return;
     const e = world.contactEvents();
-    this.begins = e.beginCount;
-    this.ends = e.endCount;
-    this.totalBegins += e.beginCount;
+    // Touches between bodies and with segments alike: a ball landing on a funnel wall flashes too.
+    this.begins = e.beginCount + e.segmentBeginCount;
+    this.ends = e.endCount + e.segmentEndCount;
+    this.totalBegins += this.begins;
     const slots = world.views().slotCount;
     if (this.flashStep.length < slots) {
       const grown = new Float64Array(Math.max(slots, this.flashStep.length * 2));
@@ -47,6 +48,7 @@ export class TouchEvents {
       this.flashStep[world.slotOfHandle(e.beginA[k])] = this.step;
       this.flashStep[world.slotOfHandle(e.beginB[k])] = this.step;
     }
+    for (let k = 0; k < e.segmentBeginCount; k++) this.flashStep[world.slotOfHandle(e.segmentBeginBody[k])] = this.step;
   }
 
   /** Whether slot `s` began a touch in the last few steps. */

@@ -116,6 +116,41 @@ describe('contact events', () => {
     expect(world.contactEvents().segmentHitCount).toBe(0);
   });
 
+  it('a body landing on a segment begins touching it once, and ends when it leaves or the segment goes', () => {
+    const world = new World({ contactEvents: true, gravity: { x: 0, y: -100 }, restitution: 0 });
+    world.createSegment({ x1: 300, y1: 0, x2: 300, y2: 50 });
+    const ground = world.createSegment({ x1: 0, y1: 0, x2: 200, y2: 0 });
+    const ball = world.createCircle({ x: 50, y: 20, radius: 5 });
+    const begins: string[] = [];
+    const ends: string[] = [];
+    const collect = () => {
+      const e = world.contactEvents();
+      begins.push(...pairsOf(e.segmentBeginCount, e.segmentBeginBody, e.segmentBeginSegment));
+      ends.push(...pairsOf(e.segmentEndCount, e.segmentEndBody, e.segmentEndSegment));
+    };
+    for (let s = 0; s < 240; s++) {
+      world.step(1 / 60);
+      collect();
+    }
+    // It fell, landed and rests: one begin, no end, no body-pair events.
+    expect(begins).toEqual([`${ball}-${ground}`]);
+    expect(ends).toEqual([]);
+    expect(world.contactEvents().beginCount + world.contactEvents().endCount).toBe(0);
+    // Thrown up, it leaves the ground: an end; it lands again: another begin.
+    world.setVelocity(ball, 0, 60);
+    for (let s = 0; s < 120; s++) {
+      world.step(1 / 60);
+      collect();
+    }
+    expect(ends).toEqual([`${ball}-${ground}`]);
+    expect(begins).toEqual([`${ball}-${ground}`, `${ball}-${ground}`]);
+    // The segment destroyed under it: the touch ends, named by the handles it had.
+    world.destroySegment(ground);
+    world.step(1 / 60);
+    collect();
+    expect(ends).toEqual([`${ball}-${ground}`, `${ball}-${ground}`]);
+  });
+
   it('events are off unless asked for', () => {
     expect(() => new World().contactEvents()).toThrow(/contactEvents: true/);
   });

@@ -13,7 +13,8 @@ const closest = { x: 0, y: 0 };
  * A segment is a capsule of radius `thickness`; a touching circle is pushed out along the normal
  * from the closest point, and its velocity reflected with the pair's restitution if it approaches.
  * A circle whose centre lies exactly on the segment is pushed along the segment's left normal.
- * An approach at least `hitThreshold` fast is recorded as a segment hit in `events`.
+ * With `events`, each touching pair is noted for the touch events, and an approach at least
+ * `hitThreshold` fast is recorded as a segment hit.
  * Returns the number of circle-segment contacts.
  */
 export function solveSegmentContacts(
@@ -45,6 +46,7 @@ export function solveSegmentContacts(
       const distSq = dx * dx + dy * dy;
       if (distSq >= reach * reach) continue;
       contacts++;
+      events?.noteSegmentTouch(i, s);
       const dist = Math.sqrt(distSq);
       let nx: number;
       let ny: number;

@@ -128,7 +128,7 @@ export class StepPipeline {
     }
     const t5 = nowMs();
 
-    events?.update(bodies, contacts);
+    events?.update(bodies, contacts, this.segments);
     clearForces(bodies);
     if (settings.sleeping.enabled) updateSleep(bodies, dt, settings.sleeping.speed, settings.sleeping.time);
     const t6 = nowMs();

@@ -2,6 +2,7 @@ import type { BodyStore } from './body-store.js';
 import type { SegmentStore } from './segment-store.js';
 import type { ContactBuffer } from './contact-buffer.js';
 import { grownCapacity, grow } from '../util/grow.js';
+import { PairDiff } from './pair-diff.js';
 
 /** Event lists of the last step; the arrays are reused and replaced only when they grow. */
 export interface ContactEventsView {
@@ -27,21 +28,28 @@ export interface ContactEventsView {
   readonly segmentHitBody: Readonly<Float64Array>;
   readonly segmentHitSegment: Readonly<Float64Array>;
   readonly segmentHitSpeed: Readonly<Float64Array>;
+  /**
+   * A body and a static segment that started touching this step: body handle
+   * segmentBeginBody[k], segment handle segmentBeginSegment[k], for k < segmentBeginCount.
+   */
+  readonly segmentBeginCount: number;
+  readonly segmentBeginBody: Readonly<Float64Array>;
+  readonly segmentBeginSegment: Readonly<Float64Array>;
+  /** A body and a segment that stopped touching (or one of which was destroyed). */
+  readonly segmentEndCount: number;
+  readonly segmentEndBody: Readonly<Float64Array>;
+  readonly segmentEndSegment: Readonly<Float64Array>;
 }
 
 /**
- * Begin and end touch events come from comparing this step's contacts with the last step's. Both
- * lists are in canonical (lo, hi) slot order, so one merge finds the differences in linear time
- * with no hashing. A pair whose slot was reused by a new body in between has a different handle,
- * and counts as one end and one begin.
+ * The step's events. Touches between bodies are the step's canonical contacts diffed against the
+ * last step's; touches between bodies and segments, the pairs the segment solve found (body slots
+ * ascending, then segment slots) diffed likewise (see PairDiff). Hits are recorded as the solvers
+ * and the continuous sweep meet them.
  */
 export class ContactEvents implements ContactEventsView {
-  beginCount = 0;
-  beginA = new Float64Array(16);
-  beginB = new Float64Array(16);
-  endCount = 0;
-  endA = new Float64Array(16);
-  endB = new Float64Array(16);
+  private readonly touches = new PairDiff();
+  private readonly segmentTouches = new PairDiff();
   hitCount = 0;
   hitA = new Float64Array(16);
   hitB = new Float64Array(16);
@@ -50,18 +58,65 @@ export class ContactEvents implements ContactEventsView {
   segmentHitBody = new Float64Array(16);
   segmentHitSegment = new Float64Array(16);
   segmentHitSpeed = new Float64Array(16);
+  /** This step's touching body-segment pairs, in the order the segment solve found them. */
+  private touchingBody = new Int32Array(16);
+  private touchingSegment = new Int32Array(16);
+  private touchingCount = 0;
 
-  private prevCount = 0;
-  private prevLo = new Int32Array(16);
-  private prevHi = new Int32Array(16);
-  private prevHandleLo = new Float64Array(16);
-  private prevHandleHi = new Float64Array(16);
+  get beginCount(): number {
+    return this.touches.beginCount;
+  }
+  get beginA(): Float64Array {
+    return this.touches.beginA;
+  }
+  get beginB(): Float64Array {
+    return this.touches.beginB;
+  }
+  get endCount(): number {
+    return this.touches.endCount;
+  }
+  get endA(): Float64Array {
+    return this.touches.endA;
+  }
+  get endB(): Float64Array {
+    return this.touches.endB;
+  }
+  get segmentBeginCount(): number {
+    return this.segmentTouches.beginCount;
+  }
+  get segmentBeginBody(): Float64Array {
+    return this.segmentTouches.beginA;
+  }
+  get segmentBeginSegment(): Float64Array {
+    return this.segmentTouches.beginB;
+  }
+  get segmentEndCount(): number {
+    return this.segmentTouches.endCount;
+  }
+  get segmentEndBody(): Float64Array {
+    return this.segmentTouches.endA;
+  }
+  get segmentEndSegment(): Float64Array {
+    return this.segmentTouches.endB;
+  }
 
   clear(): void {
-    this.beginCount = 0;
-    this.endCount = 0;
+    this.touches.clear();
+    this.segmentTouches.clear();
     this.hitCount = 0;
     this.segmentHitCount = 0;
+    this.touchingCount = 0;
+  }
+
+  /** The body in slot i touches the segment in slot s (called in ascending (i, s) order). */
+  noteSegmentTouch(i: number, s: number): void {
+    if (this.touchingCount === this.touchingBody.length) {
+      const capacity = grownCapacity(this.touchingBody.length, this.touchingCount + 1);
+      this.touchingBody = grow(this.touchingBody, capacity);
+      this.touchingSegment = grow(this.touchingSegment, capacity);
+    }
+    this.touchingBody[this.touchingCount] = i;
+    this.touchingSegment[this.touchingCount++] = s;
   }
 
   recordHit(bodies: BodyStore, i: number, j: number, speed: number): void {
@@ -89,78 +144,18 @@ export class ContactEvents implements ContactEventsView {
     this.segmentHitSpeed[this.segmentHitCount++] = speed;
   }
 
-  /** Diffs the step's canonical contacts against the previous step's, then keeps them. */
-  update(bodies: BodyStore, contacts: ContactBuffer): void {
-    const { lo, hi, count } = contacts;
-    const { prevLo, prevHi, prevHandleLo, prevHandleHi, prevCount } = this;
-    let p = 0;
-    let c = 0;
-    while (p < prevCount || c < count) {
-      let order: number;
-      if (p === prevCount) order = 1;
-      else if (c === count) order = -1;
-      else order = prevLo[p] !== lo[c] ? prevLo[p] - lo[c] : prevHi[p] - hi[c];
-      if (order < 0) {
-        this.pushEnd(prevHandleLo[p], prevHandleHi[p]);
-        p++;
-      } else if (order > 0) {
-        this.pushBegin(bodies.handleOf(lo[c]), bodies.handleOf(hi[c]));
-        c++;
-      } else {
-        const a = bodies.handleOf(lo[c]);
-        const b = bodies.handleOf(hi[c]);
-        if (a !== prevHandleLo[p] || b !== prevHandleHi[p]) {
-          this.pushEnd(prevHandleLo[p], prevHandleHi[p]);
-          this.pushBegin(a, b);
-        }
-        p++;
-        c++;
-      }
-    }
-    this.keep(bodies, contacts);
+  /** Diffs the step's canonical contacts, and its body-segment touches, against the last step's. */
+  update(bodies: BodyStore, contacts: ContactBuffer, segments: SegmentStore): void {
+    this.touches.update(contacts.lo, contacts.hi, contacts.count, bodies, bodies);
+    this.segmentTouches.update(this.touchingBody, this.touchingSegment, this.touchingCount, bodies, segments);
   }
 
   memoryBytes(): number {
-    return (this.beginA.byteLength + this.endA.byteLength + this.prevLo.byteLength + this.prevHandleLo.byteLength) * 2 + (this.hitA.byteLength + this.segmentHitBody.byteLength) * 3;
-  }
-
-  private keep(bodies: BodyStore, contacts: ContactBuffer): void {
-    const n = contacts.count;
-    if (this.prevLo.length < n) {
-      const capacity = grownCapacity(this.prevLo.length, n);
-      this.prevLo = grow(this.prevLo, capacity);
-      this.prevHi = grow(this.prevHi, capacity);
-      this.prevHandleLo = grow(this.prevHandleLo, capacity);
-      this.prevHandleHi = grow(this.prevHandleHi, capacity);
-    }
-    for (let k = 0; k < n; k++) {
-      const i = contacts.lo[k];
-      const j = contacts.hi[k];
-      this.prevLo[k] = i;
-      this.prevHi[k] = j;
-      this.prevHandleLo[k] = bodies.handleOf(i);
-      this.prevHandleHi[k] = bodies.handleOf(j);
-    }
-    this.prevCount = n;
-  }
-
-  private pushBegin(a: number, b: number): void {
-    if (this.beginCount === this.beginA.length) {
-      const capacity = grownCapacity(this.beginA.length, this.beginCount + 1);
-      this.beginA = grow(this.beginA, capacity);
-      this.beginB = grow(this.beginB, capacity);
-    }
-    this.beginA[this.beginCount] = a;
-    this.beginB[this.beginCount++] = b;
-  }
-
-  private pushEnd(a: number, b: number): void {
-    if (this.endCount === this.endA.length) {
-      const capacity = grownCapacity(this.endA.length, this.endCount + 1);
-      this.endA = grow(this.endA, capacity);
-      this.endB = grow(this.endB, capacity);
-    }
-    this.endA[this.endCount] = a;
-    this.endB[this.endCount++] = b;
+    return (
+      this.touches.memoryBytes() +
+      this.segmentTouches.memoryBytes() +
+      (this.hitA.byteLength + this.segmentHitBody.byteLength) * 3 +
+      this.touchingBody.byteLength * 2
+    );
   }
 }
