@@ -8,7 +8,7 @@ import { MaxGridBroadPhase, type GridGeometry } from './broadphase/maxgrid.js';
 import { AutoBroadPhase } from './broadphase/auto.js';
 import { ContactEvents, type ContactEventsView } from './store/contact-events.js';
 import { Queries, type RayHit } from './query/queries.js';
-import { queryMask, rayArguments } from './query/query-args.js';
+import { NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments } from './query/query-args.js';
 import type { CircleState, BodyViews, QueryOptions } from './world-types.js';
 import * as analytics from './analytics.js';
 import { StepPipeline } from './step/pipeline.js';
@@ -360,29 +360,37 @@ export class World {
     return events;
   }
 
-  /** Handles of the circles containing the point (boundary included), ascending. */
-  queryPoint(x: number, y: number, options: QueryOptions = {}): number[] {
+  /**
+   * Handles of the circles containing the point (boundary included), ascending. Pass `out` to
+   * reuse an array: it is emptied, filled and returned.
+   */
+  queryPoint(x: number, y: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: number[]): number[] {
     const mask = queryMask(options);
-    return this.queries.point(this.geometryVersion, finiteNumber('x', x), finiteNumber('y', y), mask, []);
+    finiteNumber('x', x);
+    finiteNumber('y', y);
+    return this.queries.point(this.geometryVersion, x, y, mask, queryOutput(out));
   }
 
-  /** Handles of the circles overlapping the box (touching included), ascending. */
-  queryAABB(minX: number, minY: number, maxX: number, maxY: number, options: QueryOptions = {}): number[] {
+  /** Handles of the circles overlapping the box (touching included), ascending; `out` as in queryPoint. */
+  queryAABB(minX: number, minY: number, maxX: number, maxY: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: number[]): number[] {
     const mask = queryMask(options);
-    for (const [field, value] of [['minX', minX], ['minY', minY], ['maxX', maxX], ['maxY', maxY]] as const) finiteNumber(field, value);
+    finiteNumber('minX', minX);
+    finiteNumber('minY', minY);
+    finiteNumber('maxX', maxX);
+    finiteNumber('maxY', maxY);
     if (minX > maxX || minY > maxY) throw new RangeError(`queryAABB needs min <= max, got (${minX}, ${minY})..(${maxX}, ${maxY})`);
-    return this.queries.box(this.geometryVersion, minX, minY, maxX, maxY, mask, []);
+    return this.queries.box(this.geometryVersion, minX, minY, maxX, maxY, mask, queryOutput(out));
   }
 
   /** The first circle the segment from (x1, y1) to (x2, y2) enters, or null. Circles containing (x1, y1) are ignored. */
-  rayCast(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = {}): RayHit | null {
+  rayCast(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS): RayHit | null {
     const mask = queryMask(options);
     rayArguments(x1, y1, x2, y2);
     return this.queries.ray(this.geometryVersion, x1, y1, x2, y2, mask, false, [])[0] ?? null;
   }
 
   /** Every circle the segment enters, nearest first. */
-  rayCastAll(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = {}): RayHit[] {
+  rayCastAll(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS): RayHit[] {
     const mask = queryMask(options);
     rayArguments(x1, y1, x2, y2);
     return this.queries.ray(this.geometryVersion, x1, y1, x2, y2, mask, true, []);

@@ -99,4 +99,24 @@ describe('queries agree with brute force', () => {
     world.destroyBody(a);
     expect(world.rayCast(-100, 0, 0, 0)).toBeNull();
   });
+
+  it('point and box queries fill an array the caller reuses, emptied first, with the same handles', () => {
+    fc.assert(
+      fc.property(worldArbitrary, coordinate, coordinate, fc.double({ min: 0, max: 300, noNaN: true }), (world, x, y, size) => {
+        const out = [-1, -2, -3];
+        expect(world.queryPoint(x, y, {}, out)).toBe(out);
+        expect(out).toEqual(world.queryPoint(x, y));
+        expect(world.queryAABB(x, y, x + size, y + size, { mask: 2 }, out)).toBe(out);
+        expect(out).toEqual(world.queryAABB(x, y, x + size, y + size, { mask: 2 }));
+      }),
+      { numRuns: 60 },
+    );
+    const world = new World();
+    world.createCircle({ x: 0, y: 0, radius: 5 });
+    const out = [7, 8];
+    expect(world.queryPoint(100, 100, undefined, out)).toEqual([]);
+    expect(out).toEqual([]);
+    expect(() => world.queryAABB(0, 0, 1, 1, {}, 'list' as unknown as number[])).toThrow(/out must be an array to fill, got string/);
+    expect(() => world.queryPoint(0, 0, {}, { length: 0 } as unknown as number[])).toThrow(/out must be an array/);
+  });
 });

@@ -45,7 +45,7 @@ export class Queries {
         if (dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot]) out.push(bodies.handleOf(slot));
       }
     }
-    return out.sort((a, b) => a - b);
+    return out.sort(ascending);
   }
 
   box(version: number, minX: number, minY: number, maxX: number, maxY: number, mask: number, out: number[]): number[] {
@@ -67,7 +67,7 @@ export class Queries {
         if (dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot]) out.push(bodies.handleOf(slot));
       }
     }
-    return out.sort((a, b) => a - b);
+    return out.sort(ascending);
   }
 
   /**
@@ -86,18 +86,11 @@ export class Queries {
     const loY = grid.originY - cs;
     const hiX = grid.originX + (grid.columns + 1) * cs;
     const hiY = grid.originY + (grid.rows + 1) * cs;
-    let tEnter = 0;
-    let tExit = 1;
-    for (const [p, d, lo, hi] of [[x1, dx, loX, hiX], [y1, dy, loY, hiY]]) {
-      if (d === 0) {
-        if (p < lo || p > hi) return out;
-      } else {
-        const ta = (lo - p) / d;
-        const tb = (hi - p) / d;
-        tEnter = Math.max(tEnter, Math.min(ta, tb));
-        tExit = Math.min(tExit, Math.max(ta, tb));
-      }
-    }
+    clip.enter = 0;
+    clip.exit = 1;
+    if (!clipAxis(x1, dx, loX, hiX) || !clipAxis(y1, dy, loY, hiY)) return out;
+    const tEnter = clip.enter;
+    const tExit = clip.exit;
     if (tEnter > tExit) return out;
     this.epoch++;
     let column = clamp(grid.columnOf(x1 + dx * tEnter), -1, grid.columns);
@@ -183,4 +176,22 @@ export class Queries {
 
 function clamp(v: number, lo: number, hi: number): number {
   return v < lo ? lo : v > hi ? hi : v;
+}
+
+/** The handle order of query results; one function, not a closure per query. */
+function ascending(a: number, b: number): number {
+  return a - b;
+}
+
+/** The ray's parameter range inside the widened grid, narrowed axis by axis by clipAxis. */
+const clip = { enter: 0, exit: 1 };
+
+/** Narrows `clip` to where p + t d lies in [lo, hi]; false when a ray parallel to the axis misses it. */
+function clipAxis(p: number, d: number, lo: number, hi: number): boolean {
+  if (d === 0) return p >= lo && p <= hi;
+  const ta = (lo - p) / d;
+  const tb = (hi - p) / d;
+  clip.enter = Math.max(clip.enter, Math.min(ta, tb));
+  clip.exit = Math.min(clip.exit, Math.max(ta, tb));
+  return true;
 }
