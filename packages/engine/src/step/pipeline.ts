@@ -74,7 +74,7 @@ export class StepPipeline {
     const parallel = this.parallel !== null && bodies.liveCount >= this.parallel.minBodies ? this.parallel : null;
     const box = settings.box;
     const t0 = nowMs();
-    // Cleared first: the sweep records hits on static circles before the solver records its own.
+    // Cleared first: the sweep records its hits (on static circles and segments) before the solvers record theirs.
     events?.clear();
     const sweep = settings.continuous && this.continuous.needed(bodies, this.segments);
     if (sweep) this.continuous.rememberPositions(bodies);

@@ -172,8 +172,9 @@ export async function runTargets(o: TargetsOptions, ctx: RunContext): Promise<Ta
  * its steps after each big one to take about as long), so that the per-body ratio compares two
  * numbers taken side by side. T1's 64k median, taken minutes earlier, would fold the host's drift
  * into the ratio: on this 2-core machine memory-bound steps of 1M bodies slow down by half or more
- * from one minute to the next (41 to 65 ms within one run of 40 steps), while steps of 64k, which
- * fit in cache, barely move.
+ * from one minute to the next (41 to 65 ms within one run of 40 steps), and the 64k step drifts on
+ * its own schedule (its median alongside ranged over 2.27-3.35 ms in one day's runs). With T1's
+ * median, T3 gave 0.886x to 1.63x in four runs of one afternoon.
  */
 async function million(engine: Engine, o: TargetsOptions, ctx: RunContext): Promise<TargetsResult['t3']> {
   ctx.progress?.(0, 1, `T3 building N=${o.bigN}`);
