@@ -40,7 +40,7 @@ export class HitEvents {
     this.step = world.stats.steps;
     if (!this.enabled) return;
     const e = world.contactEvents();
-    const hits = e.hitCount + e.segmentHitCount;
+    const hits = e.hitCount + e.segmentHitCount + e.wallHitCount;
     this.count = hits;
     this.totalHits += hits;
     this.grow(world.views().slotCount);
@@ -52,11 +52,16 @@ export class HitEvents {
       this.mark(world.slotOfHandle(e.hitA[k]), speed);
       this.mark(world.slotOfHandle(e.hitB[k]), speed);
     }
-    // Hits on segments ring the body; segments are drawn apart from bodies.
+    // Hits on segments and box walls ring the body; neither is drawn as a body.
     for (let k = 0; k < e.segmentHitCount; k++) {
       const speed = e.segmentHitSpeed[k];
       if (speed > fastest) fastest = speed;
       this.mark(world.slotOfHandle(e.segmentHitBody[k]), speed);
+    }
+    for (let k = 0; k < e.wallHitCount; k++) {
+      const speed = e.wallHitSpeed[k];
+      if (speed > fastest) fastest = speed;
+      this.mark(world.slotOfHandle(e.wallHitBody[k]), speed);
     }
     this.fastest = fastest;
     if (hits > 0) this.lastHitStep = this.step;

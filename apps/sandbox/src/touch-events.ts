@@ -32,9 +32,10 @@ export class TouchEvents {
     this.step = world.stats.steps;
     if (!this.enabled) return;
     const e = world.contactEvents();
-    // Touches between bodies and with segments alike: a ball landing on a funnel wall flashes too.
-    this.begins = e.beginCount + e.segmentBeginCount;
-    this.ends = e.endCount + e.segmentEndCount;
+    // Touches between bodies, with segments and with the box walls alike: a ball landing on a
+    // funnel wall or on the floor flashes too.
+    this.begins = e.beginCount + e.segmentBeginCount + e.wallBeginCount;
+    this.ends = e.endCount + e.segmentEndCount + e.wallEndCount;
     this.totalBegins += this.begins;
     const slots = world.views().slotCount;
     if (this.flashStep.length < slots) {
@@ -49,6 +50,7 @@ export class TouchEvents {
       this.flashStep[world.slotOfHandle(e.beginB[k])] = this.step;
     }
     for (let k = 0; k < e.segmentBeginCount; k++) this.flashStep[world.slotOfHandle(e.segmentBeginBody[k])] = this.step;
+    for (let k = 0; k < e.wallBeginCount; k++) this.flashStep[world.slotOfHandle(e.wallBeginBody[k])] = this.step;
   }
 
   /** Whether slot `s` began a touch in the last few steps. */

@@ -2,6 +2,7 @@ export { World } from './world.js';
 export type { CircleState, BodyViews, QueryOptions } from './world-types.js';
 export type { RayHit } from './query/queries.js';
 export type { ContactEventsView } from './store/contact-events.js';
+export { BoxWall } from './solver/box-walls.js';
 export type { WorldOptions, CircleOptions, SegmentOptions, Vector } from './options.js';
 export type { StepStats } from './step/stats.js';
 export type { BodyType } from './store/body-types.js';

@@ -58,8 +58,8 @@ export interface WorldOptions {
   /** Record begin and end touch events each step (see `world.contactEvents()`). Default false. */
   contactEvents?: boolean;
   /**
-   * Record a hit event for each collision of two bodies, or of a body and a segment, whose
-   * approach speed is at least this (swept impacts included; the box walls excluded). Default: none.
+   * Record a hit event for each collision of two bodies, of a body and a segment, or of a body and
+   * a box wall, whose approach speed is at least this (swept impacts included). Default: none.
    */
   hitEventThreshold?: number;
 }

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { World } from '../src/index.js';
+import { BoxWall, World } from '../src/index.js';
 
 function pairsOf(count: number, a: Readonly<Float64Array>, b: Readonly<Float64Array>): string[] {
   return Array.from({ length: count }, (_, k) => `${a[k]}-${b[k]}`);
@@ -149,6 +149,79 @@ describe('contact events', () => {
     world.step(1 / 60);
     collect();
     expect(ends).toEqual([`${ball}-${ground}`, `${ball}-${ground}`]);
+  });
+
+  it('a body hitting a box wall reports a wall hit, swept or not, naming the wall, with the approach speed', () => {
+    // A ball runs at the wall x = width, from half a step's travel away, at 40 units/s (4 a step: the walls stage) or 4,000 (400 a
+    // step; the static peg makes the continuous sweep run, and the sweep meets the wall first).
+    const run = (speed: number, peg: boolean) => {
+      const world = new World({ hitEventThreshold: 5, bounds: { width: 1000, height: 100 } });
+      if (peg) world.createCircle({ x: 20, y: 80, radius: 5, type: 'static' });
+      const ball = world.createCircle({ x: 1000 - 5 - speed * 0.1 * 0.5, y: 50, vx: speed, radius: 5 });
+      world.step(0.1);
+      const e = world.contactEvents();
+      const hits = Array.from({ length: e.wallHitCount }, (_, k) => [e.wallHitBody[k], e.wallHitWall[k], e.wallHitSpeed[k]]);
+      return { hits, other: e.hitCount + e.segmentHitCount, swept: world.stats.sweptBodies, ball, vx: world.getCircle(ball).vx };
+    };
+    for (const [speed, peg, swept] of [[40, false, 0], [4000, false, 0], [4000, true, 1]] as const) {
+      const r = run(speed, peg);
+      expect(r.swept, `${speed} units/s, peg ${peg}`).toBe(swept);
+      expect(r.other).toBe(0);
+      expect(r.hits).toHaveLength(1);
+      expect(r.hits[0].slice(0, 2)).toEqual([r.ball, BoxWall.maxX]);
+      expect(r.hits[0][2]).toBeCloseTo(speed, 9);
+      expect(r.vx).toBeLessThan(0);
+    }
+    // The other three walls, each by its number; below the threshold a bounce gives no hit.
+    const world = new World({ hitEventThreshold: 50, bounds: { width: 200, height: 100 } });
+    const left = world.createCircle({ x: 8, y: 50, vx: -60, radius: 5 });
+    const low = world.createCircle({ x: 100, y: 8, vy: -60, radius: 5 });
+    const high = world.createCircle({ x: 150, y: 92, vy: 60, radius: 5 });
+    world.createCircle({ x: 50, y: 8, vy: -40, radius: 5 });
+    world.step(0.1);
+    const e = world.contactEvents();
+    const hits = Array.from({ length: e.wallHitCount }, (_, k) => `${e.wallHitBody[k]}@${e.wallHitWall[k]}`);
+    expect(hits).toEqual([`${left}@${BoxWall.minX}`, `${low}@${BoxWall.minY}`, `${high}@${BoxWall.maxY}`]);
+  });
+
+  it('a body landing on the box floor begins touching it once, and ends when it leaves or is destroyed', () => {
+    const world = new World({ contactEvents: true, gravity: { x: 0, y: -100 }, bounds: { width: 100, height: 100 }, restitution: 0 });
+    const ball = world.createCircle({ x: 50, y: 40, radius: 5 });
+    const begins: string[] = [];
+    const ends: string[] = [];
+    const collect = () => {
+      const e = world.contactEvents();
+      begins.push(...pairsOf(e.wallBeginCount, e.wallBeginBody, e.wallBeginWall));
+      ends.push(...pairsOf(e.wallEndCount, e.wallEndBody, e.wallEndWall));
+    };
+    for (let s = 0; s < 240; s++) {
+      world.step(1 / 60);
+      collect();
+    }
+    const floor = `${ball}-${BoxWall.minY}`;
+    expect(begins).toEqual([floor]);
+    expect(ends).toEqual([]);
+    world.setVelocity(ball, 0, 60);
+    for (let s = 0; s < 120; s++) {
+      world.step(1 / 60);
+      collect();
+    }
+    expect(ends).toEqual([floor]);
+    expect(begins).toEqual([floor, floor]);
+    world.destroyBody(ball);
+    world.step(1 / 60);
+    collect();
+    expect(ends).toEqual([floor, floor]);
+  });
+
+  it('events do not change the bits: the walls stage that notes them bounces as the fused one does', async () => {
+    const { buildScene, buildWorld } = await import('@maxgrid/scenes');
+    const hash = (options: object) => {
+      const world = buildWorld(buildScene('seed-box', { n: 1500, seed: 5 }), options);
+      for (let s = 0; s < 120; s++) world.step(1 / 60);
+      return world.stateHash();
+    };
+    expect(hash({ contactEvents: true, hitEventThreshold: 10 })).toBe(hash({}));
   });
 
   it('events are off unless asked for', () => {

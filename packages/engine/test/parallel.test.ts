@@ -201,6 +201,26 @@ describe('parallel step', () => {
     });
   });
 
+  it('notes the same wall touches and hits on any worker count, and events leave the bits alone', async () => {
+    // With events, motion leaves the walls to a stage of their own, which notes them first.
+    const build = (events: boolean) => uniform(3000, events ? { contactEvents: true, hitEventThreshold: 20 } : {}, { seed: 2 });
+    const plain = await hashWith(build(false), 0, 40);
+    let serialLog = '';
+    for (const workers of [0, 2]) {
+      let log = '';
+      const note = (world: World) => {
+        if (world.stats.steps === 0) return;
+        const e = world.contactEvents();
+        for (let k = 0; k < e.wallHitCount; k++) log += `${e.wallHitBody[k]}@${e.wallHitWall[k]}:${e.wallHitSpeed[k]} `;
+        log += `| ${e.wallBeginCount}/${e.wallEndCount} `;
+      };
+      expect(await hashWith(build(true), workers, 40, note), `${workers} worker(s)`).toBe(plain);
+      if (workers === 0) serialLog = log;
+      else expect(log).toBe(serialLog);
+    }
+    expect(serialLog).toMatch(/@/);
+  });
+
   it('steps on after stopWorkers, and restarting gives the same bits', async () => {
     const serial = await hashWith(uniform(3000), 0, 40);
     const world = uniform(3000)();

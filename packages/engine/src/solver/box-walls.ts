@@ -2,6 +2,10 @@ import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { mixRestitution } from './restitution.js';
 import type { ContactBuffer } from '../store/contact-buffer.js';
+import type { ContactEvents } from '../store/contact-events.js';
+
+/** The box walls as events name them: the wall at x = 0, x = width, y = 0 and y = height. */
+export const BoxWall = { minX: 0, maxX: 1, minY: 2, maxY: 3 } as const;
 
 /** After this many bounces inside one step the rest of the path is folded in closed form. */
 const MAX_BOUNCES = 16;
@@ -53,6 +57,38 @@ export function bounceOffBox(
       vy[i] = folded[1];
     }
   }
+}
+
+/**
+ * For the events, before bounceOffBox and with its tests: each moving body whose centre lies
+ * within its radius of a wall is about to bounce, so it touches that wall this step; if it
+ * approaches at `hitThreshold` or faster, that is a wall hit. Only reads: the bounce itself stays
+ * the one loop (or kernel) that steps without events, so events never change the bits. Notes go
+ * in slot order, then BoxWall order, as the touch diff needs. Asleep bodies touch nothing, as with
+ * segments. A body fast enough to cross the box within one step is noted at the first wall only.
+ */
+export function noteWallContacts(bodies: BodyStore, width: number, height: number, events: ContactEvents, hitThreshold: number): void {
+  const { x, y, vx, vy, radius, type, asleep, slotCount } = bodies;
+  // As in the body kernel's moveInBox: most bodies lie farther than the largest radius from every
+  // wall, and are passed over reading only their position.
+  const reach = bodies.maxRadius();
+  for (let i = 0; i < slotCount; i++) {
+    const px = x[i];
+    const py = y[i];
+    if (px >= reach && px <= width - reach && py >= reach && py <= height - reach) continue;
+    const t = type[i];
+    if ((t !== TypeCode.dynamic && t !== TypeCode.kinematic) || asleep[i]) continue;
+    const r = radius[i];
+    if (px < r) noteWall(bodies, events, i, BoxWall.minX, -vx[i], hitThreshold);
+    else if (px > width - r) noteWall(bodies, events, i, BoxWall.maxX, vx[i], hitThreshold);
+    if (py < r) noteWall(bodies, events, i, BoxWall.minY, -vy[i], hitThreshold);
+    else if (py > height - r) noteWall(bodies, events, i, BoxWall.maxY, vy[i], hitThreshold);
+  }
+}
+
+function noteWall(bodies: BodyStore, events: ContactEvents, i: number, wall: number, approach: number, hitThreshold: number): void {
+  events.noteWallTouch(i, wall);
+  if (approach > 0 && approach >= hitThreshold) events.recordWallHit(bodies, i, wall, approach);
 }
 
 /**

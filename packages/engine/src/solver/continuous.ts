@@ -6,6 +6,7 @@ import { rayCircle } from '../query/ray-circle.js';
 import { rayCapsule } from '../query/ray-capsule.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
 import { mixRestitution } from './restitution.js';
+import { BoxWall } from './box-walls.js';
 import { grownCapacity, grow } from '../util/grow.js';
 
 const MAX_BOUNCES = 4;
@@ -40,6 +41,12 @@ function sweepWall(from: number, path: number, limit: number, inward: number): n
   if (gap <= 0) return 0;
   const t = gap / closing;
   return t <= 1 ? t : -1;
+}
+
+/** The BoxWall number of the wall whose inward normal is (nx, ny). */
+function wallOf(nx: number, ny: number): number {
+  if (nx !== 0) return nx > 0 ? BoxWall.minX : BoxWall.maxX;
+  return ny > 0 ? BoxWall.minY : BoxWall.maxY;
 }
 
 /**
@@ -218,11 +225,12 @@ export class ContinuousCollision {
       ny /= length;
       const vn = vx[i] * nx + vy[i] * ny;
       if (vn < 0) {
-        // Recorded as the discrete contacts record them: without this, the fastest impacts, the
-        // swept ones, went unreported. The box walls are not shapes with handles: no hit.
+        // Recorded as the discrete contacts and the walls stage record them: without this, the
+        // fastest impacts, the swept ones, went unreported.
         if (events !== null && -vn >= hitThreshold) {
           if (hitStatic >= 0) events.recordHit(bodies, Math.min(i, hitStatic), Math.max(i, hitStatic), -vn);
           else if (hitSegment >= 0) events.recordSegmentHit(bodies, i, segments, hitSegment, -vn);
+          else events.recordWallHit(bodies, i, wallOf(hitWallX, hitWallY), -vn);
         }
         const bounceE = -vn < restitutionThreshold ? 0 : e;
         vx[i] -= (1 + bounceE) * vn * nx;

@@ -7,7 +7,7 @@ import { NarrowPhase } from '../narrowphase/narrowphase.js';
 import { INTEGRATORS, type IntegratorName } from '../integrate/integrator.js';
 import { clearForces, needsGeneralMotion } from '../integrate/motion.js';
 import type { BodyKernel } from '../store/body-kernel.js';
-import { bounceOffBox, clampBodies, clampIntoBox } from '../solver/box-walls.js';
+import { bounceOffBox, clampBodies, clampIntoBox, noteWallContacts } from '../solver/box-walls.js';
 import { solveContacts, type SolverSettings } from '../solver/contact-solver.js';
 import { updateSleep } from '../solver/sleep.js';
 import { ContinuousCollision } from '../solver/continuous.js';
@@ -83,18 +83,20 @@ export class StepPipeline {
     const broad = parallel && this.broadPhase instanceof AutoBroadPhase ? this.broadPhase.select(bodies) : this.broadPhase;
     // Without sweeps, parallel motion bounces off the walls in the same pass as integration; and
     // in a box without holes, where the Max Grid spans the box whatever the positions, it also
-    // bins each body into the grid while the body is in cache.
-    const bouncedInMotion = parallel !== null && !sweep;
+    // bins each body into the grid while the body is in cache. With events, the walls stage runs
+    // apart, so that noteWallContacts sees each body between integration and its bounce.
+    const bouncedInMotion = parallel !== null && !sweep && events === null;
     const binInMotion = bouncedInMotion && box !== null && bodies.liveCount === bodies.slotCount && broad instanceof MaxGridBroadPhase;
     let grid = binInMotion ? (broad as MaxGridBroadPhase).layoutForThreads(bodies, parallel!.threads) : null;
     // A single-threaded world whose columns are in the body kernel does the same in one pass there.
-    const kernel = parallel === null && !sweep && box !== null && !needsGeneralMotion(bodies) ? bodies.kernel : null;
+    const kernel = parallel === null && !sweep && box !== null && events === null && !needsGeneralMotion(bodies) ? bodies.kernel : null;
     if (parallel) parallel.motion(this.motionSettings(dt), bouncedInMotion, grid, grid ? (broad as MaxGridBroadPhase).coordPad : 0);
     else if (kernel) this.moveInBox(kernel, box!, dt);
     else INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
 
     if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold, events, settings.solver.hitThreshold);
+    if (box && events) noteWallContacts(bodies, box.width, box.height, events, settings.solver.hitThreshold);
     if (box && !bouncedInMotion && kernel === null) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
     const t2 = nowMs();
 

@@ -2,7 +2,10 @@ import type { BodyStore } from './body-store.js';
 import type { SegmentStore } from './segment-store.js';
 import type { ContactBuffer } from './contact-buffer.js';
 import { grownCapacity, grow } from '../util/grow.js';
-import { PairDiff } from './pair-diff.js';
+import { PairDiff, type SlotOwner } from './pair-diff.js';
+
+/** The box walls have no handles: events name them by their BoxWall number. */
+const BOX_WALLS: SlotOwner = { handleOf: (wall) => wall };
 
 /** Event lists of the last step; the arrays are reused and replaced only when they grow. */
 export interface ContactEventsView {
@@ -39,17 +42,36 @@ export interface ContactEventsView {
   readonly segmentEndCount: number;
   readonly segmentEndBody: Readonly<Float64Array>;
   readonly segmentEndSegment: Readonly<Float64Array>;
+  /**
+   * Collisions of a body with a wall of the world's box at or above the threshold: body handle
+   * wallHitBody[k], wall wallHitWall[k] (a BoxWall number), approach speed wallHitSpeed[k], for
+   * k < wallHitCount.
+   */
+  readonly wallHitCount: number;
+  readonly wallHitBody: Readonly<Float64Array>;
+  readonly wallHitWall: Readonly<Float64Array>;
+  readonly wallHitSpeed: Readonly<Float64Array>;
+  /** A body and a box wall that started touching this step (body handle, BoxWall number). */
+  readonly wallBeginCount: number;
+  readonly wallBeginBody: Readonly<Float64Array>;
+  readonly wallBeginWall: Readonly<Float64Array>;
+  /** A body and a box wall that stopped touching (or whose body was destroyed). */
+  readonly wallEndCount: number;
+  readonly wallEndBody: Readonly<Float64Array>;
+  readonly wallEndWall: Readonly<Float64Array>;
 }
 
 /**
  * The step's events. Touches between bodies are the step's canonical contacts diffed against the
  * last step's; touches between bodies and segments, the pairs the segment solve found (body slots
- * ascending, then segment slots) diffed likewise (see PairDiff). Hits are recorded as the solvers
+ * ascending, then segment slots) diffed likewise (see PairDiff), and touches with the box walls,
+ * the (body, wall) pairs noteWallContacts found. Hits are recorded as the solvers, the walls stage
  * and the continuous sweep meet them.
  */
 export class ContactEvents implements ContactEventsView {
   private readonly touches = new PairDiff();
   private readonly segmentTouches = new PairDiff();
+  private readonly wallTouches = new PairDiff();
   hitCount = 0;
   hitA = new Float64Array(16);
   hitB = new Float64Array(16);
@@ -58,10 +80,17 @@ export class ContactEvents implements ContactEventsView {
   segmentHitBody = new Float64Array(16);
   segmentHitSegment = new Float64Array(16);
   segmentHitSpeed = new Float64Array(16);
+  wallHitCount = 0;
+  wallHitBody = new Float64Array(16);
+  wallHitWall = new Float64Array(16);
+  wallHitSpeed = new Float64Array(16);
   /** This step's touching body-segment pairs, in the order the segment solve found them. */
   private touchingBody = new Int32Array(16);
   private touchingSegment = new Int32Array(16);
   private touchingCount = 0;
+  private wallTouchBody = new Int32Array(16);
+  private wallTouchWall = new Int32Array(16);
+  private wallTouchCount = 0;
 
   get beginCount(): number {
     return this.touches.beginCount;
@@ -99,13 +128,45 @@ export class ContactEvents implements ContactEventsView {
   get segmentEndSegment(): Float64Array {
     return this.segmentTouches.endB;
   }
+  get wallBeginCount(): number {
+    return this.wallTouches.beginCount;
+  }
+  get wallBeginBody(): Float64Array {
+    return this.wallTouches.beginA;
+  }
+  get wallBeginWall(): Float64Array {
+    return this.wallTouches.beginB;
+  }
+  get wallEndCount(): number {
+    return this.wallTouches.endCount;
+  }
+  get wallEndBody(): Float64Array {
+    return this.wallTouches.endA;
+  }
+  get wallEndWall(): Float64Array {
+    return this.wallTouches.endB;
+  }
 
   clear(): void {
     this.touches.clear();
     this.segmentTouches.clear();
+    this.wallTouches.clear();
     this.hitCount = 0;
     this.segmentHitCount = 0;
+    this.wallHitCount = 0;
     this.touchingCount = 0;
+    this.wallTouchCount = 0;
+  }
+
+  /** The body in slot i touches box wall `wall` (called in ascending (i, wall) order). */
+  noteWallTouch(i: number, wall: number): void {
+    if (this.wallTouchCount === this.wallTouchBody.length) {
+      const capacity = grownCapacity(this.wallTouchBody.length, this.wallTouchCount + 1);
+      this.wallTouchBody = grow(this.wallTouchBody, capacity);
+      this.wallTouchWall = grow(this.wallTouchWall, capacity);
+    }
+    this.wallTouchBody[this.wallTouchCount] = i;
+    this.wallTouchWall[this.wallTouchCount++] = wall;
   }
 
   /** The body in slot i touches the segment in slot s (called in ascending (i, s) order). */
@@ -144,18 +205,33 @@ export class ContactEvents implements ContactEventsView {
     this.segmentHitSpeed[this.segmentHitCount++] = speed;
   }
 
-  /** Diffs the step's canonical contacts, and its body-segment touches, against the last step's. */
+  /** A hit of the body in slot i on box wall `wall`. */
+  recordWallHit(bodies: BodyStore, i: number, wall: number, speed: number): void {
+    if (this.wallHitCount === this.wallHitBody.length) {
+      const capacity = grownCapacity(this.wallHitBody.length, this.wallHitCount + 1);
+      this.wallHitBody = grow(this.wallHitBody, capacity);
+      this.wallHitWall = grow(this.wallHitWall, capacity);
+      this.wallHitSpeed = grow(this.wallHitSpeed, capacity);
+    }
+    this.wallHitBody[this.wallHitCount] = bodies.handleOf(i);
+    this.wallHitWall[this.wallHitCount] = wall;
+    this.wallHitSpeed[this.wallHitCount++] = speed;
+  }
+
+  /** Diffs the step's canonical contacts, its body-segment and its body-wall touches against the last step's. */
   update(bodies: BodyStore, contacts: ContactBuffer, segments: SegmentStore): void {
     this.touches.update(contacts.lo, contacts.hi, contacts.count, bodies, bodies);
     this.segmentTouches.update(this.touchingBody, this.touchingSegment, this.touchingCount, bodies, segments);
+    this.wallTouches.update(this.wallTouchBody, this.wallTouchWall, this.wallTouchCount, bodies, BOX_WALLS);
   }
 
   memoryBytes(): number {
     return (
       this.touches.memoryBytes() +
       this.segmentTouches.memoryBytes() +
-      (this.hitA.byteLength + this.segmentHitBody.byteLength) * 3 +
-      this.touchingBody.byteLength * 2
+      this.wallTouches.memoryBytes() +
+      (this.hitA.byteLength + this.segmentHitBody.byteLength + this.wallHitBody.byteLength) * 3 +
+      (this.touchingBody.byteLength + this.wallTouchBody.byteLength) * 2
     );
   }
 }
