@@ -8,7 +8,7 @@ import { MaxGridBroadPhase, type GridGeometry } from './broadphase/maxgrid.js';
 import { AutoBroadPhase } from './broadphase/auto.js';
 import { ContactEvents, type ContactEventsView } from './store/contact-events.js';
 import { Queries, type RayHit } from './query/queries.js';
-import { NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments } from './query/query-args.js';
+import { NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments, rayHitOutput, rayHitsOutput } from './query/query-args.js';
 import type { CircleState, BodyViews, QueryOptions } from './world-types.js';
 import * as analytics from './analytics.js';
 import { StepPipeline } from './step/pipeline.js';
@@ -382,18 +382,24 @@ export class World {
     return this.queries.box(this.geometryVersion, minX, minY, maxX, maxY, mask, queryOutput(out));
   }
 
-  /** The first circle the segment from (x1, y1) to (x2, y2) enters, or null. Circles containing (x1, y1) are ignored. */
-  rayCast(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS): RayHit | null {
+  /**
+   * The first circle the segment from (x1, y1) to (x2, y2) enters, or null. Circles containing
+   * (x1, y1) are ignored. Pass `out` to reuse a hit object: it is filled and returned.
+   */
+  rayCast(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: RayHit): RayHit | null {
     const mask = queryMask(options);
     rayArguments(x1, y1, x2, y2);
-    return this.queries.ray(this.geometryVersion, x1, y1, x2, y2, mask, false, [])[0] ?? null;
+    return this.queries.rayFirst(this.geometryVersion, x1, y1, x2, y2, mask, rayHitOutput(out));
   }
 
-  /** Every circle the segment enters, nearest first. */
-  rayCastAll(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS): RayHit[] {
+  /**
+   * Every circle the segment enters, nearest first. Pass `out` to reuse an array: the hit objects
+   * it holds are overwritten in place, it is cut to the number of hits and returned.
+   */
+  rayCastAll(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: RayHit[]): RayHit[] {
     const mask = queryMask(options);
     rayArguments(x1, y1, x2, y2);
-    return this.queries.ray(this.geometryVersion, x1, y1, x2, y2, mask, true, []);
+    return this.queries.rayAll(this.geometryVersion, x1, y1, x2, y2, mask, rayHitsOutput(out));
   }
 
   views(): BodyViews {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { World } from '../src/index.js';
+import { World, type RayHit } from '../src/index.js';
 
 const worldArbitrary = fc
   .array(
@@ -118,5 +118,37 @@ describe('queries agree with brute force', () => {
     expect(out).toEqual([]);
     expect(() => world.queryAABB(0, 0, 1, 1, {}, 'list' as unknown as number[])).toThrow(/out must be an array to fill, got string/);
     expect(() => world.queryPoint(0, 0, {}, { length: 0 } as unknown as number[])).toThrow(/out must be an array/);
+  });
+
+  it('ray casts fill the hit objects the caller reuses, with the same hits as fresh calls', () => {
+    // One array and one object across every case: they shrink, grow and get overwritten.
+    const out = [{ handle: -1, fraction: 9, x: 0, y: 0, normalX: 0, normalY: 0 }];
+    const single = { handle: -1, fraction: 9, x: 0, y: 0, normalX: 0, normalY: 0 };
+    fc.assert(
+      fc.property(worldArbitrary, coordinate, coordinate, coordinate, coordinate, (world, x1, y1, x2, y2) => {
+        const kept = [...out];
+        expect(world.rayCastAll(x1, y1, x2, y2, undefined, out)).toBe(out);
+        expect(out).toEqual(world.rayCastAll(x1, y1, x2, y2));
+        // The objects that were there hold hits again (sorted, so in another order), as far as there are hits.
+        const holding = new Set(out);
+        for (let k = 0; k < Math.min(kept.length, out.length); k++) expect(holding.has(kept[k])).toBe(true);
+        const fresh = world.rayCast(x1, y1, x2, y2, { mask: 1 });
+        const reused = world.rayCast(x1, y1, x2, y2, { mask: 1 }, single);
+        expect(reused).toEqual(fresh);
+        if (fresh) expect(reused).toBe(single);
+      }),
+      { numRuns: 200, seed: 4 },
+    );
+    // A crowd of nested circles in one cell, found far from the walk's order: ordered all the same.
+    const crowd = new World();
+    for (let k = 0; k < 300; k++) crowd.createCircle({ x: 500 + (k % 7), y: 500, radius: 1 + ((k * 37) % 300) });
+    const expected = bruteRay(crowd, 0, 500, 1000, 501).map((h) => h.handle);
+    expect(expected.length).toBeGreaterThan(250);
+    expect(crowd.rayCastAll(0, 500, 1000, 501, undefined, out).map((h) => h.handle)).toEqual(expected);
+    const world = new World();
+    world.createCircle({ x: 0, y: 0, radius: 5 });
+    expect(() => world.rayCast(-10, 0, 10, 0, {}, [] as unknown as RayHit)).toThrow(/out must be a writable hit object to fill, got an array/);
+    expect(() => world.rayCast(-10, 0, 10, 0, {}, Object.freeze({ ...single }))).toThrow(/out must be a writable hit object/);
+    expect(() => world.rayCastAll(-10, 0, 10, 0, {}, 'hits' as unknown as RayHit[])).toThrow(/out must be an array to fill, got string/);
   });
 });

@@ -71,13 +71,53 @@ export class Queries {
   }
 
   /**
+   * rayCast: the nearest hit (ties to the lower handle), written into `into` when given, else into
+   * a new object; null when the segment enters no circle. Candidates are compared as numbers, so
+   * only the answer is an object.
+   */
+  rayFirst(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, into: RayHit | null): RayHit | null {
+    this.hitCount = 0;
+    this.bestFraction = Infinity;
+    this.walk(version, x1, y1, x2, y2, mask, false);
+    if (this.bestFraction === Infinity) return null;
+    const t = this.bestFraction;
+    return writeHit(into ?? blankHit(), this.bodies, this.bestSlot, t, x1 + (x2 - x1) * t, y1 + (y2 - y1) * t);
+  }
+
+  /**
+   * rayCastAll: every hit, nearest first (ties by handle), in `out`. The objects already in `out`
+   * are overwritten in place; it is then cut to the number of hits, and the objects cut off are
+   * kept to fill later casts' arrays, so that a caller reusing one array stops making hit objects
+   * once it has held the most a cast found.
+   */
+  rayAll(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, out: RayHit[]): RayHit[] {
+    this.hitCount = 0;
+    this.hits = out;
+    this.walk(version, x1, y1, x2, y2, mask, true);
+    this.hits = NO_HITS;
+    for (let k = this.hitCount; k < out.length; k++) {
+      const spare = out[k];
+      if (typeof spare === 'object' && spare !== null) this.spareHits.push(spare);
+    }
+    out.length = this.hitCount;
+    return sortNearestFirst(out);
+  }
+
+  private hits: RayHit[] = NO_HITS;
+  private readonly spareHits: RayHit[] = [];
+  private hitCount = 0;
+  private bestFraction = Infinity;
+  private bestSlot = -1;
+  private bestHandle = -1;
+
+  /**
    * Walks the cells the segment crosses (Amanatides & Woo) over a grid widened by one cell on each
    * side, testing the 3x3 cells around each; a stamp per body avoids testing one twice. With
    * `all` false it stops once the next cell starts beyond the best hit found.
    */
-  ray(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, all: boolean, out: RayHit[]): RayHit[] {
-    if (!this.prepare(version)) return out;
-    const { grid, bodies } = this;
+  private walk(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, all: boolean): void {
+    if (!this.prepare(version)) return;
+    const { grid } = this;
     const dx = x2 - x1;
     const dy = y2 - y1;
     const cs = grid.cellSize;
@@ -88,10 +128,10 @@ export class Queries {
     const hiY = grid.originY + (grid.rows + 1) * cs;
     clip.enter = 0;
     clip.exit = 1;
-    if (!clipAxis(x1, dx, loX, hiX) || !clipAxis(y1, dy, loY, hiY)) return out;
+    if (!clipAxis(x1, dx, loX, hiX) || !clipAxis(y1, dy, loY, hiY)) return;
     const tEnter = clip.enter;
     const tExit = clip.exit;
-    if (tEnter > tExit) return out;
+    if (tEnter > tExit) return;
     this.epoch++;
     let column = clamp(grid.columnOf(x1 + dx * tEnter), -1, grid.columns);
     let row = clamp(grid.rowOf(y1 + dy * tEnter), -1, grid.rows);
@@ -103,13 +143,12 @@ export class Queries {
     const boundaryY = grid.originY + (row + (dy > 0 ? 1 : 0)) * cs;
     let nextX = dx === 0 ? Infinity : (boundaryX - x1) / dx;
     let nextY = dy === 0 ? Infinity : (boundaryY - y1) / dy;
-    let best = Infinity;
     let cellEnter = tEnter;
     const guard = grid.columns + grid.rows + 8;
     for (let visited = 0; visited <= guard * 2; visited++) {
       if (cellEnter > tExit) break;
-      if (!all && cellEnter > best) break;
-      best = Math.min(best, this.testWindow(column, row, x1, y1, dx, dy, mask, all, out));
+      if (!all && cellEnter > this.bestFraction) break;
+      this.testWindow(column, row, x1, y1, dx, dy, mask, all);
       if (nextX < nextY) {
         cellEnter = nextX;
         nextX += deltaX;
@@ -121,38 +160,33 @@ export class Queries {
       }
       if (column < -1 || column > grid.columns || row < -1 || row > grid.rows) break;
     }
-    out.sort((a, b) => a.fraction - b.fraction || a.handle - b.handle);
-    if (!all && out.length > 1) out.length = 1;
-    return out;
   }
 
-  private testWindow(column: number, row: number, x1: number, y1: number, dx: number, dy: number, mask: number, all: boolean, out: RayHit[]): number {
+  private testWindow(column: number, row: number, x1: number, y1: number, dx: number, dy: number, mask: number, all: boolean): void {
     const { grid, bodies, stamp, epoch } = this;
-    let best = Infinity;
     const c0 = Math.max(column - 1, 0);
     const c1 = Math.min(column + 1, grid.columns - 1);
-    if (c0 > c1) return best;
+    if (c0 > c1) return;
     for (let r = Math.max(row - 1, 0); r <= Math.min(row + 1, grid.rows - 1); r++) {
       for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
         if (stamp[m] === epoch) continue;
         stamp[m] = epoch;
         const slot = grid.sortedSlot[m];
         if ((bodies.category[slot] & mask) === 0) continue;
-        const cx = bodies.x[slot];
-        const cy = bodies.y[slot];
-        const r0 = bodies.radius[slot];
-        const t = rayCircle(x1, y1, dx, dy, cx, cy, r0);
+        const t = rayCircle(x1, y1, dx, dy, bodies.x[slot], bodies.y[slot], bodies.radius[slot]);
         if (t < 0) continue;
-        if (!all && out.length > 0 && t > out[0].fraction) continue;
-        const hx = x1 + dx * t;
-        const hy = y1 + dy * t;
-        const hit = { handle: bodies.handleOf(slot), fraction: t, x: hx, y: hy, normalX: (hx - cx) / r0, normalY: (hy - cy) / r0 };
-        if (all) out.push(hit);
-        else if (out.length === 0 || t < out[0].fraction || (t === out[0].fraction && hit.handle < out[0].handle)) out[0] = hit;
-        best = Math.min(best, t);
+        if (all) {
+          const k = this.hitCount++;
+          const reused = this.hits[k];
+          const hit = typeof reused === 'object' && reused !== null ? reused : (this.hits[k] = this.spareHits.pop() ?? blankHit());
+          writeHit(hit, bodies, slot, t, x1 + dx * t, y1 + dy * t);
+        } else if (t < this.bestFraction || (t === this.bestFraction && bodies.handleOf(slot) < this.bestHandle)) {
+          this.bestFraction = t;
+          this.bestSlot = slot;
+          this.bestHandle = bodies.handleOf(slot);
+        }
       }
     }
-    return best;
   }
 
   private prepare(version: number): boolean {
@@ -176,6 +210,49 @@ export class Queries {
 
 function clamp(v: number, lo: number, hi: number): number {
   return v < lo ? lo : v > hi ? hi : v;
+}
+
+const NO_HITS: RayHit[] = [];
+
+function blankHit(): RayHit {
+  return { handle: 0, fraction: 0, x: 0, y: 0, normalX: 0, normalY: 0 };
+}
+
+/** Fills `hit` for the circle in `slot`, entered at fraction t, at (hx, hy). */
+function writeHit(hit: RayHit, bodies: BodyStore, slot: number, t: number, hx: number, hy: number): RayHit {
+  const r = bodies.radius[slot];
+  hit.handle = bodies.handleOf(slot);
+  hit.fraction = t;
+  hit.x = hx;
+  hit.y = hy;
+  hit.normalX = (hx - bodies.x[slot]) / r;
+  hit.normalY = (hy - bodies.y[slot]) / r;
+  return hit;
+}
+
+function nearestFirst(a: RayHit, b: RayHit): number {
+  return a.fraction - b.fraction || a.handle - b.handle;
+}
+
+/**
+ * The walk finds hits nearly in order, out of order only within the 3x3 window of one cell, so
+ * insertion sorts them in about linear time without allocating; Array.prototype.sort copies the
+ * array and boxes each number its comparator returns. Should a crowd of overlapping circles make
+ * insertion slow (more than 8 moves a hit), it hands over to Array.prototype.sort.
+ */
+function sortNearestFirst(hits: RayHit[]): RayHit[] {
+  let budget = 8 * hits.length;
+  for (let k = 1; k < hits.length; k++) {
+    const hit = hits[k];
+    let j = k - 1;
+    for (; j >= 0 && (hits[j].fraction > hit.fraction || (hits[j].fraction === hit.fraction && hits[j].handle > hit.handle)); j--) {
+      hits[j + 1] = hits[j];
+      budget--;
+    }
+    hits[j + 1] = hit;
+    if (budget < 0) return hits.sort(nearestFirst);
+  }
+  return hits;
 }
 
 /** The handle order of query results; one function, not a closure per query. */

@@ -1,4 +1,5 @@
 import type { QueryOptions } from '../world-types.js';
+import type { RayHit } from './queries.js';
 import { finiteNumber, knownKeys, plainObject } from '../util/validate.js';
 import { layerBits } from '../options.js';
 
@@ -24,5 +25,21 @@ export function queryOutput<T>(out: T[] | undefined): T[] {
   if (out === undefined) return [];
   if (!Array.isArray(out)) throw new TypeError(`out must be an array to fill, got ${typeof out === 'object' ? String(out) : typeof out}`);
   out.length = 0;
+  return out;
+}
+
+/** rayCast's `out`: an object to fill, or null for a new one. */
+export function rayHitOutput(out: RayHit | undefined): RayHit | null {
+  if (out === undefined) return null;
+  if (typeof out !== 'object' || out === null || Array.isArray(out) || Object.isFrozen(out)) {
+    throw new TypeError(`out must be a writable hit object to fill, got ${Array.isArray(out) ? 'an array' : String(out)}`);
+  }
+  return out;
+}
+
+/** rayCastAll's `out`: an array whose hit objects are reused, else a new one. Not emptied: its objects are the point. */
+export function rayHitsOutput(out: RayHit[] | undefined): RayHit[] {
+  if (out === undefined) return [];
+  if (!Array.isArray(out)) throw new TypeError(`out must be an array to fill, got ${typeof out === 'object' ? String(out) : typeof out}`);
   return out;
 }
