@@ -165,7 +165,8 @@ function fold(p: f64, v: f64, lo: f64, hi: f64, e: f64): f64 {
  */
 export function solveContacts(
   xs: usize, ys: usize, vxs: usize, vys: usize, rs: usize, invMasses: usize, es: usize,
-  los: usize, his: usize, count: i32, restitutionThreshold: f64, width: f64, height: f64, escapes: usize,
+  los: usize, his: usize, count: i32, restitutionThreshold: f64, positionCorrection: f64, contactSlop: f64,
+  width: f64, height: f64, escapes: usize,
 ): i32 {
   let escaped: i32 = 0;
   for (let k = 0; k < count; k++) {
@@ -198,13 +199,16 @@ export function solveContacts(
       store<f64>(vxs + j, load<f64>(vxs + j) + pj * nx);
       store<f64>(vys + j, load<f64>(vys + j) + pj * ny);
     }
-    const overlap = reach - dist;
-    const si = (overlap * wi) / w;
-    const sj = (overlap * wj) / w;
-    store<f64>(xs + i, load<f64>(xs + i) - si * nx);
-    store<f64>(ys + i, load<f64>(ys + i) - si * ny);
-    store<f64>(xs + j, load<f64>(xs + j) + sj * nx);
-    store<f64>(ys + j, load<f64>(ys + j) + sj * ny);
+    const excess = reach - dist - contactSlop;
+    if (excess > 0) {
+      const push = excess * positionCorrection;
+      const si = (push * wi) / w;
+      const sj = (push * wj) / w;
+      store<f64>(xs + i, load<f64>(xs + i) - si * nx);
+      store<f64>(ys + i, load<f64>(ys + i) - si * ny);
+      store<f64>(xs + j, load<f64>(xs + j) + sj * nx);
+      store<f64>(ys + j, load<f64>(ys + j) + sj * ny);
+    }
     if (width > 0) {
       if (outside(i, xs, ys, rs, width, height)) {
         store<i32>(escapes + (<usize>escaped << 2), <i32>(i >> 3));

@@ -33,6 +33,18 @@ export interface WorldOptions {
    * lets bodies come to rest (and sleep) under gravity. Default 0, so elastic scenes stay exact.
    */
   restitutionThreshold?: number;
+  /**
+   * Fraction of each contact's overlap (beyond `contactSlop`) that separation removes in a step.
+   * Default 1: the report's mass-weighted separation, which removes it all at once. In piles under
+   * gravity that pushes bodies through each other and the pile boils; 0.2, Box2D's Baumgarte factor,
+   * with a small `contactSlop` lets it rest (docs/engine.md, "Piles"). In (0, 1].
+   */
+  positionCorrection?: number;
+  /**
+   * Overlap, in length units, that separation leaves in place, so that resting contacts persist
+   * from step to step and their impulses carry the load. Default 0. About 1 % of a radius suits piles.
+   */
+  contactSlop?: number;
   /** Default 'maxgrid'. */
   broadphase?: BroadPhaseName;
   /** Default 'semi-implicit-euler'; 'explicit-euler' is the report's exact method. */
@@ -93,6 +105,8 @@ export interface ResolvedWorldOptions {
   gravity: Vector;
   restitution: number;
   restitutionThreshold: number;
+  positionCorrection: number;
+  contactSlop: number;
   broadphase: BroadPhaseName;
   integrator: IntegratorName;
   sleeping: boolean;
@@ -121,6 +135,8 @@ const WORLD_KEYS = [
   'gravity',
   'restitution',
   'restitutionThreshold',
+  'positionCorrection',
+  'contactSlop',
   'broadphase',
   'integrator',
   'sleeping',
@@ -161,6 +177,8 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
     restitution: options.restitution === undefined ? 1 : nonNegativeNumber('restitution', options.restitution),
     restitutionThreshold:
       options.restitutionThreshold === undefined ? 0 : nonNegativeNumber('restitutionThreshold', options.restitutionThreshold),
+    positionCorrection: options.positionCorrection === undefined ? 1 : fraction('positionCorrection', options.positionCorrection),
+    contactSlop: options.contactSlop === undefined ? 0 : nonNegativeNumber('contactSlop', options.contactSlop),
     broadphase: options.broadphase === undefined ? 'maxgrid' : broadphaseName(options.broadphase),
     integrator: options.integrator === undefined ? 'semi-implicit-euler' : integratorName(options.integrator),
     sleeping: options.sleeping === undefined ? false : flag('sleeping', options.sleeping),
@@ -171,6 +189,13 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
       options.hitEventThreshold === undefined ? Infinity : nonNegativeNumber('hitEventThreshold', options.hitEventThreshold),
     continuous: options.continuous === undefined ? true : flag('continuous', options.continuous),
   };
+}
+
+/** A number in (0, 1]. */
+function fraction(field: string, value: unknown): number {
+  const n = finiteNumber(field, value);
+  if (!(n > 0 && n <= 1)) throw new RangeError(`${field} must be in (0, 1], got ${describeValue(value)}`);
+  return n;
 }
 
 export function flag(field: string, value: unknown): boolean {

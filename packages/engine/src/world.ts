@@ -75,7 +75,12 @@ export class World {
         gravity: resolved.gravity,
         box: resolved.bounds,
         wallRestitution: resolved.restitution,
-        solver: { restitutionThreshold: resolved.restitutionThreshold, hitThreshold: resolved.hitEventThreshold },
+        solver: {
+          restitutionThreshold: resolved.restitutionThreshold,
+          hitThreshold: resolved.hitEventThreshold,
+          positionCorrection: resolved.positionCorrection,
+          contactSlop: resolved.contactSlop,
+        },
         sleeping: { enabled: resolved.sleeping, speed: resolved.sleepSpeed, time: resolved.sleepTime },
         continuous: resolved.continuous,
       },

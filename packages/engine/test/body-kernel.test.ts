@@ -66,6 +66,7 @@ describe('body WebAssembly kernel', () => {
     ['one pass, explicit Euler', { continuous: false, integrator: 'explicit-euler', gravity: { x: 0, y: -98 } }],
     ['contact events (the solve falls back to TypeScript)', { contactEvents: true, gravity: { x: 0, y: -98 } }],
     ['sleeping', { sleeping: true, gravity: { x: 0, y: -98 }, restitution: 0.2 }],
+    ['partial position correction with slop', { gravity: { x: 0, y: -300 }, restitution: 0.2, positionCorrection: 0.2, contactSlop: 0.05 }],
   ];
   it.each(variants)('agrees with kinematic, static, mixed-restitution and folding bodies (past 16 bounces a step): %s', (_label, options) => {
     const build = () => busyWorld(options);

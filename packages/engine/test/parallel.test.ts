@@ -201,6 +201,10 @@ describe('parallel step', () => {
     });
   });
 
+  it('solves with partial position correction and a slop on every thread as serially (the settings reach the workers)', async () => {
+    await expectSameBits(() => buildWorld(buildScene('seed-box', { n: 2000, elasticity: 0 }), { broadphase: 'maxgrid', positionCorrection: 0.2, contactSlop: 0.05 }), 60);
+  });
+
   it('notes the same wall touches and hits on any worker count, and events leave the bits alone', async () => {
     // With events, motion leaves the walls to a stage of their own, which notes them first.
     const build = (events: boolean) => uniform(3000, events ? { contactEvents: true, hitEventThreshold: 20 } : {}, { seed: 2 });

@@ -45,6 +45,23 @@ describe('collision response (report 3.1.5, 5.10)', () => {
     expect(cb.x - 8).toBeCloseTo(2 * (1 / 5), 12);
   });
 
+  it('with positionCorrection and contactSlop, separation removes that fraction of the overlap beyond the slop', () => {
+    // Overlap 2 (gap -2), slop 0.5: 1.5 beyond it; a quarter of that, 0.375, split 4:1 by inverse mass.
+    const world = new World({ positionCorrection: 0.25, contactSlop: 0.5 });
+    const a = world.createCircle({ x: 0, y: 0, radius: 5, mass: 1 });
+    const b = world.createCircle({ x: 8, y: 0, radius: 5, mass: 4 });
+    world.step(0);
+    expect(-world.getCircle(a).x).toBeCloseTo(0.375 * (4 / 5), 12);
+    expect(world.getCircle(b).x - 8).toBeCloseTo(0.375 * (1 / 5), 12);
+    // Within the slop nothing moves, and the impulse still acts.
+    const inside = new World({ contactSlop: 0.5 });
+    const c = inside.createCircle({ x: 0, y: 0, vx: 3, radius: 5 });
+    const d = inside.createCircle({ x: 9.75, y: 0, radius: 5 });
+    inside.step(0);
+    expect(inside.getCircle(c)).toMatchObject({ x: 0, vx: 0 });
+    expect(inside.getCircle(d)).toMatchObject({ x: 9.75, vx: 3 });
+  });
+
   it('a static body is infinitely massive: the dynamic one reflects and takes the whole separation', () => {
     const { world, a, b } = pair({ typeB: 'static', gap: -2 });
     world.step(0);

@@ -184,6 +184,11 @@ describe('bad World options', () => {
     [{ integrator: 'verlet' }, RangeError, 'integrator', 'verlet'],
     [{ broadphase: 'bvh' }, RangeError, 'broadphase', 'bvh'],
     [{ gravty: { x: 0, y: 1 } }, TypeError, 'gravty', 'gravty'],
+    [{ positionCorrection: 0 }, RangeError, 'positionCorrection', '0'],
+    [{ positionCorrection: 1.5 }, RangeError, 'positionCorrection', '1.5'],
+    [{ positionCorrection: NaN }, TypeError, 'positionCorrection', 'NaN'],
+    [{ contactSlop: -0.01 }, RangeError, 'contactSlop', '-0.01'],
+    [{ contactSlop: '0.1' }, TypeError, 'contactSlop', '"0.1"'],
   ])('%o', (options, kind, field, shown) => {
     expect(() => new World(options as never)).toThrow(kind);
     expect(() => new World(options as never)).toThrow(field);

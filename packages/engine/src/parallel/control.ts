@@ -82,6 +82,8 @@ export const Param = {
   coordPad: 10,
   /** The largest radius of a live body (see BodyKernel.moveInBox). */
   maxRadius: 11,
+  positionCorrection: 12,
+  contactSlop: 13,
   length: 16,
 } as const;
 

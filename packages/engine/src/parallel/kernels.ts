@@ -43,7 +43,7 @@ export class ThreadKernels {
   private readonly escapes = new EscapeLog();
   private mark = new Int32Array(0);
   private stamp = 0;
-  private readonly solverSettings: SolverSettings = { restitutionThreshold: 0, hitThreshold: Infinity };
+  private readonly solverSettings: SolverSettings = { restitutionThreshold: 0, hitThreshold: Infinity, positionCorrection: 1, contactSlop: 0 };
   readonly contacts = new BoundedContactList(new Int32Array(0), new Int32Array(0));
   private readonly narrowPhase: NarrowPhase;
   private readonly sink: PairSink;
@@ -352,8 +352,10 @@ export class ThreadKernels {
     const from = this.shareFrom(total);
     const to = this.shareEnd(total);
     const settings = this.solverSettings;
-    settings.restitutionThreshold = this.params[Param.restitutionThreshold];
     const p = this.params;
+    settings.restitutionThreshold = p[Param.restitutionThreshold];
+    settings.positionCorrection = p[Param.positionCorrection];
+    settings.contactSlop = p[Param.contactSlop];
     this.escapes.reset(this.escaped, 2 * from, p[Param.boxWidth], p[Param.boxHeight]);
     c[Slot.deferredCount + this.index] = solveContactBlock(this.bodies, this.canonicalLo, this.canonicalHi, from, to, settings, this.mark, ++this.stamp, this.deferred, this.escapes);
     c[Slot.escapedCount + this.index] = this.escapes.count;

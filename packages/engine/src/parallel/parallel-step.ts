@@ -239,6 +239,8 @@ export class ParallelStep {
     c[Slot.contactTotal] = count;
     c[Slot.slotCount] = this.bodies.slotCount;
     this.params[Param.restitutionThreshold] = settings.restitutionThreshold;
+    this.params[Param.positionCorrection] = settings.positionCorrection;
+    this.params[Param.contactSlop] = settings.contactSlop;
     this.params[Param.boxWidth] = box?.width ?? 0;
     this.params[Param.boxHeight] = box?.height ?? 0;
     const k = this.caller;

@@ -12,6 +12,10 @@ import type { ContactEvents } from '../store/contact-events.js';
  *    equal and opposite, which conserves momentum and, at e = 1, kinetic energy;
  * 2. the overlap is removed by moving each body along the normal in proportion to its inverse mass,
  *    so the pair ends tangent and the heavier body moves less (the report's mass-weighted split).
+ *    With `positionCorrection` under 1 or a `contactSlop`, only that fraction of the overlap beyond
+ *    the slop is removed: the pair stays a little overlapped, so it is a contact again next step
+ *    and its impulse, not a jump in position, holds it up (Box2D's Baumgarte correction and slop).
+ *    At the defaults, 1 and 0, the arithmetic is the report's to the bit.
  *
  * Static and kinematic bodies have inverse mass 0: they neither change velocity nor move. Pairs
  * that are already separating keep their velocities, so a pair is never pulled back together.
@@ -26,6 +30,10 @@ export interface SolverSettings {
   restitutionThreshold: number;
   /** Approach speeds at or above this are recorded as hit events. */
   hitThreshold: number;
+  /** Fraction of the overlap beyond the slop removed per step, in (0, 1]. */
+  positionCorrection: number;
+  /** Overlap left in place. */
+  contactSlop: number;
 }
 
 /**
@@ -42,7 +50,7 @@ export function solveContacts(
   const { lo, hi, count } = contacts;
   // The kernel's loop is resolveContact without hit events or waking.
   if (bodies.kernel && events === null && bodies.sleepingCount === 0) {
-    bodies.kernel.solveContacts(lo, hi, count, settings.restitutionThreshold, box?.width ?? 0, box?.height ?? 0);
+    bodies.kernel.solveContacts(lo, hi, count, settings, box?.width ?? 0, box?.height ?? 0);
     return true;
   }
   for (let k = 0; k < count; k++) resolveContact(bodies, lo[k], hi[k], settings, events);
@@ -100,7 +108,7 @@ export function solveContactBlock(
     escapes.note(bodies, i, j);
   }
   if (kernel) {
-    kernel.solveQueue(settings.restitutionThreshold, escapes.width, escapes.height);
+    kernel.solveQueue(settings, escapes.width, escapes.height);
     escapes.noteSlots(kernel.escaped, kernel.escapedCount);
   }
   return waiting;
@@ -174,9 +182,12 @@ export function resolveContact(bodies: BodyStore, i: number, j: number, settings
     vx[j] += pj * nx;
     vy[j] += pj * ny;
   }
-  const overlap = reach - dist;
-  const si = (overlap * wi) / w;
-  const sj = (overlap * wj) / w;
+  // Subtracting 0 and multiplying by 1 leave a double unchanged: the defaults keep the report's bits.
+  const excess = reach - dist - settings.contactSlop;
+  if (!(excess > 0)) return;
+  const push = excess * settings.positionCorrection;
+  const si = (push * wi) / w;
+  const sj = (push * wj) / w;
   x[i] -= si * nx;
   y[i] -= si * ny;
   x[j] += sj * nx;

@@ -4,6 +4,7 @@ import type { ContactEvents } from '../store/contact-events.js';
 import { TypeCode } from '../store/body-types.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
 import { mixRestitution } from './restitution.js';
+import type { SolverSettings } from './contact-solver.js';
 
 const closest = { x: 0, y: 0 };
 
@@ -11,20 +12,21 @@ const closest = { x: 0, y: 0 };
  * Dynamic circles against static segments, after the circle-circle contacts. Bodies in slot order,
  * and for each its segments in slot order, so the result does not depend on the broad-phase.
  * A segment is a capsule of radius `thickness`; a touching circle is pushed out along the normal
- * from the closest point, and its velocity reflected with the pair's restitution if it approaches.
+ * from the closest point (by the settings' positionCorrection of its overlap beyond contactSlop,
+ * as between bodies), and its velocity reflected with the pair's restitution if it approaches.
  * A circle whose centre lies exactly on the segment is pushed along the segment's left normal.
  * With `events`, each touching pair is noted for the touch events, and an approach at least
- * `hitThreshold` fast is recorded as a segment hit.
+ * the settings' `hitThreshold` fast is recorded as a segment hit.
  * Returns the number of circle-segment contacts.
  */
 export function solveSegmentContacts(
   bodies: BodyStore,
   segments: SegmentStore,
   grid: SegmentGrid,
-  restitutionThreshold: number,
+  settings: SolverSettings,
   events: ContactEvents | null,
-  hitThreshold: number,
 ): number {
+  const { restitutionThreshold, hitThreshold, positionCorrection, contactSlop } = settings;
   if (segments.count === 0) return 0;
   const { x, y, vx, vy, radius, restitution, type, asleep, category, mask, slotCount } = bodies;
   let contacts = 0;
@@ -67,8 +69,11 @@ export function solveSegmentContacts(
         vx[i] -= (1 + e) * vn * nx;
         vy[i] -= (1 + e) * vn * ny;
       }
-      x[i] += (reach - dist) * nx;
-      y[i] += (reach - dist) * ny;
+      const excess = reach - dist - contactSlop;
+      if (excess > 0) {
+        x[i] += excess * positionCorrection * nx;
+        y[i] += excess * positionCorrection * ny;
+      }
     }
   }
   return contacts;

@@ -119,7 +119,7 @@ export class StepPipeline {
     const solvedInParallel = parallel !== null && events === null && bodies.sleepingCount === 0;
     if (solvedInParallel) parallel.solve(settings.solver, box);
     const escapesNoted = !solvedInParallel && solveContacts(bodies, contacts, events, settings.solver, box);
-    const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver.restitutionThreshold, events, settings.solver.hitThreshold);
+    const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver, events);
     const t4 = nowMs();
 
     if (box) {

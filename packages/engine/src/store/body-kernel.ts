@@ -38,8 +38,16 @@ interface BodyKernelExports {
   filtered(): number;
   solveContacts(
     xs: number, ys: number, vxs: number, vys: number, rs: number, invMasses: number, es: number,
-    los: number, his: number, count: number, restitutionThreshold: number, width: number, height: number, escapes: number,
+    los: number, his: number, count: number, restitutionThreshold: number, positionCorrection: number, contactSlop: number,
+    width: number, height: number, escapes: number,
   ): number;
+}
+
+/** The solver settings the kernel's contact solve reads (SolverSettings has them). */
+export interface KernelSolverSettings {
+  restitutionThreshold: number;
+  positionCorrection: number;
+  contactSlop: number;
 }
 
 /** The columns the kernel reads: the store's, under the same names. */
@@ -237,15 +245,17 @@ export class BodyKernel {
    * With a box (width > 0), notes the bodies separation left outside it in `escaped` (see
    * clampBodies).
    */
-  solveContacts(lo: Int32Array, hi: Int32Array, count: number, restitutionThreshold: number, width: number, height: number): void {
+  solveContacts(lo: Int32Array, hi: Int32Array, count: number, settings: KernelSolverSettings, width: number, height: number): void {
     const { scratchLo, scratchHi, scratchEscapes } = this;
+    const { restitutionThreshold, positionCorrection, contactSlop } = settings;
     this.escapedCount = 0;
     for (let from = 0; from < count; from += CONTACT_CHUNK) {
       const to = Math.min(count, from + CONTACT_CHUNK);
       this.copyToScratch(lo, hi, from, to);
       const escaped = this.fn.solveContacts(
         this.xAt, this.yAt, this.vxAt, this.vyAt, this.radiusAt, this.invMassAt, this.restitutionAt,
-        scratchLo.byteOffset, scratchHi.byteOffset, to - from, restitutionThreshold, width, height, scratchEscapes.byteOffset,
+        scratchLo.byteOffset, scratchHi.byteOffset, to - from, restitutionThreshold, positionCorrection, contactSlop,
+        width, height, scratchEscapes.byteOffset,
       );
       if (escaped > 0) this.keepEscapes(escaped);
     }
@@ -295,8 +305,8 @@ export class BodyKernel {
   }
 
   /** solveContacts over the queued contacts, in the order queued, then empties the queue. */
-  solveQueue(restitutionThreshold: number, width: number, height: number): void {
-    this.solveContacts(this.queueLo, this.queueHi, this.queued, restitutionThreshold, width, height);
+  solveQueue(settings: KernelSolverSettings, width: number, height: number): void {
+    this.solveContacts(this.queueLo, this.queueHi, this.queued, settings, width, height);
     this.queued = 0;
   }
 
