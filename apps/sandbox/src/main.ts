@@ -99,8 +99,8 @@ function rebuild(next: Settings): void {
 
 /** The choices that are not the scene: kept when a URL's scene falls back to its defaults. */
 function pickView(s: Settings): Partial<Settings> {
-  const { broadphase, integrator, renderer, grid, aabb, sleeping, soft, continuous, events, hits, layers, tool, threads } = s;
-  return { broadphase, integrator, renderer, grid, aabb, sleeping, soft, continuous, events, hits, layers, tool, threads };
+  const { broadphase, integrator, renderer, grid, aabb, sleeping, piles, continuous, events, hits, layers, tool, threads } = s;
+  return { broadphase, integrator, renderer, grid, aabb, sleeping, piles, continuous, events, hits, layers, tool, threads };
 }
 
 function threadsFailed(message: string): void {

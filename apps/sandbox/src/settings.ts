@@ -6,7 +6,7 @@ export { SCENE_CHOICES, clampNumber, sceneSpecs, type NumberSpec, type SceneChoi
 
 /**
  * Everything the URL reproduces. The scene, its seed and its parameters always rebuild the same
- * bodies; the world options (sleeping, soft contacts, continuous collision, events, hits, layers) are construction
+ * bodies; the world options (sleeping, pile solver, continuous collision, events, hits, layers) are construction
  * options, so they rebuild too; the rest choose how the world is stepped, drawn and probed.
  */
 export interface Settings {
@@ -20,8 +20,8 @@ export interface Settings {
   grid: boolean;
   aabb: boolean;
   sleeping: boolean;
-  /** Partial position correction with a slop (see buildSandboxWorld), so that piles rest. */
-  soft: boolean;
+  /** Solver iterations with partial position correction (see buildSandboxWorld), so that piles rest and keep their height. */
+  piles: boolean;
   continuous: boolean;
   events: boolean;
   /** Hit events: the world records collisions approaching faster than a threshold. */
@@ -42,7 +42,7 @@ export const TOOL_NAMES = ['drag', 'ray', 'point', 'box'] as const;
 export type ToolName = (typeof TOOL_NAMES)[number];
 
 /** World options that rebuild the scene, by URL key; `continuous` is on by default, as in the engine. */
-export const WORLD_TOGGLES = ['sleeping', 'soft', 'continuous', 'events', 'hits', 'layers'] as const;
+export const WORLD_TOGGLES = ['sleeping', 'piles', 'continuous', 'events', 'hits', 'layers'] as const;
 export type WorldToggle = (typeof WORLD_TOGGLES)[number];
 
 export const SEED_MAX = seedBoxParams.seed.max;
@@ -61,7 +61,7 @@ export function defaultSettings(scene: SceneChoice = 'seed-box'): Settings {
     grid: false,
     aabb: false,
     sleeping: false,
-    soft: false,
+    piles: false,
     continuous: true,
     events: false,
     hits: false,

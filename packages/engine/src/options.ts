@@ -45,6 +45,12 @@ export interface WorldOptions {
    * from step to step and their impulses carry the load. Default 0. About 1 % of a radius suits piles.
    */
   contactSlop?: number;
+  /**
+   * Passes of the contact solve. Default 1: the report's single pass of impulses and separation.
+   * More switch to sequential impulses with warm starting and the box walls as contacts (Box2D
+   * v2's solver), which hold piles up; see docs/engine.md, "Piles". An integer in [1, 64].
+   */
+  solverIterations?: number;
   /** Default 'maxgrid'. */
   broadphase?: BroadPhaseName;
   /** Default 'semi-implicit-euler'; 'explicit-euler' is the report's exact method. */
@@ -107,6 +113,7 @@ export interface ResolvedWorldOptions {
   restitutionThreshold: number;
   positionCorrection: number;
   contactSlop: number;
+  solverIterations: number;
   broadphase: BroadPhaseName;
   integrator: IntegratorName;
   sleeping: boolean;
@@ -137,6 +144,7 @@ const WORLD_KEYS = [
   'restitutionThreshold',
   'positionCorrection',
   'contactSlop',
+  'solverIterations',
   'broadphase',
   'integrator',
   'sleeping',
@@ -179,6 +187,7 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
       options.restitutionThreshold === undefined ? 0 : nonNegativeNumber('restitutionThreshold', options.restitutionThreshold),
     positionCorrection: options.positionCorrection === undefined ? 1 : fraction('positionCorrection', options.positionCorrection),
     contactSlop: options.contactSlop === undefined ? 0 : nonNegativeNumber('contactSlop', options.contactSlop),
+    solverIterations: options.solverIterations === undefined ? 1 : iterationCount('solverIterations', options.solverIterations),
     broadphase: options.broadphase === undefined ? 'maxgrid' : broadphaseName(options.broadphase),
     integrator: options.integrator === undefined ? 'semi-implicit-euler' : integratorName(options.integrator),
     sleeping: options.sleeping === undefined ? false : flag('sleeping', options.sleeping),
@@ -189,6 +198,16 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
       options.hitEventThreshold === undefined ? Infinity : nonNegativeNumber('hitEventThreshold', options.hitEventThreshold),
     continuous: options.continuous === undefined ? true : flag('continuous', options.continuous),
   };
+}
+
+export const MAX_SOLVER_ITERATIONS = 64;
+
+function iterationCount(field: string, value: unknown): number {
+  const n = finiteNumber(field, value);
+  if (!Number.isInteger(n) || n < 1 || n > MAX_SOLVER_ITERATIONS) {
+    throw new RangeError(`${field} must be an integer in [1, ${MAX_SOLVER_ITERATIONS}], got ${describeValue(value)}`);
+  }
+  return n;
 }
 
 /** A number in (0, 1]. */

@@ -80,6 +80,7 @@ export class World {
           hitThreshold: resolved.hitEventThreshold,
           positionCorrection: resolved.positionCorrection,
           contactSlop: resolved.contactSlop,
+          iterations: resolved.solverIterations,
         },
         sleeping: { enabled: resolved.sleeping, speed: resolved.sleepSpeed, time: resolved.sleepTime },
         continuous: resolved.continuous,

@@ -203,6 +203,8 @@ describe('parallel step', () => {
 
   it('solves with partial position correction and a slop on every thread as serially (the settings reach the workers)', async () => {
     await expectSameBits(() => buildWorld(buildScene('seed-box', { n: 2000, elasticity: 0 }), { broadphase: 'maxgrid', positionCorrection: 0.2, contactSlop: 0.05 }), 60);
+    // Solver iterations solve on the calling thread, between the parallel stages.
+    await expectSameBits(() => buildWorld(buildScene('seed-box', { n: 2000, elasticity: 0 }), { broadphase: 'maxgrid', positionCorrection: 0.2, contactSlop: 0.05, solverIterations: 4 }), 60);
   });
 
   it('notes the same wall touches and hits on any worker count, and events leave the bits alone', async () => {

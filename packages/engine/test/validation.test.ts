@@ -189,6 +189,9 @@ describe('bad World options', () => {
     [{ positionCorrection: NaN }, TypeError, 'positionCorrection', 'NaN'],
     [{ contactSlop: -0.01 }, RangeError, 'contactSlop', '-0.01'],
     [{ contactSlop: '0.1' }, TypeError, 'contactSlop', '"0.1"'],
+    [{ solverIterations: 0 }, RangeError, 'solverIterations', '0'],
+    [{ solverIterations: 2.5 }, RangeError, 'solverIterations', '2.5'],
+    [{ solverIterations: 65 }, RangeError, 'solverIterations', '65'],
   ])('%o', (options, kind, field, shown) => {
     expect(() => new World(options as never)).toThrow(kind);
     expect(() => new World(options as never)).toThrow(field);

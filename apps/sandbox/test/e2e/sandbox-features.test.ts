@@ -300,7 +300,7 @@ describe('2D sandbox: engine features', () => {
     await page.getByLabel(/^Fill /).fill('0.4');
     await page.getByLabel(/^Quantity /).fill('300');
     await page.getByLabel('Sleeping').check();
-    await page.getByLabel('Soft contacts').check();
+    await page.getByLabel('Pile solver').check();
     await page.getByLabel('Contact events').check();
     await page.getByLabel('Hit events').check();
     await page.getByLabel('Collision layers').check();
@@ -311,7 +311,7 @@ describe('2D sandbox: engine features', () => {
       scene: await page.getByLabel('Scene').inputValue(),
       labels: await page.locator('#scene-controls label').allInnerTexts(),
       toggles: await Promise.all(
-        ['Sleeping', 'Soft contacts', 'Continuous collision', 'Contact events', 'Hit events', 'Collision layers'].map((n) => page.getByLabel(n).isChecked()),
+        ['Sleeping', 'Pile solver', 'Continuous collision', 'Contact events', 'Hit events', 'Collision layers'].map((n) => page.getByLabel(n).isChecked()),
       ),
       tool: await page.getByLabel('Tool').inputValue(),
       bodies: await stat(page, 'bodies'),
@@ -324,7 +324,7 @@ describe('2D sandbox: engine features', () => {
     expect(url.searchParams.get('continuous')).toBe('0');
     expect(url.searchParams.get('fill')).toBe('0.4');
     expect(url.searchParams.get('hits')).toBe('1');
-    expect(url.searchParams.get('soft')).toBe('1');
+    expect(url.searchParams.get('piles')).toBe('1');
     await page.reload({ waitUntil: 'load' });
     await stepsPass(page, 2);
     expect(await read()).toEqual(before);

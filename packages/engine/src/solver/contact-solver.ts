@@ -34,6 +34,8 @@ export interface SolverSettings {
   positionCorrection: number;
   /** Overlap left in place. */
   contactSlop: number;
+  /** 1: this module's single pass; more: IterativeSolver. */
+  iterations: number;
 }
 
 /**

@@ -9,6 +9,7 @@ import { clearForces, needsGeneralMotion } from '../integrate/motion.js';
 import type { BodyKernel } from '../store/body-kernel.js';
 import { bounceOffBox, clampBodies, clampIntoBox, noteWallContacts } from '../solver/box-walls.js';
 import { solveContacts, type SolverSettings } from '../solver/contact-solver.js';
+import { IterativeSolver } from '../solver/iterative-solver.js';
 import { updateSleep } from '../solver/sleep.js';
 import { ContinuousCollision } from '../solver/continuous.js';
 import { solveSegmentContacts } from '../solver/segment-contacts.js';
@@ -35,7 +36,8 @@ export interface StepSettings {
  *   integrate -> boundary -> broad-phase -> narrow-phase -> solve -> correct -> report
  *
  * `boundary` is everything static: continuous sweeps against static shapes, then the box walls.
- * `solve` resolves circle-circle contacts, then circle-segment ones.
+ * `solve` resolves circle-circle contacts (in one pass, or with solverIterations above 1 in
+ * IterativeSolver's, on this thread), then circle-segment ones.
  *
  * The broad-phase hands candidates to the narrow-phase in chunks (see PairSink), so those two
  * interleave; their times are separated by timing the narrow-phase inside the sink. Everything
@@ -54,6 +56,7 @@ export class StepPipeline {
   readonly pairs: PairSink;
   readonly stats: StepStats = emptyStats();
   readonly continuous = new ContinuousCollision();
+  readonly iterative = new IterativeSolver();
   readonly segmentGrid = new SegmentGrid();
   parallel: ParallelStep | null = null;
 
@@ -116,9 +119,11 @@ export class StepPipeline {
     const t3 = nowMs();
 
     contacts.sortCanonical(bodies.slotCount);
-    const solvedInParallel = parallel !== null && events === null && bodies.sleepingCount === 0;
+    const iterative = settings.solver.iterations > 1;
+    const solvedInParallel = parallel !== null && events === null && bodies.sleepingCount === 0 && !iterative;
     if (solvedInParallel) parallel.solve(settings.solver, box);
-    const escapesNoted = !solvedInParallel && solveContacts(bodies, contacts, events, settings.solver, box);
+    if (iterative) this.iterative.solve(bodies, contacts, settings.solver, box, settings.solver.iterations, events);
+    const escapesNoted = !solvedInParallel && !iterative && solveContacts(bodies, contacts, events, settings.solver, box);
     const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver, events);
     const t4 = nowMs();
 
@@ -195,6 +200,7 @@ export class StepPipeline {
       this.contacts.memoryBytes() +
       this.pairs.memoryBytes() +
       this.continuous.memoryBytes() +
+      this.iterative.memoryBytes() +
       (this.events?.memoryBytes() ?? 0)
     );
   }
