@@ -77,6 +77,33 @@ describe('piles under gravity', () => {
     expect(motion(iterated)).toBeLessThan(3);
   });
 
+  it('the iterated solve holds circles up on segments too (the funnel scene)', () => {
+    // Circles pile up on the funnel's segments and pegs. Measured after 20 s: the single pass
+    // leaves 600 circles overlapping by a mean 24 % of their summed radii, 8 iterations at 0.2 by 6.5 %.
+    const meanOverlap = (options: WorldOptions) => {
+      const world = buildWorld(buildScene('funnel', { n: 600 }), options);
+      for (let s = 0; s < 1200; s++) world.step(1 / 60);
+      const v = world.views();
+      let sum = 0;
+      let pairs = 0;
+      for (let i = 0; i < v.slotCount; i++) {
+        for (let j = i + 1; j < v.slotCount; j++) {
+          const reach = v.radius[i] + v.radius[j];
+          const d = Math.hypot(v.x[j] - v.x[i], v.y[j] - v.y[i]);
+          if (d < reach) {
+            sum += (reach - d) / reach;
+            pairs++;
+          }
+        }
+      }
+      return { overlap: sum / pairs, segmentContacts: world.stats.segmentContacts };
+    };
+    const single = meanOverlap({});
+    const iterated = meanOverlap({ ...SOFT, solverIterations: 8 });
+    expect(iterated.segmentContacts).toBeGreaterThan(0);
+    expect(iterated.overlap).toBeLessThan(single.overlap / 2);
+  });
+
   it('iterated solves give the same bits on every broad-phase', () => {
     const hash = (broadphase: WorldOptions['broadphase']) => {
       const world = buildWorld(buildScene('seed-box', { n: 600, elasticity: 0.3, seed: 4 }), { ...SOFT, solverIterations: 3, broadphase });

@@ -5,6 +5,13 @@ import { TypeCode } from '../store/body-types.js';
 import { grownCapacity, grow } from '../util/grow.js';
 import { mixRestitution } from './restitution.js';
 import type { SolverSettings } from './contact-solver.js';
+import type { SegmentGrid, SegmentStore } from '../store/segment-store.js';
+import { closestOnSegment } from '../narrowphase/circle-segment.js';
+
+/** Static contacts are keyed by body, then by this: a box wall's side (0-3), or FIRST_SEGMENT + the segment's slot. */
+const FIRST_SEGMENT = 4;
+
+const closest = { x: 0, y: 0 };
 
 /**
  * The solve for `solverIterations` above 1: sequential impulses as in Box2D v2, for piles and
@@ -13,14 +20,16 @@ import type { SolverSettings } from './contact-solver.js';
  * - Every contact keeps an accumulated normal impulse, clamped at zero (contacts push, never
  *   pull), and each of `iterations` passes corrects it towards the velocity the contact should
  *   have: the restitution bounce of its approach speed at the start of the solve, or zero.
- * - The box walls take part as contacts: a moving body whose centre lies within its radius (and
- *   the slop) of a wall, where the walls stage left it, gets a wall contact. Without that, nothing
- *   in the solve carries a pile's weight down to the floor.
- * - Impulses are warm-started: a contact, or wall contact, that already existed in the last step
- *   starts from last step's impulse. Both lists are in ascending slot order, so one merge matches
- *   them, with no hashing (as PairDiff does for events).
+ * - The box walls and the static segments take part as static contacts: a moving body whose
+ *   centre lies within its radius (and the slop) of a wall, where the walls stage left it, or that
+ *   overlaps a segment's capsule. Without them, nothing in the solve carries a pile's weight down
+ *   to the floor or the ramp. Segment contacts are the ones solveSegmentContacts would find, in
+ *   the same order, with the same touch and hit events; that pass does not run after this one.
+ * - Impulses are warm-started: a contact, or static contact, that already existed in the last
+ *   step starts from last step's impulse. The lists are in ascending slot order, so one merge
+ *   matches them, with no hashing (as PairDiff does for events).
  * - Then `iterations` passes of separation, with the positionCorrection and contactSlop of the
- *   single pass, and the walls projected in the same loop.
+ *   single pass, the static contacts pushed out in the same loop.
  *
  * Serial, in the canonical order, so its bits do not depend on the broad-phase or thread count;
  * they differ from the single pass, which stays the default and the report's model.
@@ -34,32 +43,40 @@ export class IterativeSolver {
   private lastHi = new Int32Array(0);
   private lastImpulse = new Float64Array(0);
   private lastCount = 0;
-  // Wall contacts: body slot, wall (0: x = 0, 1: x = width, 2: y = 0, 3: y = height), impulse.
-  private wallBody = new Int32Array(16);
-  private wallSide = new Int32Array(16);
-  private wallImpulse = new Float64Array(16);
-  private wallCount = 0;
-  private lastWallBody = new Int32Array(0);
-  private lastWallSide = new Int32Array(0);
-  private lastWallImpulse = new Float64Array(0);
-  private lastWallCount = 0;
+  // Static contacts: body slot, key (a wall's side: 0 x = 0, 1 x = width, 2 y = 0, 3 y = height;
+  // or FIRST_SEGMENT + segment slot), normal towards the body, bounce, impulse.
+  private staticBody = new Int32Array(16);
+  private staticKey = new Int32Array(16);
+  private staticNormalX = new Float64Array(16);
+  private staticNormalY = new Float64Array(16);
+  private staticBounce = new Float64Array(16);
+  private staticImpulse = new Float64Array(16);
+  private staticCount = 0;
+  private lastStaticBody = new Int32Array(0);
+  private lastStaticKey = new Int32Array(0);
+  private lastStaticImpulse = new Float64Array(0);
+  private lastStaticCount = 0;
 
+  /** Returns the number of body-segment contacts, as solveSegmentContacts does. */
   solve(
     bodies: BodyStore,
     contacts: ContactBuffer,
+    segments: SegmentStore,
+    segmentGrid: SegmentGrid,
     settings: SolverSettings,
     box: { width: number; height: number } | null,
     iterations: number,
     events: ContactEvents | null,
-  ): void {
+  ): number {
     const { lo, hi, count } = contacts;
     this.ensure(count);
     this.prepare(bodies, lo, hi, count, settings, events);
-    this.findWalls(bodies, box, settings.contactSlop);
+    const segmentContacts = this.findStatic(bodies, box, segments, segmentGrid, settings, events);
     this.warmStart(bodies, lo, hi, count);
     for (let pass = 0; pass < iterations; pass++) this.velocityPass(bodies, lo, hi, count);
-    for (let pass = 0; pass < iterations; pass++) this.positionPass(bodies, lo, hi, count, settings, box);
+    for (let pass = 0; pass < iterations; pass++) this.positionPass(bodies, lo, hi, count, settings, box, segments);
     this.remember(lo, hi, count);
+    return segmentContacts;
   }
 
   /** Normals, and the bounce each contact should end with, from the state before any impulse. */
@@ -87,34 +104,76 @@ export class IterativeSolver {
     }
   }
 
-  /** Wall contacts of the moving bodies the walls stage left touching a wall, in slot then wall order. */
-  private findWalls(bodies: BodyStore, box: { width: number; height: number } | null, slop: number): void {
-    this.wallCount = 0;
-    if (!box) return;
-    const { x, y, radius, type, asleep, invMass, slotCount } = bodies;
+  /**
+   * Static contacts of the moving bodies, in slot order, each body's walls then its segments in
+   * slot order: the walls the walls stage left it touching, and the segments whose capsule it
+   * overlaps (noted for the events as solveSegmentContacts notes them). Returns the segment count.
+   */
+  private findStatic(
+    bodies: BodyStore,
+    box: { width: number; height: number } | null,
+    segments: SegmentStore,
+    grid: SegmentGrid,
+    settings: SolverSettings,
+    events: ContactEvents | null,
+  ): number {
+    this.staticCount = 0;
+    const { x, y, vx, vy, radius, restitution, type, asleep, category, mask, slotCount } = bodies;
+    const slop = settings.contactSlop;
     const reach = bodies.maxRadius() + slop;
+    const withSegments = segments.count > 0;
+    let segmentContacts = 0;
     for (let i = 0; i < slotCount; i++) {
+      if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
       const px = x[i];
       const py = y[i];
-      if (px > reach && px < box.width - reach && py > reach && py < box.height - reach) continue;
-      if (type[i] !== TypeCode.dynamic || asleep[i] || invMass[i] === 0) continue;
-      const r = radius[i] + slop;
-      if (px <= r) this.addWall(i, 0);
-      else if (px >= box.width - r) this.addWall(i, 1);
-      if (py <= r) this.addWall(i, 2);
-      else if (py >= box.height - r) this.addWall(i, 3);
+      const r = radius[i];
+      if (box && !(px > reach && px < box.width - reach && py > reach && py < box.height - reach)) {
+        if (px <= r + slop) this.addStatic(i, 0, 1, 0, 0);
+        else if (px >= box.width - r - slop) this.addStatic(i, 1, -1, 0, 0);
+        if (py <= r + slop) this.addStatic(i, 2, 0, 1, 0);
+        else if (py >= box.height - r - slop) this.addStatic(i, 3, 0, -1, 0);
+      }
+      if (!withSegments) continue;
+      const found = grid.query(segments, px - r, py - r, px + r, py + r);
+      for (let k = 0; k < found; k++) {
+        const s = grid.found[k];
+        if ((category[i] & segments.mask[s]) === 0 || (segments.category[s] & mask[i]) === 0) continue;
+        closestOnSegment(px, py, segments.ax[s], segments.ay[s], segments.bx[s], segments.by[s], closest);
+        const dx = px - closest.x;
+        const dy = py - closest.y;
+        const touch = r + segments.thickness[s];
+        const distSq = dx * dx + dy * dy;
+        if (distSq >= touch * touch) continue;
+        segmentContacts++;
+        events?.noteSegmentTouch(i, s);
+        const dist = Math.sqrt(distSq);
+        setSegmentNormal(dx, dy, dist, segments, s);
+        const vn = vx[i] * normal.x + vy[i] * normal.y;
+        if (vn < 0 && -vn >= settings.hitThreshold && events) events.recordSegmentHit(bodies, i, segments, s, -vn);
+        const bounce = vn < 0 && -vn >= settings.restitutionThreshold ? -mixRestitution(restitution[i], segments.restitution[s]) * vn : 0;
+        this.addStatic(i, FIRST_SEGMENT + s, normal.x, normal.y, bounce);
+      }
     }
+    return segmentContacts;
   }
 
-  private addWall(i: number, side: number): void {
-    if (this.wallCount === this.wallBody.length) {
-      const capacity = grownCapacity(this.wallBody.length, this.wallCount + 1);
-      this.wallBody = grow(this.wallBody, capacity);
-      this.wallSide = grow(this.wallSide, capacity);
-      this.wallImpulse = grow(this.wallImpulse, capacity);
+  private addStatic(i: number, key: number, nx: number, ny: number, bounce: number): void {
+    if (this.staticCount === this.staticBody.length) {
+      const capacity = grownCapacity(this.staticBody.length, this.staticCount + 1);
+      this.staticBody = grow(this.staticBody, capacity);
+      this.staticKey = grow(this.staticKey, capacity);
+      this.staticNormalX = grow(this.staticNormalX, capacity);
+      this.staticNormalY = grow(this.staticNormalY, capacity);
+      this.staticBounce = grow(this.staticBounce, capacity);
+      this.staticImpulse = grow(this.staticImpulse, capacity);
     }
-    this.wallBody[this.wallCount] = i;
-    this.wallSide[this.wallCount++] = side;
+    const k = this.staticCount++;
+    this.staticBody[k] = i;
+    this.staticKey[k] = key;
+    this.staticNormalX[k] = nx;
+    this.staticNormalY[k] = ny;
+    this.staticBounce[k] = bounce;
   }
 
   /** Starts each contact from last step's impulse where it existed then, and applies it. */
@@ -134,17 +193,17 @@ export class IterativeSolver {
       vx[j] += carried * invMass[j] * normalX[k];
       vy[j] += carried * invMass[j] * normalY[k];
     }
-    const { wallBody, wallSide, wallImpulse, wallCount, lastWallBody, lastWallSide, lastWallImpulse, lastWallCount } = this;
+    const { staticBody, staticKey, staticNormalX, staticNormalY, staticImpulse, staticCount, lastStaticBody, lastStaticKey, lastStaticImpulse, lastStaticCount } = this;
     let q = 0;
-    for (let w = 0; w < wallCount; w++) {
-      const i = wallBody[w];
-      const side = wallSide[w];
-      while (q < lastWallCount && (lastWallBody[q] < i || (lastWallBody[q] === i && lastWallSide[q] < side))) q++;
-      const carried = q < lastWallCount && lastWallBody[q] === i && lastWallSide[q] === side ? lastWallImpulse[q] : 0;
-      wallImpulse[w] = carried;
+    for (let c = 0; c < staticCount; c++) {
+      const i = staticBody[c];
+      const key = staticKey[c];
+      while (q < lastStaticCount && (lastStaticBody[q] < i || (lastStaticBody[q] === i && lastStaticKey[q] < key))) q++;
+      const carried = q < lastStaticCount && lastStaticBody[q] === i && lastStaticKey[q] === key ? lastStaticImpulse[q] : 0;
+      staticImpulse[c] = carried;
       if (carried === 0) continue;
-      if (side < 2) vx[i] += carried * invMass[i] * inward(side);
-      else vy[i] += carried * invMass[i] * inward(side);
+      vx[i] += carried * invMass[i] * staticNormalX[c];
+      vy[i] += carried * invMass[i] * staticNormalY[c];
     }
   }
 
@@ -170,23 +229,24 @@ export class IterativeSolver {
       vx[j] += delta * wj * nx;
       vy[j] += delta * wj * ny;
     }
-    const { wallBody, wallSide, wallImpulse, wallCount } = this;
-    for (let w = 0; w < wallCount; w++) {
-      const i = wallBody[w];
-      const side = wallSide[w];
-      const n = inward(side);
+    const { staticBody, staticNormalX, staticNormalY, staticBounce, staticImpulse, staticCount } = this;
+    for (let c = 0; c < staticCount; c++) {
+      const i = staticBody[c];
       const wi = invMass[i];
-      // Speed away from the wall; the walls stage has already bounced it, so the target is 0.
-      const vn = (side < 2 ? vx[i] : vy[i]) * n;
-      const total = Math.max(0, wallImpulse[w] - vn / wi);
-      const delta = total - wallImpulse[w];
-      wallImpulse[w] = total;
-      if (side < 2) vx[i] += delta * wi * n;
-      else vy[i] += delta * wi * n;
+      const nx = staticNormalX[c];
+      const ny = staticNormalY[c];
+      // Speed away from the wall or segment. The walls stage has bounced the body already, so a
+      // wall's bounce is 0; a segment's is its restitution's.
+      const vn = vx[i] * nx + vy[i] * ny;
+      const total = Math.max(0, staticImpulse[c] + (staticBounce[c] - vn) / wi);
+      const delta = total - staticImpulse[c];
+      staticImpulse[c] = total;
+      vx[i] += delta * wi * nx;
+      vy[i] += delta * wi * ny;
     }
   }
 
-  /** One pass of separation (the single pass's, without its impulse), with the walls projected. */
+  /** One pass of separation (the single pass's, without its impulse), then the static contacts'. */
   private positionPass(
     bodies: BodyStore,
     lo: Int32Array,
@@ -194,6 +254,7 @@ export class IterativeSolver {
     count: number,
     settings: SolverSettings,
     box: { width: number; height: number } | null,
+    segments: SegmentStore,
   ): void {
     const { x, y, radius, invMass } = bodies;
     const { positionCorrection, contactSlop } = settings;
@@ -217,15 +278,29 @@ export class IterativeSolver {
       x[j] += ((push * wj) / w) * nx;
       y[j] += ((push * wj) / w) * ny;
     }
-    if (!box) return;
-    const { wallBody, wallCount } = this;
-    for (let w = 0; w < wallCount; w++) {
-      const i = wallBody[w];
+    const { staticBody, staticKey, staticCount } = this;
+    for (let c = 0; c < staticCount; c++) {
+      const i = staticBody[c];
+      const key = staticKey[c];
       const r = radius[i];
-      if (x[i] < r) x[i] = r;
-      else if (x[i] > box.width - r) x[i] = box.width - r;
-      if (y[i] < r) y[i] = r;
-      else if (y[i] > box.height - r) y[i] = box.height - r;
+      if (key < FIRST_SEGMENT) {
+        // A wall: projected back onto it, as the correct stage would.
+        if (key === 0 && x[i] < r) x[i] = r;
+        else if (key === 1 && x[i] > box!.width - r) x[i] = box!.width - r;
+        else if (key === 2 && y[i] < r) y[i] = r;
+        else if (key === 3 && y[i] > box!.height - r) y[i] = box!.height - r;
+        continue;
+      }
+      const s = key - FIRST_SEGMENT;
+      closestOnSegment(x[i], y[i], segments.ax[s], segments.ay[s], segments.bx[s], segments.by[s], closest);
+      const dx = x[i] - closest.x;
+      const dy = y[i] - closest.y;
+      const dist = Math.sqrt(dx * dx + dy * dy);
+      const excess = r + segments.thickness[s] - dist - contactSlop;
+      if (!(excess > 0)) continue;
+      setSegmentNormal(dx, dy, dist, segments, s);
+      x[i] += excess * positionCorrection * normal.x;
+      y[i] += excess * positionCorrection * normal.y;
     }
   }
 
@@ -244,18 +319,18 @@ export class IterativeSolver {
       this.lastImpulse[k] = this.impulse[k];
     }
     this.lastCount = count;
-    if (this.lastWallBody.length < this.wallCount) {
-      const capacity = grownCapacity(this.lastWallBody.length, this.wallCount);
-      this.lastWallBody = new Int32Array(capacity);
-      this.lastWallSide = new Int32Array(capacity);
-      this.lastWallImpulse = new Float64Array(capacity);
+    if (this.lastStaticBody.length < this.staticCount) {
+      const capacity = grownCapacity(this.lastStaticBody.length, this.staticCount);
+      this.lastStaticBody = new Int32Array(capacity);
+      this.lastStaticKey = new Int32Array(capacity);
+      this.lastStaticImpulse = new Float64Array(capacity);
     }
-    for (let w = 0; w < this.wallCount; w++) {
-      this.lastWallBody[w] = this.wallBody[w];
-      this.lastWallSide[w] = this.wallSide[w];
-      this.lastWallImpulse[w] = this.wallImpulse[w];
+    for (let c = 0; c < this.staticCount; c++) {
+      this.lastStaticBody[c] = this.staticBody[c];
+      this.lastStaticKey[c] = this.staticKey[c];
+      this.lastStaticImpulse[c] = this.staticImpulse[c];
     }
-    this.lastWallCount = this.wallCount;
+    this.lastStaticCount = this.staticCount;
   }
 
   private ensure(count: number): void {
@@ -268,13 +343,28 @@ export class IterativeSolver {
   }
 
   memoryBytes(): number {
-    // Four float64 columns per contact, two int32 and a float64 per remembered contact, and the
-    // same two int32 and a float64 for each wall contact, current and remembered.
-    return this.impulse.length * 32 + this.lastImpulse.length * 16 + (this.wallBody.length + this.lastWallBody.length) * 16;
+    // Four float64 columns per contact, two int32 and a float64 per remembered contact; per static
+    // contact two int32 and four float64, and two int32 and a float64 remembered.
+    return this.impulse.length * 32 + this.lastImpulse.length * 16 + this.staticBody.length * 40 + this.lastStaticBody.length * 16;
   }
 }
 
-/** +1 for the low wall of an axis (the body must move up from it), -1 for the high one. */
-function inward(side: number): number {
-  return (side & 1) === 0 ? 1 : -1;
+/** The unit normal from a segment's closest point towards a body (setSegmentNormal's result). */
+const normal = { x: 0, y: 0 };
+
+/**
+ * As in solveSegmentContacts: along (dx, dy), or for a centre exactly on the segment along its
+ * left normal.
+ */
+function setSegmentNormal(dx: number, dy: number, dist: number, segments: SegmentStore, s: number): void {
+  if (dist > 0) {
+    normal.x = dx / dist;
+    normal.y = dy / dist;
+    return;
+  }
+  const ex = segments.bx[s] - segments.ax[s];
+  const ey = segments.by[s] - segments.ay[s];
+  const length = Math.sqrt(ex * ex + ey * ey);
+  normal.x = length > 0 ? -ey / length : 1;
+  normal.y = length > 0 ? ex / length : 0;
 }

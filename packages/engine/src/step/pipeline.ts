@@ -36,8 +36,8 @@ export interface StepSettings {
  *   integrate -> boundary -> broad-phase -> narrow-phase -> solve -> correct -> report
  *
  * `boundary` is everything static: continuous sweeps against static shapes, then the box walls.
- * `solve` resolves circle-circle contacts (in one pass, or with solverIterations above 1 in
- * IterativeSolver's, on this thread), then circle-segment ones.
+ * `solve` resolves circle-circle contacts, then circle-segment ones, in one pass; or with
+ * solverIterations above 1 both together in IterativeSolver's passes, on this thread.
  *
  * The broad-phase hands candidates to the narrow-phase in chunks (see PairSink), so those two
  * interleave; their times are separated by timing the narrow-phase inside the sink. Everything
@@ -122,9 +122,11 @@ export class StepPipeline {
     const iterative = settings.solver.iterations > 1;
     const solvedInParallel = parallel !== null && events === null && bodies.sleepingCount === 0 && !iterative;
     if (solvedInParallel) parallel.solve(settings.solver, box);
-    if (iterative) this.iterative.solve(bodies, contacts, settings.solver, box, settings.solver.iterations, events);
     const escapesNoted = !solvedInParallel && !iterative && solveContacts(bodies, contacts, events, settings.solver, box);
-    const segmentContacts = solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver, events);
+    // The iterated solve takes the segments in with the circles; the single pass does them after.
+    const segmentContacts = iterative
+      ? this.iterative.solve(bodies, contacts, this.segments, this.segmentGrid, settings.solver, box, settings.solver.iterations, events)
+      : solveSegmentContacts(bodies, this.segments, this.segmentGrid, settings.solver, events);
     const t4 = nowMs();
 
     if (box) {
