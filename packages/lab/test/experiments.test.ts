@@ -6,6 +6,7 @@ import type { RunContext } from '../src/experiments/common.js';
 import { spread } from '../src/experiments/common.js';
 import { EXPERIMENTS, energy, falsePositives, sapSleep, scale, stepTime, targets } from '../src/experiments/registry.js';
 import { cBaseline } from '../src/node/native.js';
+import { measureHostScaling } from '../src/node/host-scaling.js';
 import { renderSvg } from '../src/report/render.js';
 import { htmlReport, tablesFor } from '../src/report/html.js';
 import { markdownTable } from '../src/report/tables.js';
@@ -163,7 +164,14 @@ describe('targets', () => {
   it('measures T1, T2, T3, T4, T5 on small sizes, records T6 skipped with its reason; JSON validates', async () => {
     const options = { ...targets.options('quick', {}), n: 1500, bigN: 4000, rounds: 1, stepsPerRound: 1, warmupSteps: 1, bigSteps: 1, bigWarmupSteps: 0, parallelSteps: 3 };
     // The browser is left out here (Chromium start-up is slow); the lab's e2e test drives the page hook T6 uses.
-    const host = { cBaseline, browser: async () => 'no browser in this test', sandbox: async () => 'no browser in this test' };
+    // A small host-scaling probe: the figures only need to exist and be plausible here.
+    const probe = { iterations: 2_000_000, doubles: 1 << 20, passes: 1, rounds: 1 };
+    const host = {
+      cBaseline,
+      browser: async () => 'no browser in this test',
+      sandbox: async () => 'no browser in this test',
+      hostScaling: () => measureHostScaling(probe),
+    };
     const result = await targets.run(options, { ...ctx(targets.defaultEngines), host });
     expectValid(targets.schema, result);
     expect(result.t1.timings.map((t) => t.engine)).toEqual(targets.defaultEngines);
@@ -176,6 +184,13 @@ describe('targets', () => {
     expect(Object.keys(result.t5.mixedOverUniform)).toEqual(['maxgrid:maxgrid', 'maxgrid:hgrid', 'maxgrid:auto']);
     // T4 steps a world on 1 thread and on 2: the bits must agree.
     expect(result.t4).toMatchObject({ status: 'ok', n: 4000, threads: 2, steps: 3, hashesMatch: true });
+    // Two threads can at best halve the time of twice the work: the ratios lie in (0, 2.5).
+    for (const scaling of [result.t4.hostScalingBefore!, result.t4.hostScalingAfter!]) {
+      for (const ratio of [scaling.compute, scaling.memory]) {
+        expect(ratio).toBeGreaterThan(0);
+        expect(ratio).toBeLessThan(2.5);
+      }
+    }
     expect(result.notMeasured.map((x) => x.target.split(' ')[0])).toEqual(['T7']);
     expectPublishable('targets', result);
   });

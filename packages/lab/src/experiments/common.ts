@@ -113,7 +113,24 @@ export interface Host {
   cBaseline(): Promise<CBaseline | string>;
   browser(): Promise<BrowserHost | string>;
   sandbox(): Promise<SandboxHost | string>;
+  /** Node's host-scaling probe (node/host-scaling.ts), for T4's context; absent where not run. */
+  hostScaling?(): Promise<HostScaling>;
 }
+
+/** Twice the work on 2 threads against once on 1, by time: 2 is perfect, 1 no gain. */
+export interface HostScaling {
+  /** A compute-bound loop. */
+  compute: number;
+  /** Streaming 128 MiB per thread, past the shared cache. */
+  memory: number;
+}
+
+export const hostScalingSchema = {
+  type: 'object',
+  required: ['compute', 'memory'],
+  properties: { compute: { type: 'number', exclusiveMinimum: 0 }, memory: { type: 'number', exclusiveMinimum: 0 } },
+  additionalProperties: false,
+} as const;
 
 export function makeMeta(experiment: string, ctx: RunContext, options: object): Meta {
   return {

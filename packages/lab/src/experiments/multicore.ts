@@ -1,11 +1,13 @@
 import { buildScene, buildWorld } from '@maxgrid/scenes';
-import { spread, spreadSchema, now, type RunContext, type Spread } from './common.js';
+import { hostScalingSchema, spread, spreadSchema, now, type HostScaling, type RunContext, type Spread } from './common.js';
 
 /**
  * T4: the same world stepped on one thread and on `threads` threads (world.startWorkers), both
  * built from one seeded scene, steps alternating between the two so that machine noise hits both
  * alike; medians per step, their ratio, and the state hashes after equal step counts (the
- * parallel step must give the same bits).
+ * parallel step must give the same bits). Where the host can, its own 2-thread scaling is
+ * probed just before and just after (compute-bound and memory-bound kernels, Host.hostScaling):
+ * on a shared machine the memory figure moves with other tenants, and so does T4.
  */
 export interface MultiCoreOptions {
   n: number;
@@ -26,11 +28,15 @@ export interface MultiCoreResult {
   speedup?: number;
   parallelStepsPerSecond?: number;
   hashesMatch?: boolean;
+  hostScalingBefore?: HostScaling;
+  hostScalingAfter?: HostScaling;
 }
 
 export async function multiCore(o: MultiCoreOptions, ctx: RunContext): Promise<MultiCoreResult> {
   const isNode = typeof (globalThis as { process?: { versions?: { node?: string } } }).process?.versions?.node === 'string';
   if (!isNode) return { status: 'skipped', reason: 'measured from Node (worker_threads); the lab page is not cross-origin isolated' };
+  ctx.progress?.(0, 1, 'T4 probing the host: 2-thread scaling of compute and memory');
+  const hostScalingBefore = await ctx.host?.hostScaling?.();
   ctx.progress?.(0, 1, `T4 building two worlds of N=${o.n}`);
   const scene = buildScene('uniform', { n: o.n, seed: 1 });
   const serial = buildWorld(scene, { broadphase: 'maxgrid' });
@@ -57,6 +63,10 @@ export async function multiCore(o: MultiCoreOptions, ctx: RunContext): Promise<M
     }
     const serialMs = spread(serialTimes);
     const parallelMs = spread(parallelTimes);
+    const hashesMatch = serial.stateHash() === parallel.stateHash();
+    parallel.stopWorkers();
+    ctx.progress?.(o.steps, o.steps, 'T4 probing the host again');
+    const hostScalingAfter = await ctx.host?.hostScaling?.();
     return {
       status: 'ok',
       n: o.n,
@@ -66,7 +76,8 @@ export async function multiCore(o: MultiCoreOptions, ctx: RunContext): Promise<M
       parallelMs,
       speedup: serialMs.median / parallelMs.median,
       parallelStepsPerSecond: 1000 / parallelMs.median,
-      hashesMatch: serial.stateHash() === parallel.stateHash(),
+      hashesMatch,
+      ...(hostScalingBefore && hostScalingAfter ? { hostScalingBefore, hostScalingAfter } : {}),
     };
   } finally {
     parallel.stopWorkers();
@@ -87,6 +98,8 @@ export const multiCoreSchema = {
     speedup: { type: 'number', exclusiveMinimum: 0 },
     parallelStepsPerSecond: { type: 'number', exclusiveMinimum: 0 },
     hashesMatch: { type: 'boolean' },
+    hostScalingBefore: hostScalingSchema,
+    hostScalingAfter: hostScalingSchema,
   },
   additionalProperties: false,
 } as const;

@@ -22,6 +22,11 @@ export function targetsCsv(r: TargetsResult): string {
     add('T4', `median step 1 thread N=${r.t4.n}`, 'maxgrid:maxgrid', r.t4.serialMs!.median, 'ms');
     add('T4', `median step ${r.t4.threads} threads N=${r.t4.n}`, 'maxgrid:maxgrid', r.t4.parallelMs!.median, 'ms');
     add('T4', 'speed-up', 'ratio', r.t4.speedup, 'x');
+    for (const [when, scaling] of [['before', r.t4.hostScalingBefore], ['after', r.t4.hostScalingAfter]] as const) {
+      if (!scaling) continue;
+      add('T4', `host 2-thread scaling, compute, ${when}`, 'host', scaling.compute, 'x');
+      add('T4', `host 2-thread scaling, memory, ${when}`, 'host', scaling.memory, 'x');
+    }
   } else add('T4', 'status', 'skipped', r.t4.reason, '');
   for (const t of r.t5.timings) add('T5', `median step ${t.scene} N=${t.n}`, t.engine, t.ms.median, 'ms');
   for (const [id, q] of Object.entries(r.t5.mixedOverUniform)) add('T5', 'mixed / uniform per body', id, q, 'x');

@@ -14,5 +14,9 @@ export function nodeHost(): Host {
       const { sandboxHost } = await import('./chromium.js');
       return sandboxHost();
     },
+    async hostScaling() {
+      const { measureHostScaling } = await import('./host-scaling.js');
+      return measureHostScaling();
+    },
   };
 }
