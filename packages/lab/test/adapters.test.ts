@@ -47,8 +47,8 @@ function installedVersion(require: NodeJS.Require, name: string): string {
 }
 
 describe('engine registry', () => {
-  it('has maxgrid once per broad-phase and the five peer engines', () => {
-    expect(ENGINE_IDS).toEqual([...BROADPHASE_NAMES.map((b) => `maxgrid:${b}`), 'box2d-wasm', 'planck', 'rapier', 'matter-js', 'p2-es']);
+  it('has maxgrid once per broad-phase, its pile solver, and the five peer engines', () => {
+    expect(ENGINE_IDS).toEqual([...BROADPHASE_NAMES.map((b) => `maxgrid:${b}`), 'maxgrid-piles', 'box2d-wasm', 'planck', 'rapier', 'matter-js', 'p2-es']);
   });
 
   it("records each engine's installed package version and its settings", () => {
@@ -145,7 +145,7 @@ describe('scenes with static shapes', () => {
   it('peer adapters refuse them by name; maxgrid builds them', () => {
     const funnel = buildScene('funnel', {});
     for (const engine of engines) {
-      if (engine.info.id.startsWith('maxgrid:')) {
+      if (engine.info.package === '@maxgrid/engine') {
         const sim = engine.create(funnel);
         sim.step(1 / 60);
         expect(sim.count).toBe(funnel.count);

@@ -4,7 +4,7 @@ import type { Engine } from '../src/engines/adapter.js';
 import { ENGINE_IDS } from '../src/engines/registry.js';
 import type { RunContext } from '../src/experiments/common.js';
 import { spread } from '../src/experiments/common.js';
-import { EXPERIMENTS, energy, falsePositives, sapSleep, scale, stepTime, targets } from '../src/experiments/registry.js';
+import { EXPERIMENTS, energy, falsePositives, piles, sapSleep, scale, stepTime, targets } from '../src/experiments/registry.js';
 import { cBaseline } from '../src/node/native.js';
 import { measureHostScaling } from '../src/node/host-scaling.js';
 import { renderSvg } from '../src/report/render.js';
@@ -157,6 +157,26 @@ describe('sap-sleep', () => {
     expect(result.rows.find((r) => r.case === 'moving')!.asleepStart).toBe(0);
     expect(result.rows.find((r) => r.case === 'field')!.asleepStart).toBeGreaterThan(0.5);
     expectPublishable('sap-sleep', result);
+  });
+});
+
+describe('piles', () => {
+  it('measures a settled pile per engine: the iterated solve holds it up where one pass lets it sink', async () => {
+    const options = { ...piles.options('quick', {}), n: 1000, settleSeconds: 6, measureSteps: 10 };
+    const result = await piles.run(options, ctx(['maxgrid:maxgrid', 'maxgrid-piles', 'box2d-wasm']));
+    expectValid(piles.schema, result);
+    const [single, iterated, box2d] = result.rows;
+    expect(result.rows.map((r) => r.engine)).toEqual(['maxgrid:maxgrid', 'maxgrid-piles', 'box2d-wasm']);
+    // One box of scene data: the same circles, so the same area, in every engine.
+    expect(iterated.areaHeight).toBeCloseTo(single.areaHeight, 9);
+    expect(box2d.areaHeight).toBeCloseTo(single.areaHeight, 6);
+    // Circles that do not overlap cannot pile lower than their area spread over the floor.
+    expect(single.pileHeight).toBeLessThan(single.areaHeight);
+    expect(iterated.pileHeight).toBeGreaterThan(iterated.areaHeight);
+    expect(iterated.meanOverlap).toBeLessThan(single.meanOverlap / 2);
+    expect(iterated.motion).toBeLessThan(single.motion / 10);
+    expect([single.escaped, iterated.escaped]).toEqual([0, 0]);
+    expectPublishable('piles', result);
   });
 });
 

@@ -79,6 +79,7 @@ export const BROWSER_QUICK: Record<string, Record<string, unknown>> = {
   'false-positives': { ns: [500, 2000], ratios: [1, 10, 100], spreadN: 1000, steps: 5, warmupSteps: 3 },
   scale: { ns: [1000, 10_000, 100_000], steps: 5, warmupSteps: 2 },
   'sap-sleep': { n: 1000, rounds: 2, steps: 5, warmupSteps: 5, settleSteps: 120 },
+  piles: { n: 500, settleSeconds: 5, measureSteps: 10 },
   // c-maxgrid and targets are Node-only (a C compiler; they drive this page through __labWorlds).
 };
 

@@ -59,9 +59,15 @@ export function maxgridBuildOptions(broadphase: BroadPhaseName): BuildOptions {
   return { broadphase, sleeping: false, continuous: false, restitutionThreshold: 0 };
 }
 
-/** maxgrid with one broad-phase; everything else at the engine's defaults. */
-export function maxgridProvider(broadphase: BroadPhaseName): EngineProvider {
-  const id = `maxgrid:${broadphase}`;
+/**
+ * The iterated solve for piles (docs/engine.md, "Piles"), on the Max Grid: the sandbox's Pile
+ * solver toggle. Its id has no `maxgrid:` prefix, so the experiments that sweep broad-phases leave it out.
+ */
+export const MAXGRID_PILES_OPTIONS = { solverIterations: 4, positionCorrection: 0.2, contactSlop: 0.05 } as const;
+
+/** maxgrid with one broad-phase; everything else at the engine's defaults, or `variant`'s. */
+export function maxgridProvider(broadphase: BroadPhaseName, variant?: { id: string; options: BuildOptions; solver: string }): EngineProvider {
+  const id = variant?.id ?? `maxgrid:${broadphase}`;
   return {
     id,
     async load(): Promise<Engine> {
@@ -75,7 +81,7 @@ export function maxgridProvider(broadphase: BroadPhaseName): EngineProvider {
           settings: {
             broadphase,
             integrator: 'semi-implicit-euler (engine default)',
-            iterations: 'one sequential impulse pass per contact in canonical order',
+            iterations: variant?.solver ?? 'one sequential impulse pass per contact in canonical order',
             restitution: 'scene restitution (1), walls included',
             friction: 'none (the engine has no friction)',
             sleeping: false,
@@ -84,10 +90,16 @@ export function maxgridProvider(broadphase: BroadPhaseName): EngineProvider {
             walls: 'built-in box bounds',
           },
         },
-        create: (scene: Scene) => new MaxgridSimulation(buildWorld(scene, maxgridBuildOptions(broadphase))),
+        create: (scene: Scene) => new MaxgridSimulation(buildWorld(scene, { ...maxgridBuildOptions(broadphase), ...variant?.options })),
       };
     },
   };
 }
 
-export const MAXGRID_PROVIDERS: EngineProvider[] = BROADPHASE_NAMES.map(maxgridProvider);
+export const MAXGRID_PROVIDERS: EngineProvider[] = BROADPHASE_NAMES.map((name) => maxgridProvider(name));
+
+export const maxgridPilesProvider: EngineProvider = maxgridProvider('maxgrid', {
+  id: 'maxgrid-piles',
+  options: MAXGRID_PILES_OPTIONS,
+  solver: 'solverIterations 4 (sequential impulses, warm-started, walls as contacts), positionCorrection 0.2, contactSlop 0.05',
+});

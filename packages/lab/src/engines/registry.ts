@@ -1,5 +1,5 @@
 import type { Engine, EngineProvider, LoadOptions } from './adapter.js';
-import { MAXGRID_PROVIDERS } from './maxgrid.js';
+import { MAXGRID_PROVIDERS, maxgridPilesProvider } from './maxgrid.js';
 import { box2dProvider } from './box2d.js';
 import { planckProvider } from './planck.js';
 import { rapierProvider } from './rapier.js';
@@ -9,6 +9,7 @@ import { p2Provider } from './p2.js';
 /** Every engine the lab knows, maxgrid once per broad-phase first. */
 export const ENGINE_PROVIDERS: EngineProvider[] = [
   ...MAXGRID_PROVIDERS,
+  maxgridPilesProvider,
   box2dProvider,
   planckProvider,
   rapierProvider,

@@ -27,6 +27,7 @@ import {
   type SandboxRenderResult,
 } from './sandbox-render.js';
 import { runSapSleep, sapSleepCharts, sapSleepCsv, sapSleepDefaults, sapSleepSchema, type SapSleepOptions, type SapSleepResult } from './sap-sleep.js';
+import { pilesCsv, pilesDefaults, pilesHeadline, pilesSchema, pilesTables, runPiles, type PilesOptions, type PilesResult } from './piles.js';
 import { runThreads, threadsCsv, threadsDefaults, threadsHeadline, threadsSchema, threadsTables, type ThreadsOptions, type ThreadsResult } from './threads.js';
 import { runTargets, targetsDefaults, targetsSchema, type TargetsOptions, type TargetsResult } from './targets.js';
 import { targetsCsv } from './targets-csv.js';
@@ -240,6 +241,24 @@ export const threads: Experiment<ThreadsOptions, ThreadsResult> = {
   headline: threadsHeadline,
 };
 
+export const piles: Experiment<PilesOptions, PilesResult> = {
+  name: 'piles',
+  description: 'A settled pile under gravity (seed-box, elasticity 0): how far circles sink into each other and how much they keep moving, per engine',
+  schema: pilesSchema,
+  defaultEngines: ['maxgrid:maxgrid', 'maxgrid-piles', 'box2d-wasm', 'planck', 'rapier', 'matter-js', 'p2-es'],
+  options(profile, o) {
+    reject('piles', o, ['ns', 'seconds', 'dt']);
+    if (o.ns && o.ns.length !== 1) throw new RangeError(`option --n takes one value for experiment 'piles', got ${o.ns.join(',')}`);
+    const d = pilesDefaults(profile);
+    return { ...d, n: o.ns?.[0] ?? d.n, settleSeconds: o.seconds ?? d.settleSeconds, dt: o.dt ?? d.dt };
+  },
+  run: runPiles,
+  csv: pilesCsv,
+  charts: () => [],
+  tables: pilesTables,
+  headline: pilesHeadline,
+};
+
 // The registry stores experiments of different option and result types side by side.
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 export type AnyExperiment = Experiment<any, any>;
@@ -254,6 +273,7 @@ export const EXPERIMENTS: Record<string, AnyExperiment> = {
   targets,
   'sandbox-render': sandboxRender,
   threads,
+  piles,
 };
 
 /** Every experiment; `results` (Node only) runs them all and writes docs/results.md. */
