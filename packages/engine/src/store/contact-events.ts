@@ -61,6 +61,51 @@ export interface ContactEventsView {
   readonly wallEndWall: Readonly<Float64Array>;
 }
 
+/** Hits of one kind: what hit (a), what it hit (b), both as handles or wall numbers, and the approach speed. */
+class HitList {
+  count = 0;
+  a = new Float64Array(16);
+  b = new Float64Array(16);
+  speed = new Float64Array(16);
+
+  push(a: number, b: number, speed: number): void {
+    if (this.count === this.a.length) {
+      const capacity = grownCapacity(this.a.length, this.count + 1);
+      this.a = grow(this.a, capacity);
+      this.b = grow(this.b, capacity);
+      this.speed = grow(this.speed, capacity);
+    }
+    this.a[this.count] = a;
+    this.b[this.count] = b;
+    this.speed[this.count++] = speed;
+  }
+
+  memoryBytes(): number {
+    return this.a.byteLength * 3;
+  }
+}
+
+/** This step's touching (slot, slot or wall) pairs of one kind, noted in ascending order for PairDiff. */
+class TouchList {
+  count = 0;
+  a = new Int32Array(16);
+  b = new Int32Array(16);
+
+  push(a: number, b: number): void {
+    if (this.count === this.a.length) {
+      const capacity = grownCapacity(this.a.length, this.count + 1);
+      this.a = grow(this.a, capacity);
+      this.b = grow(this.b, capacity);
+    }
+    this.a[this.count] = a;
+    this.b[this.count++] = b;
+  }
+
+  memoryBytes(): number {
+    return this.a.byteLength * 2;
+  }
+}
+
 /**
  * The step's events. Touches between bodies are the step's canonical contacts diffed against the
  * last step's; touches between bodies and segments, the pairs the segment solve found (body slots
@@ -72,26 +117,48 @@ export class ContactEvents implements ContactEventsView {
   private readonly touches = new PairDiff();
   private readonly segmentTouches = new PairDiff();
   private readonly wallTouches = new PairDiff();
-  hitCount = 0;
-  hitA = new Float64Array(16);
-  hitB = new Float64Array(16);
-  hitSpeed = new Float64Array(16);
-  segmentHitCount = 0;
-  segmentHitBody = new Float64Array(16);
-  segmentHitSegment = new Float64Array(16);
-  segmentHitSpeed = new Float64Array(16);
-  wallHitCount = 0;
-  wallHitBody = new Float64Array(16);
-  wallHitWall = new Float64Array(16);
-  wallHitSpeed = new Float64Array(16);
-  /** This step's touching body-segment pairs, in the order the segment solve found them. */
-  private touchingBody = new Int32Array(16);
-  private touchingSegment = new Int32Array(16);
-  private touchingCount = 0;
-  private wallTouchBody = new Int32Array(16);
-  private wallTouchWall = new Int32Array(16);
-  private wallTouchCount = 0;
+  private readonly hits = new HitList();
+  private readonly segmentHits = new HitList();
+  private readonly wallHits = new HitList();
+  private readonly touchingSegments = new TouchList();
+  private readonly touchingWalls = new TouchList();
 
+  get hitCount(): number {
+    return this.hits.count;
+  }
+  get hitA(): Float64Array {
+    return this.hits.a;
+  }
+  get hitB(): Float64Array {
+    return this.hits.b;
+  }
+  get hitSpeed(): Float64Array {
+    return this.hits.speed;
+  }
+  get segmentHitCount(): number {
+    return this.segmentHits.count;
+  }
+  get segmentHitBody(): Float64Array {
+    return this.segmentHits.a;
+  }
+  get segmentHitSegment(): Float64Array {
+    return this.segmentHits.b;
+  }
+  get segmentHitSpeed(): Float64Array {
+    return this.segmentHits.speed;
+  }
+  get wallHitCount(): number {
+    return this.wallHits.count;
+  }
+  get wallHitBody(): Float64Array {
+    return this.wallHits.a;
+  }
+  get wallHitWall(): Float64Array {
+    return this.wallHits.b;
+  }
+  get wallHitSpeed(): Float64Array {
+    return this.wallHits.speed;
+  }
   get beginCount(): number {
     return this.touches.beginCount;
   }
@@ -151,78 +218,43 @@ export class ContactEvents implements ContactEventsView {
     this.touches.clear();
     this.segmentTouches.clear();
     this.wallTouches.clear();
-    this.hitCount = 0;
-    this.segmentHitCount = 0;
-    this.wallHitCount = 0;
-    this.touchingCount = 0;
-    this.wallTouchCount = 0;
-  }
-
-  /** The body in slot i touches box wall `wall` (called in ascending (i, wall) order). */
-  noteWallTouch(i: number, wall: number): void {
-    if (this.wallTouchCount === this.wallTouchBody.length) {
-      const capacity = grownCapacity(this.wallTouchBody.length, this.wallTouchCount + 1);
-      this.wallTouchBody = grow(this.wallTouchBody, capacity);
-      this.wallTouchWall = grow(this.wallTouchWall, capacity);
-    }
-    this.wallTouchBody[this.wallTouchCount] = i;
-    this.wallTouchWall[this.wallTouchCount++] = wall;
+    this.hits.count = 0;
+    this.segmentHits.count = 0;
+    this.wallHits.count = 0;
+    this.touchingSegments.count = 0;
+    this.touchingWalls.count = 0;
   }
 
   /** The body in slot i touches the segment in slot s (called in ascending (i, s) order). */
   noteSegmentTouch(i: number, s: number): void {
-    if (this.touchingCount === this.touchingBody.length) {
-      const capacity = grownCapacity(this.touchingBody.length, this.touchingCount + 1);
-      this.touchingBody = grow(this.touchingBody, capacity);
-      this.touchingSegment = grow(this.touchingSegment, capacity);
-    }
-    this.touchingBody[this.touchingCount] = i;
-    this.touchingSegment[this.touchingCount++] = s;
+    this.touchingSegments.push(i, s);
+  }
+
+  /** The body in slot i touches box wall `wall` (called in ascending (i, wall) order). */
+  noteWallTouch(i: number, wall: number): void {
+    this.touchingWalls.push(i, wall);
   }
 
   recordHit(bodies: BodyStore, i: number, j: number, speed: number): void {
-    if (this.hitCount === this.hitA.length) {
-      const capacity = grownCapacity(this.hitA.length, this.hitCount + 1);
-      this.hitA = grow(this.hitA, capacity);
-      this.hitB = grow(this.hitB, capacity);
-      this.hitSpeed = grow(this.hitSpeed, capacity);
-    }
-    this.hitA[this.hitCount] = bodies.handleOf(i);
-    this.hitB[this.hitCount] = bodies.handleOf(j);
-    this.hitSpeed[this.hitCount++] = speed;
+    this.hits.push(bodies.handleOf(i), bodies.handleOf(j), speed);
   }
 
   /** A hit of the body in slot i on the segment in slot s. */
   recordSegmentHit(bodies: BodyStore, i: number, segments: SegmentStore, s: number, speed: number): void {
-    if (this.segmentHitCount === this.segmentHitBody.length) {
-      const capacity = grownCapacity(this.segmentHitBody.length, this.segmentHitCount + 1);
-      this.segmentHitBody = grow(this.segmentHitBody, capacity);
-      this.segmentHitSegment = grow(this.segmentHitSegment, capacity);
-      this.segmentHitSpeed = grow(this.segmentHitSpeed, capacity);
-    }
-    this.segmentHitBody[this.segmentHitCount] = bodies.handleOf(i);
-    this.segmentHitSegment[this.segmentHitCount] = segments.handleOf(s);
-    this.segmentHitSpeed[this.segmentHitCount++] = speed;
+    this.segmentHits.push(bodies.handleOf(i), segments.handleOf(s), speed);
   }
 
   /** A hit of the body in slot i on box wall `wall`. */
   recordWallHit(bodies: BodyStore, i: number, wall: number, speed: number): void {
-    if (this.wallHitCount === this.wallHitBody.length) {
-      const capacity = grownCapacity(this.wallHitBody.length, this.wallHitCount + 1);
-      this.wallHitBody = grow(this.wallHitBody, capacity);
-      this.wallHitWall = grow(this.wallHitWall, capacity);
-      this.wallHitSpeed = grow(this.wallHitSpeed, capacity);
-    }
-    this.wallHitBody[this.wallHitCount] = bodies.handleOf(i);
-    this.wallHitWall[this.wallHitCount] = wall;
-    this.wallHitSpeed[this.wallHitCount++] = speed;
+    this.wallHits.push(bodies.handleOf(i), wall, speed);
   }
 
   /** Diffs the step's canonical contacts, its body-segment and its body-wall touches against the last step's. */
   update(bodies: BodyStore, contacts: ContactBuffer, segments: SegmentStore): void {
+    const { touchingSegments: onSegments, touchingWalls: onWalls } = this;
     this.touches.update(contacts.lo, contacts.hi, contacts.count, bodies, bodies);
-    this.segmentTouches.update(this.touchingBody, this.touchingSegment, this.touchingCount, bodies, segments);
-    this.wallTouches.update(this.wallTouchBody, this.wallTouchWall, this.wallTouchCount, bodies, BOX_WALLS);
+    this.segmentTouches.update(onSegments.a, onSegments.b, onSegments.count, bodies, segments);
+    this.wallTouches.update(onWalls.a, onWalls.b, onWalls.count, bodies, BOX_WALLS);
   }
 
   memoryBytes(): number {
@@ -230,8 +262,11 @@ export class ContactEvents implements ContactEventsView {
       this.touches.memoryBytes() +
       this.segmentTouches.memoryBytes() +
       this.wallTouches.memoryBytes() +
-      (this.hitA.byteLength + this.segmentHitBody.byteLength + this.wallHitBody.byteLength) * 3 +
-      (this.touchingBody.byteLength + this.wallTouchBody.byteLength) * 2
+      this.hits.memoryBytes() +
+      this.segmentHits.memoryBytes() +
+      this.wallHits.memoryBytes() +
+      this.touchingSegments.memoryBytes() +
+      this.touchingWalls.memoryBytes()
     );
   }
 }
