@@ -104,6 +104,24 @@ describe('piles under gravity', () => {
     expect(iterated.overlap).toBeLessThan(single.overlap / 2);
   });
 
+  it('a body created in a destroyed body\'s slot does not inherit its warm-started impulses', () => {
+    // Two copies of a settled pile; in one, a body resting in it is destroyed and an identical one
+    // created, which takes the same slot. Same state, same slots: only the warm start can tell
+    // them apart, and it must, since the new body has no history.
+    const kept = settledPile({ ...SOFT, solverIterations: 4 }, 6);
+    const renewed = settledPile({ ...SOFT, solverIterations: 4 }, 6);
+    expect(renewed.stateHash()).toBe(kept.stateHash());
+    const handle = renewed.handleAtSlot(500);
+    const { awake: _awake, ...circle } = renewed.getCircle(handle);
+    renewed.destroyBody(handle);
+    const twin = renewed.createCircle(circle);
+    expect(renewed.slotOfHandle(twin)).toBe(500);
+    expect(twin).not.toBe(handle);
+    kept.step(1 / 60);
+    renewed.step(1 / 60);
+    expect(renewed.stateHash()).not.toBe(kept.stateHash());
+  });
+
   it('iterated solves give the same bits on every broad-phase', () => {
     const hash = (broadphase: WorldOptions['broadphase']) => {
       const world = buildWorld(buildScene('seed-box', { n: 600, elasticity: 0.3, seed: 4 }), { ...SOFT, solverIterations: 3, broadphase });

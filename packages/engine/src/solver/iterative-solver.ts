@@ -27,7 +27,8 @@ const closest = { x: 0, y: 0 };
  *   the same order, with the same touch and hit events; that pass does not run after this one.
  * - Impulses are warm-started: a contact, or static contact, that already existed in the last
  *   step starts from last step's impulse. The lists are in ascending slot order, so one merge
- *   matches them, with no hashing (as PairDiff does for events).
+ *   matches them, with no hashing (as PairDiff does for events); a slot whose handle changed
+ *   holds a new body, which starts from zero.
  * - Then `iterations` passes of separation, with the positionCorrection and contactSlop of the
  *   single pass, the static contacts pushed out in the same loop.
  *
@@ -41,6 +42,9 @@ export class IterativeSolver {
   private impulse = new Float64Array(0);
   private lastLo = new Int32Array(0);
   private lastHi = new Int32Array(0);
+  /** The handles in those slots then: a slot reused by a new body must not inherit an impulse. */
+  private lastHandleLo = new Float64Array(0);
+  private lastHandleHi = new Float64Array(0);
   private lastImpulse = new Float64Array(0);
   private lastCount = 0;
   // Static contacts: body slot, key (a wall's side: 0 x = 0, 1 x = width, 2 y = 0, 3 y = height;
@@ -53,6 +57,7 @@ export class IterativeSolver {
   private staticImpulse = new Float64Array(16);
   private staticCount = 0;
   private lastStaticBody = new Int32Array(0);
+  private lastStaticHandle = new Float64Array(0);
   private lastStaticKey = new Int32Array(0);
   private lastStaticImpulse = new Float64Array(0);
   private lastStaticCount = 0;
@@ -75,7 +80,7 @@ export class IterativeSolver {
     this.warmStart(bodies, lo, hi, count);
     for (let pass = 0; pass < iterations; pass++) this.velocityPass(bodies, lo, hi, count);
     for (let pass = 0; pass < iterations; pass++) this.positionPass(bodies, lo, hi, count, settings, box, segments);
-    this.remember(lo, hi, count);
+    this.remember(bodies, lo, hi, count);
     return segmentContacts;
   }
 
@@ -179,13 +184,14 @@ export class IterativeSolver {
   /** Starts each contact from last step's impulse where it existed then, and applies it. */
   private warmStart(bodies: BodyStore, lo: Int32Array, hi: Int32Array, count: number): void {
     const { vx, vy, invMass } = bodies;
-    const { impulse, normalX, normalY, lastLo, lastHi, lastImpulse, lastCount } = this;
+    const { impulse, normalX, normalY, lastLo, lastHi, lastHandleLo, lastHandleHi, lastImpulse, lastCount } = this;
     let p = 0;
     for (let k = 0; k < count; k++) {
       const i = lo[k];
       const j = hi[k];
       while (p < lastCount && (lastLo[p] < i || (lastLo[p] === i && lastHi[p] < j))) p++;
-      const carried = p < lastCount && lastLo[p] === i && lastHi[p] === j ? lastImpulse[p] : 0;
+      const same = p < lastCount && lastLo[p] === i && lastHi[p] === j && lastHandleLo[p] === bodies.handleOf(i) && lastHandleHi[p] === bodies.handleOf(j);
+      const carried = same ? lastImpulse[p] : 0;
       impulse[k] = carried;
       if (carried === 0) continue;
       vx[i] -= carried * invMass[i] * normalX[k];
@@ -193,13 +199,15 @@ export class IterativeSolver {
       vx[j] += carried * invMass[j] * normalX[k];
       vy[j] += carried * invMass[j] * normalY[k];
     }
-    const { staticBody, staticKey, staticNormalX, staticNormalY, staticImpulse, staticCount, lastStaticBody, lastStaticKey, lastStaticImpulse, lastStaticCount } = this;
+    const { staticBody, staticKey, staticNormalX, staticNormalY, staticImpulse, staticCount, lastStaticBody, lastStaticHandle, lastStaticKey, lastStaticImpulse, lastStaticCount } =
+      this;
     let q = 0;
     for (let c = 0; c < staticCount; c++) {
       const i = staticBody[c];
       const key = staticKey[c];
       while (q < lastStaticCount && (lastStaticBody[q] < i || (lastStaticBody[q] === i && lastStaticKey[q] < key))) q++;
-      const carried = q < lastStaticCount && lastStaticBody[q] === i && lastStaticKey[q] === key ? lastStaticImpulse[q] : 0;
+      const same = q < lastStaticCount && lastStaticBody[q] === i && lastStaticKey[q] === key && lastStaticHandle[q] === bodies.handleOf(i);
+      const carried = same ? lastStaticImpulse[q] : 0;
       staticImpulse[c] = carried;
       if (carried === 0) continue;
       vx[i] += carried * invMass[i] * staticNormalX[c];
@@ -305,28 +313,34 @@ export class IterativeSolver {
   }
 
   /** Keeps this step's contacts and impulses for the next step's warm start. */
-  private remember(lo: Int32Array, hi: Int32Array, count: number): void {
+  private remember(bodies: BodyStore, lo: Int32Array, hi: Int32Array, count: number): void {
     if (this.lastLo.length < count) {
       const capacity = grownCapacity(this.lastLo.length, count);
       this.lastLo = new Int32Array(capacity);
       this.lastHi = new Int32Array(capacity);
+      this.lastHandleLo = new Float64Array(capacity);
+      this.lastHandleHi = new Float64Array(capacity);
       this.lastImpulse = new Float64Array(capacity);
     }
     // Copied by hand: subarray() would make objects every step.
     for (let k = 0; k < count; k++) {
       this.lastLo[k] = lo[k];
       this.lastHi[k] = hi[k];
+      this.lastHandleLo[k] = bodies.handleOf(lo[k]);
+      this.lastHandleHi[k] = bodies.handleOf(hi[k]);
       this.lastImpulse[k] = this.impulse[k];
     }
     this.lastCount = count;
     if (this.lastStaticBody.length < this.staticCount) {
       const capacity = grownCapacity(this.lastStaticBody.length, this.staticCount);
       this.lastStaticBody = new Int32Array(capacity);
+      this.lastStaticHandle = new Float64Array(capacity);
       this.lastStaticKey = new Int32Array(capacity);
       this.lastStaticImpulse = new Float64Array(capacity);
     }
     for (let c = 0; c < this.staticCount; c++) {
       this.lastStaticBody[c] = this.staticBody[c];
+      this.lastStaticHandle[c] = bodies.handleOf(this.staticBody[c]);
       this.lastStaticKey[c] = this.staticKey[c];
       this.lastStaticImpulse[c] = this.staticImpulse[c];
     }
@@ -343,9 +357,9 @@ export class IterativeSolver {
   }
 
   memoryBytes(): number {
-    // Four float64 columns per contact, two int32 and a float64 per remembered contact; per static
-    // contact two int32 and four float64, and two int32 and a float64 remembered.
-    return this.impulse.length * 32 + this.lastImpulse.length * 16 + this.staticBody.length * 40 + this.lastStaticBody.length * 16;
+    // Four float64 columns per contact, two int32 and three float64 per remembered contact; per
+    // static contact two int32 and four float64, and two int32 and two float64 remembered.
+    return this.impulse.length * 32 + this.lastImpulse.length * 32 + this.staticBody.length * 40 + this.lastStaticBody.length * 24;
   }
 }
 
