@@ -70,11 +70,12 @@ export function buildSandboxWorld(scene: Scene, dt: number, c: WorldChoices): Wo
     options.sleeping = true;
     // Both thresholds scale with g·dt, the speed gravity adds in one step. A resting contact
     // "approaches" at about g·dt every step; with restitution that is an endless micro-bounce, so
-    // approaches under 2 g·dt are made inelastic. The solver makes one pass, so a settled pile
-    // still jitters: measured on funnel and seed-box with elasticity 0, the median body moves at
-    // about 7 g·dt, and with the 1.5 g·dt a single resting body needs, 0 to 1 of 500 ever slept.
-    // 8 g·dt lets piles doze off, and stays safe in flight: a body is that slow for only 16 steps
-    // around the top of its arc, under the 0.5 s (30 steps) it must stay slow before sleeping.
+    // approaches under 2 g·dt are made inelastic. With the report's one solver pass a settled
+    // pile keeps moving (median 46 px/s on seed-box at elasticity 0) and never sleeps; with the
+    // Pile solver its bodies move at about 1 px/s, and at 8 g·dt a 2,000-circle pile is asleep,
+    // as a whole, 6 s in (docs/engine.md, "Sleeping"). 8 g·dt stays safe in flight: a body is
+    // that slow for only 16 steps around the top of its arc, under the 0.5 s (30 steps) it must
+    // stay slow before sleeping.
     // Without gravity nothing rests on anything: the engine's defaults (1 px/s, elastic) apply.
     if (g > 0) {
       options.sleepSpeed = 8 * g * dt;

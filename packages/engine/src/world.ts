@@ -81,6 +81,7 @@ export class World {
           positionCorrection: resolved.positionCorrection,
           contactSlop: resolved.contactSlop,
           iterations: resolved.solverIterations,
+          wakeSpeed: resolved.sleepSpeed,
         },
         sleeping: { enabled: resolved.sleeping, speed: resolved.sleepSpeed, time: resolved.sleepTime },
         continuous: resolved.continuous,

@@ -42,6 +42,57 @@ describe('sleeping (report 3.1.4.1, 5.3.3)', () => {
     expect(world.isAwake(ball)).toBe(true);
   });
 
+  it('a pile falls asleep as a whole and stays asleep; a slow body landing on it does not wake it', async () => {
+    const { buildScene, buildWorld } = await import('@maxgrid/scenes');
+    // The sandbox's settings under g = 300 at 60 Hz: sleepSpeed 8 g dt, restitutionThreshold 2 g dt,
+    // and the pile solver, with which a settled pile's bodies move at about 1 px/s.
+    const world = buildWorld(buildScene('seed-box', { n: 1000, elasticity: 0 }), {
+      sleeping: true,
+      sleepSpeed: 40,
+      restitutionThreshold: 10,
+      solverIterations: 4,
+      positionCorrection: 0.2,
+      contactSlop: 0.05,
+    });
+    for (let s = 0; s < 600; s++) world.step(1 / 60);
+    // One body at a time, each woken by its still neighbours the step after, slept 0 to 3 of
+    // 2,000; now all of them do, in the step the last one comes to rest.
+    expect(world.stats.sleepingBodies).toBe(1000);
+    const hash = world.stateHash();
+    for (let s = 0; s < 60; s++) world.step(1 / 60);
+    expect(world.stateHash()).toBe(hash);
+    // A ball set down 1 px above the highest sleeper lands at about 25 px/s: slower than
+    // sleepSpeed, so the sleepers hold it as static bodies would, and it falls asleep on them.
+    const v = world.views();
+    let top = 0;
+    for (let k = 1; k < v.slotCount; k++) if (v.y[k] - v.radius[k] < v.y[top] - v.radius[top]) top = k;
+    const ball = world.createCircle({ x: v.x[top], y: v.y[top] - v.radius[top] - 4 - 1, radius: 4 });
+    for (let s = 0; s < 60; s++) {
+      world.step(1 / 60);
+      expect(world.stats.sleepingBodies).toBeGreaterThanOrEqual(1000);
+    }
+    expect(world.isAwake(ball)).toBe(false);
+  });
+
+  it('a still body falls asleep only together with the awake bodies it touches', () => {
+    // B rests on A, A on the floor. Both sleep; then A is woken, and B 10 steps later. A is still
+    // for sleepTime (30 steps) first, but it waits for B, and the two fall asleep in one step.
+    const world = new World({ sleeping: true, sleepSpeed: 20, gravity: { x: 0, y: 200 }, bounds: { width: 100, height: 100 }, restitution: 0 });
+    const a = world.createCircle({ x: 50, y: 90, radius: 10 });
+    const b = world.createCircle({ x: 50, y: 70, radius: 10 });
+    for (let s = 0; s < 120; s++) world.step(1 / 60);
+    expect([world.isAwake(a), world.isAwake(b)]).toEqual([false, false]);
+    const fellAsleep: Record<string, number> = {};
+    for (let s = 0; s < 120; s++) {
+      if (s === 0) world.setAwake(a, true);
+      if (s === 10) world.setAwake(b, true);
+      world.step(1 / 60);
+      for (const [name, h] of [['a', a], ['b', b]] as const) if (!world.isAwake(h) && fellAsleep[name] === undefined && s >= 10) fellAsleep[name] = s;
+    }
+    expect(fellAsleep.b).toBeGreaterThan(30);
+    expect(fellAsleep.a).toBe(fellAsleep.b);
+  });
+
   it('user changes wake a body: velocity, position, type, force, impulse', () => {
     const actions: ((w: World, h: number) => void)[] = [
       (w, h) => w.setVelocity(h, 1, 0),

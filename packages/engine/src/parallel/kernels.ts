@@ -43,7 +43,7 @@ export class ThreadKernels {
   private readonly escapes = new EscapeLog();
   private mark = new Int32Array(0);
   private stamp = 0;
-  private readonly solverSettings: SolverSettings = { restitutionThreshold: 0, hitThreshold: Infinity, positionCorrection: 1, contactSlop: 0, iterations: 1 };
+  private readonly solverSettings: SolverSettings = { restitutionThreshold: 0, hitThreshold: Infinity, positionCorrection: 1, contactSlop: 0, iterations: 1, wakeSpeed: 0 };
   readonly contacts = new BoundedContactList(new Int32Array(0), new Int32Array(0));
   private readonly narrowPhase: NarrowPhase;
   private readonly sink: PairSink;

@@ -3,6 +3,7 @@ import type { ContactBuffer } from '../store/contact-buffer.js';
 import { mixRestitution } from './restitution.js';
 import { outsideBox } from './box-walls.js';
 import type { ContactEvents } from '../store/contact-events.js';
+import { wakesSleeper } from './sleep.js';
 
 /**
  * Resolves contacts one after another, in the buffer's canonical order (report 3.1.5, 5.10).
@@ -22,8 +23,9 @@ import type { ContactEvents } from '../store/contact-events.js';
  * Concentric circles, which have no normal, are pushed apart along +x.
  *
  * Approach speeds under `restitutionThreshold` bounce with restitution 0 (Box2D's threshold).
- * A sleeping body touched by a moving one wakes here, before its contact is solved, so waking
- * follows the canonical order too. Hits at or above `hitThreshold` approach speed are recorded.
+ * A sleeping body touched by one faster than the sleep speed wakes here, before its contact is
+ * solved, so waking follows the canonical order too; touched by a slower one, it stays asleep and
+ * takes the contact as a static body (see sleep.ts). Hits at or above `hitThreshold` approach speed are recorded.
  */
 export interface SolverSettings {
   /** Approach speeds below this bounce with restitution 0. */
@@ -36,6 +38,8 @@ export interface SolverSettings {
   contactSlop: number;
   /** 1: this module's single pass; more: IterativeSolver. */
   iterations: number;
+  /** A sleeper touched by a body faster than this wakes (the world's sleepSpeed; see sleep.ts). */
+  wakeSpeed: number;
 }
 
 /**
@@ -157,12 +161,18 @@ export function resolveContact(bodies: BodyStore, i: number, j: number, settings
   const reach = radius[i] + radius[j];
   const distSq = dx * dx + dy * dy;
   if (distSq >= reach * reach) return;
+  let wi = invMass[i];
+  let wj = invMass[j];
   if (bodies.sleepingCount > 0) {
-    if (asleep[i]) bodies.wake(i);
-    if (asleep[j]) bodies.wake(j);
+    if (asleep[i]) {
+      if (wakesSleeper(bodies, j, settings.wakeSpeed)) bodies.wake(i);
+      else wi = 0;
+    }
+    if (asleep[j]) {
+      if (wakesSleeper(bodies, i, settings.wakeSpeed)) bodies.wake(j);
+      else wj = 0;
+    }
   }
-  const wi = invMass[i];
-  const wj = invMass[j];
   const w = wi + wj;
   if (w === 0) return;
   let nx = 1;

@@ -7,6 +7,7 @@ import { mixRestitution } from './restitution.js';
 import type { SolverSettings } from './contact-solver.js';
 import type { SegmentGrid, SegmentStore } from '../store/segment-store.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
+import { wakesSleeper } from './sleep.js';
 
 /** Static contacts are keyed by body, then by this: a box wall's side (0-3), or FIRST_SEGMENT + the segment's slot. */
 const FIRST_SEGMENT = 4;
@@ -40,6 +41,9 @@ export class IterativeSolver {
   private normalY = new Float64Array(0);
   private bounce = new Float64Array(0);
   private impulse = new Float64Array(0);
+  /** Inverse masses on each side of a contact: 0 for a sleeper that stays asleep (see sleep.ts). */
+  private inverseLo = new Float64Array(0);
+  private inverseHi = new Float64Array(0);
   private lastLo = new Int32Array(0);
   private lastHi = new Int32Array(0);
   /** The handles in those slots then: a slot reused by a new body must not inherit an impulse. */
@@ -86,14 +90,22 @@ export class IterativeSolver {
 
   /** Normals, and the bounce each contact should end with, from the state before any impulse. */
   private prepare(bodies: BodyStore, lo: Int32Array, hi: Int32Array, count: number, settings: SolverSettings, events: ContactEvents | null): void {
-    const { x, y, vx, vy, restitution, asleep } = bodies;
-    const { normalX, normalY, bounce } = this;
+    const { x, y, vx, vy, restitution, asleep, invMass } = bodies;
+    const { normalX, normalY, bounce, inverseLo, inverseHi } = this;
     for (let k = 0; k < count; k++) {
       const i = lo[k];
       const j = hi[k];
+      inverseLo[k] = invMass[i];
+      inverseHi[k] = invMass[j];
       if (bodies.sleepingCount > 0) {
-        if (asleep[i]) bodies.wake(i);
-        if (asleep[j]) bodies.wake(j);
+        if (asleep[i]) {
+          if (wakesSleeper(bodies, j, settings.wakeSpeed)) bodies.wake(i);
+          else inverseLo[k] = 0;
+        }
+        if (asleep[j]) {
+          if (wakesSleeper(bodies, i, settings.wakeSpeed)) bodies.wake(j);
+          else inverseHi[k] = 0;
+        }
       }
       const dx = x[j] - x[i];
       const dy = y[j] - y[i];
@@ -184,7 +196,7 @@ export class IterativeSolver {
   /** Starts each contact from last step's impulse where it existed then, and applies it. */
   private warmStart(bodies: BodyStore, lo: Int32Array, hi: Int32Array, count: number): void {
     const { vx, vy, invMass } = bodies;
-    const { impulse, normalX, normalY, lastLo, lastHi, lastHandleLo, lastHandleHi, lastImpulse, lastCount } = this;
+    const { impulse, normalX, normalY, inverseLo, inverseHi, lastLo, lastHi, lastHandleLo, lastHandleHi, lastImpulse, lastCount } = this;
     let p = 0;
     for (let k = 0; k < count; k++) {
       const i = lo[k];
@@ -194,10 +206,10 @@ export class IterativeSolver {
       const carried = same ? lastImpulse[p] : 0;
       impulse[k] = carried;
       if (carried === 0) continue;
-      vx[i] -= carried * invMass[i] * normalX[k];
-      vy[i] -= carried * invMass[i] * normalY[k];
-      vx[j] += carried * invMass[j] * normalX[k];
-      vy[j] += carried * invMass[j] * normalY[k];
+      vx[i] -= carried * inverseLo[k] * normalX[k];
+      vy[i] -= carried * inverseLo[k] * normalY[k];
+      vx[j] += carried * inverseHi[k] * normalX[k];
+      vy[j] += carried * inverseHi[k] * normalY[k];
     }
     const { staticBody, staticKey, staticNormalX, staticNormalY, staticImpulse, staticCount, lastStaticBody, lastStaticHandle, lastStaticKey, lastStaticImpulse, lastStaticCount } =
       this;
@@ -218,12 +230,12 @@ export class IterativeSolver {
   /** One pass of clamped impulses over the contacts, then over the wall contacts. */
   private velocityPass(bodies: BodyStore, lo: Int32Array, hi: Int32Array, count: number): void {
     const { vx, vy, invMass } = bodies;
-    const { impulse, normalX, normalY, bounce } = this;
+    const { impulse, normalX, normalY, bounce, inverseLo, inverseHi } = this;
     for (let k = 0; k < count; k++) {
       const i = lo[k];
       const j = hi[k];
-      const wi = invMass[i];
-      const wj = invMass[j];
+      const wi = inverseLo[k];
+      const wj = inverseHi[k];
       const w = wi + wj;
       if (w === 0) continue;
       const nx = normalX[k];
@@ -264,13 +276,14 @@ export class IterativeSolver {
     box: { width: number; height: number } | null,
     segments: SegmentStore,
   ): void {
-    const { x, y, radius, invMass } = bodies;
+    const { x, y, radius } = bodies;
     const { positionCorrection, contactSlop } = settings;
+    const { inverseLo, inverseHi } = this;
     for (let k = 0; k < count; k++) {
       const i = lo[k];
       const j = hi[k];
-      const wi = invMass[i];
-      const wj = invMass[j];
+      const wi = inverseLo[k];
+      const wj = inverseHi[k];
       const w = wi + wj;
       if (w === 0) continue;
       const dx = x[j] - x[i];
@@ -354,12 +367,14 @@ export class IterativeSolver {
     this.normalY = new Float64Array(capacity);
     this.bounce = new Float64Array(capacity);
     this.impulse = new Float64Array(capacity);
+    this.inverseLo = new Float64Array(capacity);
+    this.inverseHi = new Float64Array(capacity);
   }
 
   memoryBytes(): number {
-    // Four float64 columns per contact, two int32 and three float64 per remembered contact; per
+    // Six float64 columns per contact, two int32 and three float64 per remembered contact; per
     // static contact two int32 and four float64, and two int32 and two float64 remembered.
-    return this.impulse.length * 32 + this.lastImpulse.length * 32 + this.staticBody.length * 40 + this.lastStaticBody.length * 24;
+    return this.impulse.length * 48 + this.lastImpulse.length * 32 + this.staticBody.length * 40 + this.lastStaticBody.length * 24;
   }
 }
 

@@ -10,7 +10,7 @@ import type { BodyKernel } from '../store/body-kernel.js';
 import { bounceOffBox, clampBodies, clampIntoBox, noteWallContacts } from '../solver/box-walls.js';
 import { solveContacts, type SolverSettings } from '../solver/contact-solver.js';
 import { IterativeSolver } from '../solver/iterative-solver.js';
-import { updateSleep } from '../solver/sleep.js';
+import { SleepStage } from '../solver/sleep.js';
 import { ContinuousCollision } from '../solver/continuous.js';
 import { solveSegmentContacts } from '../solver/segment-contacts.js';
 import { SegmentGrid, type SegmentStore } from '../store/segment-store.js';
@@ -57,6 +57,7 @@ export class StepPipeline {
   readonly stats: StepStats = emptyStats();
   readonly continuous = new ContinuousCollision();
   readonly iterative = new IterativeSolver();
+  readonly sleep = new SleepStage();
   readonly segmentGrid = new SegmentGrid();
   parallel: ParallelStep | null = null;
 
@@ -139,7 +140,7 @@ export class StepPipeline {
 
     events?.update(bodies, contacts, this.segments);
     clearForces(bodies);
-    if (settings.sleeping.enabled) updateSleep(bodies, dt, settings.sleeping.speed, settings.sleeping.time);
+    if (settings.sleeping.enabled) this.sleep.update(bodies, contacts, dt, settings.sleeping.speed, settings.sleeping.time);
     const t6 = nowMs();
 
     const candidates = grid ? parallel!.candidates : pairs.total;
@@ -203,6 +204,7 @@ export class StepPipeline {
       this.pairs.memoryBytes() +
       this.continuous.memoryBytes() +
       this.iterative.memoryBytes() +
+      this.sleep.memoryBytes() +
       (this.events?.memoryBytes() ?? 0)
     );
   }
