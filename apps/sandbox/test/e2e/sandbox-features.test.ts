@@ -145,6 +145,17 @@ describe('2D sandbox: engine features', () => {
     await page.close();
   });
 
+  it('with the Pile solver, a settled pile falls asleep as a whole', async () => {
+    // The seed box at elasticity 0, with Sleeping: with one solver pass, 1,500 circles keep
+    // moving faster than the sleep speed and at most 1 sleeps in 60 s (measured in Node); with
+    // the Pile solver 95 % of them sleep 225 steps in.
+    const { page, errors } = await openPage(browser, '/?n=1500&elasticity=0&sleeping=1&piles=1');
+    expect(await page.getByLabel('Pile solver').isChecked()).toBe(true);
+    await expect.poll(() => stat(page, 'sleeping'), { timeout: 90_000, interval: 250 }).toBeGreaterThanOrEqual(1425);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
   it('counts touch events, filtered pairs and swept bodies when their toggles are on', async () => {
     const { page, errors } = await openPage(browser, '/?n=1000');
     await stepsPass(page, 2);
