@@ -90,7 +90,8 @@ export class QueryTool {
     if (this.tool === 'ray' && this.hasRay) {
       // A ray of zero length (a click) has no direction; the engine would refuse it.
       const moved = this.x1 !== this.x2 || this.y1 !== this.y2;
-      this.hits = moved ? world.rayCastAll(this.x1, this.y1, this.x2, this.y2) : [];
+      // The same array every time: its hit objects are reused (rayCastAll's `out`).
+      this.hits = moved ? world.rayCastAll(this.x1, this.y1, this.x2, this.y2, undefined, this.hits) : [];
     } else if (this.tool === 'point' && this.hasPoint) {
       this.under = world.queryPoint(this.px, this.py);
     } else if (this.tool === 'box' && this.hasBox) {
