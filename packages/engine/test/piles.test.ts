@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { buildScene, buildWorld } from '@maxgrid/scenes';
-import type { World, WorldOptions } from '../src/index.js';
+import { World, type WorldOptions } from '../src/index.js';
 
 const SOFT = { positionCorrection: 0.2, contactSlop: 0.05 };
 
@@ -120,6 +120,31 @@ describe('piles under gravity', () => {
     kept.step(1 / 60);
     renewed.step(1 / 60);
     expect(renewed.stateHash()).not.toBe(kept.stateHash());
+  });
+
+  it('a segment created in a destroyed segment\'s slot does not inherit its warm-started impulses', () => {
+    // Circles piled in a V of two segments; in one copy the first segment is destroyed and an
+    // identical one created in its slot. Only the warm start can tell the two worlds apart.
+    const build = () => {
+      const world = new World({ gravity: { x: 0, y: 300 }, bounds: { width: 400, height: 400 }, restitution: 0, ...SOFT, solverIterations: 4 });
+      const left = world.createSegment({ x1: 50, y1: 150, x2: 200, y2: 300, thickness: 3 });
+      world.createSegment({ x1: 200, y1: 300, x2: 350, y2: 150, thickness: 3 });
+      for (let k = 0; k < 60; k++) world.createCircle({ x: 150 + (k % 10) * 10, y: 100 + Math.floor(k / 10) * 10, radius: 4 });
+      for (let s = 0; s < 240; s++) world.step(1 / 60);
+      return { world, left };
+    };
+    const kept = build();
+    const renewed = build();
+    expect(renewed.world.stateHash()).toBe(kept.world.stateHash());
+    const segment = renewed.world.getSegment(renewed.left);
+    renewed.world.destroySegment(renewed.left);
+    const twin = renewed.world.createSegment(segment);
+    expect(twin).not.toBe(renewed.left);
+    expect(renewed.world.getSegment(twin)).toEqual(segment);
+    kept.world.step(1 / 60);
+    renewed.world.step(1 / 60);
+    expect(kept.world.stats.segmentContacts).toBeGreaterThan(0);
+    expect(renewed.world.stateHash()).not.toBe(kept.world.stateHash());
   });
 
   it('iterated solves give the same bits on every broad-phase', () => {

@@ -62,6 +62,8 @@ export class IterativeSolver {
   private staticCount = 0;
   private lastStaticBody = new Int32Array(0);
   private lastStaticHandle = new Float64Array(0);
+  /** The segment's handle for a segment contact (-1 for a wall): a reused segment slot starts from zero too. */
+  private lastStaticOther = new Float64Array(0);
   private lastStaticKey = new Int32Array(0);
   private lastStaticImpulse = new Float64Array(0);
   private lastStaticCount = 0;
@@ -81,10 +83,10 @@ export class IterativeSolver {
     this.ensure(count);
     this.prepare(bodies, lo, hi, count, settings, events);
     const segmentContacts = this.findStatic(bodies, box, segments, segmentGrid, settings, events);
-    this.warmStart(bodies, lo, hi, count);
+    this.warmStart(bodies, segments, lo, hi, count);
     for (let pass = 0; pass < iterations; pass++) this.velocityPass(bodies, lo, hi, count);
     for (let pass = 0; pass < iterations; pass++) this.positionPass(bodies, lo, hi, count, settings, box, segments);
-    this.remember(bodies, lo, hi, count);
+    this.remember(bodies, segments, lo, hi, count);
     return segmentContacts;
   }
 
@@ -194,7 +196,7 @@ export class IterativeSolver {
   }
 
   /** Starts each contact from last step's impulse where it existed then, and applies it. */
-  private warmStart(bodies: BodyStore, lo: Int32Array, hi: Int32Array, count: number): void {
+  private warmStart(bodies: BodyStore, segments: SegmentStore, lo: Int32Array, hi: Int32Array, count: number): void {
     const { vx, vy, invMass } = bodies;
     const { impulse, normalX, normalY, inverseLo, inverseHi, lastLo, lastHi, lastHandleLo, lastHandleHi, lastImpulse, lastCount } = this;
     let p = 0;
@@ -218,7 +220,12 @@ export class IterativeSolver {
       const i = staticBody[c];
       const key = staticKey[c];
       while (q < lastStaticCount && (lastStaticBody[q] < i || (lastStaticBody[q] === i && lastStaticKey[q] < key))) q++;
-      const same = q < lastStaticCount && lastStaticBody[q] === i && lastStaticKey[q] === key && lastStaticHandle[q] === bodies.handleOf(i);
+      const same =
+        q < lastStaticCount &&
+        lastStaticBody[q] === i &&
+        lastStaticKey[q] === key &&
+        lastStaticHandle[q] === bodies.handleOf(i) &&
+        this.lastStaticOther[q] === otherHandle(segments, key);
       const carried = same ? lastStaticImpulse[q] : 0;
       staticImpulse[c] = carried;
       if (carried === 0) continue;
@@ -326,7 +333,7 @@ export class IterativeSolver {
   }
 
   /** Keeps this step's contacts and impulses for the next step's warm start. */
-  private remember(bodies: BodyStore, lo: Int32Array, hi: Int32Array, count: number): void {
+  private remember(bodies: BodyStore, segments: SegmentStore, lo: Int32Array, hi: Int32Array, count: number): void {
     if (this.lastLo.length < count) {
       const capacity = grownCapacity(this.lastLo.length, count);
       this.lastLo = new Int32Array(capacity);
@@ -348,12 +355,14 @@ export class IterativeSolver {
       const capacity = grownCapacity(this.lastStaticBody.length, this.staticCount);
       this.lastStaticBody = new Int32Array(capacity);
       this.lastStaticHandle = new Float64Array(capacity);
+      this.lastStaticOther = new Float64Array(capacity);
       this.lastStaticKey = new Int32Array(capacity);
       this.lastStaticImpulse = new Float64Array(capacity);
     }
     for (let c = 0; c < this.staticCount; c++) {
       this.lastStaticBody[c] = this.staticBody[c];
       this.lastStaticHandle[c] = bodies.handleOf(this.staticBody[c]);
+      this.lastStaticOther[c] = otherHandle(segments, this.staticKey[c]);
       this.lastStaticKey[c] = this.staticKey[c];
       this.lastStaticImpulse[c] = this.staticImpulse[c];
     }
@@ -373,9 +382,14 @@ export class IterativeSolver {
 
   memoryBytes(): number {
     // Six float64 columns per contact, two int32 and three float64 per remembered contact; per
-    // static contact two int32 and four float64, and two int32 and two float64 remembered.
-    return this.impulse.length * 48 + this.lastImpulse.length * 32 + this.staticBody.length * 40 + this.lastStaticBody.length * 24;
+    // static contact two int32 and four float64, and two int32 and three float64 remembered.
+    return this.impulse.length * 48 + this.lastImpulse.length * 32 + this.staticBody.length * 40 + this.lastStaticBody.length * 32;
   }
+}
+
+/** What a static contact's key names beyond the body: a segment's handle, or -1 for a wall. */
+function otherHandle(segments: SegmentStore, key: number): number {
+  return key < FIRST_SEGMENT ? -1 : segments.handleOf(key - FIRST_SEGMENT);
 }
 
 /** The unit normal from a segment's closest point towards a body (setSegmentNormal's result). */
