@@ -204,11 +204,12 @@ describe('targets', () => {
     expect(Object.keys(result.t5.mixedOverUniform)).toEqual(['maxgrid:maxgrid', 'maxgrid:hgrid', 'maxgrid:auto']);
     // T4 steps a world on 1 thread and on 2: the bits must agree.
     expect(result.t4).toMatchObject({ status: 'ok', n: 4000, threads: 2, steps: 3, hashesMatch: true });
-    // Two threads can at best halve the time of twice the work: the ratios lie in (0, 2.5).
+    // The host probe ran before and after: ratios of timings, so only their presence is checked
+    // here (a busy machine can push a tiny probe's ratio anywhere; the lab reports, not asserts).
     for (const scaling of [result.t4.hostScalingBefore!, result.t4.hostScalingAfter!]) {
       for (const ratio of [scaling.compute, scaling.memory]) {
+        expect(Number.isFinite(ratio)).toBe(true);
         expect(ratio).toBeGreaterThan(0);
-        expect(ratio).toBeLessThan(2.5);
       }
     }
     expect(result.notMeasured.map((x) => x.target.split(' ')[0])).toEqual(['T7']);
