@@ -76,7 +76,6 @@ export class Queries {
    * only the answer is an object.
    */
   rayFirst(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, into: RayHit | null): RayHit | null {
-    this.hitCount = 0;
     this.bestFraction = Infinity;
     this.walk(version, x1, y1, x2, y2, mask, false);
     if (this.bestFraction === Infinity) return null;

@@ -3,7 +3,7 @@ import type { ContactBuffer } from '../store/contact-buffer.js';
 import { mixRestitution } from './restitution.js';
 import { outsideBox } from './box-walls.js';
 import type { ContactEvents } from '../store/contact-events.js';
-import { wakesSleeper } from './sleep.js';
+import { touchSleeper } from './sleep.js';
 
 /**
  * Resolves contacts one after another, in the buffer's canonical order (report 3.1.5, 5.10).
@@ -164,14 +164,8 @@ export function resolveContact(bodies: BodyStore, i: number, j: number, settings
   let wi = invMass[i];
   let wj = invMass[j];
   if (bodies.sleepingCount > 0) {
-    if (asleep[i]) {
-      if (wakesSleeper(bodies, j, settings.wakeSpeed)) bodies.wake(i);
-      else wi = 0;
-    }
-    if (asleep[j]) {
-      if (wakesSleeper(bodies, i, settings.wakeSpeed)) bodies.wake(j);
-      else wj = 0;
-    }
+    if (asleep[i]) wi = touchSleeper(bodies, i, j, settings.wakeSpeed);
+    if (asleep[j]) wj = touchSleeper(bodies, j, i, settings.wakeSpeed);
   }
   const w = wi + wj;
   if (w === 0) return;

@@ -6,13 +6,15 @@ import { grownCapacity, grow } from '../util/grow.js';
 import { mixRestitution } from './restitution.js';
 import type { SolverSettings } from './contact-solver.js';
 import type { SegmentGrid, SegmentStore } from '../store/segment-store.js';
-import { closestOnSegment } from '../narrowphase/circle-segment.js';
-import { wakesSleeper } from './sleep.js';
+import { closestOnSegment, segmentNormal } from '../narrowphase/circle-segment.js';
+import { touchSleeper } from './sleep.js';
 
 /** Static contacts are keyed by body, then by this: a box wall's side (0-3), or FIRST_SEGMENT + the segment's slot. */
 const FIRST_SEGMENT = 4;
 
 const closest = { x: 0, y: 0 };
+/** The unit normal from a segment's closest point towards a body (segmentNormal's result). */
+const normal = { x: 0, y: 0 };
 
 /**
  * The solve for `solverIterations` above 1: sequential impulses as in Box2D v2, for piles and
@@ -100,14 +102,8 @@ export class IterativeSolver {
       inverseLo[k] = invMass[i];
       inverseHi[k] = invMass[j];
       if (bodies.sleepingCount > 0) {
-        if (asleep[i]) {
-          if (wakesSleeper(bodies, j, settings.wakeSpeed)) bodies.wake(i);
-          else inverseLo[k] = 0;
-        }
-        if (asleep[j]) {
-          if (wakesSleeper(bodies, i, settings.wakeSpeed)) bodies.wake(j);
-          else inverseHi[k] = 0;
-        }
+        if (asleep[i]) inverseLo[k] = touchSleeper(bodies, i, j, settings.wakeSpeed);
+        if (asleep[j]) inverseHi[k] = touchSleeper(bodies, j, i, settings.wakeSpeed);
       }
       const dx = x[j] - x[i];
       const dy = y[j] - y[i];
@@ -167,7 +163,7 @@ export class IterativeSolver {
         segmentContacts++;
         events?.noteSegmentTouch(i, s);
         const dist = Math.sqrt(distSq);
-        setSegmentNormal(dx, dy, dist, segments, s);
+        segmentNormal(dx, dy, dist, segments.ax[s], segments.ay[s], segments.bx[s], segments.by[s], normal);
         const vn = vx[i] * normal.x + vy[i] * normal.y;
         if (vn < 0 && -vn >= settings.hitThreshold && events) events.recordSegmentHit(bodies, i, segments, s, -vn);
         const bounce = vn < 0 && -vn >= settings.restitutionThreshold ? -mixRestitution(restitution[i], segments.restitution[s]) * vn : 0;
@@ -326,7 +322,7 @@ export class IterativeSolver {
       const dist = Math.sqrt(dx * dx + dy * dy);
       const excess = r + segments.thickness[s] - dist - contactSlop;
       if (!(excess > 0)) continue;
-      setSegmentNormal(dx, dy, dist, segments, s);
+      segmentNormal(dx, dy, dist, segments.ax[s], segments.ay[s], segments.bx[s], segments.by[s], normal);
       x[i] += excess * positionCorrection * normal.x;
       y[i] += excess * positionCorrection * normal.y;
     }
@@ -390,24 +386,4 @@ export class IterativeSolver {
 /** What a static contact's key names beyond the body: a segment's handle, or -1 for a wall. */
 function otherHandle(segments: SegmentStore, key: number): number {
   return key < FIRST_SEGMENT ? -1 : segments.handleOf(key - FIRST_SEGMENT);
-}
-
-/** The unit normal from a segment's closest point towards a body (setSegmentNormal's result). */
-const normal = { x: 0, y: 0 };
-
-/**
- * As in solveSegmentContacts: along (dx, dy), or for a centre exactly on the segment along its
- * left normal.
- */
-function setSegmentNormal(dx: number, dy: number, dist: number, segments: SegmentStore, s: number): void {
-  if (dist > 0) {
-    normal.x = dx / dist;
-    normal.y = dy / dist;
-    return;
-  }
-  const ex = segments.bx[s] - segments.ax[s];
-  const ey = segments.by[s] - segments.ay[s];
-  const length = Math.sqrt(ex * ex + ey * ey);
-  normal.x = length > 0 ? -ey / length : 1;
-  normal.y = length > 0 ? ex / length : 0;
 }

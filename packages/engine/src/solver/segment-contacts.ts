@@ -2,11 +2,12 @@ import type { BodyStore } from '../store/body-store.js';
 import type { SegmentStore, SegmentGrid } from '../store/segment-store.js';
 import type { ContactEvents } from '../store/contact-events.js';
 import { TypeCode } from '../store/body-types.js';
-import { closestOnSegment } from '../narrowphase/circle-segment.js';
+import { closestOnSegment, segmentNormal } from '../narrowphase/circle-segment.js';
 import { mixRestitution } from './restitution.js';
 import type { SolverSettings } from './contact-solver.js';
 
 const closest = { x: 0, y: 0 };
+const normal = { x: 0, y: 0 };
 
 /**
  * Dynamic circles against static segments, after the circle-circle contacts. Bodies in slot order,
@@ -50,18 +51,9 @@ export function solveSegmentContacts(
       contacts++;
       events?.noteSegmentTouch(i, s);
       const dist = Math.sqrt(distSq);
-      let nx: number;
-      let ny: number;
-      if (dist > 0) {
-        nx = dx / dist;
-        ny = dy / dist;
-      } else {
-        const ex = bx - ax;
-        const ey = by - ay;
-        const length = Math.sqrt(ex * ex + ey * ey);
-        nx = length > 0 ? -ey / length : 1;
-        ny = length > 0 ? ex / length : 0;
-      }
+      segmentNormal(dx, dy, dist, ax, ay, bx, by, normal);
+      const nx = normal.x;
+      const ny = normal.y;
       const vn = vx[i] * nx + vy[i] * ny;
       if (vn < 0) {
         if (events !== null && -vn >= hitThreshold) events.recordSegmentHit(bodies, i, segments, s, -vn);

@@ -7,7 +7,7 @@ import { grownCapacity } from '../util/grow.js';
  * Sleeping (report 3.1.4.1, 5.3.3). A dynamic body slower than `speed` accumulates still time;
  * once it has been still for `time` seconds it may fall asleep: zero velocity, skipped by
  * integration and, paired with another sleeper or a static body, by the narrow-phase. It wakes
- * when a body faster than `speed` touches it (in the solver, see wakesSleeper) and whenever the
+ * when a body faster than `speed` touches it (in the solver, see touchSleeper) and whenever the
  * user changes it (velocity, position, type, force, impulse).
  *
  * A still body falls asleep only together with the awake bodies it touches: only when every one of
@@ -57,24 +57,27 @@ export class SleepStage {
 }
 
 /**
- * Whether the body in `slot` lets its neighbours sleep, and leaves sleepers it touches asleep:
- * static bodies and sleepers do, dynamic bodies once still for `time` seconds; kinematic bodies
- * never (they move as they were told).
+ * Whether the body in `slot` lets the awake bodies it touches fall asleep: static bodies and
+ * sleepers do, dynamic bodies once still for `time` seconds; kinematic bodies never (they move as
+ * they were told).
  */
-export function isStill(bodies: BodyStore, slot: number, time: number): boolean {
+function isStill(bodies: BodyStore, slot: number, time: number): boolean {
   const t = bodies.type[slot];
   if (t === TypeCode.static || bodies.asleep[slot]) return true;
   return t === TypeCode.dynamic && bodies.sleepTime[slot] >= time;
 }
 
 /**
- * The solvers' waking rule for a contact between a sleeper and the body in `other`: wake it when
- * `other` is kinematic or moves faster than `speed` (the world's sleepSpeed); otherwise the sleeper
- * stays asleep and takes the contact as a static body would (inverse mass 0 on its side).
+ * The solvers' rule for a contact of the sleeper in `sleeper` with the body in `other`, applied
+ * before the contact is solved: the sleeper wakes when `other` is kinematic or moves faster than
+ * `speed` (the world's sleepSpeed); otherwise it stays asleep and takes the contact as a static
+ * body would. Returns the inverse mass to solve the contact with on the sleeper's side.
  */
-export function wakesSleeper(bodies: BodyStore, other: number, speed: number): boolean {
+export function touchSleeper(bodies: BodyStore, sleeper: number, other: number, speed: number): number {
   const t = bodies.type[other];
-  if (t === TypeCode.kinematic) return true;
-  if (t !== TypeCode.dynamic || bodies.asleep[other]) return false;
-  return bodies.vx[other] * bodies.vx[other] + bodies.vy[other] * bodies.vy[other] > speed * speed;
+  const { vx, vy } = bodies;
+  const wakes = t === TypeCode.kinematic || (t === TypeCode.dynamic && !bodies.asleep[other] && vx[other] * vx[other] + vy[other] * vy[other] > speed * speed);
+  if (!wakes) return 0;
+  bodies.wake(sleeper);
+  return bodies.invMass[sleeper];
 }

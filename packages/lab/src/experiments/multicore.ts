@@ -43,13 +43,14 @@ export async function multiCore(o: MultiCoreOptions, ctx: RunContext): Promise<M
   const parallel = buildWorld(scene, { broadphase: 'maxgrid' });
   // minBodies 0: the lab's small test sizes measure the parallel path too.
   await parallel.startWorkers(o.threads, { minBodies: 0 });
+  const serialTimes: number[] = [];
+  const parallelTimes: number[] = [];
+  let hashesMatch: boolean;
   try {
     for (let s = 0; s < o.warmupSteps; s++) {
       serial.step(o.dt);
       parallel.step(o.dt);
     }
-    const serialTimes: number[] = [];
-    const parallelTimes: number[] = [];
     for (let s = 0; s < o.steps; s++) {
       ctx.progress?.(s, o.steps, `T4 N=${o.n} step ${s + 1}, 1 vs ${o.threads} threads`);
       const t0 = now();
@@ -61,27 +62,27 @@ export async function multiCore(o: MultiCoreOptions, ctx: RunContext): Promise<M
       parallelTimes.push(t2 - t1);
       await ctx.yieldToHost?.();
     }
-    const serialMs = spread(serialTimes);
-    const parallelMs = spread(parallelTimes);
-    const hashesMatch = serial.stateHash() === parallel.stateHash();
-    parallel.stopWorkers();
-    ctx.progress?.(o.steps, o.steps, 'T4 probing the host again');
-    const hostScalingAfter = await ctx.host?.hostScaling?.();
-    return {
-      status: 'ok',
-      n: o.n,
-      threads: o.threads,
-      steps: o.steps,
-      serialMs,
-      parallelMs,
-      speedup: serialMs.median / parallelMs.median,
-      parallelStepsPerSecond: 1000 / parallelMs.median,
-      hashesMatch,
-      ...(hostScalingBefore && hostScalingAfter ? { hostScalingBefore, hostScalingAfter } : {}),
-    };
+    hashesMatch = serial.stateHash() === parallel.stateHash();
   } finally {
+    // Stopped before the second probe too: idle workers poll for their next command.
     parallel.stopWorkers();
   }
+  ctx.progress?.(o.steps, o.steps, 'T4 probing the host again');
+  const hostScalingAfter = await ctx.host?.hostScaling?.();
+  const serialMs = spread(serialTimes);
+  const parallelMs = spread(parallelTimes);
+  return {
+    status: 'ok',
+    n: o.n,
+    threads: o.threads,
+    steps: o.steps,
+    serialMs,
+    parallelMs,
+    speedup: serialMs.median / parallelMs.median,
+    parallelStepsPerSecond: 1000 / parallelMs.median,
+    hashesMatch,
+    ...(hostScalingBefore && hostScalingAfter ? { hostScalingBefore, hostScalingAfter } : {}),
+  };
 }
 
 export const multiCoreSchema = {

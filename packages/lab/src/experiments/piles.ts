@@ -123,7 +123,7 @@ function measurePile(scene: Scene, x: Float64Array, y: Float64Array, r: Float64A
     for (const dc of [0, 1, columns - 1, columns, columns + 1]) {
       for (const j of cells.get(c + dc) ?? []) {
         // Each unordered pair once: within a cell by index, across cells from one side only.
-        if (dc === 0 ? j <= i : false) continue;
+        if (dc === 0 && j <= i) continue;
         const reach = r[i] + r[j];
         const d = Math.hypot(x[j] - x[i], y[j] - y[i]);
         if (d >= reach) continue;
