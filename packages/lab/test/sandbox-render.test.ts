@@ -8,8 +8,11 @@ import {
   sandboxRenderCsv,
   sandboxRenderHeadline,
   sandboxRenderTables,
+  SANDBOX_ENGINE_ID,
   summarise,
 } from '../src/experiments/sandbox-render.js';
+import type { Engine, EngineInfo } from '../src/engines/adapter.js';
+import { mergeEngines } from '../src/node/results.js';
 
 const NVIDIA = 'ANGLE (NVIDIA, Vulkan 1.4.312 (NVIDIA NVIDIA H100 80GB HBM3 (0x00002330)), NVIDIA)';
 const SWIFTSHADER = 'ANGLE (Google, Vulkan 1.3.0 (SwiftShader Device (Subzero) (0x0000C0DE)), SwiftShader driver)';
@@ -112,6 +115,22 @@ describe('sandbox-render summary (T7)', () => {
     expect(sandboxRenderTables(result)[0].rows).toHaveLength(options.configs.length);
     expect(sandboxRenderHeadline(result)[1]).toBe('');
     expect(sandboxRenderHeadline(result)[0]).toMatch(/^webgl, 1 thread\(s\) \(WebGL on ANGLE \(NVIDIA.*60 fps, 60 steps\/s, 0 dropped: interactive/);
+  });
+
+  it('names the page its own engine, so the settings table does not give maxgrid:maxgrid the page\'s settings', async () => {
+    const lab: EngineInfo = { id: 'maxgrid:maxgrid', package: '@maxgrid/engine', version: '0.1.0', precision: 'f64', lengthScale: 1, settings: { continuous: 'false' } };
+    const ctx: RunContext = {
+      engines: [{ info: lab } as Engine],
+      environment: { runtime: 'vitest' },
+      host: { cBaseline: async () => 'none', browser: async () => 'none', sandbox: async () => 'no Chromium here' },
+    };
+    const result = await runSandboxRender(sandboxRender.options('quick', {}), ctx);
+    expect(result.meta.engines.map((e) => e.id)).toEqual([SANDBOX_ENGINE_ID]);
+    const table = new Map<string, EngineInfo>();
+    mergeEngines(table, [lab], 'step-time');
+    mergeEngines(table, result.meta.engines, 'sandbox-render');
+    expect(table.get('maxgrid:maxgrid')).toEqual(lab);
+    expect(() => mergeEngines(table, [{ ...lab, settings: { continuous: 'true' } }], 'other')).toThrow(/engine id maxgrid:maxgrid of experiment other has settings that differ/);
   });
 
   it('records a skip, with the reason, where no browser can be started', async () => {

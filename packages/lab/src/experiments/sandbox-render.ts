@@ -68,6 +68,8 @@ export interface SandboxRenderResult {
   runs: SandboxRenderRun[];
 }
 
+export const SANDBOX_ENGINE_ID = 'maxgrid:sandbox-page';
+
 const SANDBOX_WORLD =
   "built by the sandbox page from its URL, with the page's defaults: semi-implicit Euler, continuous collision on, no sleeping, fixed 1/60 s steps, at most 4 a frame";
 
@@ -111,8 +113,9 @@ export function summarise(config: SandboxRenderOptions['configs'][number], run: 
 
 export async function runSandboxRender(o: SandboxRenderOptions, ctx: RunContext): Promise<SandboxRenderResult> {
   const meta = makeMeta('sandbox-render', ctx, o);
-  // The page builds its own world: the lab adapter's settings (discrete collision and so on) do not apply.
-  meta.engines = meta.engines.map((e) => ({ ...e, settings: { world: SANDBOX_WORLD } }));
+  // The page builds its own world: the lab adapter's settings (discrete collision and so on) do not
+  // apply, so it is an engine of its own in the report's settings table.
+  meta.engines = meta.engines.map((e) => ({ ...e, id: SANDBOX_ENGINE_ID, settings: { world: SANDBOX_WORLD } }));
   if (!ctx.host) return { meta, status: 'skipped', reason: 'needs Node to drive a headless Chromium', runs: [] };
   ctx.progress?.(0, o.configs.length, 'starting Vite and Chromium');
   const host = await ctx.host.sandbox();

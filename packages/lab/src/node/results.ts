@@ -18,6 +18,20 @@ export interface ResultsRequest {
   command: string;
 }
 
+/**
+ * One row per engine id in the report's settings table: an id met again must carry the same
+ * settings, or the table would describe one experiment's engine with another's settings.
+ */
+export function mergeEngines(into: Map<string, EngineInfo>, engines: EngineInfo[], experiment: string): void {
+  for (const e of engines) {
+    const seen = into.get(e.id);
+    if (seen && JSON.stringify(seen) !== JSON.stringify(e)) {
+      throw new Error(`engine id ${e.id} of experiment ${experiment} has settings that differ from an earlier experiment's: give it an id of its own`);
+    }
+    into.set(e.id, e);
+  }
+}
+
 /** Runs every experiment with one profile and writes docs/results.md, its charts and data. */
 export async function runResults(req: ResultsRequest): Promise<string[]> {
   const dir = join(req.docsDir, 'results');
@@ -30,7 +44,7 @@ export async function runResults(req: ResultsRequest): Promise<string[]> {
     const experiment = EXPERIMENTS[name];
     const { result } = await runExperiment({ experiment, profile: req.profile, overrides: {}, command: req.command });
     results[name] = result;
-    for (const e of (result.meta as unknown as { engines: EngineInfo[] }).engines) engines.set(e.id, e);
+    mergeEngines(engines, (result.meta as unknown as { engines: EngineInfo[] }).engines, name);
     written.push(writeText(dir, `${name}.json`, JSON.stringify(result) + '\n'), writeText(dir, `${name}.csv`, experiment.csv(result)));
     const charts = writeCharts(dir, experiment.charts(result));
     written.push(...charts.flatMap((c) => [join(dir, `${c.id}.svg`), join(dir, `${c.id}.png`)]));
