@@ -84,6 +84,7 @@ const PRESENTATION: Record<string, Presentation> = {
   fill: { label: 'Fill', step: 0.01, min: 0.01, format: percent },
   maxSpeed: { label: 'Max speed', step: 10, max: 2000, format: fixed(0, ' px/s') },
   logRadius: { label: 'Log radii', step: 1, format: (v) => (v ? 'on' : 'off') },
+  shuffle: { label: 'Random order', step: 1, format: (v) => (v ? 'on' : 'off') },
 };
 
 function fromSceneSpec(key: string, spec: ParamSpec): NumberSpec {

@@ -16,6 +16,13 @@ export const uniformParams = {
     integer: true,
     description: '1: radii log-uniform (as many circles per size octave), 0: uniform in [minRadius, maxRadius]',
   },
+  shuffle: {
+    default: 0,
+    min: 0,
+    max: 1,
+    integer: true,
+    description: '1: circles listed in a random order, as a world spawning at random creates them; 0: row by row, as they lie',
+  },
 } satisfies ParamSpecs;
 
 /**
@@ -25,6 +32,10 @@ export const uniformParams = {
  * area is `fill` of it: density stays constant as N grows, which is what a per-body cost needs.
  * No gravity, restitution 1. Circles start on a jittered lattice, one per lattice cell, so they do
  * not overlap where the cell is wide enough (always, at the default sizes and fill).
+ *
+ * They are listed row by row, so an engine that stores bodies in creation order finds neighbours
+ * near each other in memory. `shuffle` lists the same circles in a random order (the same bits
+ * otherwise), which is what a world whose bodies spawn at random positions looks like in memory.
  */
 export function uniform(given?: Partial<Record<keyof typeof uniformParams, number>>): Scene {
   const p = resolveParams('uniform', uniformParams, given);
@@ -63,5 +74,22 @@ export function uniform(given?: Partial<Record<keyof typeof uniformParams, numbe
     scene.vx[k] = speed * dx;
     scene.vy[k] = speed * dy;
   }
+  if (p.shuffle) shuffleCircles(scene, new Prng(p.seed ^ SHUFFLE_SALT));
   return scene;
+}
+
+/** Salts the shuffle's generator, so that its draws are not the placement's draws again. */
+const SHUFFLE_SALT = 0x5bd1e995;
+
+/** Fisher-Yates over the circles, every column moved together. */
+function shuffleCircles(scene: Scene, rng: Prng): void {
+  const columns = [scene.x, scene.y, scene.vx, scene.vy, scene.radius];
+  for (let k = scene.count - 1; k > 0; k--) {
+    const other = Math.floor(rng.next() * (k + 1));
+    for (const column of columns) {
+      const kept = column[k];
+      column[k] = column[other];
+      column[other] = kept;
+    }
+  }
 }

@@ -61,6 +61,24 @@ describe('scenes', () => {
     for (const count of perOctave) expect(count).toBeGreaterThan(900);
   });
 
+  it('uniform with shuffle: the same circles in another order, the same for a seed', () => {
+    const rows = buildScene('uniform', { n: 3000, seed: 2 });
+    const shuffled = buildScene('uniform', { n: 3000, seed: 2, shuffle: 1 });
+    expect(buildScene('uniform', { n: 3000, seed: 2, shuffle: 0 }).x).toEqual(rows.x);
+    expect(buildScene('uniform', { n: 3000, seed: 2, shuffle: 1 }).x).toEqual(shuffled.x);
+    const circles = (s: typeof rows) => Array.from({ length: s.count }, (_, k) => [s.x[k], s.y[k], s.vx[k], s.vy[k], s.radius[k]].join(' ')).sort();
+    expect(circles(shuffled)).toEqual(circles(rows));
+    expect(shuffled.bounds).toEqual(rows.bounds);
+    // Listed out of row order: far fewer consecutive circles are lattice neighbours.
+    const steps = (s: typeof rows) => {
+      let near = 0;
+      for (let k = 1; k < s.count; k++) if (Math.hypot(s.x[k] - s.x[k - 1], s.y[k] - s.y[k - 1]) < 50) near++;
+      return near / (s.count - 1);
+    };
+    expect(steps(rows)).toBeGreaterThan(0.9);
+    expect(steps(shuffled)).toBeLessThan(0.05);
+  });
+
   it('bouncing-ball: one ball at rest, restitution 1', () => {
     const s = buildScene('bouncing-ball');
     expect(s.count).toBe(1);

@@ -4,10 +4,19 @@ import { csvLine, makeMeta, maxgridOnly, metaSchema, now, spread, spreadSchema, 
 
 /**
  * maxgrid alone as N grows to a million circles in the constant-density `uniform` scene: cost
- * per body per step (flat means linear scaling) and engine memory per body.
+ * per body per step (flat means linear scaling) and engine memory per body. Each N runs twice:
+ * with the circles created row by row, as they lie (the scene's default, and every other
+ * experiment's), and created in a random order (`shuffle`), as a world spawning at random would
+ * create them; a grid's build then writes cells and reads bodies at scattered places in memory.
  */
+export type ScaleOrder = 'rows' | 'shuffled';
+
+export const SCALE_ORDERS: readonly ScaleOrder[] = ['rows', 'shuffled'];
+
 export interface ScaleOptions {
   ns: number[];
+  /** Creation orders to run at each N. */
+  orders: ScaleOrder[];
   /** Timed steps per N; each is timed on its own, since a large-N step is far above clock resolution. */
   steps: number;
   warmupSteps: number;
@@ -16,13 +25,14 @@ export interface ScaleOptions {
 
 export function scaleDefaults(profile: Profile): ScaleOptions {
   return profile === 'full'
-    ? { ns: [1000, 4000, 16000, 64000, 256000, 1_000_000], steps: 30, warmupSteps: 5, dt: 1 / 60 }
-    : { ns: [1000, 10_000, 100_000], steps: 10, warmupSteps: 3, dt: 1 / 60 };
+    ? { ns: [1000, 4000, 16000, 64000, 256000, 1_000_000], orders: [...SCALE_ORDERS], steps: 30, warmupSteps: 5, dt: 1 / 60 }
+    : { ns: [1000, 10_000, 100_000], orders: [...SCALE_ORDERS], steps: 10, warmupSteps: 3, dt: 1 / 60 };
 }
 
 export interface ScaleRow {
   n: number;
   engine: string;
+  order: ScaleOrder;
   ms: Spread;
   /** Median step time / N, in nanoseconds. */
   nsPerBody: number;
@@ -39,12 +49,12 @@ export interface ScaleResult {
 export async function runScale(options: ScaleOptions, ctx: RunContext): Promise<ScaleResult> {
   const engines = maxgridOnly(ctx.engines, 'scale');
   const rows: ScaleRow[] = [];
-  const total = options.ns.length * engines.length;
+  const total = options.ns.length * options.orders.length * engines.length;
   let done = 0;
-  for (const n of options.ns) {
-    const scene = buildScene('uniform', { n, seed: 1 });
+  for (const n of options.ns) for (const order of options.orders) {
+    const scene = buildScene('uniform', { n, seed: 1, shuffle: order === 'shuffled' ? 1 : 0 });
     for (const engine of engines) {
-      ctx.progress?.(done++, total, `uniform N=${n} ${engine.info.id}`);
+      ctx.progress?.(done++, total, `uniform N=${n} ${order} ${engine.info.id}`);
       const b0 = now();
       const sim = engine.create(scene);
       const buildMs = now() - b0;
@@ -59,7 +69,7 @@ export async function runScale(options: ScaleOptions, ctx: RunContext): Promise<
         }
         const ms = spread(times);
         const memoryBytes = sim.memoryBytes!();
-        rows.push({ n, engine: engine.info.id, ms, nsPerBody: (ms.median * 1e6) / n, memoryBytes, bytesPerBody: memoryBytes / n, buildMs });
+        rows.push({ n, engine: engine.info.id, order, ms, nsPerBody: (ms.median * 1e6) / n, memoryBytes, bytesPerBody: memoryBytes / n, buildMs });
       } finally {
         sim.dispose();
       }
@@ -71,21 +81,26 @@ export async function runScale(options: ScaleOptions, ctx: RunContext): Promise<
 }
 
 export function scaleCsv(result: ScaleResult): string {
-  const lines = [csvLine(['n', 'engine', 'median_ms', 'p25_ms', 'p75_ms', 'ns_per_body', 'memory_bytes', 'bytes_per_body', 'build_ms'])];
+  const lines = [csvLine(['n', 'engine', 'order', 'median_ms', 'p25_ms', 'p75_ms', 'ns_per_body', 'memory_bytes', 'bytes_per_body', 'build_ms'])];
   for (const r of result.rows) {
-    lines.push(csvLine([r.n, r.engine, r.ms.median, r.ms.p25, r.ms.p75, r.nsPerBody, r.memoryBytes, r.bytesPerBody, r.buildMs]));
+    lines.push(csvLine([r.n, r.engine, r.order, r.ms.median, r.ms.p25, r.ms.p75, r.nsPerBody, r.memoryBytes, r.bytesPerBody, r.buildMs]));
   }
   return lines.join('\n') + '\n';
 }
 
 export function scaleCharts(result: ScaleResult): ChartSpec[] {
-  const engines = [...new Set(result.rows.map((r) => r.engine))];
+  const lines = [...new Set(result.rows.map((r) => scaleLine(r)))];
   const series = (f: (r: ScaleRow) => number) =>
-    engines.map((e) => ({ name: e, points: result.rows.filter((r) => r.engine === e).map((r) => [r.n, f(r)] as [number, number]) }));
+    lines.map((name) => ({ name, points: result.rows.filter((r) => scaleLine(r) === name).map((r) => [r.n, f(r)] as [number, number]) }));
   return [
     lineChart({ id: 'scale-ns-per-body', title: 'Cost per body per step vs N (uniform)', xName: 'N (circles)', yName: 'ns per body per step', xLog: true, series: series((r) => r.nsPerBody) }),
     lineChart({ id: 'scale-bytes-per-body', title: 'Engine memory per body vs N (uniform)', xName: 'N (circles)', yName: 'bytes per body', xLog: true, series: series((r) => r.bytesPerBody) }),
   ];
+}
+
+/** A chart line: the engine, and the creation order where it is not the scene's own. */
+export function scaleLine(r: ScaleRow): string {
+  return r.order === 'rows' ? r.engine : `${r.engine}, shuffled`;
 }
 
 export const scaleSchema = {
@@ -99,10 +114,11 @@ export const scaleSchema = {
       minItems: 1,
       items: {
         type: 'object',
-        required: ['n', 'engine', 'ms', 'nsPerBody', 'memoryBytes', 'bytesPerBody', 'buildMs'],
+        required: ['n', 'engine', 'order', 'ms', 'nsPerBody', 'memoryBytes', 'bytesPerBody', 'buildMs'],
         properties: {
           n: { type: 'integer', minimum: 1 },
           engine: { type: 'string', pattern: '^maxgrid:' },
+          order: { enum: SCALE_ORDERS },
           ms: spreadSchema,
           nsPerBody: { type: 'number', minimum: 0 },
           memoryBytes: { type: 'integer', minimum: 1 },

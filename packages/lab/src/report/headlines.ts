@@ -28,11 +28,24 @@ export function falsePositiveHeadline(r: FalsePositiveResult): string[] {
 }
 
 export function scaleHeadline(r: ScaleResult): string[] {
-  const first = r.rows[0];
-  const last = r.rows[r.rows.length - 1];
-  return [
-    `${last.engine}: ${fmt(last.nsPerBody)} ns per body per step at N = ${last.n.toLocaleString('en-US')} against ${fmt(first.nsPerBody)} at N = ${first.n.toLocaleString('en-US')} (ratio ${ratioText(last.nsPerBody / first.nsPerBody)}); ${fmt(last.bytesPerBody)} bytes per body.`,
-  ];
+  const out: string[] = [];
+  const ordered = r.rows.filter((x) => x.order === 'rows');
+  const shuffled = r.rows.filter((x) => x.order === 'shuffled');
+  for (const rows of [ordered, shuffled]) {
+    if (rows.length === 0) continue;
+    const first = rows[0];
+    const last = rows[rows.length - 1];
+    const how = first.order === 'rows' ? 'created row by row' : 'created in a random order';
+    out.push(
+      `${last.engine}, ${how}: ${fmt(last.nsPerBody)} ns per body per step at N = ${last.n.toLocaleString('en-US')} against ${fmt(first.nsPerBody)} at N = ${first.n.toLocaleString('en-US')} (ratio ${ratioText(last.nsPerBody / first.nsPerBody)}); ${fmt(last.bytesPerBody)} bytes per body.`,
+    );
+  }
+  const last = ordered[ordered.length - 1];
+  const twin = last && shuffled.find((x) => x.n === last.n && x.engine === last.engine);
+  if (twin) {
+    out.push(`At N = ${last.n.toLocaleString('en-US')}, shuffled / row by row = ${ratioText(twin.ms.median / last.ms.median)} per step: the grid's build reads and writes scattered memory.`);
+  }
+  return out;
 }
 
 export function stepTimeHeadline(r: StepTimeResult): string[] {
