@@ -258,10 +258,13 @@ export function resolveCircle(input: unknown, defaultRestitution: number): NewBo
   if (o.mass !== undefined) {
     if (o.density !== undefined) throw new TypeError(`give mass or density, not both (mass ${String(o.mass)}, density ${String(o.density)})`);
     mass = positiveNumber('mass', o.mass);
+    // Collisions divide by the mass: its inverse must be finite too, or the first contact gives NaN.
+    if (!Number.isFinite(1 / mass)) throw new RangeError(`mass must be at least ${1 / Number.MAX_VALUE} (so that 1 / mass is finite), got ${mass}`);
   } else {
     const density = o.density === undefined ? 1 : positiveNumber('density', o.density);
     mass = density * Math.PI * radius * radius;
     if (!Number.isFinite(mass)) throw new RangeError(`mass from density ${density} and radius ${radius} is not finite`);
+    if (!Number.isFinite(1 / mass)) throw new RangeError(`mass from density ${density} and radius ${radius} is ${mass}, too small for 1 / mass to be finite`);
   }
   return {
     x: finiteNumber('x', o.x),

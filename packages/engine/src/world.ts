@@ -1,4 +1,4 @@
-import { BodyStore } from './store/body-store.js';
+import { BodyStore, SLOT_SPACE } from './store/body-store.js';
 import { SegmentStore } from './store/segment-store.js';
 import type { BodyType } from './store/body-types.js';
 import { TypeCode, typeName } from './store/body-types.js';
@@ -15,7 +15,7 @@ import { StepPipeline } from './step/pipeline.js';
 import { checkWorkerCount, DEFAULT_MIN_BODIES, ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
 import type { IntegratorName } from './integrate/integrator.js';
-import { finiteNumber, nonNegativeNumber } from './util/validate.js';
+import { describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
 import {
   bodyType,
   broadphaseName,
@@ -123,6 +123,7 @@ export class World {
   createCircle(options: CircleOptions): number {
     const body = resolveCircle(options, this.defaultRestitution);
     this.assertInBox(body.x, body.y, body.radius);
+    if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
     this.geometryVersion++;
     return this.bodies.handleOf(this.bodies.add(body));
   }
@@ -134,7 +135,9 @@ export class World {
 
   /** A static wall from (x1, y1) to (x2, y2), at any angle, optionally thick. Segment handles are their own space. */
   createSegment(options: SegmentOptions): number {
-    return this.segments.add(resolveSegment(options, this.defaultRestitution));
+    const segment = resolveSegment(options, this.defaultRestitution);
+    if (!this.segments.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} segments at once (handles encode the slot in 24 bits)`);
+    return this.segments.add(segment);
   }
 
   destroySegment(handle: number): void {
@@ -244,6 +247,7 @@ export class World {
   setLinearDamping(handle: number, damping: number): void {
     const s = this.slot(handle);
     this.bodies.setMotion(s, this.bodies.gravityScale[s], nonNegativeNumber('linearDamping', damping));
+    this.bodies.wake(s);
   }
 
   /** Collision layers: bodies a and b collide only if (a.category & b.mask) and (b.category & a.mask). */
@@ -291,7 +295,8 @@ export class World {
 
   /** Pre-sizes body storage for `count` bodies, so that creating them never reallocates. */
   reserve(count: number): void {
-    if (!Number.isSafeInteger(count) || count < 0) throw new RangeError(`reserve count must be a non-negative integer, got ${count}`);
+    nonNegativeInteger('reserve count', count);
+    if (count > SLOT_SPACE) throw new RangeError(`reserve count must be at most ${SLOT_SPACE} (the bodies a world can hold), got ${count}`);
     this.bodies.reserve(count);
   }
 
@@ -305,8 +310,8 @@ export class World {
    */
   async startWorkers(workerCount: number, options: { minBodies?: number } = {}): Promise<void> {
     checkWorkerCount(workerCount);
-    const minBodies = options.minBodies ?? DEFAULT_MIN_BODIES;
-    if (!Number.isSafeInteger(minBodies) || minBodies < 0) throw new RangeError(`minBodies must be a non-negative integer, got ${minBodies}`);
+    knownKeys('startWorkers options', plainObject('startWorkers options', options), ['minBodies']);
+    const minBodies = options.minBodies === undefined ? DEFAULT_MIN_BODIES : nonNegativeInteger('minBodies', options.minBodies);
     this.stopWorkers();
     const started = this.workerStarts;
     const parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts);
@@ -461,13 +466,13 @@ export class World {
 
   private segmentSlot(handle: number): number {
     const s = this.segments.slotOf(handle);
-    if (s < 0) throw new RangeError(`segment handle ${String(handle)} is unknown or destroyed`);
+    if (s < 0) throw new RangeError(`segment handle ${describeValue(handle)} is unknown or destroyed`);
     return s;
   }
 
   private slot(handle: number): number {
     const s = this.bodies.slotOf(handle);
-    if (s < 0) throw new RangeError(`handle ${String(handle)} ${this.bodies.describeMissing(handle)}`);
+    if (s < 0) throw new RangeError(`handle ${describeValue(handle)} ${this.bodies.describeMissing(handle)}`);
     return s;
   }
 

@@ -258,12 +258,26 @@ describe('parallel step', () => {
     const world = uniform(100)();
     const before = world.stateHash();
     await world.startWorkers(2);
-    for (const bad of [0, -1, 1.5, 17, Number.NaN]) {
+    for (const bad of [0, -1, 1.5, 17]) {
       await expect(world.startWorkers(bad)).rejects.toThrow(new RegExp(`workerCount must be an integer in \\[1, 16\\], got ${bad}`));
       expect(world.workerCount).toBe(2);
     }
-    for (const bad of [-1, 0.5, Number.POSITIVE_INFINITY]) {
+    for (const [bad, shown] of [[Number.NaN, 'NaN'], ['2', '"2"']] as const) {
+      await expect(world.startWorkers(bad as number)).rejects.toThrow(new TypeError(`workerCount must be a finite number, got ${shown}`));
+      expect(world.workerCount).toBe(2);
+    }
+    for (const bad of [-1, 0.5]) {
       await expect(world.startWorkers(2, { minBodies: bad })).rejects.toThrow(`minBodies must be a non-negative integer, got ${bad}`);
+      expect(world.workerCount).toBe(2);
+    }
+    for (const [options, message] of [
+      [{ minBodies: Number.POSITIVE_INFINITY }, 'minBodies must be a finite number, got Infinity'],
+      [{ minBodies: '5' }, 'minBodies must be a finite number, got "5"'],
+      [{ minBodes: 1 }, "startWorkers options has unknown option 'minBodes'"],
+      [null, 'startWorkers options must be an object, got null'],
+    ] as const) {
+      await expect(world.startWorkers(2, options as never)).rejects.toBeInstanceOf(TypeError);
+      await expect(world.startWorkers(2, options as never)).rejects.toThrow(message);
       expect(world.workerCount).toBe(2);
     }
     world.stopWorkers();

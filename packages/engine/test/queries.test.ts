@@ -31,8 +31,12 @@ function bruteRay(world: World, x1: number, y1: number, x2: number, y2: number) 
     const cc = fx * fx + fy * fy - c.radius * c.radius;
     const a = dx * dx + dy * dy;
     const b = fx * dx + fy * dy;
-    if (cc <= 0 || a === 0 || b >= 0 || b * b - a * cc < 0) continue;
-    const t = (-b - Math.sqrt(b * b - a * cc)) / a;
+    // The discriminant b^2 - a cc as a r^2 - (f x d)^2, and the near root as cc / (-b + sqrt):
+    // the same values, rounded as the engine rounds them, so near-ties sort alike.
+    const cross = fx * dy - fy * dx;
+    const discriminant = a * c.radius * c.radius - cross * cross;
+    if (cc <= 0 || a === 0 || b >= 0 || discriminant < 0) continue;
+    const t = cc / (-b + Math.sqrt(discriminant));
     if (t <= 1) hits.push({ handle: h, fraction: t });
   }
   return hits.sort((p, q) => p.fraction - q.fraction || p.handle - q.handle);
@@ -85,6 +89,23 @@ describe('queries agree with brute force', () => {
       }),
       { numRuns: 400, seed: 3 },
     );
+  });
+
+  it('a ray that starts far away still hits, on the circle, to the precision of its start', () => {
+    const world = new World();
+    const h = world.createCircle({ x: 50, y: 50, radius: 5 });
+    for (const far of [1e3, 1e9, 1e12, 1e16]) {
+      for (const [x1, y1, x2, y2] of [[-far, 50, far, 50], [50, far, 50, -far], [50 - far, 50 - far, 50 + far, 50 + far]]) {
+        const hit = world.rayCast(x1, y1, x2, y2);
+        expect(hit?.handle, `from (${x1}, ${y1})`).toBe(h);
+        // The start itself is only known to within an ulp of its coordinates.
+        const slack = 8 * far * Number.EPSILON;
+        expect(Math.abs(Math.hypot(hit!.x - 50, hit!.y - 50) - 5), `from (${x1}, ${y1})`).toBeLessThanOrEqual(1e-9 + slack);
+      }
+    }
+    // Parallel rays just inside and just outside the rim, from far away.
+    expect(world.rayCast(-1e9, 54.99, 1e9, 54.99)?.handle).toBe(h);
+    expect(world.rayCast(-1e9, 55.01, 1e9, 55.01)).toBeNull();
   });
 
   it('queries see the world as it is after steps and edits', () => {

@@ -19,6 +19,23 @@ describe('sleeping (report 3.1.4.1, 5.3.3)', () => {
     expect(world.stats.contacts).toBe(0);
   });
 
+  it.each([
+    ['setVelocity', (w: World, h: number) => w.setVelocity(h, 1, 0)],
+    ['setPosition', (w: World, h: number) => w.setPosition(h, 30, 80)],
+    ['applyForce', (w: World, h: number) => w.applyForce(h, 1, 0)],
+    ['applyImpulse', (w: World, h: number) => w.applyImpulse(h, 1, 0)],
+    ['setGravityScale', (w: World, h: number) => w.setGravityScale(h, 2)],
+    ['setLinearDamping', (w: World, h: number) => w.setLinearDamping(h, 2)],
+    ['setCollisionFilter', (w: World, h: number) => w.setCollisionFilter(h, 2, 0xffffffff)],
+  ])('%s wakes a sleeping body, as every call that changes a body does', (_, change) => {
+    const world = restingPile(true);
+    for (let s = 0; s < 120; s++) world.step(1 / 60);
+    const h = world.handles()[0];
+    expect(world.isAwake(h)).toBe(false);
+    change(world, h);
+    expect(world.isAwake(h)).toBe(true);
+  });
+
   it('is off by default, and a world without it never sleeps', () => {
     const world = restingPile(false);
     for (let s = 0; s < 120; s++) world.step(1 / 60);

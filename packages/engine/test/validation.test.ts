@@ -149,6 +149,38 @@ describe('bad input is rejected with a named error and leaves the world unchange
     expect(() => new World(options as never)).toThrow(shown);
   });
 
+  it.each([
+    [{ mass: 5e-324 }, 'mass', '5e-324'],
+    [{ mass: 1e-310 }, 'mass', '1e-310'],
+    [{ density: 5e-324 }, 'density', '5e-324'],
+  ])('createCircle with a mass whose inverse is not finite: %o', (options, field, shown) => {
+    rejects((w) => w.createCircle({ x: 20, y: 20, radius: 3, ...options }), RangeError, field, shown);
+  });
+
+  it('a body just heavy enough for a finite inverse collides without NaN', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    world.createCircle({ x: 0, y: 0, radius: 5, vx: 10, mass: 1e-300 });
+    world.createCircle({ x: 9, y: 0, radius: 5 });
+    world.step(1 / 60);
+    expect(Number.isFinite(world.kineticEnergy())).toBe(true);
+  });
+
+  it.each([
+    ['10', TypeError, '"10"'],
+    [Number.NaN, TypeError, 'NaN'],
+    [-1, RangeError, '-1'],
+    [2.5, RangeError, '2.5'],
+    [2 ** 24 + 1, RangeError, String(2 ** 24 + 1)],
+    [2 ** 40, RangeError, String(2 ** 40)],
+  ])('reserve(%s)', (count, kind, shown) => {
+    rejects((w) => w.reserve(count as number), kind, 'reserve count', shown);
+  });
+
+  it('a string handle is shown as a string', () => {
+    rejects((w) => w.destroyBody('0' as never), RangeError, 'handle', '"0"');
+    rejects((w) => w.destroySegment('0' as never), RangeError, 'segment handle', '"0"');
+  });
+
   it('a velocity for a static body', () => {
     const { world } = populated();
     const wall = world.handles()[1];

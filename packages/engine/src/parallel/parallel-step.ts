@@ -21,6 +21,7 @@ import {
 import { ThreadKernels } from './kernels.js';
 import { hardwareThreads, spinBudget, startWorker, threadsUnavailable, type WorkerHandle } from './host.js';
 import { awaitWorkers, publishCommand } from './handoff.js';
+import { finiteNumber } from '../util/validate.js';
 
 /**
  * Worlds with fewer live bodies step on one thread by default: each parallel stage costs a
@@ -31,6 +32,7 @@ import { awaitWorkers, publishCommand } from './handoff.js';
 export const DEFAULT_MIN_BODIES = 32_768;
 
 export function checkWorkerCount(threads: number): void {
+  finiteNumber('workerCount', threads);
   if (!Number.isSafeInteger(threads) || threads < 1 || threads > MAX_THREADS) {
     throw new RangeError(`workerCount must be an integer in [1, ${MAX_THREADS}], got ${threads}`);
   }

@@ -9,7 +9,7 @@ import { BodyKernel } from './body-kernel.js';
  * 2^24 slots (16.7M bodies) leaves 29 bits of generation inside a safe integer.
  */
 export const SLOT_SPACE = 2 ** 24;
-const MAX_GENERATION = 2 ** 28;
+export const MAX_GENERATION = 2 ** 28;
 /** A mask with every collision layer. */
 const ALL_LAYERS = 0xffffffff;
 
@@ -143,6 +143,11 @@ export class BodyStore {
     const gen = (handle - slot) / SLOT_SPACE;
     if (slot >= this.slotCount || gen > this.generation[slot]) return 'is unknown to this world';
     return 'is stale: its body was destroyed';
+  }
+
+  /** Whether `add` has a slot to give: a free one, or one below SLOT_SPACE. */
+  hasRoom(): boolean {
+    return this.freeCount > 0 || this.slotCount < SLOT_SPACE;
   }
 
   add(body: NewBody): number {

@@ -1,4 +1,4 @@
-import { SLOT_SPACE } from './body-store.js';
+import { MAX_GENERATION, SLOT_SPACE } from './body-store.js';
 import { grownCapacity, grow } from '../util/grow.js';
 
 export interface NewSegment {
@@ -60,8 +60,19 @@ export class SegmentStore {
     return this.generation[slot] * SLOT_SPACE + slot;
   }
 
+  /** Whether `add` has a slot to give: a free one, or one below SLOT_SPACE. */
+  hasRoom(): boolean {
+    return this.freeSlots.length > 0 || this.slotCount < SLOT_SPACE;
+  }
+
   remove(slot: number): void {
     this.live[slot] = 0;
+    // As for bodies: a slot whose generation would overflow the handle encoding is retired.
+    if (this.generation[slot] + 1 >= MAX_GENERATION) {
+      this.count--;
+      this.version++;
+      return;
+    }
     this.generation[slot]++;
     this.freeSlots.push(slot);
     this.count--;

@@ -33,6 +33,13 @@ export function nonNegativeNumber(field: string, value: unknown): number {
   return n;
 }
 
+/** A whole number >= 0: a TypeError when not a finite number, a RangeError when fractional or negative. */
+export function nonNegativeInteger(field: string, value: unknown): number {
+  const n = finiteNumber(field, value);
+  if (!Number.isSafeInteger(n) || n < 0) throw new RangeError(`${field} must be a non-negative integer, got ${show(value)}`);
+  return n;
+}
+
 export function oneOf<T extends string>(field: string, value: unknown, allowed: readonly T[]): T {
   if (typeof value !== 'string' || !(allowed as readonly string[]).includes(value)) {
     throw new RangeError(`${field} must be one of ${allowed.map((a) => `'${a}'`).join(', ')}, got ${show(value)}`);
