@@ -135,7 +135,7 @@ describe('scale', () => {
     expect(result.rows.map((r) => `${r.n} ${r.order}`)).toEqual(['200 rows', '200 shuffled', '2000 rows', '2000 shuffled']);
     // The same circles in another order: the same memory, and the headline compares the two.
     expect(result.rows[3].memoryBytes).toBe(result.rows[2].memoryBytes);
-    expect(scale.headline(result).at(-1)).toMatch(/^At N = 2,000, shuffled \/ row by row = [\d.]+× per step/);
+    expect(scale.headline(result).at(-1)).toMatch(/^At N = 2,000, shuffled \/ row by row = [\d.]+× per step\.$/);
     expect((scale.charts(result)[0].option.series as { name: string }[]).map((x) => x.name)).toEqual(['maxgrid:maxgrid', 'maxgrid:maxgrid, shuffled']);
     for (const r of result.rows) {
       expect(r.bytesPerBody).toBeCloseTo(r.memoryBytes / r.n, 9);

@@ -13,8 +13,8 @@ export function rayCircle(x1: number, y1: number, dx: number, dy: number, cx: nu
   const b = fx * dx + fy * dy;
   if (b >= 0) return -1;
   // b^2 - a c, written as a r^2 - (f x d)^2 (Lagrange's identity): the textbook form subtracts two
-  // nearly equal huge numbers once the start lies ~10^8 radii away, and a cast from -1e9 across a
-  // circle at the origin missed it. The near root as c / q, q = -b + sqrt(disc), has no cancellation.
+  // nearly equal huge numbers once the start lies ~10^8 radii away: a cast from (-1e9, 50) to
+  // (1e9, 50) missed a circle of radius 5 at (50, 50). The near root as c / q, q = -b + sqrt(disc), has no cancellation.
   const cross = fx * dy - fy * dx;
   const discriminant = a * r * r - cross * cross;
   if (discriminant < 0) return -1;

@@ -67,16 +67,12 @@ export class SegmentStore {
 
   remove(slot: number): void {
     this.live[slot] = 0;
-    // As for bodies: a slot whose generation would overflow the handle encoding is retired.
-    if (this.generation[slot] + 1 >= MAX_GENERATION) {
-      this.count--;
-      this.version++;
-      return;
-    }
-    this.generation[slot]++;
-    this.freeSlots.push(slot);
     this.count--;
     this.version++;
+    // As for bodies: a slot whose generation would overflow the handle encoding is retired.
+    if (this.generation[slot] + 1 >= MAX_GENERATION) return;
+    this.generation[slot]++;
+    this.freeSlots.push(slot);
   }
 
   slotOf(handle: number): number {

@@ -43,7 +43,7 @@ export function scaleHeadline(r: ScaleResult): string[] {
   const last = ordered[ordered.length - 1];
   const twin = last && shuffled.find((x) => x.n === last.n && x.engine === last.engine);
   if (twin) {
-    out.push(`At N = ${last.n.toLocaleString('en-US')}, shuffled / row by row = ${ratioText(twin.ms.median / last.ms.median)} per step: the grid's build reads and writes scattered memory.`);
+    out.push(`At N = ${last.n.toLocaleString('en-US')}, shuffled / row by row = ${ratioText(twin.ms.median / last.ms.median)} per step.`);
   }
   return out;
 }
