@@ -466,7 +466,7 @@ export class World {
 
   private segmentSlot(handle: number): number {
     const s = this.segments.slotOf(handle);
-    if (s < 0) throw new RangeError(`segment handle ${describeValue(handle)} is unknown or destroyed`);
+    if (s < 0) throw new RangeError(`segment handle ${describeValue(handle)} ${this.segments.describeMissing(handle)}`);
     return s;
   }
 

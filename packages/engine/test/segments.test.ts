@@ -70,6 +70,26 @@ describe('static segments', () => {
     expect(() => world.createSegment({ x1: NaN, y1: 0, x2: 1, y2: 0 })).toThrow(/x1 must be a finite number, got NaN/);
     expect(() => world.createSegment({ x1: 0, y1: 0, x2: 1, y2: 0, thickness: -1 })).toThrow(/thickness must be >= 0, got -1/);
   });
+
+  it('body and segment handles never stand for each other: a mix-up is refused and changes nothing', () => {
+    const world = new World({ bounds: { width: 100, height: 100 } });
+    const body = world.createCircle({ x: 50, y: 50, radius: 2 });
+    const segment = world.createSegment({ x1: 0, y1: 10, x2: 100, y2: 10, thickness: 1 });
+    // Both are the first of their kind, in slot 0 at generation 0.
+    expect(world.slotOfHandle(body)).toBe(0);
+    const before = world.stateHash();
+    expect(() => world.destroyBody(segment)).toThrow(new RangeError(`handle ${segment} is a segment handle, not a body handle`));
+    expect(world.hasBody(segment)).toBe(false);
+    expect(() => world.getCircle(segment)).toThrow(/is a segment handle, not a body handle/);
+    expect(() => world.destroySegment(body)).toThrow(new RangeError(`segment handle ${body} is a body handle, not a segment handle`));
+    expect(() => world.getSegment(body)).toThrow(/is a body handle, not a segment handle/);
+    expect(world.bodyCount).toBe(1);
+    expect(world.segmentCount).toBe(1);
+    expect(world.stateHash()).toBe(before);
+    world.destroySegment(segment);
+    expect(() => world.getSegment(segment)).toThrow(new RangeError(`segment handle ${segment} is stale: its segment was destroyed`));
+    expect(() => world.getSegment(segment + 5)).toThrow(/segment handle \d+ is unknown to this world/);
+  });
 });
 
 describe('continuous collision against static shapes (report 3.1.6)', () => {

@@ -6,10 +6,16 @@ import { BodyKernel } from './body-kernel.js';
  * Handles pack a slot index and that slot's generation: `generation * SLOT_SPACE + slot`. The
  * first body in a fresh world gets handle 0, later ones 1, 2, ...; when a slot is reused its
  * generation goes up, so an old handle to it no longer matches and is rejected as stale.
- * 2^24 slots (16.7M bodies) leaves 29 bits of generation inside a safe integer.
+ * 2^24 slots (16.7M bodies) and 2^28 generations fill 52 bits, below SEGMENT_HANDLES.
  */
 export const SLOT_SPACE = 2 ** 24;
 export const MAX_GENERATION = 2 ** 28;
+/**
+ * Segment handles are offset by 2^52, still safe integers: a segment handle passed where a body's
+ * is expected (or the other way round) is then refused by name, instead of reaching the body or
+ * segment that happens to share its slot and generation.
+ */
+export const SEGMENT_HANDLES = 2 ** 52;
 /** A mask with every collision layer. */
 const ALL_LAYERS = 0xffffffff;
 
@@ -139,6 +145,7 @@ export class BodyStore {
   /** Explains why `slotOf` refused a handle, for error messages. */
   describeMissing(handle: number): string {
     if (!Number.isSafeInteger(handle) || handle < 0) return 'is not a body handle';
+    if (handle >= SEGMENT_HANDLES) return 'is a segment handle, not a body handle';
     const slot = handle % SLOT_SPACE;
     const gen = (handle - slot) / SLOT_SPACE;
     if (slot >= this.slotCount || gen > this.generation[slot]) return 'is unknown to this world';

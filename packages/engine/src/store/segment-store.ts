@@ -1,4 +1,4 @@
-import { MAX_GENERATION, SLOT_SPACE } from './body-store.js';
+import { MAX_GENERATION, SEGMENT_HANDLES, SLOT_SPACE } from './body-store.js';
 import { grownCapacity, grow } from '../util/grow.js';
 
 export interface NewSegment {
@@ -15,7 +15,7 @@ export interface NewSegment {
 /**
  * Static line segments (walls at any angle, thick or not), stored apart from bodies: they never
  * move, so they get a grid of their own that is rebuilt only when segments are added or removed.
- * Handles work as body handles do (generation x 2^24 + slot), in a space of their own.
+ * Handles work as body handles do, offset into a space of their own: 2^52 + generation x 2^24 + slot.
  */
 export class SegmentStore {
   count = 0;
@@ -57,7 +57,7 @@ export class SegmentStore {
 
   /** The handle of the live segment in `slot`. */
   handleOf(slot: number): number {
-    return this.generation[slot] * SLOT_SPACE + slot;
+    return SEGMENT_HANDLES + this.generation[slot] * SLOT_SPACE + slot;
   }
 
   /** Whether `add` has a slot to give: a free one, or one below SLOT_SPACE. */
@@ -75,11 +75,22 @@ export class SegmentStore {
     this.freeSlots.push(slot);
   }
 
+  /** The slot of a live segment's handle, or -1 for an unknown or stale one. */
   slotOf(handle: number): number {
-    if (!Number.isSafeInteger(handle) || handle < 0) return -1;
-    const slot = handle % SLOT_SPACE;
-    const gen = (handle - slot) / SLOT_SPACE;
+    if (!Number.isSafeInteger(handle) || handle < SEGMENT_HANDLES) return -1;
+    const slot = (handle - SEGMENT_HANDLES) % SLOT_SPACE;
+    const gen = (handle - SEGMENT_HANDLES - slot) / SLOT_SPACE;
     return slot < this.slotCount && this.live[slot] === 1 && this.generation[slot] === gen ? slot : -1;
+  }
+
+  /** Explains why `slotOf` refused a handle, for error messages. */
+  describeMissing(handle: number): string {
+    if (!Number.isSafeInteger(handle) || handle < 0) return 'is not a segment handle';
+    if (handle < SEGMENT_HANDLES) return 'is a body handle, not a segment handle';
+    const slot = (handle - SEGMENT_HANDLES) % SLOT_SPACE;
+    const gen = (handle - SEGMENT_HANDLES - slot) / SLOT_SPACE;
+    if (slot >= this.slotCount || gen > this.generation[slot]) return 'is unknown to this world';
+    return 'is stale: its segment was destroyed';
   }
 
   memoryBytes(): number {
