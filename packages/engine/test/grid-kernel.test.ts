@@ -4,7 +4,7 @@ import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
 import type { BodyStore } from '../src/store/body-store.js';
 import { CellGrid } from '../src/broadphase/cell-grid.js';
-import { ARENA_LIMIT_BYTES, CELL_CHUNK, GridKernel, setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
+import { ARENA_LIMIT_BYTES, CELL_CHUNK, GridKernel, bandedBin, setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import { BodyKernel } from '../src/store/body-kernel.js';
 import type { PairSink } from '../src/store/pair-sink.js';
 import { storeOf, hashWithPath } from './helpers.js';
@@ -12,7 +12,12 @@ import { storeOf, hashWithPath } from './helpers.js';
 // The grid's WebAssembly kernel must be the TypeScript loops bit for bit: same pairs in the same
 // order, so every world steps to the same state whichever path its grids took.
 
-afterEach(() => setGridKernelEnabled(true));
+const BANDED_DEFAULTS = { ...bandedBin };
+
+afterEach(() => {
+  setGridKernelEnabled(true);
+  Object.assign(bandedBin, BANDED_DEFAULTS);
+});
 
 /** A grid made with the kernel on or off. */
 function gridWith(kernel: boolean): CellGrid {
@@ -189,6 +194,87 @@ describe('grid WebAssembly kernel', () => {
       { numRuns: 60 },
     );
   });
+  describe('banded bin (bodies scattered in memory against space)', () => {
+    /** The arrays a bin leaves, as plain arrays, for comparison. */
+    function layoutOf(grid: CellGrid): number[][] {
+      const cells = grid.columns * grid.rows;
+      return [grid.cellStart.subarray(0, cells + 2), grid.sortedSlot, grid.sortedX, grid.sortedY, grid.sortedR].map((a, i) =>
+        Array.from(i === 0 ? a : a.subarray(0, grid.count)),
+      );
+    }
+
+    it('lays out every bin exactly as the TypeScript loops, bands, crowded bands and scratch growth included', () => {
+      // Bands of 1 to 40 bodies at uniform density make many bands, empty ones and a partial last
+      // one; clustered worlds overflow the first scratch (binned plainly, then with a grown one)
+      // or crowd an eighth of the bodies into one band (plain for a while). Each world is binned
+      // three times, moving a little in between, so the later bins follow a scattered first one.
+      const off = gridWith(false);
+      let banded = 0;
+      let refused = 0;
+      fc.assert(
+        fc.property(
+          fc.integer({ min: 2, max: 3000 }),
+          fc.integer({ min: 1, max: 40 }),
+          fc.constantFrom('spread', 'clustered', 'crowded', 'rows'),
+          fc.integer({ min: 0, max: 2 ** 31 - 1 }),
+          (n, perBand, shape, seed) => {
+            bandedBin.minBodies = 2;
+            bandedBin.bodiesPerBand = perBand;
+            let state = seed;
+            const random = () => ((state = (Math.imul(state, 1103515245) + 12345) >>> 0) / 2 ** 32);
+            // Bands are runs of whole rows: clustering in y fills some bands beyond the first
+            // scratch (clustered) or beyond an eighth of the bodies (crowded).
+            const near = shape === 'clustered' ? 0.1 : shape === 'crowded' ? 0.7 : 0;
+            const list = Array.from({ length: n }, (_, i) =>
+              shape === 'rows'
+                ? { x: (i % 60) * 3, y: Math.floor(i / 60) * 3, r: 1 }
+                : { x: 400 * random(), y: random() < near ? 10 * random() : 400 * random(), r: 0.5 + random() },
+            );
+            const on = gridWith(true);
+            const store = storeOf(list);
+            for (let bin = 0; bin < 3; bin++) {
+              const before = on.bandedBins;
+              const a = pairsOf(on, store, 3);
+              const b = pairsOf(off, store, 3);
+              expect(layoutOf(on)).toEqual(layoutOf(off));
+              expect(a.pairs).toEqual(b.pairs);
+              banded += on.bandedBins - before;
+              for (let i = 0; i < n; i++) store.x[i] += random() - 0.5;
+            }
+            refused += on.bandedRefusals;
+          },
+        ),
+        { numRuns: 80 },
+      );
+      // The comparisons above must have reached the banded path, not only the plain one, and
+      // also bands too full for the scratch.
+      expect(banded).toBeGreaterThan(40);
+      expect(refused).toBeGreaterThan(0);
+    });
+
+    it('is not taken for bodies created in the order they lie in space', () => {
+      bandedBin.minBodies = 2;
+      bandedBin.bodiesPerBand = 16;
+      const list = [];
+      for (let i = 0; i < 2000; i++) list.push({ x: (i % 50) * 3, y: Math.floor(i / 50) * 3, r: 1 });
+      const grid = gridWith(true);
+      for (let bin = 0; bin < 3; bin++) pairsOf(grid, storeOf(list), 3);
+      expect(grid.bandedBins).toBe(0);
+    });
+
+    it('steps a shuffled world to the same state hash as the TypeScript loops', () => {
+      bandedBin.minBodies = 1000;
+      bandedBin.bodiesPerBand = 64;
+      const build = () => buildWorld(buildScene('uniform', { n: 4000, seed: 3, shuffle: 1 }), { broadphase: 'maxgrid' });
+      let banded = 0;
+      const hash = runHash(build, 30, true, (world, step) => {
+        if (step === 29) banded = (world as unknown as { pipeline: { broadPhase: { grid: CellGrid } } }).pipeline.broadPhase.grid.bandedBins;
+      });
+      expect(banded).toBeGreaterThan(20);
+      expect(hash).toBe(runHash(build, 30, false));
+    });
+  });
+
   describe('touching test in the scan (worlds where every pair collides)', () => {
     /** Per step: contacts, candidates and, at the end, the state hash, with the grid kernel on or off. */
     function trace(on: boolean, build: () => World, steps: number, mutate?: (world: World, step: number) => void): string[] {

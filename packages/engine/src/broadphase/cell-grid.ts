@@ -15,7 +15,8 @@ import { pushOverlaps, scanRowsInScript } from './cell-grid-scan.js';
  *
  * Where WebAssembly is available the arrays live in a GridKernel's memory and binning (of slots
  * 0..n-1, or of a slot list holding at least a quarter of the slots) and scanning run there, with
- * the same results bit for bit; the loops below are the TypeScript path, used without WebAssembly,
+ * the same results bit for bit (a large world whose bodies lie scattered in memory against space
+ * bins in two levels there, see GridKernel.binBanded); the loops below are the TypeScript path, used without WebAssembly,
  * for bins over sparser slot lists, for grids a parallel step's threads bin, and for a serial scan
  * whose shared pair buffer overflowed.
  *
@@ -44,6 +45,10 @@ export class CellGrid {
   shared = false;
   /** Bumped whenever the buffers are reallocated. */
   layoutVersion = 0;
+  /** Banded bins the kernel refused (see GridKernel.binBanded): for tests. */
+  get bandedRefusals(): number {
+    return this.kernel?.bandedRefusals ?? 0;
+  }
   /** Whether binning and scanning run in WebAssembly (known from the first layout on). */
   get usesKernel(): boolean {
     return !!this.kernel;
@@ -59,6 +64,8 @@ export class CellGrid {
   pairRegion = 0;
   /** Pairs the last kernel scan found (see scanRowsOrOverflow). */
   pairsFound = 0;
+  /** Bins that took the kernel's two-level path (see GridKernel.binBanded): for tests and probes. */
+  bandedBins = 0;
   private kernelViews = -1;
   // Views of the bodies' columns over slots 0..n-1, which the kernel bins from, remade only when
   // the store reallocates its columns (its layoutVersion) or n changes: a warm step makes no views.
@@ -132,6 +139,7 @@ export class CellGrid {
     if (kernel && (slots === null || 4 * n >= span)) {
       kernel.ensureInputs(span);
       if (slots !== null) kernel.ensureSlotList(n);
+      const bandShift = slots === null && kernel.wantsBanded(n) ? kernel.ensureBanded(n, cells) : -1;
       if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
       if (this.sourceStore !== bodies || this.sourceLayout !== bodies.layoutVersion || this.sourceX.length !== span) {
         this.sourceStore = bodies;
@@ -150,6 +158,10 @@ export class CellGrid {
           this.listView = slots.subarray(offset, offset + n);
         }
         kernel.slotList.set(this.listView);
+      }
+      if (bandShift >= 0 && kernel.binBanded(n, minX, minY, inv, columns, cells, bandShift)) {
+        this.bandedBins++;
+        return;
       }
       kernel.bin(n, slots !== null, minX, minY, inv, columns, cells);
       return;
