@@ -65,9 +65,10 @@ export const CELL_CHUNK = 1024;
  * the last bin found more than a quarter of them scattered (see assembly `jumps`), in bands of
  * about `bodiesPerBand` bodies at uniform density. Tests lower both to reach the banded bin with
  * few bodies; not part of the public API.
- * Measured (bin alone, `uniform`, shuffled / created row by row): 65,536 bodies 1.47 / 0.73 ms
- * plain, 1.60 / 1.29 banded; 250,000: 10.1 / 4.4 plain, 7.0 / 5.5 banded; 1M: 59 / 16.7 plain,
- * 38-42 / 25 banded. So banded only pays where bodies are scattered, and only above L2-sized grids.
+ * Measured (the bin alone on prepared inputs, `uniform`, shuffled / created row by row): 65,536
+ * bodies 1.47 / 0.73 ms plain, 1.60 / 1.29 banded; 250,000: 10.1 / 4.4 plain, 7.0 / 5.5 banded;
+ * 1M: 59 / 16.7 plain, 38-42 / 25 banded. So it pays only where bodies are scattered, and only
+ * above L2-sized grids.
  */
 export const bandedBin = { minBodies: 1 << 17, bodiesPerBand: 4096 };
 
@@ -356,7 +357,8 @@ export class GridKernel {
 
   /**
    * Whether the next bin of n bodies (slots 0..n-1) should be banded: a private grid, at least
-   * bandedBin.minBodies of them, and the last bin found more than a quarter scattered.
+   * bandedBin.minBodies of them, and the last bin found more than a quarter of them far from the
+   * body before (assembly `jumps`).
    */
   wantsBanded(n: number): boolean {
     if (this.shared || n < bandedBin.minBodies) return false;
