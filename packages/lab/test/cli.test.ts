@@ -60,7 +60,7 @@ describe('lab CLI', () => {
       expect(result.meta.command).toBe(`npm run lab -- scale --n 100,400 --out ${out}`);
       expect(result.meta.profile).toBe('custom');
       expect(readFileSync(join(out, 'scale-ns-per-body.png')).subarray(1, 4).toString()).toBe('PNG');
-      expect(readFileSync(join(out, 'scale.csv'), 'utf8').split('\n')[0]).toMatch(/^n,engine,order,median_ms/);
+      expect(readFileSync(join(out, 'scale.csv'), 'utf8').split('\n')[0]).toMatch(/^n,engine,order,age_s,median_ms/);
       expect(existsSync(join(out, 'scale.html'))).toBe(true);
       const md = readFileSync(join(out, 'scale.md'), 'utf8');
       expect(md).toContain(`Produced by \`npm run lab -- scale --n 100,400 --out ${out}\``);

@@ -129,14 +129,21 @@ describe('false-positives', () => {
 
 describe('scale', () => {
   it('reports ns per body and bytes per body; JSON validates', async () => {
-    const options = { ...scale.options('quick', {}), ns: [200, 2000], steps: 2, warmupSteps: 1 };
+    const options = { ...scale.options('quick', {}), ns: [200, 2000], ages: [0, 0.5], steps: 2, warmupSteps: 1 };
     const result = await scale.run(options, ctx(['maxgrid:maxgrid']));
     expectValid(scale.schema, result);
-    expect(result.rows.map((r) => `${r.n} ${r.order}`)).toEqual(['200 rows', '200 shuffled', '2000 rows', '2000 shuffled']);
+    expect(result.rows.map((r) => `${r.n} ${r.order} ${r.ageSeconds}`)).toEqual(
+      ['200 rows 0', '200 rows 0.5', '200 shuffled 0', '200 shuffled 0.5', '2000 rows 0', '2000 rows 0.5', '2000 shuffled 0', '2000 shuffled 0.5'],
+    );
     // The same circles in another order: the same memory, and the headline compares the two.
-    expect(result.rows[3].memoryBytes).toBe(result.rows[2].memoryBytes);
-    expect(scale.headline(result).at(-1)).toMatch(/^At N = 2,000, shuffled \/ row by row = [\d.]+× per step\.$/);
-    expect((scale.charts(result)[0].option.series as { name: string }[]).map((x) => x.name)).toEqual(['maxgrid:maxgrid', 'maxgrid:maxgrid, shuffled']);
+    expect(result.rows[6].memoryBytes).toBe(result.rows[4].memoryBytes);
+    expect(scale.headline(result).slice(-2)).toEqual([
+      expect.stringMatching(/^At N = 2,000, shuffled \/ row by row = [\d.]+× per step\.$/),
+      expect.stringMatching(/^At N = 2,000, after 0\.5 s of motion \/ fresh: row by row [\d.]+×, shuffled [\d.]+× per step\.$/),
+    ]);
+    expect((scale.charts(result)[0].option.series as { name: string }[]).map((x) => x.name)).toEqual(
+      ['maxgrid:maxgrid', 'maxgrid:maxgrid, after 0.5 s', 'maxgrid:maxgrid, shuffled', 'maxgrid:maxgrid, shuffled, after 0.5 s'],
+    );
     for (const r of result.rows) {
       expect(r.bytesPerBody).toBeCloseTo(r.memoryBytes / r.n, 9);
       expect(r.nsPerBody).toBeCloseTo((r.ms.median * 1e6) / r.n, 6);

@@ -8,6 +8,8 @@ import { csvLine, makeMeta, maxgridOnly, metaSchema, now, spread, spreadSchema, 
  * with the circles created row by row, as they lie (the scene's default, and every other
  * experiment's), and created in a random order (`shuffle`), as a world spawning at random would
  * create them; a grid's build then writes cells and reads bodies at scattered places in memory.
+ * Each world is timed fresh and again at each later age (simulated seconds of motion), since
+ * moving bodies drift away from their neighbours in memory: the same world, stepped on.
  */
 export type ScaleOrder = 'rows' | 'shuffled';
 
@@ -17,6 +19,8 @@ export interface ScaleOptions {
   ns: number[];
   /** Creation orders to run at each N. */
   orders: ScaleOrder[];
+  /** Simulated seconds of motion before each timing, ascending from 0. */
+  ages: number[];
   /** Timed steps per N; each is timed on its own, since a large-N step is far above clock resolution. */
   steps: number;
   warmupSteps: number;
@@ -25,14 +29,16 @@ export interface ScaleOptions {
 
 export function scaleDefaults(profile: Profile): ScaleOptions {
   return profile === 'full'
-    ? { ns: [1000, 4000, 16000, 64000, 256000, 1_000_000], orders: [...SCALE_ORDERS], steps: 30, warmupSteps: 5, dt: 1 / 60 }
-    : { ns: [1000, 10_000, 100_000], orders: [...SCALE_ORDERS], steps: 10, warmupSteps: 3, dt: 1 / 60 };
+    ? { ns: [1000, 4000, 16000, 64000, 256000, 1_000_000], orders: [...SCALE_ORDERS], ages: [0, 10], steps: 30, warmupSteps: 5, dt: 1 / 60 }
+    : { ns: [1000, 10_000, 100_000], orders: [...SCALE_ORDERS], ages: [0, 10], steps: 10, warmupSteps: 3, dt: 1 / 60 };
 }
 
 export interface ScaleRow {
   n: number;
   engine: string;
   order: ScaleOrder;
+  /** Simulated seconds the world had moved before its warm-up steps. */
+  ageSeconds: number;
   ms: Spread;
   /** Median step time / N, in nanoseconds. */
   nsPerBody: number;
@@ -58,18 +64,26 @@ export async function runScale(options: ScaleOptions, ctx: RunContext): Promise<
       const b0 = now();
       const sim = engine.create(scene);
       const buildMs = now() - b0;
-      const times: number[] = [];
+      let stepped = 0;
       try {
-        for (let i = 0; i < options.warmupSteps; i++) sim.step(options.dt);
-        for (let i = 0; i < options.steps; i++) {
-          const t0 = now();
-          sim.step(options.dt);
-          times.push(now() - t0);
-          if (n >= 100_000) await ctx.yieldToHost?.();
+        for (const ageSeconds of options.ages) {
+          // Onward to this age (the steps timed at earlier ages count towards it).
+          for (; stepped * options.dt < ageSeconds - 1e-9; stepped++) {
+            sim.step(options.dt);
+            if (n >= 100_000 && stepped % 16 === 0) await ctx.yieldToHost?.();
+          }
+          const times: number[] = [];
+          for (let i = 0; i < options.warmupSteps; i++, stepped++) sim.step(options.dt);
+          for (let i = 0; i < options.steps; i++, stepped++) {
+            const t0 = now();
+            sim.step(options.dt);
+            times.push(now() - t0);
+            if (n >= 100_000) await ctx.yieldToHost?.();
+          }
+          const ms = spread(times);
+          const memoryBytes = sim.memoryBytes!();
+          rows.push({ n, engine: engine.info.id, order, ageSeconds, ms, nsPerBody: (ms.median * 1e6) / n, memoryBytes, bytesPerBody: memoryBytes / n, buildMs });
         }
-        const ms = spread(times);
-        const memoryBytes = sim.memoryBytes!();
-        rows.push({ n, engine: engine.info.id, order, ms, nsPerBody: (ms.median * 1e6) / n, memoryBytes, bytesPerBody: memoryBytes / n, buildMs });
       } finally {
         sim.dispose();
       }
@@ -81,9 +95,9 @@ export async function runScale(options: ScaleOptions, ctx: RunContext): Promise<
 }
 
 export function scaleCsv(result: ScaleResult): string {
-  const lines = [csvLine(['n', 'engine', 'order', 'median_ms', 'p25_ms', 'p75_ms', 'ns_per_body', 'memory_bytes', 'bytes_per_body', 'build_ms'])];
+  const lines = [csvLine(['n', 'engine', 'order', 'age_s', 'median_ms', 'p25_ms', 'p75_ms', 'ns_per_body', 'memory_bytes', 'bytes_per_body', 'build_ms'])];
   for (const r of result.rows) {
-    lines.push(csvLine([r.n, r.engine, r.order, r.ms.median, r.ms.p25, r.ms.p75, r.nsPerBody, r.memoryBytes, r.bytesPerBody, r.buildMs]));
+    lines.push(csvLine([r.n, r.engine, r.order, r.ageSeconds, r.ms.median, r.ms.p25, r.ms.p75, r.nsPerBody, r.memoryBytes, r.bytesPerBody, r.buildMs]));
   }
   return lines.join('\n') + '\n';
 }
@@ -98,9 +112,9 @@ export function scaleCharts(result: ScaleResult): ChartSpec[] {
   ];
 }
 
-/** A chart line: the engine, and the creation order where it is not the scene's own. */
+/** A chart line: the engine, the creation order where it is not the scene's own, and the age where not fresh. */
 export function scaleLine(r: ScaleRow): string {
-  return r.order === 'rows' ? r.engine : `${r.engine}, shuffled`;
+  return `${r.engine}${r.order === 'rows' ? '' : ', shuffled'}${r.ageSeconds > 0 ? `, after ${r.ageSeconds} s` : ''}`;
 }
 
 export const scaleSchema = {
@@ -114,11 +128,12 @@ export const scaleSchema = {
       minItems: 1,
       items: {
         type: 'object',
-        required: ['n', 'engine', 'order', 'ms', 'nsPerBody', 'memoryBytes', 'bytesPerBody', 'buildMs'],
+        required: ['n', 'engine', 'order', 'ageSeconds', 'ms', 'nsPerBody', 'memoryBytes', 'bytesPerBody', 'buildMs'],
         properties: {
           n: { type: 'integer', minimum: 1 },
           engine: { type: 'string', pattern: '^maxgrid:' },
           order: { enum: SCALE_ORDERS },
+          ageSeconds: { type: 'number', minimum: 0 },
           ms: spreadSchema,
           nsPerBody: { type: 'number', minimum: 0 },
           memoryBytes: { type: 'integer', minimum: 1 },

@@ -29,8 +29,9 @@ export function falsePositiveHeadline(r: FalsePositiveResult): string[] {
 
 export function scaleHeadline(r: ScaleResult): string[] {
   const out: string[] = [];
-  const ordered = r.rows.filter((x) => x.order === 'rows');
-  const shuffled = r.rows.filter((x) => x.order === 'shuffled');
+  const fresh = r.rows.filter((x) => x.ageSeconds === 0);
+  const ordered = fresh.filter((x) => x.order === 'rows');
+  const shuffled = fresh.filter((x) => x.order === 'shuffled');
   for (const rows of [ordered, shuffled]) {
     if (rows.length === 0) continue;
     const first = rows[0];
@@ -44,6 +45,15 @@ export function scaleHeadline(r: ScaleResult): string[] {
   const twin = last && shuffled.find((x) => x.n === last.n && x.engine === last.engine);
   if (twin) {
     out.push(`At N = ${last.n.toLocaleString('en-US')}, shuffled / row by row = ${ratioText(twin.ms.median / last.ms.median)} per step.`);
+  }
+  const oldest = Math.max(...r.rows.map((x) => x.ageSeconds));
+  if (last && oldest > 0) {
+    const parts: string[] = [];
+    for (const start of [last, twin]) {
+      const aged = start && r.rows.find((x) => x.n === start.n && x.engine === start.engine && x.order === start.order && x.ageSeconds === oldest);
+      if (aged) parts.push(`${aged.order === 'rows' ? 'row by row' : 'shuffled'} ${ratioText(aged.ms.median / start.ms.median)}`);
+    }
+    if (parts.length > 0) out.push(`At N = ${last.n.toLocaleString('en-US')}, after ${oldest} s of motion / fresh: ${parts.join(', ')} per step.`);
   }
   return out;
 }

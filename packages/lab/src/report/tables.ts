@@ -111,12 +111,13 @@ export function falsePositiveTables(result: FalsePositiveResult): Table[] {
 export function scaleTables(result: ScaleResult): Table[] {
   return [
     {
-      title: 'Scale (uniform scene): median step, ns per body per step, engine bytes per body; circles created row by row (as they lie) or in a random order',
-      headers: ['N', 'engine', 'creation order', 'median ms [p25–p75]', 'ns / body / step', 'bytes / body'],
+      title: 'Scale (uniform scene): median step, ns per body per step, engine bytes per body; circles created row by row (as they lie) or in a random order, timed fresh and after simulated seconds of motion',
+      headers: ['N', 'engine', 'creation order', 'timed after', 'median ms [p25–p75]', 'ns / body / step', 'bytes / body'],
       rows: result.rows.map((r) => [
         r.n.toLocaleString('en-US'),
         r.engine,
         r.order === 'rows' ? 'row by row' : 'shuffled',
+        r.ageSeconds > 0 ? `${r.ageSeconds} s` : 'fresh',
         `${fmt(r.ms.median)} [${fmt(r.ms.p25)}–${fmt(r.ms.p75)}]`,
         fmt(r.nsPerBody),
         fmt(r.bytesPerBody),
