@@ -16,9 +16,9 @@ import { pushOverlaps, scanRowsInScript } from './cell-grid-scan.js';
  * Where WebAssembly is available the arrays live in a GridKernel's memory and binning (of slots
  * 0..n-1, or of a slot list holding at least a quarter of the slots) and scanning run there, with
  * the same results bit for bit (a large world whose bodies lie scattered in memory against space
- * bins in two levels there, see GridKernel.binBanded); the loops below are the TypeScript path, used without WebAssembly,
- * for bins over sparser slot lists, for grids a parallel step's threads bin, and for a serial scan
- * whose shared pair buffer overflowed.
+ * bins in two levels there, see GridKernel.binBanded); the loops below are the TypeScript path,
+ * used without WebAssembly, for bins over sparser slot lists, for grids a parallel step's threads
+ * bin, and for a serial scan whose shared pair buffer overflowed.
  *
  * Correctness rests on one rule, kept by the callers: the cell size is at least the largest
  * contact distance between a body in this grid and any body tested against it, so touching
