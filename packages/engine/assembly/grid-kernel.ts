@@ -144,12 +144,7 @@ export function binBanded(
     const counter = bandStart + (<usize>(c >> bandShift) << 2);
     const p = load<i32>(counter);
     store<i32>(counter, p + 1);
-    const src = <usize>k << 3;
-    const dst = <usize>p << 3;
-    store<i32>(sortedSlot + (<usize>p << 2), k);
-    store<f64>(sortedX + dst, load<f64>(xs + src));
-    store<f64>(sortedY + dst, load<f64>(ys + src));
-    store<f64>(sortedR + dst, load<f64>(rs + src));
+    putBody(k, k, xs, ys, rs, p, sortedSlot, sortedX, sortedY, sortedR);
   }
   const capacity = <usize>scratchCapacity;
   const scratchX = scratch;
@@ -184,12 +179,7 @@ export function binBanded(
       const counter = cellStart + (<usize>load<i32>(scratchCell + (<usize>i << 2)) << 2);
       const p = load<i32>(counter) - 1;
       store<i32>(counter, p);
-      const src = <usize>i << 3;
-      const dst = <usize>p << 3;
-      store<i32>(sortedSlot + (<usize>p << 2), load<i32>(scratchSlot + (<usize>i << 2)));
-      store<f64>(sortedX + dst, load<f64>(scratchX + src));
-      store<f64>(sortedY + dst, load<f64>(scratchY + src));
-      store<f64>(sortedR + dst, load<f64>(scratchR + src));
+      putBody(load<i32>(scratchSlot + (<usize>i << 2)), i, scratchX, scratchY, scratchR, p, sortedSlot, sortedX, sortedY, sortedR);
     }
     from = to;
   }
@@ -315,11 +305,21 @@ function scatterOne(
   sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
 ): void {
   const counter = cellStart + (<usize>cell << 2);
-  const slot = load<i32>(counter) - 1;
-  store<i32>(counter, slot);
-  const src = <usize>i << 3;
-  const dst = <usize>slot << 3;
-  store<i32>(sortedSlot + (<usize>slot << 2), i);
+  const place = load<i32>(counter) - 1;
+  store<i32>(counter, place);
+  putBody(i, i, xs, ys, rs, place, sortedSlot, sortedX, sortedY, sortedR);
+}
+
+/** Body `from` of the columns at xs, ys, rs into place `to` of the sorted columns, as slot `slot`. */
+// @ts-ignore: decorator
+@inline
+function putBody(
+  slot: i32, from: i32, xs: usize, ys: usize, rs: usize,
+  to: i32, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
+): void {
+  const src = <usize>from << 3;
+  const dst = <usize>to << 3;
+  store<i32>(sortedSlot + (<usize>to << 2), slot);
   store<f64>(sortedX + dst, load<f64>(xs + src));
   store<f64>(sortedY + dst, load<f64>(ys + src));
   store<f64>(sortedR + dst, load<f64>(rs + src));
