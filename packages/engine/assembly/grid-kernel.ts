@@ -138,54 +138,84 @@ export function binBanded(
     sum += count;
   }
   if (most > scratchCapacity) return most;
-  // Stable: each band's bodies in ascending slots. bandStart[b] ends as band b's end.
-  for (let k: i32 = 0; k < n; k++) {
-    const c = load<i32>(binOf + (<usize>k << 2));
-    const counter = bandStart + (<usize>(c >> bandShift) << 2);
+  // bandStart[b], band b's start, ends as its end: band b is [b == 0 ? 0 : bandStart[b - 1], bandStart[b]).
+  partition(binOf, 0, n, bandShift, bandStart, xs, ys, rs, sortedSlot, sortedX, sortedY, sortedR);
+  let from: i32 = 0;
+  for (let b: i32 = 0; b < bands; b++) {
+    const to = load<i32>(bandStart + (<usize>b << 2));
+    sortBand(b, bandShift, from, to, cells, minX, minY, inverse, columns, cellStart, sortedSlot, sortedX, sortedY, sortedR, scratch, scratchCapacity);
+    from = to;
+  }
+  store<i32>(cellStart + (<usize>cells << 2), n);
+  store<i32>(cellStart + ((<usize>cells + 1) << 2), n);
+  return 0;
+}
+
+/** Counts the bodies [from, to) of each band of 2^bandShift cells into counts[0..bands), from their binOf cells. */
+export function bandCounts(binOf: usize, from: i32, to: i32, bandShift: i32, counts: usize, bands: i32): void {
+  memory.fill(counts, 0, <usize>bands << 2);
+  for (let k = from; k < to; k++) countOne(counts, load<i32>(binOf + (<usize>k << 2)) >> bandShift);
+}
+
+/**
+ * The stable scatter of bodies [from, to) into their bands: body k goes to place cursor[band]++,
+ * slots ascending within each band. A parallel step runs it per share of bodies, each with
+ * cursors that start past the bands' bodies of the shares before it.
+ */
+export function partition(
+  binOf: usize, from: i32, to: i32, bandShift: i32, cursor: usize,
+  xs: usize, ys: usize, rs: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
+): void {
+  for (let k = from; k < to; k++) {
+    const counter = cursor + (<usize>(load<i32>(binOf + (<usize>k << 2)) >> bandShift) << 2);
     const p = load<i32>(counter);
     store<i32>(counter, p + 1);
     putBody(k, k, xs, ys, rs, p, sortedSlot, sortedX, sortedY, sortedR);
   }
+}
+
+/**
+ * Band b, whose bodies lie at [from, to) of the sorted columns in ascending slots, sorted into its
+ * cells through `scratch` (scratchCapacity >= to - from bodies, 32 bytes each): counts, sums and a
+ * scatter from the back, as `bin` does for all cells; cellStart of the band's cells ends as each
+ * cell's first place.
+ */
+export function sortBand(
+  b: i32, bandShift: i32, from: i32, to: i32, cells: i32, minX: f64, minY: f64, inverse: f64, columns: i32,
+  cellStart: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize, scratch: usize, scratchCapacity: i32,
+): void {
   const capacity = <usize>scratchCapacity;
   const scratchX = scratch;
   const scratchY = scratchX + (capacity << 3);
   const scratchR = scratchY + (capacity << 3);
   const scratchSlot = scratchR + (capacity << 3);
   const scratchCell = scratchSlot + (capacity << 2);
-  let from: i32 = 0;
-  for (let b: i32 = 0; b < bands; b++) {
-    const to = load<i32>(bandStart + (<usize>b << 2));
-    const m = to - from;
-    const firstCell = b << bandShift;
-    const endCell = min(cells, firstCell + (1 << bandShift));
-    memory.fill(cellStart + (<usize>firstCell << 2), 0, <usize>(endCell - firstCell) << 2);
-    memory.copy(scratchX, sortedX + (<usize>from << 3), <usize>m << 3);
-    memory.copy(scratchY, sortedY + (<usize>from << 3), <usize>m << 3);
-    memory.copy(scratchR, sortedR + (<usize>from << 3), <usize>m << 3);
-    memory.copy(scratchSlot, sortedSlot + (<usize>from << 2), <usize>m << 2);
-    for (let i: i32 = 0; i < m; i++) {
-      const at = <usize>i << 3;
-      const c = cellOf(load<f64>(scratchY + at), minY, inverse) * columns + cellOf(load<f64>(scratchX + at), minX, inverse);
-      store<i32>(scratchCell + (<usize>i << 2), c);
-      countOne(cellStart, c);
-    }
-    let end = from;
-    for (let c = firstCell; c < endCell; c++) {
-      const counter = cellStart + (<usize>c << 2);
-      end += load<i32>(counter);
-      store<i32>(counter, end);
-    }
-    for (let i: i32 = m - 1; i >= 0; i--) {
-      const counter = cellStart + (<usize>load<i32>(scratchCell + (<usize>i << 2)) << 2);
-      const p = load<i32>(counter) - 1;
-      store<i32>(counter, p);
-      putBody(load<i32>(scratchSlot + (<usize>i << 2)), i, scratchX, scratchY, scratchR, p, sortedSlot, sortedX, sortedY, sortedR);
-    }
-    from = to;
+  const m = to - from;
+  const firstCell = b << bandShift;
+  const endCell = min(cells, firstCell + (1 << bandShift));
+  memory.fill(cellStart + (<usize>firstCell << 2), 0, <usize>(endCell - firstCell) << 2);
+  memory.copy(scratchX, sortedX + (<usize>from << 3), <usize>m << 3);
+  memory.copy(scratchY, sortedY + (<usize>from << 3), <usize>m << 3);
+  memory.copy(scratchR, sortedR + (<usize>from << 3), <usize>m << 3);
+  memory.copy(scratchSlot, sortedSlot + (<usize>from << 2), <usize>m << 2);
+  for (let i: i32 = 0; i < m; i++) {
+    const at = <usize>i << 3;
+    const c = cellOf(load<f64>(scratchY + at), minY, inverse) * columns + cellOf(load<f64>(scratchX + at), minX, inverse);
+    store<i32>(scratchCell + (<usize>i << 2), c);
+    countOne(cellStart, c);
   }
-  store<i32>(cellStart + (<usize>cells << 2), n);
-  store<i32>(cellStart + ((<usize>cells + 1) << 2), n);
-  return 0;
+  let end = from;
+  for (let c = firstCell; c < endCell; c++) {
+    const counter = cellStart + (<usize>c << 2);
+    end += load<i32>(counter);
+    store<i32>(counter, end);
+  }
+  for (let i: i32 = m - 1; i >= 0; i--) {
+    const counter = cellStart + (<usize>load<i32>(scratchCell + (<usize>i << 2)) << 2);
+    const p = load<i32>(counter) - 1;
+    store<i32>(counter, p);
+    putBody(load<i32>(scratchSlot + (<usize>i << 2)), i, scratchX, scratchY, scratchR, p, sortedSlot, sortedX, sortedY, sortedR);
+  }
 }
 
 // The three passes of a parallel bin (src/parallel/kernels.ts), each on one thread's share: the
@@ -198,19 +228,23 @@ export function binBanded(
 // the others skip chunks that miss their band and test nothing in chunks wholly inside it. Where
 // bodies lie in space as they lie in memory (created row by row, as scenes and spawners do) each
 // thread then reads about n / threads bodies; in a shuffled world every chunk spans every band
-// and the passes read all n, as before.
+// and the passes read all n, as before: such worlds take the banded passes instead (bandCounts,
+// partition and sortBand, run by src/parallel/banded-bin.ts).
 
 /** Bodies per chunk of `chunkCells`: its entries are 2 int32 (smallest, largest cell) per chunk. */
 const CHUNK_SHIFT = 10;
 
 /**
  * Each body's cell for bodies [from, to), from positions at xs, ys, and each chunk's smallest and
- * largest cell at chunkCells. `from` is a multiple of the chunk size (so no chunk is shared
- * between threads) and `to` one too, unless it is the last body.
+ * largest cell at chunkCells; returns the range's jumps (see jumpsFound) past `window` cells.
+ * `from` is a multiple of the chunk size (so no chunk is shared between threads) and `to` one too,
+ * unless it is the last body.
  */
 export function cellsOf(
-  xs: usize, ys: usize, from: i32, to: i32, minX: f64, minY: f64, inverse: f64, columns: i32, binOf: usize, chunkCells: usize,
-): void {
+  xs: usize, ys: usize, from: i32, to: i32, minX: f64, minY: f64, inverse: f64, columns: i32, binOf: usize, chunkCells: usize, window: i32,
+): i32 {
+  let jumped: i32 = 0;
+  let last: i32 = 0;
   for (let start = from; start < to; ) {
     const chunk = start >> CHUNK_SHIFT;
     const end = min(to, (chunk + 1) << CHUNK_SHIFT);
@@ -222,11 +256,14 @@ export function cellsOf(
       store<i32>(binOf + (<usize>k << 2), c);
       lowest = min(lowest, c);
       highest = max(highest, c);
+      jumped += <i32>(abs<i32>(c - last) > window);
+      last = c;
     }
     store<i32>(chunkCells + (<usize>chunk << 3), lowest);
     store<i32>(chunkCells + (<usize>chunk << 3), highest, 4);
     start = end;
   }
+  return jumped;
 }
 
 /** Counts the bodies 0..n-1 of each cell in [from, to) into cellStart; returns how many that is. */

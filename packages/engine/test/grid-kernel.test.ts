@@ -194,6 +194,68 @@ describe('grid WebAssembly kernel', () => {
       { numRuns: 60 },
     );
   });
+  it('lays out a banded parallel bin (band counts and partition per share, bands sorted in any order) exactly as one serial bin', () => {
+    let compared = 0;
+    fc.assert(
+      fc.property(
+        fc.integer({ min: 1, max: 4 * CELL_CHUNK + 300 }),
+        fc.integer({ min: 1, max: 5 }),
+        fc.integer({ min: 1, max: 50 }),
+        fc.boolean(),
+        fc.integer({ min: 0, max: 2 ** 31 - 1 }),
+        (n, threads, perBand, sortedByRow, seed) => {
+          bandedBin.bodiesPerBand = perBand;
+          const columns = 23;
+          const rows = 19;
+          const cells = columns * rows;
+          let state = seed;
+          const random = () => ((state = (Math.imul(state, 1103515245) + 12345) >>> 0) / 2 ** 32);
+          const x = Float64Array.from({ length: n }, () => random() * columns);
+          const y = Float64Array.from({ length: n }, () => random() * rows);
+          const r = Float64Array.from({ length: n }, () => 0.1 + random());
+          if (sortedByRow) y.sort();
+          const serial = GridKernel.create(false)!;
+          const parallel = GridKernel.create(true, threads)!;
+          for (const kernel of [serial, parallel]) {
+            kernel.ensure(n, cells);
+            kernel.ensureInputs(n);
+          }
+          parallel.ensureBanded(n, cells);
+          for (const kernel of [serial, parallel]) {
+            kernel.inputX.set(x);
+            kernel.inputY.set(y);
+            kernel.inputR.set(r);
+          }
+          serial.bin(n, false, 0, 0, 1, columns, cells);
+          const { bandShift, bands } = parallel;
+          // Shares cut on chunk boundaries, as the threads' motion cuts them.
+          const cut = (t: number) => (t === threads ? n : Math.floor(Math.floor((n * t) / threads) / CELL_CHUNK) * CELL_CHUNK);
+          for (let t = 0; t < threads; t++) parallel.cellsOf(cut(t), cut(t + 1), 0, 0, 1, columns, rows);
+          for (let t = threads - 1; t >= 0; t--) parallel.bandCounts(cut(t), cut(t + 1), t, bandShift, bands);
+          if (!parallel.planPartition(n, threads, bands)) {
+            // The scratch sized for uniform density cannot hold this band: the step bins plainly.
+            expect(parallel.bandedRefusals).toBe(1);
+            return;
+          }
+          for (let t = threads - 1; t >= 0; t--) parallel.partition(cut(t), cut(t + 1), t, bandShift, bands);
+          // Bands in a shuffled order, each through some thread's scratch.
+          const order = Array.from({ length: bands }, (_, b) => b).sort(() => random() - 0.5);
+          for (const b of order) parallel.sortBand(b, bandShift, bands, threads, cells, 0, 0, 1, columns, b % threads);
+          parallel.cellStart[cells] = n;
+          parallel.cellStart[cells + 1] = n;
+          expect(parallel.cellStart.subarray(0, cells + 2)).toEqual(serial.cellStart.subarray(0, cells + 2));
+          expect(parallel.sortedSlot.subarray(0, n)).toEqual(serial.sortedSlot.subarray(0, n));
+          expect(parallel.sortedX.subarray(0, n)).toEqual(serial.sortedX.subarray(0, n));
+          expect(parallel.sortedY.subarray(0, n)).toEqual(serial.sortedY.subarray(0, n));
+          expect(parallel.sortedR.subarray(0, n)).toEqual(serial.sortedR.subarray(0, n));
+          compared++;
+        },
+      ),
+      { numRuns: 60 },
+    );
+    expect(compared).toBeGreaterThan(30);
+  });
+
   describe('banded bin (bodies scattered in memory against space)', () => {
     /** The arrays a bin leaves, as plain arrays, for comparison. */
     function layoutOf(grid: CellGrid): number[][] {

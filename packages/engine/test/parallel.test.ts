@@ -4,7 +4,7 @@ import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
 import type { BodyStore } from '../src/store/body-store.js';
 import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
-import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
+import { bandedBin, setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import { spinBudget, spinWhileEqual } from '../src/parallel/host.js';
 
 // Worker threads load the compiled engine (dist/), which `npm test` builds first.
@@ -61,6 +61,54 @@ describe('parallel step', () => {
     };
     await expectSameBits(shuffled, 40);
     await expectSameBits(uniform(5000, {}, { seed: 3 }), 40);
+  });
+
+  it('bins shuffled worlds in bands on every thread count (counts and partition per share, bands claimed) to the serial bits', async () => {
+    const defaults = { ...bandedBin };
+    // Bands of about 64 bodies: dozens of bands, which threads claim unevenly, from 1,000 bodies on.
+    Object.assign(bandedBin, { minBodies: 1000, bodiesPerBand: 64 });
+    const gridOf = (world: World) => (world as unknown as { pipeline: { broadPhase: { grid: CellGrid } } }).pipeline.broadPhase.grid;
+    try {
+      for (const bodyKernel of [true, false]) {
+        // Without the body kernel, the grid keeps its own memory and its threads bin from copies.
+        setBodyKernelEnabled(bodyKernel);
+        const build = uniform(6000, {}, { seed: 5, shuffle: 1 });
+        const serial = await hashWith(build, 0, 40);
+        for (const workers of [1, 2, 3]) {
+          let banded = 0;
+          const hash = await hashWith(build, workers, 40, (world, step) => {
+            if (step === 39) banded = gridOf(world).bandedBins;
+          });
+          expect(hash, `${workers} worker(s), body kernel ${bodyKernel}`).toBe(serial);
+          // The first step bins plainly and finds the bodies scattered; the later ones band.
+          expect(banded, `${workers} worker(s)`).toBeGreaterThan(30);
+        }
+      }
+      // Bodies crowded into a few rows: 10 % overflow the first scratch (a plain bin, then a grown
+      // scratch and bands), 30 % fill one band past an eighth of the bodies (plain for a while).
+      setBodyKernelEnabled(true);
+      for (const [crowd, bandedAfter] of [[0.1, 27], [0.3, 0]]) {
+        const crowded = () => {
+          const world = new World({ bounds: { width: 600, height: 600 }, broadphase: 'maxgrid' });
+          let state = 99;
+          const random = () => ((state = (Math.imul(state, 1103515245) + 12345) >>> 0) / 2 ** 32);
+          for (let i = 0; i < 4000; i++) {
+            const y = random() < crowd ? 10 + 40 * random() : 10 + 580 * random();
+            world.createCircle({ x: 5 + 590 * random(), y, radius: 2 + random(), vx: 60 * random() - 30, vy: 60 * random() - 30 });
+          }
+          return world;
+        };
+        await expectSameBits(crowded, 30);
+        let counts = [0, 0];
+        await hashWith(crowded, 2, 30, (world, step) => {
+          if (step === 29) counts = [gridOf(world).bandedBins, gridOf(world).bandedRefusals];
+        });
+        expect(counts, `crowd ${crowd}`).toEqual([bandedAfter, 1]);
+      }
+    } finally {
+      Object.assign(bandedBin, defaults);
+      setBodyKernelEnabled(true);
+    }
   });
 
   it('runs the body kernel on shared columns, in every thread, and matches a serial world without any kernel', async () => {

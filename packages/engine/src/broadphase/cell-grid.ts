@@ -16,9 +16,9 @@ import { pushOverlaps, scanRowsInScript } from './cell-grid-scan.js';
  * Where WebAssembly is available the arrays live in a GridKernel's memory and binning (of slots
  * 0..n-1, or of a slot list holding at least a quarter of the slots) and scanning run there, with
  * the same results bit for bit (a large world whose bodies lie scattered in memory against space
- * bins in two levels there, see GridKernel.binBanded); the loops below are the TypeScript path,
- * used without WebAssembly, for bins over sparser slot lists, for grids a parallel step's threads
- * bin, and for a serial scan whose shared pair buffer overflowed.
+ * bins in two levels there, see GridKernel.binBanded and parallel/banded-bin.ts); the loops below
+ * are the TypeScript path, used without WebAssembly, for bins over sparser slot lists, for grids a
+ * parallel step's threads bin, and for a serial scan whose shared pair buffer overflowed.
  *
  * Correctness rests on one rule, kept by the callers: the cell size is at least the largest
  * contact distance between a body in this grid and any body tested against it, so touching
@@ -66,6 +66,11 @@ export class CellGrid {
   pairsFound = 0;
   /** Bins that took the kernel's two-level path (see GridKernel.binBanded): for tests and probes. */
   bandedBins = 0;
+  /**
+   * Whether the parallel step's threads bin this layout in bands (see parallel/banded-bin.ts):
+   * decided as the layout is made, since their cells pass runs before anything else.
+   */
+  bandedThreads = false;
   private kernelViews = -1;
   // Views of the bodies' columns over slots 0..n-1, which the kernel bins from, remade only when
   // the store reallocates its columns (its layoutVersion) or n changes: a warm step makes no views.
@@ -139,7 +144,9 @@ export class CellGrid {
     if (kernel && (slots === null || 4 * n >= span)) {
       kernel.ensureInputs(span);
       if (slots !== null) kernel.ensureSlotList(n);
-      const bandShift = slots === null && kernel.wantsBanded(n) ? kernel.ensureBanded(n, cells) : -1;
+      // A shared grid binned here (between parallel steps) bins plainly: its threads' choice is made in `ensure`.
+      const banded = slots === null && !kernel.shared && kernel.wantsBanded(n);
+      if (banded) kernel.ensureBanded(n, cells);
       if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
       if (this.sourceStore !== bodies || this.sourceLayout !== bodies.layoutVersion || this.sourceX.length !== span) {
         this.sourceStore = bodies;
@@ -159,7 +166,7 @@ export class CellGrid {
         }
         kernel.slotList.set(this.listView);
       }
-      if (bandShift >= 0 && kernel.binBanded(n, minX, minY, inv, columns, cells, bandShift)) {
+      if (banded && kernel.binBanded(n, minX, minY, inv, columns, cells)) {
         this.bandedBins++;
         return;
       }
@@ -357,6 +364,9 @@ export class CellGrid {
       kernel.ensure(n, cells);
       // Outside the body memory, a parallel step's threads copy positions and radii in before their bin passes.
       if (shared && !kernel.inBodyMemory) kernel.ensureInputs(n);
+      // A parallel step's threads bin after this, and must find the banded bin's room in place.
+      this.bandedThreads = shared && kernel.wantsBanded(n);
+      if (this.bandedThreads) kernel.ensureBanded(n, cells);
       if (kernel.viewVersion !== this.kernelViews) this.adoptKernelViews(kernel);
       return;
     }

@@ -34,7 +34,8 @@ interface KernelExports {
   ): number;
   cellsOf(
     xs: number, ys: number, from: number, to: number, minX: number, minY: number, inverse: number, columns: number, binOf: number, chunkCells: number,
-  ): void;
+    window: number,
+  ): number;
   countCells(binOf: number, n: number, from: number, to: number, cellStart: number, chunkCells: number): number;
   scatterCells(
     binOf: number, n: number, from: number, to: number, before: number, cellStart: number, chunkCells: number,
@@ -47,6 +48,15 @@ interface KernelExports {
     cellStart: number, binOf: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
     bandShift: number, bandStart: number, scratch: number, scratchCapacity: number,
   ): number;
+  bandCounts(binOf: number, from: number, to: number, bandShift: number, counts: number, bands: number): void;
+  partition(
+    binOf: number, from: number, to: number, bandShift: number, cursor: number,
+    xs: number, ys: number, rs: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
+  ): void;
+  sortBand(
+    b: number, bandShift: number, from: number, to: number, cells: number, minX: number, minY: number, inverse: number, columns: number,
+    cellStart: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number, scratch: number, scratchCapacity: number,
+  ): void;
   jumps(): number;
   examined(): number;
   candidates(): number;
@@ -61,18 +71,24 @@ const FIRST_PAIR_CAPACITY = 1024;
 export const CELL_CHUNK = 1024;
 
 /**
- * When a private grid bins in two levels (assembly `binBanded`): from this many bodies on, when
- * the last bin found more than a quarter of them scattered (see assembly `jumps`), in bands of
- * about `bodiesPerBand` bodies at uniform density. Tests lower both to reach the banded bin with
- * few bodies; not part of the public API.
+ * When a grid bins in two levels (assembly `binBanded`, or parallel/banded-bin.ts on a parallel
+ * step's threads): from `minBodies` bodies on, when the last bin found more than a quarter of them
+ * scattered (see assembly `jumps`), in bands of about `bodiesPerBand` bodies at uniform density.
+ * Tests lower both to reach the banded bin with few bodies; not part of the public API.
  * Measured (the bin alone on prepared inputs, `uniform`, shuffled / created row by row): 65,536
  * bodies 1.47 / 0.73 ms plain, 1.60 / 1.29 banded; 250,000: 10.1 / 4.4 plain, 7.0 / 5.5 banded;
  * 1M: 59 / 16.7 plain, 38-42 / 25 banded. Inside a stepping world, which evicts the grid between
  * bins, the shuffled bin gains less (plain against banded, alternating step by step): 100,000
  * bodies 3.1 against 3.1-3.4 ms, 250,000 13.8 against 12.2, 500,000 32.3 against 28.1, 1M 67.2
- * against 53.4. So it pays only where bodies are scattered, and only above L2-sized grids.
+ * against 53.4. On 2 threads at 1M, whole steps: 81.0 and 74.9 ms plain, 51.9 and 51.8 banded.
+ * So it pays only where bodies are scattered, and only above L2-sized grids.
  */
 export const bandedBin = { minBodies: 1 << 17, bodiesPerBand: 4096 };
+
+/** How far (in cells) a body's cell lies from the previous body's for a jump: see assembly jumpsFound. */
+function jumpWindow(columns: number, rows: number): number {
+  return Math.max(2 * columns, (columns * rows) >> 6);
+}
 
 /** Plain bins before a grid whose bodies crowded into a few bands tries banding again (about a second at 60 Hz). */
 const BANDED_PAUSE = 60;
@@ -119,6 +135,8 @@ export interface KernelLayout {
   inputCapacity: number;
   slotListCapacity: number;
   cellCapacity: number;
+  bandCapacity: number;
+  scratchCapacity: number;
   pairCapacity: number;
   pairRegions: number;
 }
@@ -142,9 +160,17 @@ export class GridKernel {
   /** Room for a slot list, made only by grids that bin one here (see ensureSlotList). */
   slotListCapacity = 0;
   cellCapacity = 0;
-  /** Room for a banded bin's band counts (int32) and its scratch (bodies of 32 bytes): private grids only. */
+  /**
+   * Room for a banded bin's band counters (int32: a row of bands + 1 per pair region, then one of
+   * band starts) and its scratch (bodies of 32 bytes, per pair region).
+   */
   private bandCapacity = 0;
   private scratchCapacity = 0;
+  /** The bands ensureBanded chose: cells per band (log 2), and how many. */
+  bandShift = 0;
+  bands = 0;
+  /** A shared grid's jumps in the last step's cell passes, which its threads sum (see noteJumps). */
+  private sharedJumps = 0;
   /** The scratch a banded bin asked for when its largest band did not fit (see binBanded). */
   private scratchWanted = 0;
   /** Banded bins that found a band too full for the scratch and left the bin to `bin`: for tests. */
@@ -184,6 +210,8 @@ export class GridKernel {
   chunkCells: Int32Array = new Int32Array(0);
   slotList: Int32Array = new Int32Array(0);
   cellStart: Int32Array = new Int32Array(0);
+  /** A banded bin's counter rows (see bandRowAt). */
+  private bandRows: Int32Array = new Int32Array(0);
   binOf: Int32Array = new Int32Array(0);
   sortedSlot: Int32Array = new Int32Array(0);
   sortedX: Float64Array = new Float64Array(0);
@@ -230,6 +258,8 @@ export class GridKernel {
     kernel.inputCapacity = layout.inputCapacity;
     kernel.slotListCapacity = layout.slotListCapacity;
     kernel.cellCapacity = layout.cellCapacity;
+    kernel.bandCapacity = layout.bandCapacity;
+    kernel.scratchCapacity = layout.scratchCapacity;
     kernel.place();
     return kernel;
   }
@@ -255,8 +285,8 @@ export class GridKernel {
   }
 
   get layout(): KernelLayout {
-    const { base, bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions } = this;
-    return { base, bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, pairCapacity, pairRegions };
+    const { base, bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, bandCapacity, scratchCapacity, pairCapacity, pairRegions } = this;
+    return { base, bodyCapacity, inputCapacity, slotListCapacity, cellCapacity, bandCapacity, scratchCapacity, pairCapacity, pairRegions };
   }
 
   /**
@@ -317,7 +347,7 @@ export class GridKernel {
     this.bandStartAt = this.cellStartAt + this.cellCapacity * 4;
     // Rounded up to 8: the scratch holds float64s.
     this.scratchAt = (this.bandStartAt + this.bandCapacity * 4 + 7) & ~7;
-    this.pairsAt = this.scratchAt + this.scratchCapacity * 32;
+    this.pairsAt = this.scratchAt + this.pairRegions * this.scratchCapacity * 32;
     this.reserve();
   }
 
@@ -335,6 +365,7 @@ export class GridKernel {
     this.chunkCells = new Int32Array(buffer, this.chunkCellsAt, this.chunkCellsLength);
     this.slotList = new Int32Array(buffer, this.slotListAt, this.slotListCapacity);
     this.cellStart = new Int32Array(buffer, this.cellStartAt, this.cellCapacity);
+    this.bandRows = new Int32Array(buffer, this.bandStartAt, this.bandCapacity);
     this.binOf = new Int32Array(buffer, this.binOfAt, bodies);
     this.sortedSlot = new Int32Array(buffer, this.sortedSlotAt, bodies);
     this.sortedX = new Float64Array(buffer, this.sortedXAt, bodies);
@@ -358,33 +389,40 @@ export class GridKernel {
   }
 
   /**
-   * Whether the next bin of n bodies (slots 0..n-1) should be banded: a private grid, at least
-   * bandedBin.minBodies of them, and the last bin found more than a quarter of them far from the
-   * body before (assembly `jumps`).
+   * Whether the next bin of n bodies (slots 0..n-1) should be banded: at least bandedBin.minBodies
+   * of them, and the last bin found more than a quarter of them far from the body before (assembly
+   * `jumps`; for a shared grid, what its threads' cells pass counted, see noteJumps).
    */
   wantsBanded(n: number): boolean {
-    if (this.shared || n < bandedBin.minBodies) return false;
+    if (n < bandedBin.minBodies) return false;
     if (this.bandedPause > 0) {
       this.bandedPause--;
       return false;
     }
-    return 4 * this.fn.jumps() > n;
+    return 4 * (this.shared ? this.sharedJumps : this.fn.jumps()) > n;
+  }
+
+  /** A shared grid's jumps, summed over the threads' cell passes of a step (cellsOf's returns). */
+  noteJumps(jumps: number): void {
+    this.sharedJumps = jumps;
   }
 
   /**
-   * Makes room for a banded bin of n bodies over `cells` cells and returns its band shift (cells
-   * per band, log 2). Like `ensure`, it may move the arrays: call it before filling the inputs.
+   * Makes room for a banded bin of n bodies over `cells` cells and chooses its bands (bandShift,
+   * bands). Like `ensure`, it may move the arrays: call it before filling the inputs or cells.
    */
-  ensureBanded(n: number, cells: number): number {
+  ensureBanded(n: number, cells: number): void {
     const shift = Math.max(0, Math.ceil(Math.log2((cells * bandedBin.bodiesPerBand) / n)));
     const bands = ((cells - 1) >> shift) + 1;
+    this.bandShift = shift;
+    this.bands = bands;
+    const counters = (this.pairRegions + 1) * (bands + 1);
     // Twice a band's share at uniform density, before any bin has said what the fullest band needs.
     const scratch = Math.max(this.scratchWanted, Math.ceil((2 * n) / bands));
-    if (this.bandCapacity >= bands + 1 && this.scratchCapacity >= scratch) return shift;
-    if (this.bandCapacity < bands + 1) this.bandCapacity = grownCapacity(this.bandCapacity, bands + 1);
+    if (this.bandCapacity >= counters && this.scratchCapacity >= scratch) return;
+    if (this.bandCapacity < counters) this.bandCapacity = grownCapacity(this.bandCapacity, counters);
     if (this.scratchCapacity < scratch) this.scratchCapacity = grownCapacity(this.scratchCapacity, scratch);
     this.place();
-    return shift;
   }
 
   /**
@@ -394,17 +432,75 @@ export class GridKernel {
    * holds more than an eighth of all bodies (the bodies crowd into a few bands, where banding
    * does not pay): then the next BANDED_PAUSE bins are plain.
    */
-  binBanded(n: number, minX: number, minY: number, inverse: number, columns: number, cells: number, shift: number): boolean {
+  binBanded(n: number, minX: number, minY: number, inverse: number, columns: number, cells: number): boolean {
     const most = this.fn.binBanded(
       this.inputXAt, this.inputYAt, this.inputRAt, n, minX, minY, inverse, columns, cells,
       this.cellStartAt, this.binOfAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
-      shift, this.bandStartAt, this.scratchAt, this.scratchCapacity,
+      this.bandShift, this.bandStartAt, this.scratchAt, this.scratchCapacity,
     );
-    if (most === 0) return true;
+    return most === 0 || this.refuseBanded(most, n);
+  }
+
+  /** Notes a band too full for the scratch (see binBanded); returns false. */
+  private refuseBanded(most: number, n: number): false {
     this.bandedRefusals++;
     if (8 * most <= n) this.scratchWanted = most;
     else this.bandedPause = BANDED_PAUSE;
     return false;
+  }
+
+  // A parallel banded bin (see parallel/banded-bin.ts): band counts and a partition per share of
+  // bodies, whose counter rows are the pair regions' (shares are threads), then bands claimed one
+  // at a time. Band b of `bands` lies at [bandStarts[b], bandStarts[b + 1]).
+
+  /** The counters of row `row` (a share's, or the band starts after the last share's). */
+  private bandRowAt(row: number, bands: number): number {
+    return this.bandStartAt + row * (bands + 1) * 4;
+  }
+
+  /** Counts share `share`'s bodies [from, to) per band (after cellsOf). */
+  bandCounts(from: number, to: number, share: number, bandShift: number, bands: number): void {
+    this.fn.bandCounts(this.binOfAt, from, to, bandShift, this.bandRowAt(share, bands), bands);
+  }
+
+  /**
+   * Between the counts and the partition, on one thread: each share's counts become its cursors
+   * (band b's start, plus the bodies of that band in earlier shares), and the band starts are laid
+   * out after the last share's row. False, when a band holds more bodies than the scratch: the
+   * step then bins plainly (see binBanded).
+   */
+  planPartition(n: number, shares: number, bands: number): boolean {
+    const rows = this.bandRows;
+    const starts = shares * (bands + 1);
+    let at = 0;
+    let most = 0;
+    for (let b = 0; b < bands; b++) {
+      rows[starts + b] = at;
+      const first = at;
+      for (let share = 0; share < shares; share++) {
+        const count = rows[share * (bands + 1) + b];
+        rows[share * (bands + 1) + b] = at;
+        at += count;
+      }
+      most = Math.max(most, at - first);
+    }
+    rows[starts + bands] = n;
+    return most <= this.scratchCapacity || this.refuseBanded(most, n);
+  }
+
+  /** The stable scatter of share `share`'s bodies [from, to) into their bands; bodies read as scatterCells reads them. */
+  partition(from: number, to: number, share: number, bandShift: number, bands: number, xs = this.inputXAt, ys = this.inputYAt, rs = this.inputRAt): void {
+    this.fn.partition(this.binOfAt, from, to, bandShift, this.bandRowAt(share, bands), xs, ys, rs, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt);
+  }
+
+  /** Sorts band b into its cells, through pair region `region`'s scratch. */
+  sortBand(b: number, bandShift: number, bands: number, shares: number, cells: number, minX: number, minY: number, inverse: number, columns: number, region: number): void {
+    const start = shares * (bands + 1) + b;
+    this.fn.sortBand(
+      b, bandShift, this.bandRows[start], this.bandRows[start + 1], cells, minX, minY, inverse, columns,
+      this.cellStartAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
+      this.scratchAt + region * this.scratchCapacity * 32, this.scratchCapacity,
+    );
   }
 
   /**
@@ -459,8 +555,8 @@ export class GridKernel {
    * CELL_CHUNK. Positions are read at byte offsets xs, ys: the body columns themselves for a grid
    * `inside` their memory, otherwise the input copies.
    */
-  cellsOf(from: number, to: number, minX: number, minY: number, inverse: number, columns: number, xs = this.inputXAt, ys = this.inputYAt): void {
-    this.fn.cellsOf(xs, ys, from, to, minX, minY, inverse, columns, this.binOfAt, this.chunkCellsAt);
+  cellsOf(from: number, to: number, minX: number, minY: number, inverse: number, columns: number, rows: number, xs = this.inputXAt, ys = this.inputYAt): number {
+    return this.fn.cellsOf(xs, ys, from, to, minX, minY, inverse, columns, this.binOfAt, this.chunkCellsAt, jumpWindow(columns, rows));
   }
 
   countCells(n: number, from: number, to: number): number {

@@ -49,6 +49,11 @@ export const Slot = {
   /** The next band of cells to count, and to scatter, likewise (see cell-bands.ts). */
   countBand: 23,
   scatterBand: 24,
+  /** The next band of a banded bin to sort, likewise (see banded-bin.ts). */
+  sortBand: 25,
+  /** A banded bin's bands: cells per band (log 2), and how many. */
+  bandShift: 26,
+  bands: 27,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */
   contactCount: 64,
   /** MAX_THREADS cells: contacts each thread's solve block deferred. */
@@ -59,7 +64,9 @@ export const Slot = {
   listSorted: 112,
   /** MAX_THREADS * BANDS_PER_THREAD cells: bodies in each band of cells, for the prefix sums. */
   bandTotal: 128,
-  length: 192,
+  /** MAX_THREADS cells: each thread's jumps in this step's cells pass (see GridKernel.noteJumps). */
+  jumps: 192,
+  length: 208,
 } as const;
 
 /**
@@ -107,6 +114,12 @@ export const Command = {
   count: 4,
   /** Prefix sums over a cell range, then scatter the bodies of that range into cell order. */
   scatter: 6,
+  /** A banded bin: count this thread's share of bodies per band (see banded-bin.ts). */
+  bandCount: 11,
+  /** A banded bin: scatter this thread's share of bodies into their bands. */
+  partition: 12,
+  /** A banded bin: sort bands into their cells, claimed one at a time. */
+  sortBands: 13,
   /** Scan a band of rows for pairs, narrow-phase them into this thread's contact list. */
   scan: 7,
   /** Clamp contact bodies of a slot range into the box. */

@@ -16,6 +16,7 @@ import { GridInputs } from './grid-inputs.js';
 import { BoundedContactList } from './bounded-contact-list.js';
 import { ContactSorter } from '../store/contact-sorter.js';
 import { countClaimedBands, scatterClaimedBands } from './cell-bands.js';
+import { countShareBands, partitionShare, sortClaimedBands } from './banded-bin.js';
 
 /** Bodies per motion chunk: ten columns of 4096 doubles stay inside a core's L2 (and a multiple of CELL_CHUNK). */
 const MOTION_CHUNK = 4 * CELL_CHUNK;
@@ -131,6 +132,12 @@ export class ThreadKernels {
         return this.count();
       case Command.scatter:
         return this.scatter();
+      case Command.bandCount:
+        return countShareBands(this.grid.sharedKernel!, this.control, this.index, this.bodyShareFrom(this.control[Slot.bodyCount]), this.bodyShareEnd(this.control[Slot.bodyCount]));
+      case Command.partition:
+        return partitionShare(this.grid.sharedKernel!, this.bodies, this.control, this.index, this.bodyShareFrom(this.control[Slot.bodyCount]), this.bodyShareEnd(this.control[Slot.bodyCount]));
+      case Command.sortBands:
+        return sortClaimedBands(this.grid.sharedKernel!, this.control, this.params, this.index);
       case Command.scan:
         return this.scan();
       case Command.clamp:
@@ -173,6 +180,7 @@ export class ThreadKernels {
   private motion(): void {
     const c = this.control;
     const total = c[Slot.slotCount];
+    c[Slot.jumps + this.index] = 0;
     // Only for worlds without holes, where slot k is body k and both shares are the same range.
     const bin = c[Slot.binInMotion] === 1;
     if (bin && this.copyingKernel) {
@@ -213,6 +221,7 @@ export class ThreadKernels {
 
   private bin(): void {
     const total = this.control[Slot.bodyCount];
+    this.control[Slot.jumps + this.index] = 0;
     const from = this.bodyShareFrom(total);
     const to = this.bodyShareEnd(total);
     this.prepareInputs(from, to);
@@ -247,15 +256,16 @@ export class ThreadKernels {
     const minY = p[Param.originY];
     const inv = p[Param.inverseCell];
     const kernel = this.grid.sharedKernel;
+    const rows = c[Slot.rows];
     if (kernel && kernel.inBodyMemory) {
       // In the body memory: the kernel reads the columns in place.
-      kernel.cellsOf(from, to, minX, minY, inv, columns, x.byteOffset, y.byteOffset);
+      c[Slot.jumps + this.index] += kernel.cellsOf(from, to, minX, minY, inv, columns, rows, x.byteOffset, y.byteOffset);
       return;
     }
     if (kernel) {
       // The grid kernel's passes read the bodies from its own memory: copy this range in first.
       this.inputs.copyPositions(kernel, from);
-      kernel.cellsOf(from, to, minX, minY, inv, columns);
+      c[Slot.jumps + this.index] += kernel.cellsOf(from, to, minX, minY, inv, columns, rows);
       return;
     }
     for (let k = from; k < to; k++) binOf[k] = ((y[k] - minY) * inv | 0) * columns + ((x[k] - minX) * inv | 0);

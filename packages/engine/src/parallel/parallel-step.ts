@@ -1,6 +1,7 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { ContactBuffer } from '../store/contact-buffer.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
+import type { GridKernel } from '../broadphase/grid-kernel.js';
 import { grownCapacity, type Column } from '../util/grow.js';
 import { EscapeLog, resolveContact, type SolverSettings } from '../solver/contact-solver.js';
 import { clampBodies } from '../solver/box-walls.js';
@@ -186,10 +187,18 @@ export class ParallelStep {
       this.useGrid(grid, coordPad);
       this.run(Command.bin);
     }
-    c[Slot.countBand] = 0;
-    c[Slot.scatterBand] = 0;
-    this.run(Command.count);
-    this.run(Command.scatter);
+    const kernel = grid.sharedKernel;
+    if (kernel) {
+      let jumps = 0;
+      for (let t = 0; t < this.threads; t++) jumps += c[Slot.jumps + t];
+      kernel.noteJumps(jumps);
+    }
+    if (!(grid.bandedThreads && kernel && this.binBanded(grid, kernel))) {
+      c[Slot.countBand] = 0;
+      c[Slot.scatterBand] = 0;
+      this.run(Command.count);
+      this.run(Command.scatter);
+    }
     this.growAhead(grid);
     this.scan();
     // Contact lists and pair buffers that overflowed grow, and the scan runs again (both may grow
@@ -212,6 +221,26 @@ export class ParallelStep {
       else contacts.append(lo, hi, c[Slot.contactCount + t]);
     }
     return examined;
+  }
+
+  /**
+   * The banded bin on all threads (see banded-bin.ts), once the cells pass has run; false, having
+   * binned nothing, when a band is too full for the scratch (the plain passes then bin).
+   */
+  private binBanded(grid: CellGrid, kernel: GridKernel): boolean {
+    const c = this.control;
+    c[Slot.bandShift] = kernel.bandShift;
+    c[Slot.bands] = kernel.bands;
+    this.run(Command.bandCount);
+    if (!kernel.planPartition(grid.count, this.threads, kernel.bands)) return false;
+    this.run(Command.partition);
+    c[Slot.sortBand] = 0;
+    this.run(Command.sortBands);
+    const cells = grid.columns * grid.rows;
+    grid.cellStart[cells] = grid.count;
+    grid.cellStart[cells + 1] = grid.count;
+    grid.bandedBins++;
+    return true;
   }
 
   /** Runs the scan with every block unclaimed (threads claim them as they go, see ThreadKernels.scan). */
