@@ -228,6 +228,8 @@ export class ParallelStep {
    * binned nothing, when a band is too full for the scratch (the plain passes then bin).
    */
   private binBanded(grid: CellGrid, kernel: GridKernel): boolean {
+    // Each thread's share has a counter row and a scratch of its own: one per pair region.
+    if (kernel.pairRegions !== this.threads) return false;
     const c = this.control;
     c[Slot.bandShift] = kernel.bandShift;
     c[Slot.bands] = kernel.bands;
