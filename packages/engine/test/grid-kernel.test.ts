@@ -49,6 +49,44 @@ function runHash(build: () => World, steps: number, kernel: boolean, mutate?: (w
   return hashWithPath(setGridKernelEnabled, kernel, build, steps, mutate);
 }
 
+/**
+ * A serial and a shared kernel (`threads` pair regions) laid out for n bodies over `cells` cells,
+ * `prepare` run on the shared one (it may move its arrays), both given the same n random circles
+ * over columns x rows unit cells from `seed`, sorted by row if asked; and `random` to go on with.
+ */
+function kernelPair(n: number, threads: number, columns: number, rows: number, sortedByRow: boolean, seed: number, prepare?: (parallel: GridKernel) => void) {
+  let state = seed;
+  const random = () => ((state = (Math.imul(state, 1103515245) + 12345) >>> 0) / 2 ** 32);
+  const x = Float64Array.from({ length: n }, () => random() * columns);
+  const y = Float64Array.from({ length: n }, () => random() * rows);
+  const r = Float64Array.from({ length: n }, () => 0.1 + random());
+  if (sortedByRow) y.sort();
+  const serial = GridKernel.create(false)!;
+  const parallel = GridKernel.create(true, threads)!;
+  for (const kernel of [serial, parallel]) {
+    kernel.ensure(n, columns * rows);
+    kernel.ensureInputs(n);
+  }
+  prepare?.(parallel);
+  for (const kernel of [serial, parallel]) {
+    kernel.inputX.set(x);
+    kernel.inputY.set(y);
+    kernel.inputR.set(r);
+  }
+  return { serial, parallel, random };
+}
+
+/** The parallel kernel's layout (its end sentinels set here) is the serial one's, for n bodies over `cells` cells. */
+function expectSameLayout(parallel: GridKernel, serial: GridKernel, n: number, cells: number): void {
+  parallel.cellStart[cells] = n;
+  parallel.cellStart[cells + 1] = n;
+  expect(parallel.cellStart.subarray(0, cells + 2)).toEqual(serial.cellStart.subarray(0, cells + 2));
+  expect(parallel.sortedSlot.subarray(0, n)).toEqual(serial.sortedSlot.subarray(0, n));
+  expect(parallel.sortedX.subarray(0, n)).toEqual(serial.sortedX.subarray(0, n));
+  expect(parallel.sortedY.subarray(0, n)).toEqual(serial.sortedY.subarray(0, n));
+  expect(parallel.sortedR.subarray(0, n)).toEqual(serial.sortedR.subarray(0, n));
+}
+
 describe('grid WebAssembly kernel', () => {
   it('runs in this runtime (so the comparisons below compare two paths)', () => {
     const store = storeOf([
@@ -148,21 +186,7 @@ describe('grid WebAssembly kernel', () => {
         fc.boolean(),
         fc.integer({ min: 0, max: 2 ** 31 - 1 }),
         (n, threads, sortedByRow, seed) => {
-          let state = seed;
-          const random = () => ((state = (Math.imul(state, 1103515245) + 12345) >>> 0) / 2 ** 32);
-          const x = Float64Array.from({ length: n }, () => random() * columns);
-          const y = Float64Array.from({ length: n }, () => random() * rows);
-          const r = Float64Array.from({ length: n }, () => 0.1 + random());
-          if (sortedByRow) y.sort();
-          const serial = GridKernel.create(false)!;
-          const parallel = GridKernel.create(true, threads)!;
-          for (const kernel of [serial, parallel]) {
-            kernel.ensure(n, cells);
-            kernel.ensureInputs(n);
-            kernel.inputX.set(x);
-            kernel.inputY.set(y);
-            kernel.inputR.set(r);
-          }
+          const { serial, parallel, random } = kernelPair(n, threads, columns, rows, sortedByRow, seed);
           serial.bin(n, false, 0, 0, 1, columns, cells);
           // Body shares cut on chunk boundaries, as the threads' motion cuts them.
           const cut = (t: number) => (t === threads ? n : Math.floor(Math.floor((n * t) / threads) / CELL_CHUNK) * CELL_CHUNK);
@@ -181,14 +205,8 @@ describe('grid WebAssembly kernel', () => {
             parallel.scatterCells(n, band[t], band[t + 1], before);
             before += mine[t];
           }
-          parallel.cellStart[cells] = n;
-          parallel.cellStart[cells + 1] = n;
           expect(before).toBe(n);
-          expect(parallel.cellStart.subarray(0, cells + 2)).toEqual(serial.cellStart.subarray(0, cells + 2));
-          expect(parallel.sortedSlot.subarray(0, n)).toEqual(serial.sortedSlot.subarray(0, n));
-          expect(parallel.sortedX.subarray(0, n)).toEqual(serial.sortedX.subarray(0, n));
-          expect(parallel.sortedY.subarray(0, n)).toEqual(serial.sortedY.subarray(0, n));
-          expect(parallel.sortedR.subarray(0, n)).toEqual(serial.sortedR.subarray(0, n));
+          expectSameLayout(parallel, serial, n, cells);
         },
       ),
       { numRuns: 60 },
@@ -208,24 +226,7 @@ describe('grid WebAssembly kernel', () => {
           const columns = 23;
           const rows = 19;
           const cells = columns * rows;
-          let state = seed;
-          const random = () => ((state = (Math.imul(state, 1103515245) + 12345) >>> 0) / 2 ** 32);
-          const x = Float64Array.from({ length: n }, () => random() * columns);
-          const y = Float64Array.from({ length: n }, () => random() * rows);
-          const r = Float64Array.from({ length: n }, () => 0.1 + random());
-          if (sortedByRow) y.sort();
-          const serial = GridKernel.create(false)!;
-          const parallel = GridKernel.create(true, threads)!;
-          for (const kernel of [serial, parallel]) {
-            kernel.ensure(n, cells);
-            kernel.ensureInputs(n);
-          }
-          parallel.ensureBanded(n, cells);
-          for (const kernel of [serial, parallel]) {
-            kernel.inputX.set(x);
-            kernel.inputY.set(y);
-            kernel.inputR.set(r);
-          }
+          const { serial, parallel, random } = kernelPair(n, threads, columns, rows, sortedByRow, seed, (kernel) => kernel.ensureBanded(n, cells));
           serial.bin(n, false, 0, 0, 1, columns, cells);
           const { bandShift, bands } = parallel;
           // Shares cut on chunk boundaries, as the threads' motion cuts them.
@@ -241,13 +242,7 @@ describe('grid WebAssembly kernel', () => {
           // Bands in a shuffled order, each through some thread's scratch.
           const order = Array.from({ length: bands }, (_, b) => b).sort(() => random() - 0.5);
           for (const b of order) parallel.sortBand(b, bandShift, bands, threads, cells, 0, 0, 1, columns, b % threads);
-          parallel.cellStart[cells] = n;
-          parallel.cellStart[cells + 1] = n;
-          expect(parallel.cellStart.subarray(0, cells + 2)).toEqual(serial.cellStart.subarray(0, cells + 2));
-          expect(parallel.sortedSlot.subarray(0, n)).toEqual(serial.sortedSlot.subarray(0, n));
-          expect(parallel.sortedX.subarray(0, n)).toEqual(serial.sortedX.subarray(0, n));
-          expect(parallel.sortedY.subarray(0, n)).toEqual(serial.sortedY.subarray(0, n));
-          expect(parallel.sortedR.subarray(0, n)).toEqual(serial.sortedR.subarray(0, n));
+          expectSameLayout(parallel, serial, n, cells);
           compared++;
         },
       ),
