@@ -133,11 +133,9 @@ export class ThreadKernels {
       case Command.scatter:
         return this.scatter();
       case Command.bandCount:
-        return countShareBands(this.grid.sharedKernel!, this.control, this.index, this.bodyShareFrom(this.control[Slot.bodyCount]), this.bodyShareEnd(this.control[Slot.bodyCount]));
       case Command.partition:
-        return partitionShare(this.grid.sharedKernel!, this.bodies, this.control, this.index, this.bodyShareFrom(this.control[Slot.bodyCount]), this.bodyShareEnd(this.control[Slot.bodyCount]));
       case Command.sortBands:
-        return sortClaimedBands(this.grid.sharedKernel!, this.control, this.params, this.index);
+        return this.binInBands(command);
       case Command.scan:
         return this.scan();
       case Command.clamp:
@@ -273,6 +271,17 @@ export class ThreadKernels {
 
   private count(): void {
     countClaimedBands(this.grid, this.control);
+  }
+
+  /** A stage of the banded bin (see banded-bin.ts), which only grids with a kernel take; shares as the cells pass cuts them. */
+  private binInBands(command: number): void {
+    const kernel = this.grid.sharedKernel!;
+    const total = this.control[Slot.bodyCount];
+    const from = this.bodyShareFrom(total);
+    const to = this.bodyShareEnd(total);
+    if (command === Command.bandCount) countShareBands(kernel, this.control, this.index, from, to);
+    else if (command === Command.partition) partitionShare(kernel, this.bodies, this.control, this.index, from, to);
+    else sortClaimedBands(kernel, this.control, this.params, this.index);
   }
 
   private scatter(): void {
