@@ -1,6 +1,9 @@
 import { GRID_KERNEL_SHARED_WASM, GRID_KERNEL_WASM } from '../generated/grid-kernel-wasm.js';
 import { grownCapacity } from '../util/grow.js';
 import { RADIUS_PAD } from './fat-bounds.js';
+import { BandedPolicy, jumpWindow, planBandStarts } from './banded-policy.js';
+
+export { bandedBin } from './banded-policy.js';
 import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
 
 export type { KernelMemory };
@@ -69,29 +72,6 @@ const FIRST_PAIR_CAPACITY = 1024;
  * each thread's share of the cells pass starts on a multiple of it.
  */
 export const CELL_CHUNK = 1024;
-
-/**
- * When a grid bins in two levels (assembly `binBanded`, or parallel/banded-bin.ts on a parallel
- * step's threads): from `minBodies` bodies on, when the last bin found more than a quarter of them
- * scattered (see assembly `jumps`), in bands of about `bodiesPerBand` bodies at uniform density.
- * Tests lower both to reach the banded bin with few bodies; not part of the public API.
- * Measured (the bin alone on prepared inputs, `uniform`, shuffled / created row by row): 65,536
- * bodies 1.47 / 0.73 ms plain, 1.60 / 1.29 banded; 250,000: 10.1 / 4.4 plain, 7.0 / 5.5 banded;
- * 1M: 59 / 16.7 plain, 38-42 / 25 banded. Inside a stepping world, which evicts the grid between
- * bins, the shuffled bin gains less (plain against banded, alternating step by step): 100,000
- * bodies 3.1 against 3.1-3.4 ms, 250,000 13.8 against 12.2, 500,000 32.3 against 28.1, 1M 67.2
- * against 53.4. On 2 threads at 1M, whole steps: 81.0 and 74.9 ms plain, 51.9 and 51.8 banded.
- * So it pays only where bodies are scattered, and only above L2-sized grids.
- */
-export const bandedBin = { minBodies: 1 << 17, bodiesPerBand: 4096 };
-
-/** How far (in cells) a body's cell lies from the previous body's for a jump: see assembly jumpsFound. */
-function jumpWindow(columns: number, rows: number): number {
-  return Math.max(2 * columns, (columns * rows) >> 6);
-}
-
-/** Plain bins before a grid whose bodies crowded into a few bands tries banding again (about a second at 60 Hz). */
-const BANDED_PAUSE = 60;
 
 /** The shared module's declared maximum, in pages (see scripts/build-kernel.mjs). */
 const SHARED_MAXIMUM_PAGES = 32768;
@@ -166,17 +146,10 @@ export class GridKernel {
    */
   private bandCapacity = 0;
   private scratchCapacity = 0;
-  /** The bands ensureBanded chose: cells per band (log 2), and how many. */
-  bandShift = 0;
-  bands = 0;
+  /** When this grid bins in bands, in which, and with how much scratch. */
+  private readonly banding = new BandedPolicy();
   /** A shared grid's jumps in the last step's cell passes, which its threads sum (see noteJumps). */
   private sharedJumps = 0;
-  /** The scratch a banded bin asked for when its largest band did not fit (see binBanded). */
-  private scratchWanted = 0;
-  /** Banded bins that found a band too full for the scratch and left the bin to `bin`: for tests. */
-  bandedRefusals = 0;
-  /** Bins left before banding is tried again, after a band held more than an eighth of the bodies. */
-  private bandedPause = 0;
   pairCapacity = FIRST_PAIR_CAPACITY;
   // What the last copyRadii copied.
   private radiiOf: Float64Array | null = null;
@@ -394,12 +367,7 @@ export class GridKernel {
    * `jumps`; for a shared grid, what its threads' cells pass counted, see noteJumps).
    */
   wantsBanded(n: number): boolean {
-    if (n < bandedBin.minBodies) return false;
-    if (this.bandedPause > 0) {
-      this.bandedPause--;
-      return false;
-    }
-    return 4 * (this.shared ? this.sharedJumps : this.fn.jumps()) > n;
+    return this.banding.wants(n, this.shared ? this.sharedJumps : this.fn.jumps());
   }
 
   /** A shared grid's jumps, summed over the threads' cell passes of a step (cellsOf's returns). */
@@ -407,18 +375,27 @@ export class GridKernel {
     this.sharedJumps = jumps;
   }
 
+  /** The bands the last ensureBanded chose: cells per band (log 2), and how many. */
+  get bandShift(): number {
+    return this.banding.shift;
+  }
+
+  get bands(): number {
+    return this.banding.bands;
+  }
+
+  /** Banded bins that found a band too full for the scratch and left the bin to `bin`: for tests. */
+  get bandedRefusals(): number {
+    return this.banding.refusals;
+  }
+
   /**
    * Makes room for a banded bin of n bodies over `cells` cells and chooses its bands (bandShift,
    * bands). Like `ensure`, it may move the arrays: call it before filling the inputs or cells.
    */
   ensureBanded(n: number, cells: number): void {
-    const shift = Math.max(0, Math.ceil(Math.log2((cells * bandedBin.bodiesPerBand) / n)));
-    const bands = ((cells - 1) >> shift) + 1;
-    this.bandShift = shift;
-    this.bands = bands;
-    const counters = (this.pairRegions + 1) * (bands + 1);
-    // Twice a band's share at uniform density, before any bin has said what the fullest band needs.
-    const scratch = Math.max(this.scratchWanted, Math.ceil((2 * n) / bands));
+    const scratch = this.banding.choose(n, cells);
+    const counters = (this.pairRegions + 1) * (this.banding.bands + 1);
     if (this.bandCapacity >= counters && this.scratchCapacity >= scratch) return;
     if (this.bandCapacity < counters) this.bandCapacity = grownCapacity(this.bandCapacity, counters);
     if (this.scratchCapacity < scratch) this.scratchCapacity = grownCapacity(this.scratchCapacity, scratch);
@@ -428,25 +405,15 @@ export class GridKernel {
   /**
    * `bin` of slots 0..n-1 in two levels (assembly binBanded), after ensureBanded gave `shift`.
    * Returns false, having binned nothing, when a band held more bodies than the scratch: the
-   * caller then bins with `bin`, and the next ensureBanded makes room for that band, unless it
-   * holds more than an eighth of all bodies (the bodies crowd into a few bands, where banding
-   * does not pay): then the next BANDED_PAUSE bins are plain.
+   * caller then bins with `bin` (BandedPolicy.refuse says what follows).
    */
   binBanded(n: number, minX: number, minY: number, inverse: number, columns: number, cells: number): boolean {
     const most = this.fn.binBanded(
       this.inputXAt, this.inputYAt, this.inputRAt, n, minX, minY, inverse, columns, cells,
       this.cellStartAt, this.binOfAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
-      this.bandShift, this.bandStartAt, this.scratchAt, this.scratchCapacity,
+      this.banding.shift, this.bandStartAt, this.scratchAt, this.scratchCapacity,
     );
-    return most === 0 || this.refuseBanded(most, n);
-  }
-
-  /** Notes a band too full for the scratch (see binBanded); returns false. */
-  private refuseBanded(most: number, n: number): false {
-    this.bandedRefusals++;
-    if (8 * most <= n) this.scratchWanted = most;
-    else this.bandedPause = BANDED_PAUSE;
-    return false;
+    return most === 0 || this.banding.refuse(most, n);
   }
 
   // A parallel banded bin (see parallel/banded-bin.ts): band counts and a partition per share of
@@ -464,28 +431,13 @@ export class GridKernel {
   }
 
   /**
-   * Between the counts and the partition, on one thread: each share's counts become its cursors
-   * (band b's start, plus the bodies of that band in earlier shares), and the band starts are laid
-   * out after the last share's row. False, when a band holds more bodies than the scratch: the
-   * step then bins plainly (see binBanded).
+   * Between the counts and the partition, on one thread: the shares' cursors and the band starts
+   * (see planBandStarts). False, when a band holds more bodies than the scratch: the step then
+   * bins plainly (see binBanded).
    */
   planPartition(n: number, shares: number, bands: number): boolean {
-    const rows = this.bandRows;
-    const starts = shares * (bands + 1);
-    let at = 0;
-    let most = 0;
-    for (let b = 0; b < bands; b++) {
-      rows[starts + b] = at;
-      const first = at;
-      for (let share = 0; share < shares; share++) {
-        const count = rows[share * (bands + 1) + b];
-        rows[share * (bands + 1) + b] = at;
-        at += count;
-      }
-      most = Math.max(most, at - first);
-    }
-    rows[starts + bands] = n;
-    return most <= this.scratchCapacity || this.refuseBanded(most, n);
+    const most = planBandStarts(this.bandRows, shares, bands, n);
+    return most <= this.scratchCapacity || this.banding.refuse(most, n);
   }
 
   /** The stable scatter of share `share`'s bodies [from, to) into their bands; bodies read as scatterCells reads them. */

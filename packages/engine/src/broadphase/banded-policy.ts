@@ -1,0 +1,101 @@
+// When a Max Grid bins in bands (GridKernel.binBanded, parallel/banded-bin.ts), in which bands,
+// and with how much scratch: the decisions of a banded bin, apart from the memory it works in.
+
+/**
+ * When a grid bins in two levels (assembly `binBanded`, or parallel/banded-bin.ts on a parallel
+ * step's threads): from `minBodies` bodies on, when the last bin found more than a quarter of them
+ * scattered (see assembly `jumps`), in bands of about `bodiesPerBand` bodies at uniform density.
+ * Tests lower both to reach the banded bin with few bodies; not part of the public API.
+ * Measured (the bin alone on prepared inputs, `uniform`, shuffled / created row by row): 65,536
+ * bodies 1.47 / 0.73 ms plain, 1.60 / 1.29 banded; 250,000: 10.1 / 4.4 plain, 7.0 / 5.5 banded;
+ * 1M: 59 / 16.7 plain, 38-42 / 25 banded. Inside a stepping world, which evicts the grid between
+ * bins, the shuffled bin gains less (plain against banded, alternating step by step): 100,000
+ * bodies 3.1 against 3.1-3.4 ms, 250,000 13.8 against 12.2, 500,000 32.3 against 28.1, 1M 67.2
+ * against 53.4. On 2 threads at 1M, whole steps: 81.0 and 74.9 ms plain, 51.9 and 51.8 banded.
+ * So it pays only where bodies are scattered, and only above L2-sized grids.
+ */
+export const bandedBin = { minBodies: 1 << 17, bodiesPerBand: 4096 };
+
+/** How far (in cells) a body's cell lies from the previous body's for a jump: see assembly jumpsFound. */
+export function jumpWindow(columns: number, rows: number): number {
+  return Math.max(2 * columns, (columns * rows) >> 6);
+}
+
+/** Plain bins before a grid whose bodies crowded into a few bands tries banding again (about a second at 60 Hz). */
+const BANDED_PAUSE = 60;
+
+/**
+ * One grid's banding decisions. The bin itself says how scattered its bodies were (jumps) and how
+ * full its fullest band was; this turns that into the next bin's kind and room.
+ */
+export class BandedPolicy {
+  /** The bands `choose` picked: cells per band (log 2), and how many. */
+  shift = 0;
+  bands = 0;
+  /** Banded bins refused for a band too full for the scratch: for tests. */
+  refusals = 0;
+  /** The scratch (in bodies) the fullest refused band asked for. */
+  private scratchWanted = 0;
+  /** Bins left before banding is tried again, after a band held more than an eighth of the bodies. */
+  private pause = 0;
+
+  /**
+   * Whether the next bin of n bodies should be banded: at least bandedBin.minBodies of them, and
+   * more than a quarter of them jumps in the last bin (assembly `jumps`).
+   */
+  wants(n: number, jumps: number): boolean {
+    if (n < bandedBin.minBodies) return false;
+    if (this.pause > 0) {
+      this.pause--;
+      return false;
+    }
+    return 4 * jumps > n;
+  }
+
+  /**
+   * Chooses bands for n bodies over `cells` cells, about bandedBin.bodiesPerBand bodies each at
+   * uniform density, and returns the scratch the bin needs, in bodies.
+   */
+  choose(n: number, cells: number): number {
+    this.shift = Math.max(0, Math.ceil(Math.log2((cells * bandedBin.bodiesPerBand) / n)));
+    this.bands = ((cells - 1) >> this.shift) + 1;
+    // Twice a band's share at uniform density, before any bin has said what the fullest band needs.
+    return Math.max(this.scratchWanted, Math.ceil((2 * n) / this.bands));
+  }
+
+  /**
+   * Notes a band of `most` bodies too full for the scratch, and returns false: the next `choose`
+   * asks for room for it, unless it holds more than an eighth of all bodies (they crowd into a few
+   * bands, where banding does not pay); then the next BANDED_PAUSE bins are plain.
+   */
+  refuse(most: number, n: number): false {
+    this.refusals++;
+    if (8 * most <= n) this.scratchWanted = most;
+    else this.pause = BANDED_PAUSE;
+    return false;
+  }
+}
+
+/**
+ * A parallel banded bin's plan, between its counts and its partition: in `rows`, each share's row
+ * of band counts (bands + 1 int32 per share) becomes its cursors (band b's start, plus the bodies
+ * of that band in earlier shares), and the band starts are laid out in the row after the last
+ * share's. Returns how many bodies the fullest band holds.
+ */
+export function planBandStarts(rows: Int32Array, shares: number, bands: number, n: number): number {
+  const starts = shares * (bands + 1);
+  let at = 0;
+  let most = 0;
+  for (let b = 0; b < bands; b++) {
+    rows[starts + b] = at;
+    const first = at;
+    for (let share = 0; share < shares; share++) {
+      const count = rows[share * (bands + 1) + b];
+      rows[share * (bands + 1) + b] = at;
+      at += count;
+    }
+    most = Math.max(most, at - first);
+  }
+  rows[starts + bands] = n;
+  return most;
+}
