@@ -41,6 +41,13 @@ export function jumps(): i32 {
   return jumpsFound;
 }
 
+/** How far (in cells) a body's cell must lie from the previous body's to count as a jump. */
+// @ts-ignore: decorator
+@inline
+function jumpWindow(columns: i32, cells: i32): i32 {
+  return max(columns << 1, cells >> 6);
+}
+
 /** Pairs whose padded circles overlapped in the last `scan`: its candidates, written or not. */
 export function candidates(): i32 {
   return candidatesFound;
@@ -58,7 +65,7 @@ export function bin(
   cellStart: usize, binOf: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
 ): void {
   memory.fill(cellStart, 0, (<usize>cells + 2) << 2);
-  const window = max(columns << 1, cells >> 6);
+  const window = jumpWindow(columns, cells);
   let last: i32 = 0;
   let jumped: i32 = 0;
   for (let k: i32 = 0; k < n; k++) {
@@ -116,7 +123,7 @@ export function binBanded(
 ): i32 {
   const bands = ((cells - 1) >> bandShift) + 1;
   memory.fill(bandStart, 0, (<usize>bands + 1) << 2);
-  const window = max(columns << 1, cells >> 6);
+  const window = jumpWindow(columns, cells);
   let last: i32 = 0;
   let jumped: i32 = 0;
   for (let k: i32 = 0; k < n; k++) {
@@ -236,13 +243,14 @@ const CHUNK_SHIFT = 10;
 
 /**
  * Each body's cell for bodies [from, to), from positions at xs, ys, and each chunk's smallest and
- * largest cell at chunkCells; returns the range's jumps (see jumpsFound) past `window` cells.
+ * largest cell at chunkCells; returns the range's jumps (see jumpsFound) in a grid of `cells`.
  * `from` is a multiple of the chunk size (so no chunk is shared between threads) and `to` one too,
  * unless it is the last body.
  */
 export function cellsOf(
-  xs: usize, ys: usize, from: i32, to: i32, minX: f64, minY: f64, inverse: f64, columns: i32, binOf: usize, chunkCells: usize, window: i32,
+  xs: usize, ys: usize, from: i32, to: i32, minX: f64, minY: f64, inverse: f64, columns: i32, cells: i32, binOf: usize, chunkCells: usize,
 ): i32 {
+  const window = jumpWindow(columns, cells);
   let jumped: i32 = 0;
   let last: i32 = 0;
   for (let start = from; start < to; ) {

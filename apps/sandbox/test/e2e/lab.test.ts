@@ -85,26 +85,23 @@ describe('lab page in Chromium', () => {
     // 140,000 circles listed in a random order: past the banded bin's 131,072 bodies and scattered,
     // so from the second step the workers count, partition and sort bands (parallel/banded-bin.ts)
     // and Node's single thread bins in bands too.
-    const params = { n: 140_000, seed: 6, shuffle: 1 };
+    await expectWorkersMatchNode({ n: 140_000, seed: 6, shuffle: 1 }, 12);
+  });
+
+  /** Steps `uniform` with `params` in the page on 2 Web Workers and in Node on one thread, and compares their hashes. */
+  async function expectWorkersMatchNode(params: Record<string, number>, steps: number): Promise<void> {
     const id = await page.evaluate((p) => window.__labWorlds!.create('uniform', p, 'maxgrid'), params);
     expect(await page.evaluate((i) => window.__labWorlds!.startWorkers(i, 2), id)).toBe(2);
-    await page.evaluate((i) => window.__labWorlds!.step(i, 12, 1 / 60), id);
+    await page.evaluate(([i, n]) => window.__labWorlds!.step(i, n, 1 / 60), [id, steps] as const);
     const world = buildWorld(buildScene('uniform', params), maxgridBuildOptions('maxgrid'));
-    for (let s = 0; s < 12; s++) world.step(1 / 60);
+    for (let s = 0; s < steps; s++) world.step(1 / 60);
     expect(await page.evaluate((i) => window.__labWorlds!.hash(i), id)).toBe(world.stateHash());
     await page.evaluate((i) => window.__labWorlds!.dispose(i), id);
-  });
+  }
 
   it('runs the parallel step on Web Workers (the page is cross-origin isolated) to the same hash as Node on one thread', async () => {
     expect(await page.evaluate(() => globalThis.crossOriginIsolated)).toBe(true);
-    const params = { n: 3000, seed: 4 };
-    const id = await page.evaluate((p) => window.__labWorlds!.create('uniform', p, 'maxgrid'), params);
-    expect(await page.evaluate((i) => window.__labWorlds!.startWorkers(i, 2), id)).toBe(2);
-    await page.evaluate((i) => window.__labWorlds!.step(i, 30, 1 / 60), id);
-    const world = buildWorld(buildScene('uniform', params), maxgridBuildOptions('maxgrid'));
-    for (let s = 0; s < 30; s++) world.step(1 / 60);
-    expect(await page.evaluate((i) => window.__labWorlds!.hash(i), id)).toBe(world.stateHash());
-    await page.evaluate((i) => window.__labWorlds!.dispose(i), id);
+    await expectWorkersMatchNode({ n: 3000, seed: 4 }, 30);
   });
 
   // Determinism across runtimes, in three steps so that a failure says where bits diverge.

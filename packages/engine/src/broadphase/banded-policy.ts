@@ -16,11 +16,6 @@
  */
 export const bandedBin = { minBodies: 1 << 17, bodiesPerBand: 4096 };
 
-/** How far (in cells) a body's cell lies from the previous body's for a jump: see assembly jumpsFound. */
-export function jumpWindow(columns: number, rows: number): number {
-  return Math.max(2 * columns, (columns * rows) >> 6);
-}
-
 /** Plain bins before a grid whose bodies crowded into a few bands tries banding again (about a second at 60 Hz). */
 const BANDED_PAUSE = 60;
 

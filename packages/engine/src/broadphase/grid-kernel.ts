@@ -1,7 +1,7 @@
 import { GRID_KERNEL_SHARED_WASM, GRID_KERNEL_WASM } from '../generated/grid-kernel-wasm.js';
 import { grownCapacity } from '../util/grow.js';
 import { RADIUS_PAD } from './fat-bounds.js';
-import { BandedPolicy, jumpWindow, planBandStarts } from './banded-policy.js';
+import { BandedPolicy, planBandStarts } from './banded-policy.js';
 
 export { bandedBin } from './banded-policy.js';
 import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
@@ -36,8 +36,8 @@ interface KernelExports {
     pairs: number, capacity: number,
   ): number;
   cellsOf(
-    xs: number, ys: number, from: number, to: number, minX: number, minY: number, inverse: number, columns: number, binOf: number, chunkCells: number,
-    window: number,
+    xs: number, ys: number, from: number, to: number, minX: number, minY: number, inverse: number, columns: number, cells: number,
+    binOf: number, chunkCells: number,
   ): number;
   countCells(binOf: number, n: number, from: number, to: number, cellStart: number, chunkCells: number): number;
   scatterCells(
@@ -508,7 +508,7 @@ export class GridKernel {
    * `inside` their memory, otherwise the input copies.
    */
   cellsOf(from: number, to: number, minX: number, minY: number, inverse: number, columns: number, rows: number, xs = this.inputXAt, ys = this.inputYAt): number {
-    return this.fn.cellsOf(xs, ys, from, to, minX, minY, inverse, columns, this.binOfAt, this.chunkCellsAt, jumpWindow(columns, rows));
+    return this.fn.cellsOf(xs, ys, from, to, minX, minY, inverse, columns, columns * rows, this.binOfAt, this.chunkCellsAt);
   }
 
   countCells(n: number, from: number, to: number): number {
