@@ -10,9 +10,9 @@ export type { KernelMemory };
 
 /**
  * The WebAssembly side of CellGrid: its arrays laid out in one WebAssembly memory, and the two hot
- * loops, binning and scanning, compiled from assembly/grid-kernel.ts. Same operations, same order,
- * same bits as the TypeScript loops in cell-grid.ts, which remain the path wherever WebAssembly is
- * missing, and for the shared grids of a parallel step.
+ * loops, binning and scanning, compiled from assembly/grid-kernel.ts (code in assembly/grid/).
+ * Same operations, same order, same bits as the TypeScript loops in cell-grid.ts, which remain the
+ * path wherever WebAssembly is missing, and for the shared grids of a parallel step.
  *
  * Why: V8 re-checks every typed array's map, length and base pointer on each access inside a loop,
  * which left these loops about 2x the same loops in C (issue 5, target 2). See the kernel's header
@@ -68,7 +68,7 @@ interface KernelExports {
 const FIRST_PAIR_CAPACITY = 1024;
 
 /**
- * Bodies per chunk of a parallel bin's chunk cell ranges (CHUNK_SHIFT in assembly/grid-kernel.ts):
+ * Bodies per chunk of a parallel bin's chunk cell ranges (CHUNK_SHIFT in assembly/grid/parallel-bin.ts):
  * each thread's share of the cells pass starts on a multiple of it.
  */
 export const CELL_CHUNK = 1024;
@@ -500,7 +500,7 @@ export class GridKernel {
     this.radiiViews = this.viewVersion;
   }
 
-  // A parallel bin's passes (see assembly/grid-kernel.ts), over the input copies.
+  // A parallel bin's passes (see assembly/grid/parallel-bin.ts), over the input copies.
 
   /**
    * Cells of bodies [from, to), and their chunks' cell ranges: `from` must be a multiple of

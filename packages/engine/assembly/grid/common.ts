@@ -1,0 +1,66 @@
+// Inline helpers shared by the grid kernel's bins (bin.ts, parallel-bin.ts) and scan (scan.ts):
+// one formula each for a body's cell, the jump window and the write of a body into cell order, so
+// that every bin, serial, banded or parallel, gives the same layout.
+
+/** How far (in cells) a body's cell must lie from the previous body's to count as a jump. */
+// @ts-ignore: decorator
+@inline
+export function jumpWindow(columns: i32, cells: i32): i32 {
+  return max(columns << 1, cells >> 6);
+}
+
+/**
+ * The TypeScript path's `(p - origin) * inverse | 0`. Offsets are >= 0, where flooring is
+ * truncating, and adding 2^52 to a whole number below 2^52 leaves it in the low bits of the
+ * double, which are then exactly `| 0` (ToInt32) of it; infinities and NaN (as arithmetic makes
+ * it) give 0, as there.
+ * Why not `<i32>`: V8 compiles WebAssembly's f64-to-i32 conversions with range checks, and this
+ * way computing cells for 500,000 bodies took 1.3 ms against 3.2 (trunc_sat) and 1.7-2.2 (trapping).
+ */
+// @ts-ignore: decorator
+@inline
+export function cellOf(p: f64, origin: f64, inverse: f64): i32 {
+  return <i32>reinterpret<i64>(floor((p - origin) * inverse) + 4503599627370496.0);
+}
+
+/** The k-th body to bin: slot k, or the k-th of a slot list. */
+// @ts-ignore: decorator
+@inline
+export function slotAt(slots: usize, k: i32): i32 {
+  return slots == 0 ? k : load<i32>(slots + (<usize>k << 2));
+}
+
+// @ts-ignore: decorator
+@inline
+export function countOne(cellStart: usize, cell: i32): void {
+  const counter = cellStart + (<usize>cell << 2);
+  store<i32>(counter, load<i32>(counter) + 1);
+}
+
+/** Body `from` of the columns at xs, ys, rs into place `to` of the sorted columns, as slot `slot`. */
+// @ts-ignore: decorator
+@inline
+export function putBody(
+  slot: i32, from: i32, xs: usize, ys: usize, rs: usize,
+  to: i32, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
+): void {
+  const src = <usize>from << 3;
+  const dst = <usize>to << 3;
+  store<i32>(sortedSlot + (<usize>to << 2), slot);
+  store<f64>(sortedX + dst, load<f64>(xs + src));
+  store<f64>(sortedY + dst, load<f64>(ys + src));
+  store<f64>(sortedR + dst, load<f64>(rs + src));
+}
+
+/** The body in slot i into the last free place of its cell (pre-decrement): the scatter step of `bin` and `scatterCells`. */
+// @ts-ignore: decorator
+@inline
+export function scatterOne(
+  i: i32, cell: i32, cellStart: usize, xs: usize, ys: usize, rs: usize,
+  sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
+): void {
+  const counter = cellStart + (<usize>cell << 2);
+  const place = load<i32>(counter) - 1;
+  store<i32>(counter, place);
+  putBody(i, i, xs, ys, rs, place, sortedSlot, sortedX, sortedY, sortedR);
+}
