@@ -46,6 +46,28 @@ describe('static segments', () => {
     expect(world.getCircle(ghost).y).toBeGreaterThan(150);
   });
 
+  it('a circle rests on a long floor as docs/engine.md says: exact to 1e-5 radii up to 1e12 radii from both ends, lost at 1e16', () => {
+    // Worst distance from the line, minus the radius, over seconds 2-5, for the segment (-L, -sL)-(L, sL).
+    const restingError = (L: number, slope: number): number => {
+      const world = new World({ gravity: { x: 0, y: -10 } });
+      world.createSegment({ x1: -L, y1: -L * slope, x2: L, y2: L * slope, restitution: 0 });
+      const ball = world.createCircle({ x: 3, y: 3 * slope + 3, radius: 1, restitution: 0 });
+      let worst = 0;
+      for (let s = 0; s < 300; s++) {
+        world.step(1 / 60);
+        const c = world.getCircle(ball);
+        if (s > 120) worst = Math.max(worst, Math.abs((c.y - slope * c.x) / Math.hypot(1, slope) - 1));
+      }
+      return worst;
+    };
+    for (const slope of [0, 0.1, 1]) {
+      expect(restingError(1e3, slope)).toBeLessThan(1e-12);
+      expect(restingError(1e12, slope)).toBeLessThan(1e-4);
+      // Past the documented range the rounding of the distance to an endpoint exceeds the radius.
+      expect(restingError(1e16, slope)).toBeGreaterThan(10);
+    }
+  });
+
   it('results do not depend on the broad-phase', () => {
     const hashes = BROADPHASE_NAMES.map((broadphase) => {
       const world = new World({ broadphase, gravity: { x: 0, y: 300 }, bounds: { width: 300, height: 300 } });
