@@ -224,8 +224,15 @@ export class World {
   /** Adds a force (mass x length / s^2) to a dynamic body for the next step only; wakes it. */
   applyForce(handle: number, fx: number, fy: number): void {
     const s = this.dynamicSlot(handle, 'a force', fx, fy);
-    this.bodies.forceX[s] += fx;
-    this.bodies.forceY[s] += fy;
+    const b = this.bodies;
+    const totalX = b.forceX[s] + fx;
+    const totalY = b.forceY[s] + fy;
+    // Finite inputs can still sum, or divide by a small mass, past the largest double; the step would then spread infinities.
+    if (!Number.isFinite(totalX * b.invMass[s]) || !Number.isFinite(totalY * b.invMass[s])) {
+      throw new RangeError(`a force (${fx}, ${fy}) on body ${handle} would make its acceleration non-finite (pending force (${totalX}, ${totalY}), mass ${b.mass[s]})`);
+    }
+    b.forceX[s] = totalX;
+    b.forceY[s] = totalY;
     this.bodies.forcesPending = true;
     this.bodies.wake(s);
   }
@@ -233,8 +240,14 @@ export class World {
   /** Changes a dynamic body's velocity by impulse / mass at once; wakes it. */
   applyImpulse(handle: number, ix: number, iy: number): void {
     const s = this.dynamicSlot(handle, 'an impulse', ix, iy);
-    this.bodies.vx[s] += ix * this.bodies.invMass[s];
-    this.bodies.vy[s] += iy * this.bodies.invMass[s];
+    const b = this.bodies;
+    const vx = b.vx[s] + ix * b.invMass[s];
+    const vy = b.vy[s] + iy * b.invMass[s];
+    if (!Number.isFinite(vx) || !Number.isFinite(vy)) {
+      throw new RangeError(`an impulse (${ix}, ${iy}) on body ${handle} would make its velocity (${vx}, ${vy}) non-finite (mass ${b.mass[s]})`);
+    }
+    b.vx[s] = vx;
+    b.vy[s] = vy;
     this.bodies.wake(s);
   }
 
@@ -266,7 +279,7 @@ export class World {
   /** Wakes a body, or puts a dynamic body to sleep at once (its velocity becomes zero). */
   setAwake(handle: number, awake: boolean): void {
     const s = this.slot(handle);
-    if (typeof awake !== 'boolean') throw new TypeError(`awake must be true or false, got ${String(awake)}`);
+    if (typeof awake !== 'boolean') throw new TypeError(`awake must be true or false, got ${describeValue(awake)}`);
     if (awake) this.bodies.wake(s);
     else if (this.bodies.type[s] === TypeCode.dynamic) this.bodies.fallAsleep(s);
   }
@@ -465,12 +478,14 @@ export class World {
   }
 
   private segmentSlot(handle: number): number {
+    handleNumber('segment handle', handle);
     const s = this.segments.slotOf(handle);
     if (s < 0) throw new RangeError(`segment handle ${describeValue(handle)} ${this.segments.describeMissing(handle)}`);
     return s;
   }
 
   private slot(handle: number): number {
+    handleNumber('handle', handle);
     const s = this.bodies.slotOf(handle);
     if (s < 0) throw new RangeError(`handle ${describeValue(handle)} ${this.bodies.describeMissing(handle)}`);
     return s;
@@ -487,3 +502,7 @@ export class World {
   }
 }
 
+/** A handle that is not even a finite number is a TypeError, as every other non-number input is. */
+function handleNumber(field: string, handle: unknown): void {
+  if (typeof handle !== 'number' || !Number.isFinite(handle)) throw new TypeError(`${field} must be a finite number, got ${describeValue(handle)}`);
+}

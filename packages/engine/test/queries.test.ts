@@ -137,8 +137,9 @@ describe('queries agree with brute force', () => {
     const out = [7, 8];
     expect(world.queryPoint(100, 100, undefined, out)).toEqual([]);
     expect(out).toEqual([]);
-    expect(() => world.queryAABB(0, 0, 1, 1, {}, 'list' as unknown as number[])).toThrow(/out must be an array to fill, got string/);
+    expect(() => world.queryAABB(0, 0, 1, 1, {}, 'list' as unknown as number[])).toThrow(/out must be an array to fill, got "list"/);
     expect(() => world.queryPoint(0, 0, {}, { length: 0 } as unknown as number[])).toThrow(/out must be an array/);
+    expect(() => world.queryPoint(0, 0, {}, Object.freeze([]) as unknown as number[])).toThrow(/out must be an array to fill, got a frozen or sealed array/);
   });
 
   it('ray casts fill the hit objects the caller reuses, with the same hits as fresh calls', () => {
@@ -170,6 +171,9 @@ describe('queries agree with brute force', () => {
     world.createCircle({ x: 0, y: 0, radius: 5 });
     expect(() => world.rayCast(-10, 0, 10, 0, {}, [] as unknown as RayHit)).toThrow(/out must be a writable hit object to fill, got an array/);
     expect(() => world.rayCast(-10, 0, 10, 0, {}, Object.freeze({ ...single }))).toThrow(/out must be a writable hit object/);
-    expect(() => world.rayCastAll(-10, 0, 10, 0, {}, 'hits' as unknown as RayHit[])).toThrow(/out must be an array to fill, got string/);
+    expect(() => world.rayCastAll(-10, 0, 10, 0, {}, 'hits' as unknown as RayHit[])).toThrow(/out must be an array to fill, got "hits"/);
+    expect(() => world.rayCastAll(-10, 0, 10, 0, {}, Object.freeze([]) as unknown as RayHit[])).toThrow(/out must be an array to fill, got a frozen or sealed array/);
+    expect(() => world.rayCastAll(-10, 0, 10, 0, {}, [{ ...single }, Object.freeze({ ...single })])).toThrow(/out\[1\] must be a writable hit object to reuse, got a frozen object/);
+    expect(() => world.rayCastAll(-10, 0, 10, 0, {}, [7 as unknown as RayHit])).toThrow(/out\[0\] must be a writable hit object to reuse, got 7/);
   });
 });

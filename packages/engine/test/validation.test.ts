@@ -176,9 +176,35 @@ describe('bad input is rejected with a named error and leaves the world unchange
     rejects((w) => w.reserve(count as number), kind, 'reserve count', shown);
   });
 
-  it('a string handle is shown as a string', () => {
-    rejects((w) => w.destroyBody('0' as never), RangeError, 'handle', '"0"');
-    rejects((w) => w.destroySegment('0' as never), RangeError, 'segment handle', '"0"');
+  it('a handle that is not a finite number is a TypeError, a string shown as a string', () => {
+    rejects((w) => w.destroyBody('0' as never), TypeError, 'handle', '"0"');
+    rejects((w) => w.destroySegment('0' as never), TypeError, 'segment handle', '"0"');
+    rejects((w) => w.getCircle(Number.NaN), TypeError, 'handle', 'NaN');
+    rejects((w) => w.setVelocity(Number.POSITIVE_INFINITY, 1, 1), TypeError, 'handle', 'Infinity');
+    rejects((w) => w.getSegment(undefined as never), TypeError, 'segment handle', 'undefined');
+  });
+
+  it('awake must be a boolean, a string shown as a string', () => {
+    rejects((w, h) => w.setAwake(h, 'true' as never), TypeError, 'awake', '"true"');
+  });
+
+  it('an impulse or a force that would make a velocity or an acceleration non-finite', () => {
+    const world = new World({ bounds: { width: 100, height: 100 } });
+    const light = world.createCircle({ x: 50, y: 50, radius: 1, mass: 0.5 });
+    const other = world.createCircle({ x: 20, y: 50, radius: 1 });
+    world.applyForce(light, 1e307, 0);
+    const before = world.getCircle(light);
+    const hash = world.stateHash();
+    // 1e307 pending plus MAX_VALUE overflows; MAX_VALUE / 0.5 would too.
+    expect(() => world.applyForce(light, Number.MAX_VALUE, 0)).toThrow(/force \(1\.7976931348623157e\+308, 0\) on body 0 would make its acceleration non-finite/);
+    expect(() => world.applyImpulse(light, 0, -1e308)).toThrow(/impulse \(0, -1e\+308\) on body 0 would make its velocity \(0, -Infinity\) non-finite/);
+    expect(world.getCircle(light)).toEqual(before);
+    expect(world.stateHash()).toBe(hash);
+    world.step(1 / 60);
+    for (const h of [light, other]) {
+      const c = world.getCircle(h);
+      expect([c.x, c.y, c.vx, c.vy].every(Number.isFinite)).toBe(true);
+    }
   });
 
   it('a velocity for a static body', () => {
@@ -187,7 +213,7 @@ describe('bad input is rejected with a named error and leaves the world unchange
     expect(() => world.setVelocity(wall, 1, 0)).toThrow(/static/);
   });
 
-  it.each([12345, -1, 1.5, NaN, 2 ** 24 + 0])('unknown handle %s', (handle) => {
+  it.each([12345, -1, 1.5, 2 ** 24 + 0])('unknown handle %s', (handle) => {
     rejects((w) => w.getCircle(handle), RangeError, 'handle', String(handle));
     rejects((w) => w.destroyBody(handle), RangeError, 'handle', String(handle));
     rejects((w) => w.setVelocity(handle, 1, 1), RangeError, 'handle', String(handle));

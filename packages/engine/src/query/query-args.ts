@@ -23,7 +23,7 @@ export function rayArguments(x1: number, y1: number, x2: number, y2: number): vo
 /** The array a query fills: `out`, emptied, when the caller passes one to reuse, else a new one. */
 export function queryOutput<T>(out: T[] | undefined): T[] {
   if (out === undefined) return [];
-  if (!Array.isArray(out)) throw new TypeError(`out must be an array to fill, got ${typeof out === 'object' ? String(out) : typeof out}`);
+  writableArray(out);
   out.length = 0;
   return out;
 }
@@ -32,7 +32,7 @@ export function queryOutput<T>(out: T[] | undefined): T[] {
 export function rayHitOutput(out: RayHit | undefined): RayHit | null {
   if (out === undefined) return null;
   if (typeof out !== 'object' || out === null || Array.isArray(out) || Object.isFrozen(out)) {
-    throw new TypeError(`out must be a writable hit object to fill, got ${Array.isArray(out) ? 'an array' : String(out)}`);
+    throw new TypeError(`out must be a writable hit object to fill, got ${describeOut(out)}`);
   }
   return out;
 }
@@ -40,6 +40,24 @@ export function rayHitOutput(out: RayHit | undefined): RayHit | null {
 /** rayCastAll's `out`: an array whose hit objects are reused, else a new one. Not emptied: its objects are the point. */
 export function rayHitsOutput(out: RayHit[] | undefined): RayHit[] {
   if (out === undefined) return [];
-  if (!Array.isArray(out)) throw new TypeError(`out must be an array to fill, got ${typeof out === 'object' ? String(out) : typeof out}`);
+  writableArray(out);
+  for (let k = 0; k < out.length; k++) {
+    const hit: unknown = out[k];
+    if (typeof hit !== 'object' || hit === null || Array.isArray(hit) || Object.isFrozen(hit)) {
+      throw new TypeError(`out[${k}] must be a writable hit object to reuse, got ${describeOut(hit)}`);
+    }
+  }
   return out;
+}
+
+/** A query's `out` array must take new elements and a new length. */
+function writableArray(out: unknown): asserts out is unknown[] {
+  if (!Array.isArray(out)) throw new TypeError(`out must be an array to fill, got ${describeOut(out)}`);
+  if (!Object.isExtensible(out)) throw new TypeError('out must be an array to fill, got a frozen or sealed array');
+}
+
+function describeOut(value: unknown): string {
+  if (Array.isArray(value)) return 'an array';
+  if (value !== null && typeof value === 'object') return Object.isFrozen(value) ? 'a frozen object' : String(value);
+  return typeof value === 'string' ? JSON.stringify(value) : String(value);
 }
