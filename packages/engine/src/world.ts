@@ -8,6 +8,7 @@ import { MaxGridBroadPhase, type GridGeometry } from './broadphase/maxgrid.js';
 import { AutoBroadPhase } from './broadphase/auto.js';
 import { ContactEvents, type ContactEventsView } from './store/contact-events.js';
 import { Queries, type RayHit } from './query/queries.js';
+import { Disturbances } from './solver/disturbances.js';
 import { NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments, rayHitOutput, rayHitsOutput } from './query/query-args.js';
 import type { CircleState, BodyViews, QueryOptions } from './world-types.js';
 import * as analytics from './analytics.js';
@@ -43,6 +44,7 @@ export class World {
   private readonly bounds: { width: number; height: number } | null;
   private readonly defaultRestitution: number;
   private readonly queries = new Queries(this.bodies);
+  private readonly disturbances = new Disturbances();
   /** Bumped whenever positions or the body set change, so cached query grids know to rebuild. */
   private geometryVersion = 0;
   /** Bumped by stopWorkers, so that workers still starting know they were cancelled. */
@@ -129,7 +131,9 @@ export class World {
   }
 
   destroyBody(handle: number): void {
-    this.bodies.remove(this.slot(handle));
+    const s = this.slot(handle);
+    this.disturbances.note(this.bodies, s);
+    this.bodies.remove(s);
     this.geometryVersion++;
   }
 
@@ -215,8 +219,10 @@ export class World {
     finiteNumber('x', x);
     finiteNumber('y', y);
     this.assertInBox(x, y, this.bodies.radius[s]);
+    this.disturbances.note(this.bodies, s);
     this.bodies.x[s] = x;
     this.bodies.y[s] = y;
+    this.disturbances.note(this.bodies, s);
     this.bodies.wake(s);
     this.geometryVersion++;
   }
@@ -268,6 +274,7 @@ export class World {
     const s = this.slot(handle);
     const c = layerBits('category', category);
     const m = layerBits('mask', mask);
+    this.disturbances.note(this.bodies, s);
     this.bodies.setFilter(s, c, m);
     this.bodies.wake(s);
   }
@@ -287,7 +294,9 @@ export class World {
   /** Changes a body's motion type at run time (the report's mutable object types, 3.2). */
   setType(handle: number, type: BodyType): void {
     const s = this.slot(handle);
-    this.bodies.setTypeCode(s, TypeCode[bodyType(type)]);
+    const code = TypeCode[bodyType(type)];
+    this.disturbances.note(this.bodies, s);
+    this.bodies.setTypeCode(s, code);
     this.geometryVersion++;
   }
 
@@ -353,6 +362,7 @@ export class World {
   step(dt: number): void {
     finiteNumber('dt', dt);
     if (dt < 0) throw new RangeError(`dt must be >= 0, got ${dt}`);
+    this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
     this.pipeline.run(dt);
     this.geometryVersion++;
   }

@@ -130,6 +130,49 @@ describe('sleeping (report 3.1.4.1, 5.3.3)', () => {
     }
   });
 
+  it('taking a sleeper\'s support away wakes it: destroy, move, re-filter or re-type what it rests on', () => {
+    const dt = 1 / 60;
+    const stack = () => {
+      const world = new World({
+        bounds: { width: 100, height: 100 }, gravity: { x: 0, y: 300 }, restitution: 0, restitutionThreshold: 10,
+        sleeping: true, sleepSpeed: 40, solverIterations: 4, positionCorrection: 0.2, contactSlop: 0.05,
+      });
+      const bottom = world.createCircle({ x: 50, y: 95, radius: 5 });
+      const top = world.createCircle({ x: 50, y: 85, radius: 5 });
+      const far = world.createCircle({ x: 10, y: 95, radius: 5 });
+      for (let s = 0; s < 200; s++) world.step(dt);
+      for (const h of [bottom, top, far]) expect(world.isAwake(h)).toBe(false);
+      return { world, bottom, top, far };
+    };
+    // [action, whether the top body then falls]: a kinematic body still holds it up.
+    const actions: [(w: World, bottom: number) => void, boolean][] = [
+      [(w, bottom) => w.destroyBody(bottom), true],
+      [(w, bottom) => w.setPosition(bottom, 80, 95), true],
+      [(w, bottom) => w.setCollisionFilter(bottom, 1, 0), true],
+      [(w, bottom) => w.setType(bottom, 'kinematic'), false],
+    ];
+    for (const [action, falls] of actions) {
+      const { world, bottom, top, far } = stack();
+      const topBefore = world.getCircle(top).y;
+      action(world, bottom);
+      world.step(dt);
+      // The top body wakes and falls; a sleeper touching nothing that changed sleeps on.
+      expect(world.isAwake(top)).toBe(true);
+      expect(world.isAwake(far)).toBe(false);
+      for (let s = 0; s < 60; s++) world.step(dt);
+      if (falls) expect(world.getCircle(top).y).toBeGreaterThan(topBefore + 1);
+      else expect(Math.abs(world.getCircle(top).y - topBefore)).toBeLessThan(0.5);
+    }
+    // A static body moved onto a sleeper: the sleeper wakes and is pushed out, not left overlapped.
+    const { world, far } = stack();
+    const post = world.createCircle({ x: 30, y: 50, radius: 5, type: 'static' });
+    world.step(dt);
+    world.setPosition(post, 16, 95);
+    for (let s = 0; s < 30; s++) world.step(dt);
+    const a = world.getCircle(far);
+    expect(Math.hypot(a.x - 16, a.y - 95)).toBeGreaterThanOrEqual(10 - 0.05 - 1e-9);
+  });
+
   it('sleeping and waking give the same result with every broad-phase', async () => {
     const { BROADPHASE_NAMES } = await import('../src/index.js');
     const runs = BROADPHASE_NAMES.map((broadphase) => {
