@@ -457,7 +457,8 @@ export class World {
   gridGeometry(): GridGeometry | null {
     const broad = this.pipeline.broadPhase;
     const used = broad instanceof AutoBroadPhase ? broad.current : broad;
-    return used instanceof MaxGridBroadPhase ? used.geometry : null;
+    // Before its first build (no step yet, or too few bodies to grid) a Max Grid has no cells.
+    return used instanceof MaxGridBroadPhase && used.geometry.columns > 0 ? used.geometry : null;
   }
 
   /**

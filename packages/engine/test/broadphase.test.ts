@@ -172,8 +172,12 @@ describe('mixed sizes (report 3.2: Max Grid degrades when sizes differ by an ord
     const scene = buildScene('uniform', { n: 2000, seed: 2 });
     const auto = buildWorld(scene, { broadphase: 'auto' });
     const grid = buildWorld(scene, { broadphase: 'maxgrid' });
+    // No grid before the first build: null, not a grid of zero cells.
+    expect(grid.gridGeometry()).toBeNull();
+    expect(auto.gridGeometry()).toBeNull();
     auto.step(1 / 60);
     grid.step(1 / 60);
+    expect(grid.gridGeometry()!.columns).toBeGreaterThan(0);
     expect(auto.stats.pairTests).toBe(grid.stats.pairTests);
     expect(auto.gridGeometry()).toEqual(grid.gridGeometry());
   });

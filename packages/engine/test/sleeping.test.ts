@@ -173,6 +173,18 @@ describe('sleeping (report 3.1.4.1, 5.3.3)', () => {
     expect(Math.hypot(a.x - 16, a.y - 95)).toBeGreaterThanOrEqual(10 - 0.05 - 1e-9);
   });
 
+  it('sleepTime 0: a still body sleeps after one slow step, a moving one never', () => {
+    const world = new World({ sleeping: true, sleepTime: 0 });
+    const fast = world.createCircle({ x: 0, y: 0, radius: 1, vx: 300 });
+    const slow = world.createCircle({ x: 100, y: 0, radius: 1, vx: 0.5 });
+    for (let s = 0; s < 10; s++) {
+      world.step(1 / 60);
+      expect(world.isAwake(fast)).toBe(true);
+      expect(world.getCircle(fast).vx).toBe(300);
+      expect(world.isAwake(slow)).toBe(false);
+    }
+  });
+
   it('sleeping and waking give the same result with every broad-phase', async () => {
     const { BROADPHASE_NAMES } = await import('../src/index.js');
     const runs = BROADPHASE_NAMES.map((broadphase) => {

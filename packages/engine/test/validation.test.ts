@@ -184,6 +184,13 @@ describe('bad input is rejected with a named error and leaves the world unchange
     rejects((w) => w.getSegment(undefined as never), TypeError, 'segment handle', 'undefined');
   });
 
+  it('options must be plain objects: a Map or inherited options are refused, not read in part', () => {
+    expect(() => new World(new Map([['broadPhase', 'naive']]) as never)).toThrow(/World options must be a plain object, got a Map/);
+    expect(() => new World(Object.create({ broadPhase: 'naive', gravity: { x: 0, y: 1 } }) as never)).toThrow(/World options must be a plain object/);
+    rejects((w) => w.createCircle(Object.create({ x: 1, y: 1, radius: 1 }) as never), TypeError, 'circle options', 'plain object');
+    expect(new World(Object.assign(Object.create(null), { gravity: { x: 0, y: 1 } })).bodyCount).toBe(0);
+  });
+
   it('awake must be a boolean, a string shown as a string', () => {
     rejects((w, h) => w.setAwake(h, 'true' as never), TypeError, 'awake', '"true"');
   });

@@ -47,7 +47,7 @@ export class SleepStage {
     }
     for (let i = 0; i < slotCount; i++) {
       if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
-      if (sleepTime[i] >= time && blocked[i] !== stamp) bodies.fallAsleep(i);
+      if (stillFor(sleepTime[i], time) && blocked[i] !== stamp) bodies.fallAsleep(i);
     }
   }
 
@@ -64,7 +64,16 @@ export class SleepStage {
 function isStill(bodies: BodyStore, slot: number, time: number): boolean {
   const t = bodies.type[slot];
   if (t === TypeCode.static || bodies.asleep[slot]) return true;
-  return t === TypeCode.dynamic && bodies.sleepTime[slot] >= time;
+  return t === TypeCode.dynamic && stillFor(bodies.sleepTime[slot], time);
+}
+
+/**
+ * Still for `time` seconds: a timer that a fast body reset to 0 has not started, so with
+ * `sleepTime: 0` a body must have been slow through one step, not merely have a zero timer (which
+ * put bodies at 300 px/s to sleep in their first step).
+ */
+function stillFor(timer: number, time: number): boolean {
+  return timer > 0 && timer >= time;
 }
 
 /**

@@ -51,6 +51,13 @@ export function plainObject(field: string, value: unknown): Record<string, unkno
   if (typeof value !== 'object' || value === null || Array.isArray(value)) {
     throw new TypeError(`${field} must be an object, got ${show(value)}`);
   }
+  // Only own keys are checked against the known names, so a Map or an object inheriting options
+  // would pass its misspellings (or all its entries) unread.
+  // A plain object's prototype is null or an Object.prototype (of any realm: its own is null).
+  const prototype: unknown = Object.getPrototypeOf(value);
+  if (prototype !== null && Object.getPrototypeOf(prototype) !== null) {
+    throw new TypeError(`${field} must be a plain object, got ${describeInstance(value)}`);
+  }
   return value as Record<string, unknown>;
 }
 
@@ -64,3 +71,8 @@ export function knownKeys(field: string, value: Record<string, unknown>, allowed
 }
 
 export { show as describeValue };
+
+function describeInstance(value: object): string {
+  const name = (value as { constructor?: { name?: unknown } }).constructor?.name;
+  return typeof name === 'string' && name !== 'Object' ? `a ${name}` : 'an object with a prototype of its own';
+}
