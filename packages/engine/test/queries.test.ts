@@ -91,21 +91,33 @@ describe('queries agree with brute force', () => {
     );
   });
 
-  it('a ray that starts far away still hits, on the circle, to the precision of its start', () => {
+  it('a ray that starts far away still hits, on the circle, with a unit normal', () => {
     const world = new World();
     const h = world.createCircle({ x: 50, y: 50, radius: 5 });
-    for (const far of [1e3, 1e9, 1e12, 1e16]) {
-      for (const [x1, y1, x2, y2] of [[-far, 50, far, 50], [50, far, 50, -far], [50 - far, 50 - far, 50 + far, 50 + far]]) {
+    // Past 1.3e154 the squares of the lengths overflow; past 1e15, start + t d rounded the hit off the rim.
+    for (const far of [1e3, 1e9, 1e12, 1e16, 1e100, 3e154, 1e300]) {
+      const rays: [number[], number, number][] = [
+        [[-far, 50, far, 50], 45, 50],
+        [[50, far, 50, -far], 50, 55],
+        [[-far, 52, 60, 52], 50 - Math.sqrt(21), 52],
+        [[50 - far, 50 - far, 50 + far, 50 + far], Number.NaN, Number.NaN],
+      ];
+      for (const [[x1, y1, x2, y2], ex, ey] of rays) {
         const hit = world.rayCast(x1, y1, x2, y2);
         expect(hit?.handle, `from (${x1}, ${y1})`).toBe(h);
-        // The start itself is only known to within an ulp of its coordinates.
-        const slack = 8 * far * Number.EPSILON;
-        expect(Math.abs(Math.hypot(hit!.x - 50, hit!.y - 50) - 5), `from (${x1}, ${y1})`).toBeLessThanOrEqual(1e-9 + slack);
+        expect(Math.abs(Math.hypot(hit!.x - 50, hit!.y - 50) - 5), `from (${x1}, ${y1})`).toBeLessThanOrEqual(1e-12);
+        expect(Math.abs(Math.hypot(hit!.normalX, hit!.normalY) - 1)).toBeLessThanOrEqual(1e-15);
+        // Axis-aligned rays are exact; a diagonal start is itself only known to an ulp of its coordinates.
+        if (!Number.isNaN(ex)) expect(Math.hypot(hit!.x - ex, hit!.y - ey), `from (${x1}, ${y1})`).toBeLessThanOrEqual(1e-12);
       }
     }
     // Parallel rays just inside and just outside the rim, from far away.
     expect(world.rayCast(-1e9, 54.99, 1e9, 54.99)?.handle).toBe(h);
     expect(world.rayCast(-1e9, 55.01, 1e9, 55.01)).toBeNull();
+    expect(world.rayCast(-1e200, 55.01, 1e200, 55.01)).toBeNull();
+    expect(world.rayCastAll(-1e200, 54.99, 1e200, 54.99).map((hit) => hit.handle)).toEqual([h]);
+    // A ray whose extent overflows a double is refused by name.
+    expect(() => world.rayCast(-1e308, 50, 1e308, 50)).toThrow(/a ray from \(-1e\+308, 50\) to \(1e\+308, 50\) spans more than the largest double/);
   });
 
   it('queries see the world as it is after steps and edits', () => {

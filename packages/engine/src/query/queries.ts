@@ -1,7 +1,7 @@
 import type { BodyStore } from '../store/body-store.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
 import { LiveExtent } from '../broadphase/live-extent.js';
-import { rayCircle } from './ray-circle.js';
+import { rayCircle, rayCircleEntry } from './ray-circle.js';
 
 export interface RayHit {
   handle: number;
@@ -80,7 +80,7 @@ export class Queries {
     this.walk(version, x1, y1, x2, y2, mask, false);
     if (this.bestFraction === Infinity) return null;
     const t = this.bestFraction;
-    return writeHit(into ?? blankHit(), this.bodies, this.bestSlot, t, x1 + (x2 - x1) * t, y1 + (y2 - y1) * t);
+    return writeHit(into ?? blankHit(), this.bodies, this.bestSlot, t, x1, y1, x2 - x1, y2 - y1);
   }
 
   /**
@@ -178,7 +178,7 @@ export class Queries {
           const k = this.hitCount++;
           const reused = this.hits[k];
           const hit = typeof reused === 'object' && reused !== null ? reused : (this.hits[k] = this.spareHits.pop() ?? blankHit());
-          writeHit(hit, bodies, slot, t, x1 + dx * t, y1 + dy * t);
+          writeHit(hit, bodies, slot, t, x1, y1, dx, dy);
         } else if (t < this.bestFraction || (t === this.bestFraction && bodies.handleOf(slot) < this.bestHandle)) {
           this.bestFraction = t;
           this.bestSlot = slot;
@@ -217,15 +217,18 @@ function blankHit(): RayHit {
   return { handle: 0, fraction: 0, x: 0, y: 0, normalX: 0, normalY: 0 };
 }
 
-/** Fills `hit` for the circle in `slot`, entered at fraction t, at (hx, hy). */
-function writeHit(hit: RayHit, bodies: BodyStore, slot: number, t: number, hx: number, hy: number): RayHit {
+const entry = { x: 0, y: 0 };
+
+/** Fills `hit` for the circle in `slot`, entered at fraction t by the ray from (x1, y1) along (dx, dy). */
+function writeHit(hit: RayHit, bodies: BodyStore, slot: number, t: number, x1: number, y1: number, dx: number, dy: number): RayHit {
   const r = bodies.radius[slot];
+  rayCircleEntry(x1, y1, dx, dy, bodies.x[slot], bodies.y[slot], r, entry);
   hit.handle = bodies.handleOf(slot);
   hit.fraction = t;
-  hit.x = hx;
-  hit.y = hy;
-  hit.normalX = (hx - bodies.x[slot]) / r;
-  hit.normalY = (hy - bodies.y[slot]) / r;
+  hit.x = bodies.x[slot] + entry.x;
+  hit.y = bodies.y[slot] + entry.y;
+  hit.normalX = entry.x / r;
+  hit.normalY = entry.y / r;
   return hit;
 }
 

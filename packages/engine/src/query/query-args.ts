@@ -18,6 +18,9 @@ export function rayArguments(x1: number, y1: number, x2: number, y2: number): vo
   finiteNumber('y1', y1);
   finiteNumber('x2', x2);
   finiteNumber('y2', y2);
+  if (!Number.isFinite(x2 - x1) || !Number.isFinite(y2 - y1)) {
+    throw new RangeError(`a ray from (${x1}, ${y1}) to (${x2}, ${y2}) spans more than the largest double (x2 - x1 = ${x2 - x1}, y2 - y1 = ${y2 - y1})`);
+  }
 }
 
 /** The array a query fills: `out`, emptied, when the caller passes one to reuse, else a new one. */
