@@ -4,7 +4,7 @@ import {
   NAIVE_LIMIT,
   SCENE_CHOICES,
   SEED_MAX,
-  THREAD_CHOICES,
+  threadChoices,
   WORLD_TOGGLES,
   clampNumber,
   clampSeed,
@@ -71,8 +71,7 @@ export class Controls {
     for (const name of BROADPHASE_NAMES) this.broadphase.append(new Option(name, name));
     for (const name of INTEGRATOR_NAMES) this.integrator.append(new Option(name, name));
     // Worker threads need SharedArrayBuffer, which only a cross-origin isolated page has.
-    const cores = globalThis.crossOriginIsolated ? navigator.hardwareConcurrency || 1 : 1;
-    for (const count of THREAD_CHOICES) if (count === 1 || count <= cores) this.threads.append(new Option(String(count), String(count)));
+    for (const count of threadChoices(usableCores())) this.threads.append(new Option(String(count), String(count)));
 
     // Another scene starts from its own defaults; the seed, engine and view choices carry over.
     this.sceneSelect.addEventListener('change', () => {
@@ -197,4 +196,9 @@ export class Controls {
     });
     return { spec, input, output };
   }
+}
+
+/** Cores worker threads can use: Web Workers share memory only on a cross-origin isolated page. */
+export function usableCores(): number {
+  return globalThis.crossOriginIsolated ? navigator.hardwareConcurrency || 1 : 1;
 }

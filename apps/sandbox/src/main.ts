@@ -1,4 +1,4 @@
-import { Controls } from './controls.js';
+import { Controls, usableCores } from './controls.js';
 import { download, toCsv, toJson } from './data-export.js';
 import { FrameLog, type FrameSample } from './frame-log.js';
 import { attachPointer } from './interaction.js';
@@ -13,6 +13,7 @@ import {
   NAIVE_LIMIT,
   copySettings,
   defaultSettings,
+  offeredThreads,
   parseSettings,
   serializeSettings,
   usableBroadphase,
@@ -45,6 +46,7 @@ const renderers: Partial<Record<RendererName, Renderer>> = { canvas: new Canvas2
 let renderer: Renderer = renderers.canvas as Renderer;
 
 let settings: Settings = parseSettings(location.search);
+settings.threads = offeredThreads(settings.threads, usableCores());
 // A scene change waits for the next frame, so dragging a slider rebuilds once per frame at most.
 let pendingScene: Settings | null = null;
 let forceStats = true;

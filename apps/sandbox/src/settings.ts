@@ -35,6 +35,16 @@ export interface Settings {
 /** Thread counts offered; the page offers those up to the machine's core count. */
 export const THREAD_CHOICES = [1, 2, 4, 8] as const;
 
+/** The thread counts offered where `cores` cores are usable (1 where the page has no SharedArrayBuffer). */
+export function threadChoices(cores: number): number[] {
+  return THREAD_CHOICES.filter((count) => count === 1 || count <= cores);
+}
+
+/** The largest count offered that is not above `asked`: a URL's threads=8 runs 2 threads on 2 cores. */
+export function offeredThreads(asked: number, cores: number): number {
+  return threadChoices(cores).reduce((best, count) => (count <= asked ? count : best), 1);
+}
+
 export const RENDERER_NAMES = ['canvas', 'webgl'] as const;
 export type RendererName = (typeof RENDERER_NAMES)[number];
 

@@ -378,6 +378,13 @@ describe('2D sandbox: engine features', () => {
     await page.goto(page.url().replace(/\?.*/, '?scene=uniform&n=40000&threads=2'));
     await expect.poll(() => page.workers().length, POLL).toBe(1);
     expect(await page.getByLabel('Threads').inputValue()).toBe('2');
+    // A URL asking for more threads than the machine offers runs the most it offers, and says so in the URL.
+    const cores = await page.evaluate(() => navigator.hardwareConcurrency);
+    const offered = [8, 4, 2, 1].find((count) => count <= cores) ?? 1;
+    await page.goto(page.url().replace(/\?.*/, '?scene=uniform&n=40000&threads=8'));
+    await expect.poll(() => page.workers().length, POLL).toBe(offered - 1);
+    expect(await page.getByLabel('Threads').inputValue()).toBe(String(offered));
+    await expect.poll(() => new URL(page.url()).searchParams.get('threads'), POLL).toBe(offered === 1 ? null : String(offered));
     expect(errors).toEqual([]);
     await page.close();
   });
