@@ -33,6 +33,14 @@ const BAD: [string, string[], RegExp][] = [
   ['option the experiment does not take', ['energy', '--runs', '3'], /--runs does not apply to experiment 'energy'/],
   ['inverted N range', ['step-time', '--n-start', '100', '--n-end', '10'], /--n-end 10 is below --n-start 100/],
   ['unknown option', ['scale', '--turbo'], /unknown option '--turbo'/],
+  ['an engine twice', ['step-time', '--engines', 'maxgrid:maxgrid,maxgrid:maxgrid'], /--engines lists 'maxgrid:maxgrid' twice/],
+  ['an N twice', ['scale', '--n', '100,100'], /--n lists '100' twice/],
+  ['engines where they are fixed', ['threads', '--engines', 'rapier'], /--engines does not apply to experiment 'threads': it measures maxgrid:maxgrid only/],
+  ['more circles than the sandbox page takes', ['sandbox-render', '--n', '300000'], /--n for experiment 'sandbox-render' is at most 200000.*got 300000/],
+  ['an empty --out', ['energy', '--out', ''], /--out must name a folder, got ''/],
+  ['an --out that is a file', ['energy', '--out', 'package.json'], /--out package.json: EEXIST/],
+  ['a range step alone', ['step-time', '--n-step', '5'], /a range needs both --n-start and --n-end \(got only --n-step 5\)/],
+  ['results with an option', ['results', '--n', '10'], /results takes only --quick or --full and --out \(got --n\)/],
 ];
 
 describe('lab CLI', () => {

@@ -50,6 +50,8 @@ export interface Experiment<O extends object, R> {
   defaultEngines: string[];
   /** Needs Node (a C compiler, a headless Chromium): the browser lab page leaves it out. */
   nodeOnly?: boolean;
+  /** Measures its default engines whatever --engines says: the option is refused. */
+  fixedEngines?: boolean;
   options(profile: Profile, overrides: Overrides): O;
   run(options: O, ctx: RunContext): Promise<R>;
   csv(result: R): string;
@@ -60,8 +62,11 @@ export interface Experiment<O extends object, R> {
   headline(result: R): string[];
 }
 
+/** The command-line option behind each override. */
+export const OVERRIDE_FLAGS: Record<keyof Overrides, string> = { ns: '--n', runs: '--runs', seconds: '--seconds', scenes: '--scene', dt: '--dt' };
+
 function reject(experiment: string, overrides: Overrides, allowed: (keyof Overrides)[]): void {
-  const flags: Record<keyof Overrides, string> = { ns: '--n', runs: '--runs', seconds: '--seconds', scenes: '--scene', dt: '--dt' };
+  const flags = OVERRIDE_FLAGS;
   for (const key of Object.keys(overrides) as (keyof Overrides)[]) {
     if (overrides[key] !== undefined && !allowed.includes(key)) {
       throw new RangeError(`option ${flags[key]} does not apply to experiment '${experiment}' (it takes ${allowed.map((k) => flags[k]).join(', ')})`);
@@ -70,6 +75,9 @@ function reject(experiment: string, overrides: Overrides, allowed: (keyof Overri
 }
 
 const MAXGRID_IDS = ENGINE_IDS.filter((id) => id.startsWith('maxgrid:'));
+
+/** The sandbox page's largest circle count (QUANTITY_MAX in apps/sandbox/src/scene-specs.ts): it clamps larger ones. */
+const SANDBOX_MAX_N = 200_000;
 
 export const stepTime: Experiment<StepTimeOptions, StepTimeResult> = {
   name: 'step-time',
@@ -209,9 +217,11 @@ export const sandboxRender: Experiment<SandboxRenderOptions, SandboxRenderResult
   schema: sandboxRenderSchema,
   defaultEngines: ['maxgrid:maxgrid'],
   nodeOnly: true,
+  fixedEngines: true,
   options(profile, o) {
     reject('sandbox-render', o, ['ns', 'seconds']);
     if (o.ns && o.ns.length !== 1) throw new RangeError(`option --n takes one value for experiment 'sandbox-render' (the page's circle count), got ${o.ns.join(',')}`);
+    if (o.ns && o.ns[0] > SANDBOX_MAX_N) throw new RangeError(`option --n for experiment 'sandbox-render' is at most ${SANDBOX_MAX_N} (the page's limit), got ${o.ns[0]}`);
     const d = sandboxRenderDefaults(profile);
     return { ...d, n: o.ns?.[0] ?? d.n, seconds: o.seconds ?? d.seconds };
   },
@@ -228,6 +238,7 @@ export const threads: Experiment<ThreadsOptions, ThreadsResult> = {
   schema: threadsSchema,
   defaultEngines: ['maxgrid:maxgrid'],
   nodeOnly: true,
+  fixedEngines: true,
   options(profile, o) {
     reject('threads', o, ['ns', 'runs', 'dt']);
     if (o.ns && o.ns.length !== 1) throw new RangeError(`option --n takes one value for experiment 'threads', got ${o.ns.join(',')}`);

@@ -72,10 +72,8 @@ export function stepTimeHeadline(r: StepTimeResult): string[] {
       .map((e) => ({ e, q: stepTimeRatio(r, scene, base, e, BASELINE) }))
       .filter((x) => Number.isFinite(x.q))
       .sort((a, b) => b.q - a.q);
-    out.push(
-      `Scene ${scene}, N = ${base}: ${BASELINE} median ${fmt(baseMs)} ms per step; ${ratios.map((x) => `${x.e} / ${BASELINE} = ${ratioText(x.q)}`).join(', ')}.`,
-      '',
-    );
+    const compared = ratios.length > 0 ? `; ${ratios.map((x) => `${x.e} / ${BASELINE} = ${ratioText(x.q)}`).join(', ')}` : '';
+    out.push(`Scene ${scene}, N = ${base}: ${BASELINE} median ${fmt(baseMs)} ms per step${compared}.`, '');
   }
   const skipped = r.skipped.map((s) => `${s.engine} on ${s.scene} from N = ${s.fromN}`);
   if (skipped.length) out.push(`Dropped for larger N after exceeding ${String(r.meta.options.cutoffMs)} ms per step: ${skipped.join('; ')}.`, '');
