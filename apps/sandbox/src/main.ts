@@ -85,7 +85,8 @@ function rebuild(next: Settings): void {
     sim.rebuild(wanted);
   } catch (error) {
     const fallback = sim.world ? settings : { ...defaultSettings(wanted.scene), ...pickView(wanted) };
-    say(`${error instanceof Error ? error.message : String(error)}; kept the last scene that fits.`);
+    const kept = sim.world ? 'kept the last scene that fits' : "using the scene's defaults";
+    say(`${error instanceof Error ? error.message : String(error)}; ${kept}.`);
     wanted = fallback;
     sim.rebuild(wanted);
   }

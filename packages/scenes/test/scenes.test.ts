@@ -54,6 +54,18 @@ describe('scenes', () => {
     expect(world.stats.contacts).toBe(0);
   });
 
+  it('mixed: many large circles with a wide ratio place without overlaps, and a box too sparse to list is a clear error', () => {
+    // 5 % of the circles 200 times larger: the sandbox's slider limits, where testing every fine
+    // cell against every large circle took 17.7 s at 10,000 circles. Nothing overlaps.
+    const s = buildScene('mixed', { n: 2_000, largeFraction: 0.05, ratio: 200 });
+    const world = buildWorld(s, { broadphase: 'hgrid' });
+    world.step(0);
+    expect(world.stats.contacts).toBe(0);
+    expect(() => buildScene('mixed', { n: 200_000, largeFraction: 0.05, ratio: 200 })).toThrow(
+      /mixed: a box \d+ wide has \d+ places for small circles, more than 16777216 to list; lower n, ratio or largeFraction, or raise fill/,
+    );
+  });
+
   it('uniform with logRadius: as many circles per size octave', () => {
     const s = buildScene('uniform', { n: 4000, seed: 1, minRadius: 1, maxRadius: 16, logRadius: 1 });
     const perOctave = [0, 0, 0, 0];

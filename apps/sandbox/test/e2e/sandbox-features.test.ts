@@ -352,7 +352,7 @@ describe('2D sandbox: engine features', () => {
     // A funnel that cannot hold its circles is refused with a notice; its defaults are built instead.
     await page.goto(page.url().replace(/\?.*/, '?scene=funnel&n=5000&size=12'));
     await stepsPass(page, 2);
-    expect(await page.locator('#notice').innerText()).toMatch(/fit/);
+    expect(await page.locator('#notice').innerText()).toMatch(/fit above the funnel.*; using the scene's defaults\./);
     expect(await stat(page, 'bodies')).toBe(551);
     expect(errors).toEqual([]);
     await page.close();
