@@ -213,7 +213,7 @@ export const targets: Experiment<TargetsOptions, TargetsResult> = {
 
 export const sandboxRender: Experiment<SandboxRenderOptions, SandboxRenderResult> = {
   name: 'sandbox-render',
-  description: "Issue 5's T7: the sandbox page live in headless Chromium with 100,000 circles, WebGL and canvas 2D, frame by frame",
+  description: "Issue 5's T7: the sandbox page live in headless Chromium (100,000 circles unless --n says otherwise), WebGL and canvas 2D, frame by frame",
   schema: sandboxRenderSchema,
   defaultEngines: ['maxgrid:maxgrid'],
   nodeOnly: true,
@@ -234,7 +234,7 @@ export const sandboxRender: Experiment<SandboxRenderOptions, SandboxRenderResult
 
 export const threads: Experiment<ThreadsOptions, ThreadsResult> = {
   name: 'threads',
-  description: 'The parallel step at 1,000,000 circles on 1, 2, 4, ... threads up to the cores, state hashes checked (--runs: timed steps)',
+  description: 'The parallel step (1,000,000 circles unless --n says otherwise) on 1, 2, 4, ... threads up to the cores, state hashes checked (--runs: timed steps)',
   schema: threadsSchema,
   defaultEngines: ['maxgrid:maxgrid'],
   nodeOnly: true,
