@@ -1,4 +1,7 @@
 import { describe, expect, it } from 'vitest';
+import { readdirSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
 import fc from 'fast-check';
 import { World } from '../src/index.js';
 import { buildScene, buildWorld } from '@maxgrid/scenes';
@@ -60,5 +63,23 @@ describe('determinism', () => {
 });
 
 const GOLDEN_SEED_BOX_800 = '1981b004408be274';
+
+describe('the engine uses only correctly rounded arithmetic (docs/engine.md, Guarantees)', () => {
+  it('no Math function whose rounding each JavaScript engine chooses appears in the source', () => {
+    // +, -, *, /, Math.sqrt and the rounding and min/max functions are exact or correctly rounded
+    // by the language; these are not, so they could give other bits in another runtime.
+    const inexact = /Math\.(hypot|exp|expm1|log|log1p|log2|log10|pow|sin|cos|tan|asin|acos|atan|atan2|sinh|cosh|tanh|asinh|acosh|atanh|cbrt)\(/;
+    const src = fileURLToPath(new URL('../src', import.meta.url));
+    const files = readdirSync(src, { recursive: true, encoding: 'utf8' }).filter((f) => f.endsWith('.ts') && !f.startsWith('generated'));
+    expect(files.length).toBeGreaterThan(40);
+    const found = files.flatMap((file) =>
+      readFileSync(join(src, file), 'utf8')
+        .split('\n')
+        .filter((line) => inexact.test(line) && !/^\s*(\*|\/\/)/.test(line))
+        .map((line) => `${file}: ${line.trim()}`),
+    );
+    expect(found).toEqual([]);
+  });
+});
 
 export { World };

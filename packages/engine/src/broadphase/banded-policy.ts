@@ -52,7 +52,11 @@ export class BandedPolicy {
    * uniform density, and returns the scratch the bin needs, in bodies.
    */
   choose(n: number, cells: number): number {
-    this.shift = Math.max(0, Math.ceil(Math.log2((cells * bandedBin.bodiesPerBand) / n)));
+    // The least shift whose bands of 2^shift cells hold about bodiesPerBand bodies: counted, not
+    // Math.log2, whose rounding each JavaScript engine chooses (see the determinism test).
+    let shift = 0;
+    while (2 ** shift * n < cells * bandedBin.bodiesPerBand) shift++;
+    this.shift = shift;
     this.bands = ((cells - 1) >> this.shift) + 1;
     // Twice a band's share at uniform density, before any bin has said what the fullest band needs.
     return Math.max(this.scratchWanted, Math.ceil((2 * n) / this.bands));

@@ -31,8 +31,8 @@ export function rayCircle(x1: number, y1: number, dx: number, dy: number, cx: nu
  * inputs; then the entry point lies half a chord, sqrt((r - h)(r + h)), before the closest approach.
  */
 function rayCircleFar(fx: number, fy: number, dx: number, dy: number, r: number): number {
-  if (Math.hypot(fx, fy) <= r) return -1;
-  const length = Math.hypot(dx, dy);
+  if (norm(fx, fy) <= r) return -1;
+  const length = norm(dx, dy);
   if (length === 0 || !Number.isFinite(length)) return -1;
   const ux = dx / length;
   const uy = dy / length;
@@ -51,11 +51,25 @@ function rayCircleFar(fx: number, fy: number, dx: number, dy: number, r: number)
  * put the hit 0.12 radii off and gave a normal of length 0.90; this stays on the circle.
  */
 export function rayCircleEntry(x1: number, y1: number, dx: number, dy: number, cx: number, cy: number, r: number, at: { x: number; y: number }): void {
-  const length = Math.hypot(dx, dy);
+  const length = norm(dx, dy);
   const ux = dx / length;
   const uy = dy / length;
   const h = (x1 - cx) * uy - (y1 - cy) * ux;
   const offset = Math.abs(h) < r ? Math.sqrt((r - h) * (r + h)) : 0;
   at.x = h * uy - offset * ux;
   at.y = -h * ux - offset * uy;
+}
+
+/**
+ * sqrt(x^2 + y^2) without overflow, from multiplication, addition and Math.sqrt alone, which are
+ * correctly rounded everywhere (Math.hypot's rounding is left to each JavaScript engine, which
+ * would break determinism across runtimes). Huge and tiny inputs are scaled by a power of two,
+ * which is exact, chosen by fixed thresholds rather than Math.log2 (not exact either).
+ */
+function norm(x: number, y: number): number {
+  const largest = Math.max(Math.abs(x), Math.abs(y));
+  const scale = largest > 2 ** 500 ? 2 ** -600 : largest < 2 ** -500 ? 2 ** 600 : 1;
+  const sx = x * scale;
+  const sy = y * scale;
+  return Math.sqrt(sx * sx + sy * sy) / scale;
 }
