@@ -6,6 +6,7 @@ import type { IntegratorName } from './integrate/integrator.js';
 import { INTEGRATOR_NAMES } from './integrate/integrator.js';
 import type { NewBody } from './store/body-store.js';
 import type { NewSegment } from './store/segment-store.js';
+import type { StepSettings } from './step/pipeline.js';
 import {
   finiteNumber,
   knownKeys,
@@ -299,4 +300,23 @@ export function resolveSegment(input: unknown, defaultRestitution: number): NewS
     throw new RangeError(`a segment from (${segment.ax}, ${segment.ay}) to itself needs a thickness > 0`);
   }
   return segment;
+}
+
+/** The step's settings from the world's validated options. */
+export function stepSettings(resolved: ResolvedWorldOptions): StepSettings {
+  return {
+    gravity: resolved.gravity,
+    box: resolved.bounds,
+    wallRestitution: resolved.restitution,
+    solver: {
+      restitutionThreshold: resolved.restitutionThreshold,
+      hitThreshold: resolved.hitEventThreshold,
+      positionCorrection: resolved.positionCorrection,
+      contactSlop: resolved.contactSlop,
+      iterations: resolved.solverIterations,
+      wakeSpeed: resolved.sleepSpeed,
+    },
+    sleeping: { enabled: resolved.sleeping, speed: resolved.sleepSpeed, time: resolved.sleepTime },
+    continuous: resolved.continuous,
+  };
 }

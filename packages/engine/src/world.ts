@@ -25,6 +25,7 @@ import {
   resolveCircle,
   resolveWorldOptions,
   resolveSegment,
+  stepSettings,
   type SegmentOptions,
   vector,
   type CircleOptions,
@@ -68,28 +69,7 @@ export class World {
     this.bodies.box = resolved.bounds;
     this.defaultRestitution = resolved.restitution;
     const events = resolved.contactEvents || resolved.hitEventThreshold < Infinity ? new ContactEvents() : null;
-    this.pipeline = new StepPipeline(
-      this.bodies,
-      this.segments,
-      BROADPHASES[resolved.broadphase](),
-      resolved.integrator,
-      {
-        gravity: resolved.gravity,
-        box: resolved.bounds,
-        wallRestitution: resolved.restitution,
-        solver: {
-          restitutionThreshold: resolved.restitutionThreshold,
-          hitThreshold: resolved.hitEventThreshold,
-          positionCorrection: resolved.positionCorrection,
-          contactSlop: resolved.contactSlop,
-          iterations: resolved.solverIterations,
-          wakeSpeed: resolved.sleepSpeed,
-        },
-        sleeping: { enabled: resolved.sleeping, speed: resolved.sleepSpeed, time: resolved.sleepTime },
-        continuous: resolved.continuous,
-      },
-      events,
-    );
+    this.pipeline = new StepPipeline(this.bodies, this.segments, BROADPHASES[resolved.broadphase](), resolved.integrator, stepSettings(resolved), events);
   }
 
   get bodyCount(): number {
