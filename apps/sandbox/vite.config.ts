@@ -14,9 +14,10 @@ export default defineConfig({
   resolve: { alias: workspaceAliases },
   // Pre-bundle every third-party module the pages load, including the lab's lazily imported peer
   // engines: otherwise Vite discovers them on first use, re-optimises and reloads the page, which
-  // cuts a running experiment (or a test) short.
+  // cuts a running experiment (or a test) short. planck is named through the lab, under whose
+  // node_modules npm installs it: from the sandbox alone Vite could not resolve it, and warned.
   optimizeDeps: {
-    include: ['three', 'cannon-es', 'echarts', 'matter-js', 'planck', 'p2-es', '@dimforge/rapier2d-simd-compat'],
+    include: ['three', 'cannon-es', 'echarts', 'matter-js', '@maxgrid/lab > planck', 'p2-es', '@dimforge/rapier2d-simd-compat'],
   },
   // Cross-origin isolation, so that pages get SharedArrayBuffer and world.startWorkers can run
   // the engine on Web Workers. Every resource the pages load is same-origin.
