@@ -49,6 +49,19 @@ export class Queries {
   }
 
   box(version: number, minX: number, minY: number, maxX: number, maxY: number, mask: number, out: number[]): number[] {
+    return this.inBox(version, minX, minY, maxX, maxY, mask, out, true).sort(ascending);
+  }
+
+  /**
+   * The slots of the circles overlapping the box, unsorted, into `out`: for the engine's own use
+   * inside a step (waking sleepers, solver/disturbances.ts), where the handles' order does not
+   * matter and sorting would allocate.
+   */
+  slotsInBox(version: number, minX: number, minY: number, maxX: number, maxY: number, out: number[]): number[] {
+    return this.inBox(version, minX, minY, maxX, maxY, 0xffffffff, out, false);
+  }
+
+  private inBox(version: number, minX: number, minY: number, maxX: number, maxY: number, mask: number, out: number[], handles: boolean): number[] {
     if (!this.prepare(version)) return out;
     const { grid, bodies } = this;
     const c0 = Math.max(grid.columnOf(minX) - 1, 0);
@@ -64,10 +77,10 @@ export class Queries {
         const cy = bodies.y[slot];
         const dx = cx - Math.min(Math.max(cx, minX), maxX);
         const dy = cy - Math.min(Math.max(cy, minY), maxY);
-        if (dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot]) out.push(bodies.handleOf(slot));
+        if (dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot]) out.push(handles ? bodies.handleOf(slot) : slot);
       }
     }
-    return out.sort(ascending);
+    return out;
   }
 
   /**

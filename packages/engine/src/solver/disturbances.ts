@@ -4,7 +4,6 @@ import { grow, grownCapacity } from '../util/grow.js';
 
 /** Sleepers this far beyond touching (a fraction of the two radii) still count as touching. */
 const TOUCH_MARGIN = 1e-3;
-const ALL_LAYERS = 0xffffffff;
 
 /**
  * Sleepers that a call may have taken support from. Sleep keeps no islands (see sleep.ts): a
@@ -46,9 +45,9 @@ export class Disturbances {
       const r = this.circles[3 * k + 2];
       const pad = (r + widest) * (1 + TOUCH_MARGIN) + contactSlop;
       this.found.length = 0;
-      const found = queries.box(geometryVersion, cx - pad, cy - pad, cx + pad, cy + pad, ALL_LAYERS, this.found);
-      for (const handle of found) {
-        const s = bodies.slotOf(handle);
+      const found = queries.slotsInBox(geometryVersion, cx - pad, cy - pad, cx + pad, cy + pad, this.found);
+      for (let f = 0; f < found.length; f++) {
+        const s = found[f];
         if (!asleep[s]) continue;
         const reach = (r + radius[s]) * (1 + TOUCH_MARGIN) + contactSlop;
         const dx = x[s] - cx;
