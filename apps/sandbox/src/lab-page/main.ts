@@ -28,7 +28,7 @@ declare global {
   interface Window {
     __labResults?: LabPageResults;
     /** Steps a scene built elsewhere (in Node) with every broad-phase: isolates the engine. */
-    __labDeterminismOf?: (scene: PlainScene) => DeterminismResult;
+    __labDeterminismOf?: (scene: PlainScene) => Promise<DeterminismResult>;
     /** Worlds stepped on request: the lab's Node-vs-Chromium parity target drives these. */
     __labWorlds?: PageWorlds;
   }
@@ -82,11 +82,22 @@ async function runAll(): Promise<void> {
     .map(([k, v]) => `${k}: ${String(v)}`)
     .join(' · ')}</p>`;
   show(results);
+  const only = new URLSearchParams(location.search).get('experiments');
+  // Node-only experiments (the C baseline, the targets that drive this page) are not in BROWSER_QUICK.
+  const asked = only === null ? Object.keys(BROWSER_QUICK) : only.split(',').map((name) => name.trim());
+  const chosen = asked.filter((name) => name in BROWSER_QUICK);
+  const refused = asked.filter((name) => !(name in BROWSER_QUICK));
+  if (refused.length > 0) {
+    const text = `experiments= names ${refused.map((name) => `'${name}'`).join(', ')}, which this page does not run (unknown, or Node-only); it runs ${Object.keys(BROWSER_QUICK).join(', ')}`;
+    results.errors.push(text);
+    $('experiments').insertAdjacentHTML('beforeend', `<p class="error"></p>`);
+    $('experiments').lastElementChild!.textContent = text;
+  }
   try {
     status('Determinism: stepping the golden scene with every broad-phase…');
     await yieldToHost();
     const t0 = performance.now();
-    results.determinism = determinism();
+    results.determinism = await determinism(undefined, yieldToHost);
     results.seconds.determinism = (performance.now() - t0) / 1000;
     renderDeterminism(results.determinism);
     show(results);
@@ -97,9 +108,6 @@ async function runAll(): Promise<void> {
       box2dLocateFile: (file) => (file.endsWith('.simd.wasm') ? box2dSimdWasm : box2dWasm),
     });
     $('environment').insertAdjacentHTML('beforeend', htmlTable(engineTable(engines.map((e) => e.info))));
-    const only = new URLSearchParams(location.search).get('experiments');
-    // Node-only experiments (the C baseline, the targets that drive this page) are not in BROWSER_QUICK.
-    const chosen = only === null ? Object.keys(BROWSER_QUICK) : only.split(',').filter((n) => n in BROWSER_QUICK);
     for (const name of chosen) {
       const sizes = BROWSER_QUICK[name];
       const started = performance.now();

@@ -39,14 +39,25 @@ const ui = {
   results: byId('layered-drop-results', HTMLTableElement),
 };
 
-/** An integer from a number input, clamped to its min/max, falling back when it is not a number. */
+/** An integer from a number input, clamped to its min/max, falling back when it is empty or not a number. */
 function intInput(input: HTMLInputElement, fallback: number): number {
   const v = Math.round(Number(input.value));
-  if (!Number.isFinite(v)) return fallback;
+  if (input.value.trim() === '' || !Number.isFinite(v)) return fallback;
   const min = input.min === '' ? -Infinity : Number(input.min);
   const max = input.max === '' ? Infinity : Number(input.max);
   return Math.min(max, Math.max(min, v));
 }
+
+// Once an edit ends, each box shows the value in use: a clamped or empty entry used to stay on
+// screen while another value ran (Stack height 1000 showed 1000 and dropped 40).
+for (const input of [ui.stackHeight, ui.seed, ui.layers, ui.side, ui.dropInterval, ui.settleSteps, ui.experimentSeed]) {
+  input.addEventListener('change', () => {
+    input.value = String(intInput(input, Number(input.defaultValue)));
+  });
+}
+
+/** The controls that change the live stack or the experiment's settings: held while it runs. */
+const heldDuringExperiment = [ui.drop, ui.stackHeight, ui.seed, ui.sleeping, ui.mutable, ui.layers, ui.side, ui.dropInterval, ui.settleSteps, ui.experimentSeed];
 
 // ---- The live stack (figure 8) ----------------------------------------------------------------
 
@@ -93,8 +104,8 @@ function applyToggles(target: Live): void {
 
 const view = new CubeView(ui.view);
 const monitor = new PerfMonitor(ui.perf, ui.perfReadout);
-let live = buildLive(intInput(ui.stackHeight, 10), intInput(ui.seed, 1));
-view.aim(DROP_HEIGHT + intInput(ui.stackHeight, 10));
+let live = buildLive(intInput(ui.stackHeight, Number(ui.stackHeight.defaultValue)), intInput(ui.seed, Number(ui.seed.defaultValue)));
+view.aim(DROP_HEIGHT + intInput(ui.stackHeight, Number(ui.stackHeight.defaultValue)));
 let accumulator = 0;
 let lastTime = -1;
 /** True while the layered-drop experiment owns the view and the CPU. */
@@ -149,8 +160,8 @@ function frame(now: number): void {
 ui.sleeping.addEventListener('change', () => applyToggles(live));
 ui.mutable.addEventListener('change', () => applyToggles(live));
 ui.drop.addEventListener('click', () => {
-  const height = intInput(ui.stackHeight, 10);
-  live = buildLive(height, intInput(ui.seed, 1));
+  const height = intInput(ui.stackHeight, Number(ui.stackHeight.defaultValue));
+  live = buildLive(height, intInput(ui.seed, Number(ui.seed.defaultValue)));
   view.aim(DROP_HEIGHT + height);
   accumulator = 0;
 });
@@ -182,6 +193,7 @@ ui.run.addEventListener('click', () => {
   const settings = readSettings();
   experimentRunning = true;
   ui.run.disabled = true;
+  for (const control of heldDuringExperiment) control.disabled = true;
   ui.results.dataset['status'] = 'running';
   view.aim(settings.layers * CUBE_SIZE + 2);
   // Draw the run in progress, but keep drawing to about a fifth of the wall time: with software
@@ -211,7 +223,8 @@ ui.run.addEventListener('click', () => {
     .finally(() => {
       experimentRunning = false;
       ui.run.disabled = false;
+      for (const control of heldDuringExperiment) control.disabled = false;
       monitor.restart();
-      view.aim(DROP_HEIGHT + intInput(ui.stackHeight, 10));
+      view.aim(DROP_HEIGHT + intInput(ui.stackHeight, Number(ui.stackHeight.defaultValue)));
     });
 });

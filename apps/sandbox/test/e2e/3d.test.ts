@@ -117,8 +117,20 @@ describe('the 3D page', { retry: 1 }, () => {
     await page.getByLabel('Cubes per layer side').fill('3');
     await page.getByLabel('Drop interval (steps)').fill('45');
     await page.getByLabel('Settle steps after the last layer').fill('180');
+    // A box tidies an entry it cannot use to the value in use once the edit ends.
+    const height = page.getByLabel('Stack height (cubes)');
+    await height.fill('1000');
+    await height.press('Tab');
+    expect(await height.inputValue()).toBe('40');
+    await height.fill('');
+    await height.press('Tab');
+    expect(await height.inputValue()).toBe('10');
     await page.getByRole('button', { name: 'Run the layered-drop experiment' }).click();
+    // The live stack's controls are held while the experiment runs, and given back after.
+    const drop = page.getByRole('button', { name: 'Drop the stack again' });
+    expect(await drop.isDisabled()).toBe(true);
     await page.waitForSelector('#layered-drop-results[data-status="done"]', { state: 'attached', timeout: 30_000 });
+    expect(await drop.isDisabled()).toBe(false);
 
     const cells = await page.$$eval('#layered-drop-results td[data-metric]', (tds) =>
       tds.map((td) => {

@@ -58,6 +58,12 @@ describe('lab page in Chromium', () => {
     }
   });
 
+  it("sap-sleep's pile case sleeps in the page as in Node (it settled too briefly to sleep at all)", () => {
+    const rows = (results.experiments['sap-sleep'] as { rows: { case: string; asleepStart: number }[] }).rows.filter((r) => r.case === 'pile');
+    expect(rows.length).toBeGreaterThan(0);
+    for (const row of rows) expect(row.asleepStart).toBeGreaterThanOrEqual(0.9);
+  });
+
   it('loads and measures every engine, the WASM ones included', () => {
     const stepTime = results.experiments['step-time'] as { rows: { engine: string }[] };
     expect(new Set(stepTime.rows.map((r) => r.engine))).toEqual(new Set(ENGINE_IDS));
