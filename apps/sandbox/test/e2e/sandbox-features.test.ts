@@ -358,6 +358,22 @@ describe('2D sandbox: engine features', () => {
     await page.close();
   });
 
+  it('fits a narrow window: the stage full width above the monitor and controls, no sideways scroll', async () => {
+    const { page, errors } = await openPage(browser, '/?n=500');
+    await page.setViewportSize({ width: 400, height: 800 });
+    await stepsPass(page, 5);
+    const layout = await page.evaluate(() => ({
+      scrollWidth: document.documentElement.scrollWidth,
+      stage: document.getElementById('stage')!.getBoundingClientRect().toJSON() as DOMRect,
+      controls: document.querySelector('.controls')!.getBoundingClientRect().toJSON() as DOMRect,
+    }));
+    expect(layout.scrollWidth).toBeLessThanOrEqual(400);
+    expect(layout.stage.width).toBeGreaterThan(350);
+    expect(layout.controls.top).toBeGreaterThan(layout.stage.bottom);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
   it('steps on Web Workers with the Threads control, and stops them again', async () => {
     // 40,000 bodies: above the engine's default minBodies, so the workers take part in each step.
     const { page, errors } = await openPage(browser, '/?scene=uniform&n=40000');
