@@ -56,7 +56,7 @@ function renderDeterminism(result: DeterminismResult): void {
     .map(([k, v]) => `${k} <code>${v}</code>`)
     .join(', ');
   $('determinism').innerHTML = `<h2>Determinism</h2>
-<p>Scene <code>uniform</code> ${JSON.stringify(result.params)}, built with <code>buildWorld</code>, ${result.steps} steps at dt ${result.dt}:
+<p>Scene <code>uniform</code> ${JSON.stringify(result.params)}, built with <code>buildWorld</code>, ${result.steps} steps at dt ${result.dt === 1 / 60 ? '1/60 s' : `${result.dt} s`}:
 ${same ? 'every broad-phase gives the same state hash' : '<strong>broad-phases disagree</strong>'}. The lab's browser test computes the same in Node and compares.</p>
 <p class="muted">Scene columns as built here: ${digest}.</p>
 <table><thead><tr><th>broad-phase</th><th>stateHash()</th><th>ms for all steps</th></tr></thead><tbody>${rows.join('')}</tbody></table>`;
