@@ -235,6 +235,19 @@ describe('parallel step', () => {
     });
   });
 
+  it('wakes the sleepers a destroyed or moved body held up the same way on every thread count', async () => {
+    // A pile 99 % asleep by step 240 (792 of 800); then bodies are destroyed and moved under it,
+    // and each time 7 to 12 sleepers wake (counted serially).
+    const pile = () => buildWorld(buildScene('seed-box', { n: 800, seed: 5, elasticity: 0 }), { sleeping: true, sleepSpeed: 40, sleepTime: 0.2, solverIterations: 4, positionCorrection: 0.2, contactSlop: 0.05 });
+    await expectSameBits(pile, 320, (world, step) => {
+      if (step < 240 || step % 20 !== 0) return;
+      const handles = world.handles();
+      world.destroyBody(handles[(step * 7) % handles.length]);
+      const moved = handles[(step * 13) % handles.length];
+      if (world.hasBody(moved)) world.setPosition(moved, 100 + step, 100);
+    });
+  });
+
   it('solves with partial position correction and a slop on every thread as serially (the settings reach the workers)', async () => {
     await expectSameBits(() => buildWorld(buildScene('seed-box', { n: 2000, elasticity: 0 }), { broadphase: 'maxgrid', positionCorrection: 0.2, contactSlop: 0.05 }), 60);
     // Solver iterations solve on the calling thread, between the parallel stages.
