@@ -3,6 +3,7 @@ import fc from 'fast-check';
 import { BodyStore } from '../src/store/body-store.js';
 import { PairSink, type PairConsumer } from '../src/store/pair-sink.js';
 import { BROADPHASES, BROADPHASE_NAMES } from '../src/broadphase/registry.js';
+import { World } from '../src/index.js';
 import { storeOf } from './helpers.js';
 import { TypeCode } from '../src/store/body-types.js';
 
@@ -180,6 +181,35 @@ describe('mixed sizes (report 3.2: Max Grid degrades when sizes differ by an ord
     expect(grid.gridGeometry()!.columns).toBeGreaterThan(0);
     expect(auto.stats.pairTests).toBe(grid.stats.pairTests);
     expect(auto.gridGeometry()).toEqual(grid.gridGeometry());
+  });
+});
+
+describe('auto, when the grid examines too much (cells made huge by far-away bodies)', () => {
+  it('turns to the persistent sweep, keeps the bits, and goes back to the grid once it pays again', () => {
+    const build = (broadphase: 'auto' | 'maxgrid') => {
+      const world = new World({ broadphase });
+      for (let k = 0; k < 3000; k++) world.createCircle({ x: (k % 60) * 9, y: Math.floor(k / 60) * 9, radius: 2, vx: (k % 7) - 3, vy: (k % 5) - 2 });
+      const far = [world.createCircle({ x: 1e6, y: 1e6, radius: 2 }), world.createCircle({ x: -1e6, y: 5e5, radius: 2 })];
+      return { world, far };
+    };
+    const auto = build('auto');
+    const grid = build('maxgrid');
+    auto.world.step(1 / 60);
+    grid.world.step(1 / 60);
+    // The grid over the outliers' extent examined every pair once: 3002 * 3001 / 2.
+    expect(auto.world.stats.pairTests).toBeGreaterThan(64 * 3002);
+    for (let s = 0; s < 5; s++) {
+      auto.world.step(1 / 60);
+      grid.world.step(1 / 60);
+      expect(auto.world.gridGeometry()).toBeNull();
+      expect(auto.world.stats.pairTests).toBeLessThan(grid.world.stats.pairTests / 50);
+      expect(auto.world.stateHash()).toBe(grid.world.stateHash());
+    }
+    // Without the outliers the grid is sparse again: after the wait, auto retries it and keeps it.
+    for (const h of auto.far) auto.world.destroyBody(h);
+    for (let s = 0; s < 70; s++) auto.world.step(1 / 60);
+    expect(auto.world.gridGeometry()).not.toBeNull();
+    expect(auto.world.stats.pairTests).toBeLessThan(10 * 3000);
   });
 });
 

@@ -3,6 +3,7 @@ import type { BodyStore } from '../store/body-store.js';
 import type { PairSink } from '../store/pair-sink.js';
 import { MaxGridBroadPhase } from './maxgrid.js';
 import { HierarchicalGridBroadPhase } from './hgrid.js';
+import { PersistentSapBroadPhase } from './sap-persistent.js';
 import { LiveExtent } from './live-extent.js';
 
 /**
@@ -28,37 +29,71 @@ export const CROWDING_FOR_HGRID = 5;
 const RECHOOSE_EVERY = 30;
 
 /**
+ * Pairs a grid may examine per body before auto turns to the persistent sweep. A grid holds at
+ * most 4n + 64 cells over the bodies' extent (or the box), so a few far-away bodies, or a box far
+ * larger than where the bodies are, make its cells huge and its scan quadratic: 20,000 circles
+ * with 4 at (1e6, 1e6) examined about 10,000 pairs per body, 311 ms a step on maxgrid and hgrid
+ * against 25 ms on sap-persistent, whose sweep does not depend on the extent. Sparse scenes
+ * examine about 2 pairs per body; crowded `mixed` on hgrid stays under 10.
+ */
+export const EXAMINED_PER_BODY_FOR_SWEEP = 64;
+
+/** The most steps between retrying a grid that examined too much: each failed retry doubles the wait. */
+const LONGEST_RETRY = 32 * RECHOOSE_EVERY;
+
+/**
  * Picks a broad-phase from the scene: Max Grid while its cells stay sparse, the hierarchical grid
- * when a few large circles make them crowded. Every broad-phase yields the same contacts in the
- * same canonical order, so switching between them never changes the result, only the cost.
+ * when a few large circles make them crowded, and the persistent sweep when the chosen grid
+ * examined more than EXAMINED_PER_BODY_FOR_SWEEP pairs per body (cells the extent made huge);
+ * the grid is retried after RECHOOSE_EVERY steps, then after twice as many each time it fails
+ * again. Every broad-phase yields the same contacts in the same canonical order, so switching
+ * between them never changes the result, only the cost.
  */
 export class AutoBroadPhase implements BroadPhase {
   readonly name = 'auto';
   private readonly uniform = new MaxGridBroadPhase();
   private readonly mixed = new HierarchicalGridBroadPhase();
+  private readonly sweep = new PersistentSapBroadPhase();
   private readonly extent = new LiveExtent();
   private chosenFor = -1;
   private stepsSinceChoice = 0;
+  /** Steps until the choice is re-made: RECHOOSE_EVERY, doubled by each grid that examined too much. */
+  private rechooseAfter = RECHOOSE_EVERY;
   /** The broad-phase used by the last step. */
   current: BroadPhase = this.uniform;
 
   findPairs(bodies: BodyStore, out: PairSink): number {
-    return this.select(bodies).findPairs(bodies, out);
+    const used = this.select(bodies);
+    const examined = used.findPairs(bodies, out);
+    if (used !== this.sweep && examined > EXAMINED_PER_BODY_FOR_SWEEP * bodies.liveCount) {
+      this.current = this.sweep;
+      this.rechooseAfter = Math.min(2 * this.rechooseAfter, LONGEST_RETRY);
+    } else if (used !== this.sweep) {
+      this.rechooseAfter = RECHOOSE_EVERY;
+    }
+    return examined;
   }
 
-  /** The broad-phase this step uses (re-chosen every RECHOOSE_EVERY steps and on membership changes). */
+  /** The broad-phase this step uses (re-chosen every so often and on membership changes). */
   select(bodies: BodyStore): BroadPhase {
-    if (this.chosenFor !== bodies.membershipVersion || ++this.stepsSinceChoice >= RECHOOSE_EVERY) this.choose(bodies);
+    const due = ++this.stepsSinceChoice >= this.rechooseAfter;
+    if (due || this.chosenFor !== bodies.membershipVersion) {
+      // Bodies coming or going do not cut short a wait on the sweep: a spawner would otherwise
+      // bring back the slow grid for one step each time.
+      const waiting = this.current === this.sweep && !due;
+      this.choose(bodies);
+      if (waiting) this.current = this.sweep;
+      else this.stepsSinceChoice = 0;
+    }
     return this.current;
   }
 
   memoryBytes(): number {
-    return this.uniform.memoryBytes() + this.mixed.memoryBytes() + this.extent.memoryBytes();
+    return this.uniform.memoryBytes() + this.mixed.memoryBytes() + this.sweep.memoryBytes() + this.extent.memoryBytes();
   }
 
   private choose(bodies: BodyStore): void {
     this.chosenFor = bodies.membershipVersion;
-    this.stepsSinceChoice = 0;
     const e = this.extent;
     e.measure(bodies);
     const cell = 2 * e.maxRadius;
