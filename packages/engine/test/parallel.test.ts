@@ -235,6 +235,25 @@ describe('parallel step', () => {
     });
   });
 
+  it("auto's turn to the sweep when far-away bodies make the grid's cells huge happens on workers too, with the serial bits", async () => {
+    const outliers = () => {
+      const world = new World({ broadphase: 'auto' });
+      for (let k = 0; k < 3000; k++) world.createCircle({ x: (k % 60) * 9, y: Math.floor(k / 60) * 9, radius: 2, vx: (k % 7) - 3, vy: (k % 5) - 2 });
+      world.createCircle({ x: 1e6, y: 1e6, radius: 2 });
+      return world;
+    };
+    await expectSameBits(outliers, 8);
+    const world = outliers();
+    await world.startWorkers(2, { minBodies: 0 });
+    try {
+      for (let s = 0; s < 3; s++) world.step(1 / 60);
+      expect(world.gridGeometry()).toBeNull();
+      expect(world.stats.pairTests).toBeLessThan(64 * 3001);
+    } finally {
+      world.stopWorkers();
+    }
+  });
+
   it('wakes the sleepers a destroyed or moved body held up the same way on every thread count', async () => {
     // A pile 99 % asleep by step 240 (792 of 800); then bodies are destroyed and moved under it,
     // and each time 7 to 12 sleepers wake (counted serially).

@@ -65,13 +65,22 @@ export class AutoBroadPhase implements BroadPhase {
   findPairs(bodies: BodyStore, out: PairSink): number {
     const used = this.select(bodies);
     const examined = used.findPairs(bodies, out);
-    if (used !== this.sweep && examined > EXAMINED_PER_BODY_FOR_SWEEP * bodies.liveCount) {
+    this.noteExamined(used, examined, bodies);
+    return examined;
+  }
+
+  /**
+   * What the broad-phase `select` gave examined this step: a grid past the limit hands over to
+   * the sweep. The parallel step, which runs the chosen Max Grid itself, reports here too.
+   */
+  noteExamined(used: BroadPhase, examined: number, bodies: BodyStore): void {
+    if (used === this.sweep) return;
+    if (examined > EXAMINED_PER_BODY_FOR_SWEEP * bodies.liveCount) {
       this.current = this.sweep;
       this.rechooseAfter = Math.min(2 * this.rechooseAfter, LONGEST_RETRY);
-    } else if (used !== this.sweep) {
+    } else {
       this.rechooseAfter = RECHOOSE_EVERY;
     }
-    return examined;
   }
 
   /** The broad-phase this step uses (re-chosen every so often and on membership changes). */

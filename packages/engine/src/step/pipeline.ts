@@ -117,6 +117,8 @@ export class StepPipeline {
       pairTests = broad.findPairs(bodies, pairs);
       pairs.flush();
     }
+    // With workers, `auto`'s choice ran here rather than inside auto: it hears what it examined.
+    if (broad !== this.broadPhase && this.broadPhase instanceof AutoBroadPhase) this.broadPhase.noteExamined(broad, pairTests, bodies);
     const t3 = nowMs();
 
     contacts.sortCanonical(bodies.slotCount);
