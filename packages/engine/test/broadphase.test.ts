@@ -211,6 +211,23 @@ describe('auto, when the grid examines too much (cells made huge by far-away bod
     expect(auto.world.gridGeometry()).not.toBeNull();
     expect(auto.world.stats.pairTests).toBeLessThan(10 * 3000);
   });
+
+  it('goes back to the grid when the sweep examines about as much (every body bursting from one spot)', () => {
+    const worlds = (['auto', 'maxgrid'] as const).map((broadphase) => {
+      const world = new World({ broadphase });
+      for (let k = 0; k < 1000; k++) world.createCircle({ x: (k % 31) / 16, y: Math.floor(k / 31) / 16, radius: 1 });
+      return world;
+    });
+    const used: string[] = [];
+    for (let s = 0; s < 6; s++) {
+      for (const world of worlds) world.step(1 / 60);
+      used.push((worlds[0] as unknown as { pipeline: { broadPhase: { current: { name: string } } } }).pipeline.broadPhase.current.name);
+      expect(worlds[0].stateHash()).toBe(worlds[1].stateHash());
+    }
+    // One step on the sweep, which examined nearly as many pairs as the grid, then the grid again.
+    expect(used[0]).toBe('sap-persistent');
+    expect(used.slice(2).every((name) => name !== 'sap-persistent')).toBe(true);
+  });
 });
 
 describe('sap-persistent (Tracy, Buss & Woods 2009)', () => {
