@@ -52,10 +52,11 @@ const LONGEST_RETRY = 32 * RECHOOSE_EVERY;
 /**
  * Picks a broad-phase from the scene: Max Grid while its cells stay sparse, the hierarchical grid
  * when a few large circles make them crowded, and the persistent sweep when the chosen grid
- * examined more than EXAMINED_PER_BODY_FOR_SWEEP pairs per body (cells the extent made huge);
- * the grid is retried after RECHOOSE_EVERY steps, then after twice as many each time it fails
- * again. Every broad-phase yields the same contacts in the same canonical order, so switching
- * between them never changes the result, only the cost.
+ * examined more than EXAMINED_PER_BODY_FOR_SWEEP pairs per body (cells the extent made huge),
+ * unless the sweep then examines nearly as many (SWEEP_MARGIN); the grid is retried after
+ * RECHOOSE_EVERY steps, then after twice as many each time it fails again. Every broad-phase
+ * yields the same contacts in the same canonical order, so switching between them never changes
+ * the result, only the cost.
  */
 export class AutoBroadPhase implements BroadPhase {
   readonly name = 'auto';
