@@ -469,14 +469,14 @@ export class World {
   }
 
   private segmentSlot(handle: number): number {
-    handleNumber('segment handle', handle);
+    finiteNumber('segment handle', handle);
     const s = this.segments.slotOf(handle);
     if (s < 0) throw new RangeError(`segment handle ${describeValue(handle)} ${this.segments.describeMissing(handle)}`);
     return s;
   }
 
   private slot(handle: number): number {
-    handleNumber('handle', handle);
+    finiteNumber('handle', handle);
     const s = this.bodies.slotOf(handle);
     if (s < 0) throw new RangeError(`handle ${describeValue(handle)} ${this.bodies.describeMissing(handle)}`);
     return s;
@@ -491,9 +491,4 @@ export class World {
       );
     }
   }
-}
-
-/** A handle that is not even a finite number is a TypeError, as every other non-number input is. */
-function handleNumber(field: string, handle: unknown): void {
-  if (typeof handle !== 'number' || !Number.isFinite(handle)) throw new TypeError(`${field} must be a finite number, got ${describeValue(handle)}`);
 }

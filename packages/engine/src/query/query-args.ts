@@ -1,6 +1,6 @@
 import type { QueryOptions } from '../world-types.js';
 import type { RayHit } from './queries.js';
-import { finiteNumber, knownKeys, plainObject } from '../util/validate.js';
+import { describeValue, finiteNumber, knownKeys, plainObject } from '../util/validate.js';
 import { layerBits } from '../options.js';
 
 /** The default of every query's options: recognised without reading its keys, which allocates. */
@@ -61,6 +61,6 @@ function writableArray(out: unknown): asserts out is unknown[] {
 
 function describeOut(value: unknown): string {
   if (Array.isArray(value)) return 'an array';
-  if (value !== null && typeof value === 'object') return Object.isFrozen(value) ? 'a frozen object' : String(value);
-  return typeof value === 'string' ? JSON.stringify(value) : String(value);
+  if (typeof value === 'object' && value !== null && Object.isFrozen(value)) return 'a frozen object';
+  return describeValue(value);
 }
