@@ -7,6 +7,7 @@ import { INTEGRATOR_NAMES } from './integrate/integrator.js';
 import type { NewBody } from './store/body-store.js';
 import type { NewSegment } from './store/segment-store.js';
 import type { StepSettings } from './step/pipeline.js';
+import type { ShapeRouteSettings } from './step/shape-route.js';
 import {
   finiteNumber,
   knownKeys,
@@ -30,8 +31,38 @@ export interface WorldOptions {
   /** Restitution of the box walls and default restitution of new bodies. Default 1 (elastic). */
   restitution?: number;
   /**
+   * Friction of the box walls and default friction of new shapes, as `restitution` is. Default 0,
+   * the report's frictionless circles; Box2D's default is 0.6. A pair's friction is the geometric
+   * mean of its two. Above 0 the world takes the shape route (docs/engine.md, "Two routes").
+   */
+  friction?: number;
+  /**
+   * The contact solver of a world with shapes: 'soft', Box2D v3's soft step with sub-steps, which
+   * holds stacks and piles; 'elastic', the report's single pass of exact impulses, which keeps the
+   * kinetic energy of frictionless elastic collisions but cannot hold a stack; or 'auto' (the
+   * default): the report's circle engine while the world holds only frictionless circles, and
+   * the soft step once it has any other shape, friction, or a body made with createBody.
+   */
+  solver?: 'auto' | 'elastic' | 'soft';
+  /** Sub-steps of the soft step. Default 4, as Box2D v3. An integer in [1, 64]. */
+  substeps?: number;
+  /**
+   * Length units per meter, as Box2D's b2SetLengthUnitsPerMeter and Rapier's length_unit: the
+   * soft step's tolerances (linear slop 0.005 m, speculative distance 0.02 m, push-out speed
+   * 3 m/s, restitution threshold 1 m/s, sleep speed 0.05 m/s, top speed 400 m/s) are scaled by it.
+   * Default 1 (meters). The lab's pixel scenes use 50.
+   */
+  lengthUnit?: number;
+  /** Stiffness of the soft step's contacts, as a frequency in hertz. Default 30 (Box2D). */
+  contactHertz?: number;
+  /** Damping ratio of the soft step's contacts. Default 10 (Box2D). */
+  contactDampingRatio?: number;
+  /** The fastest a body moves in a world with shapes, length units per second. Default 400 x lengthUnit (Box2D's maximumLinearSpeed). */
+  maxLinearSpeed?: number;
+  /**
    * Collisions approaching slower than this are inelastic, as Box2D's restitution threshold:
-   * lets bodies come to rest (and sleep) under gravity. Default 0, so elastic scenes stay exact.
+   * lets bodies come to rest (and sleep) under gravity. Default 0 on the circle route and in the
+   * elastic pass, so elastic scenes stay exact; 1 x lengthUnit in the soft step, as Box2D.
    */
   restitutionThreshold?: number;
   /**
@@ -62,8 +93,9 @@ export interface WorldOptions {
    */
   sleeping?: boolean;
   /**
-   * Speed below which a body counts as still, in length units per second. Default 1. In stacks
-   * under gravity keep it above |g| dt: one pass of impulses leaves resting bodies about that fast.
+   * Speed below which a body counts as still, in length units per second. Default 1 on the circle
+   * route, where one pass of impulses leaves resting bodies about |g| dt fast (keep it above that);
+   * 0.05 x lengthUnit in the soft step, as Box2D. A turning body counts its rim's speed too.
    */
   sleepSpeed?: number;
   /** Seconds a body must stay still before it sleeps. Default 0.5. */
@@ -105,12 +137,38 @@ export interface CircleOptions {
   gravityScale?: number;
   /** Velocity decays as v / (1 + dt * linearDamping) each step, as in Box2D. Default 0. */
   linearDamping?: number;
+  /** Coulomb friction. Default: the world's `friction`. Above 0 the world takes the shape route. */
+  friction?: number;
+  /** Default 0. See MaterialOptions.rollingResistance. */
+  rollingResistance?: number;
+  /** Reports overlaps and never collides. Default false. */
+  sensor?: boolean;
+  /** Radians, in the sense documented in docs/engine.md. Default 0. */
+  angle?: number;
+  /** Radians per second. Default 0. */
+  angularVelocity?: number;
+  /** Default 0. */
+  angularDamping?: number;
+  /** Default false. */
+  fixedRotation?: boolean;
+  /** Default false. See BodyOptions.bullet. */
+  bullet?: boolean;
 }
 
 export interface ResolvedWorldOptions {
   bounds: { width: number; height: number } | null;
   gravity: Vector;
   restitution: number;
+  friction: number;
+  solver: 'auto' | 'elastic' | 'soft';
+  substeps: number;
+  lengthUnit: number;
+  contactHertz: number;
+  contactDampingRatio: number;
+  maxLinearSpeed: number | null;
+  /** null: the route's default. */
+  restitutionThresholdGiven: number | null;
+  sleepSpeedGiven: number | null;
   restitutionThreshold: number;
   positionCorrection: number;
   contactSlop: number;
@@ -134,6 +192,8 @@ export interface SegmentOptions {
   thickness?: number;
   /** Default: the world's `restitution`. */
   restitution?: number;
+  /** Default: the world's `friction`. A segment with friction puts the world on the shape route (docs/engine.md). */
+  friction?: number;
   category?: number;
   mask?: number;
 }
@@ -142,6 +202,13 @@ const WORLD_KEYS = [
   'bounds',
   'gravity',
   'restitution',
+  'friction',
+  'solver',
+  'substeps',
+  'lengthUnit',
+  'contactHertz',
+  'contactDampingRatio',
+  'maxLinearSpeed',
   'restitutionThreshold',
   'positionCorrection',
   'contactSlop',
@@ -169,6 +236,14 @@ const CIRCLE_KEYS = [
   'mask',
   'gravityScale',
   'linearDamping',
+  'friction',
+  'rollingResistance',
+  'sensor',
+  'angle',
+  'angularVelocity',
+  'angularDamping',
+  'fixedRotation',
+  'bullet',
 ];
 
 export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
@@ -184,6 +259,15 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
     bounds,
     gravity: options.gravity === undefined ? { x: 0, y: 0 } : vector('gravity', options.gravity),
     restitution: options.restitution === undefined ? 1 : nonNegativeNumber('restitution', options.restitution),
+    friction: options.friction === undefined ? 0 : nonNegativeNumber('friction', options.friction),
+    solver: options.solver === undefined ? 'auto' : oneOf('solver', options.solver, ['auto', 'elastic', 'soft'] as const),
+    substeps: options.substeps === undefined ? 4 : iterationCount('substeps', options.substeps),
+    lengthUnit: options.lengthUnit === undefined ? 1 : positiveNumber('lengthUnit', options.lengthUnit),
+    contactHertz: options.contactHertz === undefined ? 30 : positiveNumber('contactHertz', options.contactHertz),
+    contactDampingRatio: options.contactDampingRatio === undefined ? 10 : nonNegativeNumber('contactDampingRatio', options.contactDampingRatio),
+    maxLinearSpeed: options.maxLinearSpeed === undefined ? null : positiveNumber('maxLinearSpeed', options.maxLinearSpeed),
+    restitutionThresholdGiven: options.restitutionThreshold === undefined ? null : nonNegativeNumber('restitutionThreshold', options.restitutionThreshold),
+    sleepSpeedGiven: options.sleepSpeed === undefined ? null : nonNegativeNumber('sleepSpeed', options.sleepSpeed),
     restitutionThreshold:
       options.restitutionThreshold === undefined ? 0 : nonNegativeNumber('restitutionThreshold', options.restitutionThreshold),
     positionCorrection: options.positionCorrection === undefined ? 1 : fraction('positionCorrection', options.positionCorrection),
@@ -283,9 +367,9 @@ export function resolveCircle(input: unknown, defaultRestitution: number): NewBo
   };
 }
 
-export function resolveSegment(input: unknown, defaultRestitution: number): NewSegment {
+export function resolveSegment(input: unknown, defaultRestitution: number, defaultFriction: number): NewSegment {
   const o = plainObject('segment options', input);
-  knownKeys('segment options', o, ['x1', 'y1', 'x2', 'y2', 'thickness', 'restitution', 'category', 'mask']);
+  knownKeys('segment options', o, ['x1', 'y1', 'x2', 'y2', 'thickness', 'restitution', 'friction', 'category', 'mask']);
   const segment = {
     ax: finiteNumber('x1', o.x1),
     ay: finiteNumber('y1', o.y1),
@@ -293,6 +377,7 @@ export function resolveSegment(input: unknown, defaultRestitution: number): NewS
     by: finiteNumber('y2', o.y2),
     thickness: o.thickness === undefined ? 0 : nonNegativeNumber('thickness', o.thickness),
     restitution: o.restitution === undefined ? defaultRestitution : nonNegativeNumber('restitution', o.restitution),
+    friction: o.friction === undefined ? defaultFriction : nonNegativeNumber('friction', o.friction),
     category: o.category === undefined ? 1 : layerBits('category', o.category),
     mask: o.mask === undefined ? 0xffffffff : layerBits('mask', o.mask),
   };
@@ -318,5 +403,34 @@ export function stepSettings(resolved: ResolvedWorldOptions): StepSettings {
     },
     sleeping: { enabled: resolved.sleeping, speed: resolved.sleepSpeed, time: resolved.sleepTime },
     continuous: resolved.continuous,
+  };
+}
+
+/** The shape route's settings from the world's validated options (Box2D's defaults scaled by lengthUnit). */
+export function shapeRouteSettings(resolved: ResolvedWorldOptions, gravity: Vector): ShapeRouteSettings {
+  const unit = resolved.lengthUnit;
+  const slop = 0.005 * unit;
+  return {
+    gravity,
+    box: resolved.bounds,
+    solver: resolved.solver === 'elastic' ? 'elastic' : 'soft',
+    explicitEuler: resolved.integrator === 'explicit-euler',
+    soft: {
+      substeps: resolved.substeps,
+      contactHertz: resolved.contactHertz,
+      contactDampingRatio: resolved.contactDampingRatio,
+      contactPushSpeed: 3 * unit,
+      restitutionThreshold: resolved.restitutionThresholdGiven ?? 1 * unit,
+      maxLinearSpeed: resolved.maxLinearSpeed ?? 400 * unit,
+    },
+    elastic: {
+      restitutionThreshold: resolved.restitutionThresholdGiven ?? 0,
+      positionCorrection: resolved.positionCorrection,
+      contactSlop: resolved.contactSlop,
+    },
+    margin: 4 * slop,
+    slop,
+    wallFriction: resolved.friction,
+    wallRestitution: resolved.restitution,
   };
 }

@@ -16,9 +16,73 @@ export interface CircleState {
   awake: boolean;
 }
 
+/** A body as getBody reads it: its origin and angle, the velocity of its centre of mass, its mass. */
+export interface BodyState {
+  /** The body's origin, where its shapes' coordinates are measured from. */
+  x: number;
+  y: number;
+  /** Radians in [-pi, pi]; positive turns +x towards +y (clockwise on a y-down screen). */
+  angle: number;
+  vx: number;
+  vy: number;
+  angularVelocity: number;
+  mass: number;
+  /** Rotational inertia about the centre of mass (0 for fixed rotation). */
+  inertia: number;
+  /** The centre of mass in world coordinates. */
+  centerX: number;
+  centerY: number;
+  type: BodyType;
+  awake: boolean;
+  fixedRotation: boolean;
+  bullet: boolean;
+  gravityScale: number;
+  linearDamping: number;
+  angularDamping: number;
+  /** Handles of the body's shapes, in the order they were added. */
+  shapes: number[];
+}
+
+/** A shape as getShape reads it, in its body's own frame (from the body's origin). */
+export interface ShapeState {
+  kind: 'circle' | 'capsule' | 'polygon';
+  body: number;
+  /** Circle and capsule radius, or a polygon's rounding. */
+  radius: number;
+  /** The circle's centre, the capsule's two ends, or the polygon's vertices (counter-clockwise). */
+  vertices: { x: number; y: number }[];
+  density: number;
+  friction: number;
+  restitution: number;
+  rollingResistance: number;
+  category: number;
+  mask: number;
+  sensor: boolean;
+}
+
 export interface QueryOptions {
   /** Only bodies whose category shares a bit with this mask. Default: all. */
   mask?: number;
+}
+
+/**
+ * Shapes of a world that has them, indexed by shape slot: walk [0, slotCount) and skip slots
+ * whose `live` is 0. A shape's points are vertexX/vertexY[slot * stride + i] for i below
+ * vertexCount[slot], relative to its body's centre of mass in the body's frame: the world point is
+ * (x + c px - s py, y + s px + c py) with the body's views. `kind` is 0 circle, 1 capsule,
+ * 2 polygon; `radius` rounds every kind.
+ */
+export interface ShapeViews {
+  readonly slotCount: number;
+  readonly stride: number;
+  readonly live: Readonly<Uint8Array>;
+  readonly body: Readonly<Int32Array>;
+  readonly kind: Readonly<Uint8Array>;
+  readonly vertexCount: Readonly<Uint8Array>;
+  readonly radius: Readonly<Float64Array>;
+  readonly sensor: Readonly<Uint8Array>;
+  readonly vertexX: Readonly<Float64Array>;
+  readonly vertexY: Readonly<Float64Array>;
 }
 
 /**
@@ -29,13 +93,24 @@ export interface QueryOptions {
 export interface BodyViews {
   readonly slotCount: number;
   readonly liveCount: number;
+  /** The centre of mass (a circle's centre). */
   readonly x: Readonly<Float64Array>;
   readonly y: Readonly<Float64Array>;
   readonly vx: Readonly<Float64Array>;
   readonly vy: Readonly<Float64Array>;
+  /**
+   * The broad-phase radius: a circle's radius in a world of circles; with shapes, the bounding
+   * radius about the centre of mass plus the speculative margin.
+   */
   readonly radius: Readonly<Float64Array>;
   readonly mass: Readonly<Float64Array>;
   readonly type: Readonly<Uint8Array>;
   /** 1 while a body sleeps. */
   readonly asleep: Readonly<Uint8Array>;
+  /** Cos and sin of each body's angle, and its angular velocity; empty (length 0) until some body turns: every angle is 0 then. */
+  readonly c: Readonly<Float64Array>;
+  readonly s: Readonly<Float64Array>;
+  readonly angularVelocity: Readonly<Float64Array>;
+  /** The shapes, or null in a world of circles only, whose bodies are each a circle of `radius`. */
+  readonly shapes: ShapeViews | null;
 }

@@ -10,13 +10,37 @@ import { ContactEvents, type ContactEventsView } from './store/contact-events.js
 import { Queries, type RayHit } from './query/queries.js';
 import { Disturbances } from './solver/disturbances.js';
 import { NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments, rayHitOutput, rayHitsOutput } from './query/query-args.js';
-import type { CircleState, BodyViews, QueryOptions } from './world-types.js';
+import type { CircleState, BodyViews, BodyState, QueryOptions, ShapeState, ShapeViews } from './world-types.js';
+import { BodyShapes } from './shapes/body-shapes.js';
+import { ShapeRoute } from './step/shape-route.js';
+import { turnCircles } from './integrate/rigid-motion.js';
+import { atan2, cosSin } from './math/trig.js';
+import { BodyFlag } from './store/rigid-columns.js';
+import { SHAPE_STRIDE, type NewShape } from './store/shape-store.js';
+import { Geometry, SHAPE_KIND_NAMES } from './shapes/geometry.js';
+import { bodyBounds } from './shapes/bounds.js';
+import {
+  applyMassOption,
+  BODY_KEYS,
+  MATERIAL_KEYS,
+  OFFSET_KEYS,
+  resolveBody,
+  resolveGeometry,
+  resolveMaterial,
+  type BodyOptions,
+  type BoxOptions,
+  type CapsuleOptions,
+  type PolygonOptions,
+  type ResolvedBody,
+  type ShapeOptions,
+} from './shapes/shape-options.js';
 import * as analytics from './analytics.js';
 import { StepPipeline } from './step/pipeline.js';
 import { checkWorkerCount, DEFAULT_MIN_BODIES, ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
 import type { IntegratorName } from './integrate/integrator.js';
 import { describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
+import { flag } from './options.js';
 import {
   bodyType,
   broadphaseName,
@@ -25,7 +49,9 @@ import {
   resolveCircle,
   resolveWorldOptions,
   resolveSegment,
+  shapeRouteSettings,
   stepSettings,
+  type ResolvedWorldOptions,
   type SegmentOptions,
   vector,
   type CircleOptions,
@@ -33,10 +59,16 @@ import {
   type WorldOptions,
 } from './options.js';
 
+const rotation = new Float64Array(2);
+const box4 = new Float64Array(4);
+const scratchGeometry = new Geometry();
+const EMPTY = new Float64Array(0);
+
 /**
- * A 2D world of circles. A step is a fixed sequence of stages, each in its own module:
- * integrate, boundary (box walls), broad-phase, narrow-phase, solve (canonical order, impulses,
- * separation), correct (keep separated circles in the box). See `stats` for each stage's time.
+ * A 2D world of bodies. A step is a fixed list of stages over the stores, on one of two routes
+ * chosen at one place (`step`): the report's circle engine, for worlds of frictionless circles
+ * (integrate, boundary, broad-phase, narrow-phase, solve, correct, report), or the shape route
+ * (step/shape-route.ts) once the world holds any other shape. See `stats` for each stage's time.
  */
 export class World {
   private readonly bodies = new BodyStore();
@@ -44,8 +76,16 @@ export class World {
   private readonly pipeline: StepPipeline;
   private readonly bounds: { width: number; height: number } | null;
   private readonly defaultRestitution: number;
+  private readonly defaultFriction: number;
+  private readonly resolved: ResolvedWorldOptions;
   private readonly queries = new Queries(this.bodies);
   private readonly disturbances = new Disturbances();
+  private readonly shapes = new BodyShapes(this.bodies);
+  private shapeRoute: ShapeRoute | null = null;
+  /** Bumped whenever static bodies, their shapes or the segments change, so the static tree rebuilds. */
+  private staticVersion = 0;
+  /** Some body was given a spin or torque: the circle route then advances rotations. */
+  private turning = false;
   /** Bumped whenever positions or the body set change, so cached query grids know to rebuild. */
   private geometryVersion = 0;
   /** Bumped by stopWorkers, so that workers still starting know they were cancelled. */
@@ -61,15 +101,34 @@ export class World {
     mass: new Float64Array(0),
     type: new Uint8Array(0),
     asleep: new Uint8Array(0),
+    c: EMPTY,
+    s: EMPTY,
+    angularVelocity: EMPTY,
+    shapes: null as ShapeViews | null,
+  };
+  private readonly shapeViewsRecord = {
+    slotCount: 0,
+    stride: SHAPE_STRIDE,
+    live: new Uint8Array(0),
+    body: new Int32Array(0),
+    kind: new Uint8Array(0),
+    vertexCount: new Uint8Array(0),
+    radius: new Float64Array(0),
+    sensor: new Uint8Array(0),
+    vertexX: new Float64Array(0),
+    vertexY: new Float64Array(0),
   };
 
   constructor(options: WorldOptions = {}) {
     const resolved = resolveWorldOptions(options);
+    this.resolved = resolved;
     this.bounds = resolved.bounds;
     this.bodies.box = resolved.bounds;
     this.defaultRestitution = resolved.restitution;
+    this.defaultFriction = resolved.friction;
     const events = resolved.contactEvents || resolved.hitEventThreshold < Infinity ? new ContactEvents() : null;
     this.pipeline = new StepPipeline(this.bodies, this.segments, BROADPHASES[resolved.broadphase](), resolved.integrator, stepSettings(resolved), events);
+    if (resolved.solver === 'soft' || resolved.friction > 0) this.engage();
   }
 
   get bodyCount(): number {
@@ -84,6 +143,12 @@ export class World {
     return this.pipeline.integrator;
   }
 
+  /** The route the next step takes: 'circles' (the report's engine) or 'shapes', and with it the solver. */
+  get route(): { route: 'circles' | 'shapes'; solver: 'elastic' | 'soft' } {
+    if (!this.shapes.engaged) return { route: 'circles', solver: 'elastic' };
+    return { route: 'shapes', solver: this.shapeRoute!.settings.solver };
+  }
+
   get gravity(): Vector {
     const g = this.pipeline.settings.gravity;
     return { x: g.x, y: g.y };
@@ -91,6 +156,10 @@ export class World {
 
   get restitution(): number {
     return this.defaultRestitution;
+  }
+
+  get friction(): number {
+    return this.defaultFriction;
   }
 
   get box(): { width: number; height: number } | null {
@@ -104,38 +173,170 @@ export class World {
 
   createCircle(options: CircleOptions): number {
     const body = resolveCircle(options, this.defaultRestitution);
+    const o = options as unknown as Record<string, unknown>;
+    const spin = resolveBody({ x: body.x, y: body.y, angle: o.angle, angularVelocity: o.angularVelocity, fixedRotation: o.fixedRotation, bullet: o.bullet, angularDamping: o.angularDamping, type: o.type });
+    const material = resolveMaterial(o, this.materialDefaults(), scratchGeometry.setCircle(0, 0, body.radius));
+    material.restitution = body.restitution;
     this.assertInBox(body.x, body.y, body.radius);
     if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
+    if (!this.shapes.engaged && (material.friction > 0 || material.rollingResistance > 0 || material.sensor || spin.flags & BodyFlag.bullet)) this.engage();
+    if (this.shapes.engaged) {
+      material.density = body.mass / (Math.PI * body.radius * body.radius);
+      return this.createShaped({ ...spin, vx: body.vx, vy: body.vy, gravityScale: body.gravityScale, linearDamping: body.linearDamping }, material);
+    }
     this.geometryVersion++;
-    return this.bodies.handleOf(this.bodies.add(body));
+    const slot = this.bodies.add(body);
+    if (body.type === TypeCode.static) this.staticVersion++;
+    if (this.bodies.rigid || spin.c !== 1 || spin.s !== 0 || spin.angularVelocity !== 0 || spin.flags !== 0 || spin.angularDamping !== 0) {
+      const rigid = this.useRigid();
+      rigid.c[slot] = spin.c;
+      rigid.s[slot] = spin.s;
+      rigid.angularVelocity[slot] = spin.angularVelocity;
+      rigid.flags[slot] = spin.flags;
+      rigid.angularDamping[slot] = spin.angularDamping;
+      this.bodies.setMass(slot, body.mass, (body.mass * body.radius * body.radius) / 2);
+      if (spin.angularVelocity !== 0) this.turning = true;
+    }
+    return this.bodies.handleOf(slot);
+  }
+
+  /**
+   * A body with no shapes yet, at (x, y) with `angle`: add them with addShape. A dynamic body
+   * without shapes has mass 1 and does not turn until it gets some.
+   */
+  createBody(options: BodyOptions): number {
+    const o = plainObject('body options', options);
+    knownKeys('body options', o, BODY_KEYS);
+    const body = resolveBody(o);
+    if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
+    this.engage();
+    return this.createShaped(body, null);
+  }
+
+  /** A body holding one box: `width` x `height` centred on its origin. See BoxOptions. */
+  createBox(options: BoxOptions): number {
+    return this.createWithShape('box', 'box options', options, ['width', 'height', 'radius', 'mass']);
+  }
+
+  /** A body holding one convex polygon, vertices in its own frame. See PolygonOptions. */
+  createPolygon(options: PolygonOptions): number {
+    return this.createWithShape('polygon', 'polygon options', options, ['vertices', 'radius', 'mass']);
+  }
+
+  /** A body holding one capsule along its x axis. See CapsuleOptions. */
+  createCapsule(options: CapsuleOptions): number {
+    return this.createWithShape('capsule', 'capsule options', options, ['length', 'radius', 'mass']);
+  }
+
+  /**
+   * Adds a shape to a body, placed by offsetX/offsetY/offsetAngle in the body's frame; the body's
+   * mass, centre of mass and inertia follow from all its shapes (its origin stays put). Returns
+   * the shape's handle.
+   */
+  addShape(handle: number, options: ShapeOptions): number {
+    const slot = this.slot(handle);
+    const o = plainObject('shape options', options);
+    const kind = o.kind;
+    if (typeof kind !== 'string' || !['circle', 'box', 'polygon', 'capsule'].includes(kind)) {
+      throw new RangeError(`kind must be one of 'circle', 'box', 'polygon', 'capsule', got ${describeValue(kind)}`);
+    }
+    const geometryKeys = kind === 'circle' ? ['radius', 'offsetX', 'offsetY'] : kind === 'box' ? ['width', 'height', 'radius', ...OFFSET_KEYS] : kind === 'polygon' ? ['vertices', 'radius', ...OFFSET_KEYS] : ['length', 'radius', ...OFFSET_KEYS];
+    knownKeys(`${kind} shape options`, o, ['kind', ...geometryKeys, ...MATERIAL_KEYS]);
+    const geometry = resolveGeometry(kind, o, new Geometry());
+    const shape = resolveMaterial(o, this.materialDefaults(), geometry);
+    if (!this.shapes.store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} shapes at once`);
+    this.engage();
+    const b = this.bodies;
+    const rigid = b.rigid!;
+    if (b.type[slot] === TypeCode.dynamic && !(this.shapes.massWith(slot, shape) > 0)) this.requireMass(handle, this.shapes.massWith(slot, shape));
+    this.assertShapeInBox(shape.geometry, b.x[slot], b.y[slot], rigid.c[slot], rigid.s[slot], rigid.localCenterX[slot], rigid.localCenterY[slot]);
+    const s = this.shapes.add(slot, shape);
+    this.shapesChanged(slot);
+    return this.shapes.store.handleOf(s);
+  }
+
+  /** Removes a shape from its body, whose mass and centre follow; the body stays, with its other shapes. */
+  destroyShape(shapeHandle: number): void {
+    const s = this.shapeSlot(shapeHandle);
+    const slot = this.shapes.store.body[s];
+    const rigid = this.bodies.rigid!;
+    if (this.bodies.type[slot] === TypeCode.dynamic && rigid.shapeCount[slot] > 1) this.requireMass(this.bodies.handleOf(slot), this.shapes.massWithout(slot, s));
+    this.disturbances.note(this.bodies, slot);
+    this.shapes.remove(s);
+    this.shapesChanged(slot);
+  }
+
+  /** A shape's geometry (in its body's frame, from the origin), material and filter. */
+  getShape(shapeHandle: number): ShapeState {
+    const s = this.shapeSlot(shapeHandle);
+    const store = this.shapes.store;
+    const slot = store.body[s];
+    const rigid = this.bodies.rigid!;
+    const cx = rigid.localCenterX[slot];
+    const cy = rigid.localCenterY[slot];
+    const vertices: { x: number; y: number }[] = [];
+    for (let i = 0; i < store.vertexCount[s]; i++) vertices.push({ x: store.vx[s * SHAPE_STRIDE + i] + cx, y: store.vy[s * SHAPE_STRIDE + i] + cy });
+    return {
+      kind: SHAPE_KIND_NAMES[store.kind[s]],
+      body: this.bodies.handleOf(slot),
+      radius: store.radius[s],
+      vertices,
+      density: store.density[s],
+      friction: store.friction[s],
+      restitution: store.restitution[s],
+      rollingResistance: store.rollingResistance[s],
+      category: store.category[s],
+      mask: store.mask[s],
+      sensor: store.sensor[s] === 1,
+    };
   }
 
   destroyBody(handle: number): void {
     const s = this.slot(handle);
     this.disturbances.note(this.bodies, s);
+    if (this.bodies.type[s] === TypeCode.static) this.staticVersion++;
+    this.shapes.removeAll(s);
     this.bodies.remove(s);
     this.geometryVersion++;
   }
 
   /** A static wall from (x1, y1) to (x2, y2), at any angle, optionally thick. Segment handles are their own space. */
   createSegment(options: SegmentOptions): number {
-    const segment = resolveSegment(options, this.defaultRestitution);
+    const segment = resolveSegment(options, this.defaultRestitution, this.defaultFriction);
     if (!this.segments.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} segments at once (handles encode the slot in 24 bits)`);
+    if (segment.friction > 0) this.engage();
+    this.staticVersion++;
     return this.segments.add(segment);
   }
 
   destroySegment(handle: number): void {
     this.segments.remove(this.segmentSlot(handle));
+    this.staticVersion++;
   }
 
   getSegment(handle: number): Required<SegmentOptions> {
     const s = this.segmentSlot(handle);
     const g = this.segments;
-    return { x1: g.ax[s], y1: g.ay[s], x2: g.bx[s], y2: g.by[s], thickness: g.thickness[s], restitution: g.restitution[s], category: g.category[s], mask: g.mask[s] };
+    return {
+      x1: g.ax[s],
+      y1: g.ay[s],
+      x2: g.bx[s],
+      y2: g.by[s],
+      thickness: g.thickness[s],
+      restitution: g.restitution[s],
+      friction: g.friction[s],
+      category: g.category[s],
+      mask: g.mask[s],
+    };
   }
 
   get segmentCount(): number {
     return this.segments.count;
+  }
+
+  /** Shapes on bodies (0 in a world of circles only, whose circles are not listed as shapes). */
+  get shapeCount(): number {
+    return this.shapes.store.count;
   }
 
   hasBody(handle: number): boolean {
@@ -145,12 +346,21 @@ export class World {
   getCircle(handle: number): CircleState {
     const s = this.slot(handle);
     const b = this.bodies;
+    let radius = b.radius[s];
+    if (this.shapes.engaged) {
+      const first = b.rigid!.firstShape[s];
+      const store = this.shapes.store;
+      if (first < 0 || store.kind[first] !== 0 || b.rigid!.shapeCount[s] !== 1) {
+        throw new RangeError(`body ${handle} is not a single circle (it has ${b.rigid!.shapeCount[s]} shapes); use getBody and getShape`);
+      }
+      radius = store.radius[first];
+    }
     return {
       x: b.x[s],
       y: b.y[s],
       vx: b.vx[s],
       vy: b.vy[s],
-      radius: b.radius[s],
+      radius,
       mass: b.mass[s],
       type: typeName(b.type[s]),
       restitution: b.restitution[s],
@@ -159,6 +369,40 @@ export class World {
       gravityScale: b.gravityScale[s],
       linearDamping: b.linearDamping[s],
       awake: b.asleep[s] === 0,
+    };
+  }
+
+  /** A body's pose, velocity and mass (see BodyState). */
+  getBody(handle: number): BodyState {
+    const s = this.slot(handle);
+    const b = this.bodies;
+    const rigid = b.rigid;
+    const c = rigid ? rigid.c[s] : 1;
+    const sn = rigid ? rigid.s[s] : 0;
+    const lx = rigid ? rigid.localCenterX[s] : 0;
+    const ly = rigid ? rigid.localCenterY[s] : 0;
+    const shapes: number[] = [];
+    if (rigid && this.shapes.engaged) for (let k = rigid.firstShape[s]; k >= 0; k = this.shapes.store.next[k]) shapes.push(this.shapes.store.handleOf(k));
+    const flags = rigid ? rigid.flags[s] : 0;
+    return {
+      x: b.x[s] - (c * lx - sn * ly),
+      y: b.y[s] - (sn * lx + c * ly),
+      angle: atan2(sn, c),
+      vx: b.vx[s],
+      vy: b.vy[s],
+      angularVelocity: rigid ? rigid.angularVelocity[s] : 0,
+      mass: b.mass[s],
+      inertia: rigid ? rigid.inertia[s] : (b.mass[s] * b.radius[s] * b.radius[s]) / 2,
+      centerX: b.x[s],
+      centerY: b.y[s],
+      type: typeName(b.type[s]),
+      awake: b.asleep[s] === 0,
+      fixedRotation: (flags & BodyFlag.fixedRotation) !== 0,
+      bullet: (flags & BodyFlag.bullet) !== 0,
+      gravityScale: b.gravityScale[s],
+      linearDamping: b.linearDamping[s],
+      angularDamping: rigid ? rigid.angularDamping[s] : 0,
+      shapes,
     };
   }
 
@@ -182,6 +426,13 @@ export class World {
     return b.handleOf(slot);
   }
 
+  /** The handle of the shape in a slot of the shape views, or -1. */
+  shapeHandleAtSlot(slot: number): number {
+    const store = this.shapes.store;
+    if (!Number.isInteger(slot) || slot < 0 || slot >= store.slotCount || store.live[slot] !== 1) return -1;
+    return store.handleOf(slot);
+  }
+
   setVelocity(handle: number, vx: number, vy: number): void {
     const s = this.slot(handle);
     finiteNumber('vx', vx);
@@ -194,17 +445,35 @@ export class World {
     this.bodies.wake(s);
   }
 
+  /** Sets a body's angular velocity, radians per second (see BodyState.angle for the sense); wakes it. */
+  setAngularVelocity(handle: number, angularVelocity: number): void {
+    const s = this.slot(handle);
+    finiteNumber('angularVelocity', angularVelocity);
+    if (this.bodies.type[s] === TypeCode.static && angularVelocity !== 0) {
+      throw new RangeError(`body ${handle} is static and cannot be given an angular velocity (${angularVelocity}); make it kinematic or dynamic first`);
+    }
+    this.useRigid().angularVelocity[s] = angularVelocity;
+    if (angularVelocity !== 0) this.turning = true;
+    this.bodies.wake(s);
+  }
+
+  /** Moves a body's origin to (x, y): its centre follows. */
   setPosition(handle: number, x: number, y: number): void {
     const s = this.slot(handle);
     finiteNumber('x', x);
     finiteNumber('y', y);
-    this.assertInBox(x, y, this.bodies.radius[s]);
-    this.disturbances.note(this.bodies, s);
-    this.bodies.x[s] = x;
-    this.bodies.y[s] = y;
-    this.disturbances.note(this.bodies, s);
-    this.bodies.wake(s);
-    this.geometryVersion++;
+    const rigid = this.bodies.rigid;
+    this.placeBody(s, x, y, rigid ? rigid.c[s] : 1, rigid ? rigid.s[s] : 0);
+  }
+
+  /** Moves a body's origin to (x, y) and turns it to `angle` radians; wakes it. */
+  setTransform(handle: number, x: number, y: number, angle: number): void {
+    const s = this.slot(handle);
+    finiteNumber('x', x);
+    finiteNumber('y', y);
+    finiteNumber('angle', angle);
+    cosSin(angle, rotation);
+    this.placeBody(s, x, y, rotation[0], rotation[1]);
   }
 
   /** Adds a force (mass x length / s^2) to a dynamic body for the next step only; wakes it. */
@@ -223,6 +492,20 @@ export class World {
     this.bodies.wake(s);
   }
 
+  /** Adds a torque (mass x length^2 / s^2) to a dynamic body for the next step only; wakes it. */
+  applyTorque(handle: number, torque: number): void {
+    const s = this.dynamicSlot(handle, 'a torque', torque, 0);
+    const rigid = this.useRigid();
+    const total = rigid.torque[s] + torque;
+    if (!Number.isFinite(total * rigid.invInertia[s])) {
+      throw new RangeError(`a torque ${torque} on body ${handle} would make its angular acceleration non-finite (pending torque ${total}, inertia ${rigid.inertia[s]})`);
+    }
+    rigid.torque[s] = total;
+    this.bodies.forcesPending = true;
+    this.turning = true;
+    this.bodies.wake(s);
+  }
+
   /** Changes a dynamic body's velocity by impulse / mass at once; wakes it. */
   applyImpulse(handle: number, ix: number, iy: number): void {
     const s = this.dynamicSlot(handle, 'an impulse', ix, iy);
@@ -234,6 +517,17 @@ export class World {
     }
     b.vx[s] = vx;
     b.vy[s] = vy;
+    this.bodies.wake(s);
+  }
+
+  /** Changes a dynamic body's angular velocity by impulse / inertia at once; wakes it. */
+  applyAngularImpulse(handle: number, impulse: number): void {
+    const s = this.dynamicSlot(handle, 'an angular impulse', impulse, 0);
+    const rigid = this.useRigid();
+    const w = rigid.angularVelocity[s] + impulse * rigid.invInertia[s];
+    if (!Number.isFinite(w)) throw new RangeError(`an angular impulse ${impulse} on body ${handle} would make its angular velocity ${w} non-finite (inertia ${rigid.inertia[s]})`);
+    rigid.angularVelocity[s] = w;
+    if (w !== 0) this.turning = true;
     this.bodies.wake(s);
   }
 
@@ -249,21 +543,47 @@ export class World {
     this.bodies.wake(s);
   }
 
-  /** Collision layers: bodies a and b collide only if (a.category & b.mask) and (b.category & a.mask). */
+  setAngularDamping(handle: number, damping: number): void {
+    const s = this.slot(handle);
+    this.useRigid().angularDamping[s] = nonNegativeNumber('angularDamping', damping);
+    this.bodies.wake(s);
+  }
+
+  /** Fixes or frees a body's rotation (a fixed one has no rotational inertia and stops turning). */
+  setFixedRotation(handle: number, fixed: boolean): void {
+    const s = this.slot(handle);
+    flag('fixedRotation', fixed);
+    const rigid = this.useRigid();
+    rigid.flags[s] = fixed ? rigid.flags[s] | BodyFlag.fixedRotation : rigid.flags[s] & ~BodyFlag.fixedRotation;
+    if (fixed) rigid.angularVelocity[s] = 0;
+    this.bodies.setMass(s, this.bodies.mass[s], rigid.inertia[s]);
+    this.bodies.wake(s);
+  }
+
+  /** Collision layers: bodies a and b collide only if (a.category & b.mask) and (b.category & a.mask). With shapes, every shape of the body takes them. */
   setCollisionFilter(handle: number, category: number, mask: number): void {
     const s = this.slot(handle);
     const c = layerBits('category', category);
     const m = layerBits('mask', mask);
     this.disturbances.note(this.bodies, s);
+    if (this.shapes.engaged) {
+      const store = this.shapes.store;
+      for (let k = this.bodies.rigid!.firstShape[s]; k >= 0; k = store.next[k]) {
+        store.category[k] = c;
+        store.mask[k] = m;
+      }
+      store.version++;
+    }
     this.bodies.setFilter(s, c, m);
     this.bodies.wake(s);
+    if (this.bodies.type[s] === TypeCode.static) this.staticVersion++;
   }
 
   isAwake(handle: number): boolean {
     return this.bodies.asleep[this.slot(handle)] === 0;
   }
 
-  /** Wakes a body, or puts a dynamic body to sleep at once (its velocity becomes zero). */
+  /** Wakes a body (with the island it sleeps in), or puts a dynamic body to sleep at once (its velocity becomes zero). */
   setAwake(handle: number, awake: boolean): void {
     const s = this.slot(handle);
     if (typeof awake !== 'boolean') throw new TypeError(`awake must be true or false, got ${describeValue(awake)}`);
@@ -275,8 +595,13 @@ export class World {
   setType(handle: number, type: BodyType): void {
     const s = this.slot(handle);
     const code = TypeCode[bodyType(type)];
+    const rigid = this.bodies.rigid;
+    if (code === TypeCode.dynamic && this.shapes.engaged && rigid!.shapeCount[s] > 0 && !(this.shapes.massWith(s, null) > 0)) this.requireMass(handle, 0);
     this.disturbances.note(this.bodies, s);
+    if (this.bodies.type[s] === TypeCode.static || code === TypeCode.static) this.staticVersion++;
     this.bodies.setTypeCode(s, code);
+    if (this.shapes.engaged) this.shapes.update(s);
+    if (code === TypeCode.static && rigid) rigid.angularVelocity[s] = 0;
     this.geometryVersion++;
   }
 
@@ -287,6 +612,7 @@ export class World {
 
   setIntegrator(name: IntegratorName): void {
     this.pipeline.integrator = integratorName(name);
+    if (this.shapeRoute) this.shapeRoute.settings.explicitEuler = this.pipeline.integrator === 'explicit-euler';
   }
 
   setGravity(x: number, y: number): void {
@@ -308,6 +634,7 @@ export class World {
    * page for SharedArrayBuffer). Resolves once they are running; until then steps run on this
    * thread. Motion, the Max Grid broad-phase with the narrow-phase, the solver and correct run in
    * parallel. The result is the same bits for any worker count, and as without workers.
+   * A world with shapes steps on this thread alone (same bits); the workers serve circle worlds.
    * `views()` must be taken again afterwards: the columns move to shared memory.
    */
   async startWorkers(workerCount: number, options: { minBodies?: number } = {}): Promise<void> {
@@ -343,10 +670,16 @@ export class World {
     finiteNumber('dt', dt);
     if (dt < 0) throw new RangeError(`dt must be >= 0, got ${dt}`);
     this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
-    this.pipeline.run(dt);
+    if (this.shapeRoute) {
+      this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats);
+    } else {
+      this.pipeline.run(dt);
+      if (this.turning) turnCircles(this.bodies, dt);
+    }
     this.geometryVersion++;
   }
 
+  /** Linear plus rotational kinetic energy of the dynamic bodies. */
   kineticEnergy(): number {
     return analytics.kineticEnergy(this.bodies);
   }
@@ -358,6 +691,11 @@ export class World {
 
   momentum(): Vector {
     return analytics.momentum(this.bodies);
+  }
+
+  /** Angular momentum of the dynamic bodies about the origin: orbital (r x m v) plus spin (I w). */
+  angularMomentum(): number {
+    return analytics.angularMomentum(this.bodies);
   }
 
   /** 16 hex digits identifying the exact bits of every body's state; equal across runtimes. */
@@ -430,6 +768,26 @@ export class World {
     v.mass = b.mass;
     v.type = b.type;
     v.asleep = b.asleep;
+    const rigid = b.rigid;
+    v.c = rigid ? rigid.c : EMPTY;
+    v.s = rigid ? rigid.s : EMPTY;
+    v.angularVelocity = rigid ? rigid.angularVelocity : EMPTY;
+    if (this.shapes.engaged) {
+      const store = this.shapes.store;
+      const sv = this.shapeViewsRecord;
+      sv.slotCount = store.slotCount;
+      sv.live = store.live;
+      sv.body = store.body;
+      sv.kind = store.kind;
+      sv.vertexCount = store.vertexCount;
+      sv.radius = store.radius;
+      sv.sensor = store.sensor;
+      sv.vertexX = store.vx;
+      sv.vertexY = store.vy;
+      v.shapes = sv;
+    } else {
+      v.shapes = null;
+    }
     return v;
   }
 
@@ -446,7 +804,14 @@ export class World {
    * columns, broad-phase and contact scratch.
    */
   memoryBytes(): number {
-    return this.bodies.memoryBytes() + this.segments.memoryBytes() + this.pipeline.memoryBytes();
+    return (
+      this.bodies.memoryBytes() +
+      (this.bodies.rigid?.memoryBytes() ?? 0) +
+      this.segments.memoryBytes() +
+      this.pipeline.memoryBytes() +
+      (this.shapes.engaged ? this.shapes.store.memoryBytes() : 0) +
+      (this.shapeRoute?.memoryBytes() ?? 0)
+    );
   }
 
   /** Capacities of internal buffers, for tests that check nothing grows after warm-up. */
@@ -455,7 +820,123 @@ export class World {
       bodies: this.bodies.capacity,
       contacts: this.pipeline.contacts.lo.length,
       broadphaseBytes: this.pipeline.broadPhase.memoryBytes(),
+      shapeRouteBytes: this.shapeRoute?.memoryBytes() ?? 0,
     };
+  }
+
+  /** Lists every body's shapes and moves the world to the shape route (see BodyShapes.engage). */
+  private engage(): void {
+    if (this.shapeRoute) return;
+    const settings = shapeRouteSettings(this.resolved, this.pipeline.settings.gravity);
+    settings.explicitEuler = this.pipeline.integrator === 'explicit-euler';
+    this.shapes.engage(settings.margin);
+    this.shapeRoute = new ShapeRoute(this.bodies, this.shapes.store, this.segments, settings);
+    this.staticVersion++;
+    this.geometryVersion++;
+  }
+
+  /** The rotational columns, with each circle made so far given a disc's inertia. */
+  private useRigid() {
+    if (this.bodies.rigid) return this.bodies.rigid;
+    const b = this.bodies;
+    const rigid = b.useRigid();
+    for (let s = 0; s < b.slotCount; s++) if (b.type[s] !== TypeCode.free) b.setMass(s, b.mass[s], (b.mass[s] * b.radius[s] * b.radius[s]) / 2);
+    return rigid;
+  }
+
+  private materialDefaults(): { friction: number; restitution: number } {
+    return { friction: this.defaultFriction, restitution: this.defaultRestitution };
+  }
+
+  /** createBox, createPolygon, createCapsule: a body and its one shape, everything checked first. */
+  private createWithShape(kind: string, field: string, options: unknown, geometryKeys: string[]): number {
+    const o = plainObject(field, options);
+    knownKeys(field, o, [...BODY_KEYS, ...MATERIAL_KEYS, ...geometryKeys]);
+    const body = resolveBody(o);
+    const geometry = resolveGeometry(kind, o, new Geometry());
+    const shape = resolveMaterial(o, this.materialDefaults(), geometry);
+    applyMassOption(o, shape);
+    if (body.type === TypeCode.dynamic && !(shape.density > 0)) this.requireMass(-1, 0);
+    this.assertShapeInBox(geometry, body.x, body.y, body.c, body.s, 0, 0);
+    if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
+    if (!this.shapes.store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} shapes at once`);
+    this.engage();
+    return this.createShaped(body, shape);
+  }
+
+  /** Adds a body (origin at body.x, body.y) with an optional first shape; returns its handle. */
+  private createShaped(body: ResolvedBody, shape: NewShape | null): number {
+    const b = this.bodies;
+    const slot = b.add({
+      x: body.x,
+      y: body.y,
+      vx: body.vx,
+      vy: body.vy,
+      radius: this.shapes.margin,
+      mass: 1,
+      restitution: this.defaultRestitution,
+      type: body.type,
+      category: 0,
+      mask: 0,
+      gravityScale: body.gravityScale,
+      linearDamping: body.linearDamping,
+    });
+    const rigid = b.rigid!;
+    rigid.c[slot] = body.c;
+    rigid.s[slot] = body.s;
+    rigid.angularVelocity[slot] = body.angularVelocity;
+    rigid.flags[slot] = body.flags;
+    rigid.angularDamping[slot] = body.angularDamping;
+    if (shape) this.shapes.add(slot, shape);
+    else this.shapes.update(slot);
+    this.shapesChanged(slot);
+    return b.handleOf(slot);
+  }
+
+  /** After a body's shapes changed: static tree, query grid and sleepers near it. */
+  private shapesChanged(slot: number): void {
+    if (this.bodies.type[slot] === TypeCode.static) this.staticVersion++;
+    this.geometryVersion++;
+    this.bodies.wake(slot);
+  }
+
+  private requireMass(handle: number, mass: number): never {
+    const which = handle >= 0 ? `body ${handle}` : 'a dynamic body';
+    throw new RangeError(`${which} needs mass: its shapes would give it mass ${mass}; give a shape a density > 0, or make the body static or kinematic`);
+  }
+
+  /** Moves body `slot` so that its origin is at (x, y) turned by (c, s), checking it stays in the box. */
+  private placeBody(slot: number, x: number, y: number, c: number, s: number): void {
+    const b = this.bodies;
+    const rigid = b.rigid;
+    const lx = rigid ? rigid.localCenterX[slot] : 0;
+    const ly = rigid ? rigid.localCenterY[slot] : 0;
+    const cx = x + (c * lx - s * ly);
+    const cy = y + (s * lx + c * ly);
+    if (this.shapes.engaged) {
+      if (this.bounds && rigid!.firstShape[slot] >= 0) {
+        bodyBounds(this.shapes.store, rigid!.firstShape[slot], cx, cy, c, s, box4);
+        this.assertBoundsInBox(box4);
+      }
+    } else {
+      this.assertInBox(cx, cy, b.radius[slot]);
+    }
+    if (!Number.isFinite(cx) || !Number.isFinite(cy)) throw new RangeError(`position (${x}, ${y}) puts the body's centre of mass at (${cx}, ${cy}), beyond the largest double`);
+    this.disturbances.note(b, slot);
+    b.x[slot] = cx;
+    b.y[slot] = cy;
+    if (rigid) {
+      rigid.c[slot] = c;
+      rigid.s[slot] = s;
+    } else if (c !== 1 || s !== 0) {
+      const r = this.useRigid();
+      r.c[slot] = c;
+      r.s[slot] = s;
+    }
+    this.disturbances.note(b, slot);
+    b.wake(slot);
+    if (b.type[slot] === TypeCode.static) this.staticVersion++;
+    this.geometryVersion++;
   }
 
   private dynamicSlot(handle: number, what: string, ax: number, ay: number): number {
@@ -475,6 +956,13 @@ export class World {
     return s;
   }
 
+  private shapeSlot(handle: number): number {
+    finiteNumber('shape handle', handle);
+    const s = this.shapes.store.slotOf(handle);
+    if (s < 0) throw new RangeError(`shape handle ${describeValue(handle)} ${this.shapes.store.describeMissing(handle)}`);
+    return s;
+  }
+
   private slot(handle: number): number {
     finiteNumber('handle', handle);
     const s = this.bodies.slotOf(handle);
@@ -491,4 +979,37 @@ export class World {
       );
     }
   }
+
+  /** A shape given in a body's frame (from its origin), on a body whose centre is at (px, py) turned by (c, s) with its centre at (lx, ly) in that frame. */
+  private assertShapeInBox(g: Geometry, px: number, py: number, c: number, s: number, lx: number, ly: number): void {
+    if (!this.bounds) return;
+    // The origin lies at centre - rotate(local centre); a body not yet made has its centre at its origin.
+    const ox = px - (c * lx - s * ly);
+    const oy = py - (s * lx + c * ly);
+    let minX = Infinity;
+    let minY = Infinity;
+    let maxX = -Infinity;
+    let maxY = -Infinity;
+    for (let i = 0; i < g.count; i++) {
+      const wx = ox + c * g.x[i] - s * g.y[i];
+      const wy = oy + s * g.x[i] + c * g.y[i];
+      minX = Math.min(minX, wx);
+      minY = Math.min(minY, wy);
+      maxX = Math.max(maxX, wx);
+      maxY = Math.max(maxY, wy);
+    }
+    box4[0] = minX - g.radius;
+    box4[1] = minY - g.radius;
+    box4[2] = maxX + g.radius;
+    box4[3] = maxY + g.radius;
+    this.assertBoundsInBox(box4);
+  }
+
+  private assertBoundsInBox(b: Float64Array): void {
+    const box = this.bounds!;
+    if (b[0] < 0 || b[1] < 0 || b[2] > box.width || b[3] > box.height) {
+      throw new RangeError(`a shape spanning (${b[0]}, ${b[1]})..(${b[2]}, ${b[3]}) is outside the box 0..${box.width} x 0..${box.height}`);
+    }
+  }
 }
+

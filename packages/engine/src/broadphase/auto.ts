@@ -99,7 +99,7 @@ export class AutoBroadPhase implements BroadPhase {
       return;
     }
     if (this.gridKept) return;
-    if (examined > EXAMINED_PER_BODY_FOR_SWEEP * bodies.liveCount) {
+    if (examined > EXAMINED_PER_BODY_FOR_SWEEP * bodies.proxyCount) {
       this.gridExamined = examined;
       this.lastGrid = used;
       this.current = this.sweep;

@@ -25,12 +25,13 @@ export class AxisSweep {
   build(bodies: BodyStore, axis: 0 | 1): void {
     const centre = axis === 0 ? bodies.x : bodies.y;
     const { radius, type, slotCount } = bodies;
-    this.ensure(bodies.liveCount);
+    this.ensure(bodies.proxyCount);
+    const apart = bodies.staticsApart;
     const low = this.low;
     const slot = this.slot;
     let n = 0;
     for (let i = 0; i < slotCount; i++) {
-      if (type[i] === TypeCode.free) continue;
+      if (type[i] === TypeCode.free || (apart && type[i] === TypeCode.static)) continue;
       low[n] = centre[i] - paddedRadius(radius[i], centre[i]);
       slot[n++] = i;
     }

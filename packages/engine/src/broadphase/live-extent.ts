@@ -22,14 +22,24 @@ export class LiveExtent {
   /** True when every slot below slotCount is live: then slot k is live body k, and `slots` is unused. */
   dense = false;
 
-  /** Call after the boundary stage, when a boxed world's bodies are all inside its box. */
-  measure(bodies: BodyStore): void {
-    const { x, y, type, slotCount, liveCount } = bodies;
+  /**
+   * Call after the boundary stage, when a boxed world's bodies are all inside its box. Measures
+   * the bodies the broad-phase covers (BodyStore.isProxyType), or with `everyBody` every live one,
+   * statics included, as queries need.
+   */
+  measure(bodies: BodyStore, everyBody = false): void {
+    const { x, y, radius, type, slotCount } = bodies;
+    const apart = bodies.staticsApart && !everyBody;
+    const count = everyBody ? bodies.liveCount : bodies.proxyCount;
     let minX = Infinity;
     let minY = Infinity;
     let maxX = -Infinity;
     let maxY = -Infinity;
-    this.dense = liveCount === slotCount;
+    let minRadius = Infinity;
+    let maxRadius = 0;
+    // With statics apart, the store's radius range leaves them out: measure every body here.
+    const measured = everyBody && bodies.staticsApart;
+    this.dense = count === slotCount && !measured;
     const box = bodies.box;
     if (this.dense && box) {
       minX = 0;
@@ -46,27 +56,33 @@ export class LiveExtent {
         if (py > maxY) maxY = py;
       }
     } else {
-      if (this.slots.length < liveCount) this.slots = new Int32Array(Math.max(liveCount, 2 * this.slots.length));
+      if (this.slots.length < count) this.slots = new Int32Array(Math.max(count, 2 * this.slots.length));
       const slots = this.slots;
       let n = 0;
       for (let i = 0; i < slotCount; i++) {
-        if (type[i] === TypeCode.free) continue;
+        const t = type[i];
+        if (t === TypeCode.free || (apart && t === TypeCode.static)) continue;
         const px = x[i];
         const py = y[i];
         if (px < minX) minX = px;
         if (px > maxX) maxX = px;
         if (py < minY) minY = py;
         if (py > maxY) maxY = py;
+        if (measured) {
+          const r = radius[i];
+          if (r < minRadius) minRadius = r;
+          if (r > maxRadius) maxRadius = r;
+        }
         slots[n++] = i;
       }
     }
-    this.count = liveCount;
+    this.count = count;
     this.minX = minX;
     this.minY = minY;
     this.maxX = maxX;
     this.maxY = maxY;
-    this.minRadius = bodies.minRadius();
-    this.maxRadius = bodies.maxRadius();
+    this.minRadius = measured ? minRadius : bodies.minRadius();
+    this.maxRadius = measured ? maxRadius : bodies.maxRadius();
     this.coordPad = Math.max(Math.abs(minX), Math.abs(maxX), Math.abs(minY), Math.abs(maxY)) * COORD_PAD;
   }
 

@@ -8,14 +8,15 @@ export class NaiveBroadPhase implements BroadPhase {
   readonly name = 'naive';
 
   findPairs(bodies: BodyStore, out: PairSink): number {
-    const { type, slotCount, liveCount } = bodies;
+    const { type, slotCount } = bodies;
+    const n = bodies.proxyCount;
     for (let i = 0; i < slotCount; i++) {
-      if (type[i] === TypeCode.free) continue;
+      if (!bodies.isProxyType(type[i])) continue;
       for (let j = i + 1; j < slotCount; j++) {
-        if (type[j] !== TypeCode.free) out.push(i, j);
+        if (bodies.isProxyType(type[j])) out.push(i, j);
       }
     }
-    return (liveCount * (liveCount - 1)) / 2;
+    return (n * (n - 1)) / 2;
   }
 
   memoryBytes(): number {

@@ -50,7 +50,7 @@ export class PersistentSapBroadPhase implements BroadPhase {
   }
 
   private rebuild(bodies: BodyStore): void {
-    const n = bodies.liveCount;
+    const n = bodies.proxyCount;
     if (this.low.length < n) {
       const capacity = grownCapacity(this.low.length, n);
       this.low = new Float64Array(capacity);
@@ -60,7 +60,7 @@ export class PersistentSapBroadPhase implements BroadPhase {
       this.scratchSlots = new Int32Array(capacity);
     }
     let k = 0;
-    for (let i = 0; i < bodies.slotCount; i++) if (bodies.type[i] !== TypeCode.free) this.slot[k++] = i;
+    for (let i = 0; i < bodies.slotCount; i++) if (bodies.isProxyType(bodies.type[i])) this.slot[k++] = i;
     this.count = k;
     // Keys are refreshed on every step; start from "unsorted" so the first restore sorts fully.
     this.low.fill(0, 0, k);

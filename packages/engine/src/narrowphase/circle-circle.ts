@@ -1,3 +1,5 @@
+import type { WorldShape } from './world-shape.js';
+import type { Manifold } from './manifold.js';
 import type { BodyStore } from '../store/body-store.js';
 
 /**
@@ -11,4 +13,24 @@ export function circlesOverlap(bodies: BodyStore, i: number, j: number): boolean
   const dy = bodies.y[j] - bodies.y[i];
   const reach = bodies.radius[i] + bodies.radius[j];
   return dx * dx + dy * dy < reach * reach;
+}
+
+/**
+ * The manifold of two circles: one point midway between the surfaces along the line of centres.
+ * Concentric circles have no such line and are pushed apart along +x, as in the circle route.
+ */
+export function collideCircles(a: WorldShape, b: WorldShape, margin: number, _slop: number, m: Manifold): void {
+  m.clear();
+  const dx = b.x[0] - a.x[0];
+  const dy = b.y[0] - a.y[0];
+  const reach = a.radius + b.radius + margin;
+  const distSq = dx * dx + dy * dy;
+  if (distSq >= reach * reach) return;
+  const dist = Math.sqrt(distSq);
+  const nx = dist > 0 ? dx / dist : 1;
+  const ny = dist > 0 ? dy / dist : 0;
+  const separation = dist - a.radius - b.radius;
+  const along = a.radius + separation / 2;
+  m.setNormal(nx, ny);
+  m.addPoint(a.x[0] + along * nx, a.y[0] + along * ny, separation, 0);
 }

@@ -204,7 +204,7 @@ export class Queries {
   private prepare(version: number): boolean {
     const { live, bodies } = this;
     if (this.builtVersion !== version) {
-      live.measure(bodies);
+      live.measure(bodies, true);
       if (live.count > 0) {
         const cellSize = live.cellSizeFor(live.maxRadius);
         this.grid.build(bodies, live.dense ? null : live.slots, 0, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);

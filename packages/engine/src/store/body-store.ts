@@ -1,21 +1,10 @@
 import { TypeCode, ShapeCode } from './body-types.js';
 import { grownCapacity, grow, type Column } from '../util/grow.js';
 import { BodyKernel } from './body-kernel.js';
+import { MAX_GENERATION, SEGMENT_HANDLES, SHAPE_HANDLES, SLOT_SPACE } from './handles.js';
+import { BodyFlag, RigidColumns } from './rigid-columns.js';
 
-/**
- * Handles pack a slot index and that slot's generation: `generation * SLOT_SPACE + slot`. The
- * first body in a fresh world gets handle 0, later ones 1, 2, ...; when a slot is reused its
- * generation goes up, so an old handle to it no longer matches and is rejected as stale.
- * 2^24 slots (16.7M bodies) and 2^28 generations fill 52 bits, below SEGMENT_HANDLES.
- */
-export const SLOT_SPACE = 2 ** 24;
-export const MAX_GENERATION = 2 ** 28;
-/**
- * Segment handles are offset by 2^52, still safe integers: a segment handle passed where a body's
- * is expected (or the other way round) is then refused by name, instead of reaching the body or
- * segment that happens to share its slot and generation.
- */
-export const SEGMENT_HANDLES = 2 ** 52;
+export { SLOT_SPACE, MAX_GENERATION, SEGMENT_HANDLES } from './handles.js';
 /** A mask with every collision layer. */
 const ALL_LAYERS = 0xffffffff;
 
@@ -116,6 +105,16 @@ export class BodyStore {
    * plain (or shared) typed arrays and every stage runs its TypeScript loop.
    */
   kernel: BodyKernel | null = null;
+  /**
+   * Orientation, angular velocity, inertia and shape lists, allocated once a body turns or has
+   * shapes (see RigidColumns); null in a world of the report's circles.
+   */
+  rigid: RigidColumns | null = null;
+  /**
+   * Static bodies are kept out of the broad-phase and found through the static index instead
+   * (set once a world has shapes): then `proxyCount` and the radius range count moving bodies only.
+   */
+  staticsApart = false;
 
   private freeSlots = new Int32Array(0);
   private freeCount = 0;
@@ -145,6 +144,7 @@ export class BodyStore {
   /** Explains why `slotOf` refused a handle, for error messages. */
   describeMissing(handle: number): string {
     if (!Number.isSafeInteger(handle) || handle < 0) return 'is not a body handle';
+    if (handle >= SHAPE_HANDLES) return 'is a shape handle, not a body handle';
     if (handle >= SEGMENT_HANDLES) return 'is a segment handle, not a body handle';
     const slot = handle % SLOT_SPACE;
     const gen = (handle - slot) / SLOT_SPACE;
@@ -185,10 +185,13 @@ export class BodyStore {
     this.asleep[slot] = 0;
     if (body.gravityScale !== 1 || body.linearDamping !== 0) this.customMotionCount++;
     this.setTypeCode(slot, body.type);
+    this.rigid?.clear(slot);
     this.liveCount++;
     this.membershipVersion++;
-    if (body.radius > this.cachedMaxRadius) this.cachedMaxRadius = body.radius;
-    if (body.radius < this.cachedMinRadius) this.cachedMinRadius = body.radius;
+    if (this.isProxyType(body.type)) {
+      if (body.radius > this.cachedMaxRadius) this.cachedMaxRadius = body.radius;
+      if (body.radius < this.cachedMinRadius) this.cachedMinRadius = body.radius;
+    }
     return slot;
   }
 
@@ -239,11 +242,13 @@ export class BodyStore {
     this.sleepingCount++;
     this.vx[slot] = 0;
     this.vy[slot] = 0;
+    if (this.rigid) this.rigid.angularVelocity[slot] = 0;
   }
 
   setTypeCode(slot: number, code: number): void {
     this.wake(slot);
-    this.countType(this.type[slot], -1);
+    const previous = this.type[slot];
+    this.countType(previous, -1);
     this.countType(code, 1);
     this.type[slot] = code;
     this.invMass[slot] = code === TypeCode.dynamic ? 1 / this.mass[slot] : 0;
@@ -251,6 +256,25 @@ export class BodyStore {
       this.vx[slot] = 0;
       this.vy[slot] = 0;
     }
+    const rigid = this.rigid;
+    if (rigid) {
+      rigid.invInertia[slot] = code === TypeCode.dynamic ? inverseInertia(rigid, slot) : 0;
+      if (code === TypeCode.static) rigid.angularVelocity[slot] = 0;
+    }
+    if (this.staticsApart && previous !== TypeCode.free && (previous === TypeCode.static) !== (code === TypeCode.static)) {
+      this.membershipVersion++;
+      this.radiusRangeStale = true;
+    }
+  }
+
+  /** Sets a body's mass and rotational inertia (from its shapes), and their inverses for its type. */
+  setMass(slot: number, mass: number, inertia: number): void {
+    this.mass[slot] = mass;
+    this.invMass[slot] = this.type[slot] === TypeCode.dynamic ? 1 / mass : 0;
+    const rigid = this.rigid;
+    if (!rigid) return;
+    rigid.inertia[slot] = inertia;
+    rigid.invInertia[slot] = this.type[slot] === TypeCode.dynamic ? inverseInertia(rigid, slot) : 0;
   }
 
   private countType(code: number, change: number): void {
@@ -276,6 +300,40 @@ export class BodyStore {
     return this.staticCount === 0 && this.kinematicCount === 0 && this.sleepingCount === 0 && this.selectiveFilterCount === 0;
   }
 
+  /** Bodies the broad-phase covers: every live body, or every non-static one when statics are apart. */
+  get proxyCount(): number {
+    return this.staticsApart ? this.liveCount - this.staticCount : this.liveCount;
+  }
+
+  /** Whether a body of this type code is in the broad-phase (see staticsApart). */
+  isProxyType(code: number): boolean {
+    return code !== TypeCode.free && !(this.staticsApart && code === TypeCode.static);
+  }
+
+  /** Allocates the rotational columns (identity rotation, no spin) if they are not yet there. */
+  useRigid(): RigidColumns {
+    if (this.rigid) return this.rigid;
+    const rigid = new RigidColumns();
+    rigid.reserve(this.capacity);
+    this.rigid = rigid;
+    return rigid;
+  }
+
+  /** Changes a live body's broad-phase radius (its shapes changed). */
+  setRadius(slot: number, r: number): void {
+    this.radius[slot] = r;
+    this.radiusRangeStale = true;
+    this.membershipVersion++;
+  }
+
+  /** Keeps static bodies out of the broad-phase from now on (see staticsApart). */
+  setStaticsApart(): void {
+    if (this.staticsApart) return;
+    this.staticsApart = true;
+    this.radiusRangeStale = true;
+    this.membershipVersion++;
+  }
+
   minRadius(): number {
     this.refreshRadiusRange();
     return this.cachedMinRadius;
@@ -286,14 +344,14 @@ export class BodyStore {
     return this.cachedMaxRadius;
   }
 
-  /** Radii never change while a body lives, so only removals can make the cached range stale. */
+  /** Radii change only with a body's shapes (setRadius), so removals and those make the cached range stale. */
   private refreshRadiusRange(): void {
     if (!this.radiusRangeStale) return;
     let max = 0;
     let min = Infinity;
     const { radius, type } = this;
     for (let i = 0; i < this.slotCount; i++) {
-      if (type[i] === TypeCode.free) continue;
+      if (!this.isProxyType(type[i])) continue;
       if (radius[i] > max) max = radius[i];
       if (radius[i] < min) min = radius[i];
     }
@@ -342,7 +400,14 @@ export class BodyStore {
     }
     kernel?.bind(this);
     this.kernel = kernel;
+    this.rigid?.reserve(capacity);
     this.capacity = capacity;
     this.layoutVersion++;
   }
+}
+
+/** 1 / inertia for a dynamic body free to turn; 0 for one with fixed rotation or no inertia. */
+function inverseInertia(rigid: RigidColumns, slot: number): number {
+  const inertia = rigid.inertia[slot];
+  return inertia > 0 && (rigid.flags[slot] & BodyFlag.fixedRotation) === 0 ? 1 / inertia : 0;
 }

@@ -1,4 +1,4 @@
-import { MAX_GENERATION, SEGMENT_HANDLES, SLOT_SPACE } from './body-store.js';
+import { SEGMENT_HANDLES, SEGMENT_MAX_GENERATION, SHAPE_HANDLES, SLOT_SPACE } from './handles.js';
 import { grownCapacity, grow } from '../util/grow.js';
 
 export interface NewSegment {
@@ -8,6 +8,7 @@ export interface NewSegment {
   by: number;
   thickness: number;
   restitution: number;
+  friction: number;
   category: number;
   mask: number;
 }
@@ -15,7 +16,7 @@ export interface NewSegment {
 /**
  * Static line segments (walls at any angle, thick or not), stored apart from bodies: they never
  * move, so they get a grid of their own that is rebuilt only when segments are added or removed.
- * Handles work as body handles do, offset into a space of their own: 2^52 + generation x 2^24 + slot.
+ * Handles work as body handles do, in a space of their own (see handles.ts).
  */
 export class SegmentStore {
   count = 0;
@@ -27,6 +28,7 @@ export class SegmentStore {
   /** Half the wall's width: the segment is a capsule of this radius. */
   thickness = new Float64Array(0);
   restitution = new Float64Array(0);
+  friction = new Float64Array(0);
   category = new Uint32Array(0);
   mask = new Uint32Array(0);
   live = new Uint8Array(0);
@@ -47,6 +49,7 @@ export class SegmentStore {
     this.by[slot] = segment.by;
     this.thickness[slot] = segment.thickness;
     this.restitution[slot] = segment.restitution;
+    this.friction[slot] = segment.friction;
     this.category[slot] = segment.category;
     this.mask[slot] = segment.mask;
     this.live[slot] = 1;
@@ -70,14 +73,14 @@ export class SegmentStore {
     this.count--;
     this.version++;
     // As for bodies: a slot whose generation would overflow the handle encoding is retired.
-    if (this.generation[slot] + 1 >= MAX_GENERATION) return;
+    if (this.generation[slot] + 1 >= SEGMENT_MAX_GENERATION) return;
     this.generation[slot]++;
     this.freeSlots.push(slot);
   }
 
   /** The slot of a live segment's handle, or -1 for an unknown or stale one. */
   slotOf(handle: number): number {
-    if (!Number.isSafeInteger(handle) || handle < SEGMENT_HANDLES) return -1;
+    if (!Number.isSafeInteger(handle) || handle < SEGMENT_HANDLES || handle >= SHAPE_HANDLES) return -1;
     const slot = (handle - SEGMENT_HANDLES) % SLOT_SPACE;
     const gen = (handle - SEGMENT_HANDLES - slot) / SLOT_SPACE;
     return slot < this.slotCount && this.live[slot] === 1 && this.generation[slot] === gen ? slot : -1;
@@ -87,6 +90,7 @@ export class SegmentStore {
   describeMissing(handle: number): string {
     if (!Number.isSafeInteger(handle) || handle < 0) return 'is not a segment handle';
     if (handle < SEGMENT_HANDLES) return 'is a body handle, not a segment handle';
+    if (handle >= SHAPE_HANDLES) return 'is a shape handle, not a segment handle';
     const slot = (handle - SEGMENT_HANDLES) % SLOT_SPACE;
     const gen = (handle - SEGMENT_HANDLES - slot) / SLOT_SPACE;
     if (slot >= this.slotCount || gen > this.generation[slot]) return 'is unknown to this world';
@@ -94,7 +98,7 @@ export class SegmentStore {
   }
 
   memoryBytes(): number {
-    return this.ax.byteLength * 6 + this.category.byteLength * 3 + this.live.byteLength;
+    return this.ax.byteLength * 7 + this.category.byteLength * 3 + this.live.byteLength;
   }
 
   private grow(needed: number): void {
@@ -105,6 +109,7 @@ export class SegmentStore {
     this.by = grow(this.by, capacity);
     this.thickness = grow(this.thickness, capacity);
     this.restitution = grow(this.restitution, capacity);
+    this.friction = grow(this.friction, capacity);
     this.category = grow(this.category, capacity);
     this.mask = grow(this.mask, capacity);
     this.live = grow(this.live, capacity);

@@ -1,0 +1,135 @@
+/**
+ * Cosine, sine and atan2 from +, -, *, / and sqrt alone, which JavaScript rounds correctly, so
+ * every runtime gives the same bits (the language leaves Math.sin and Math.atan2 to each engine).
+ * The step never calls them: rotations are (cos, sin) pairs advanced algebraically (see
+ * `advanceRotation`). They turn a user's angle into a rotation and a rotation back into an angle.
+ *
+ * Accuracy: within a few units in the last place while |angle| < 2^20 pi/2 (about 1.6e6 radians),
+ * where the reduction by pi/2 is exact; beyond that the error grows as |angle| x 1e-16, and the
+ * result stays deterministic.
+ */
+
+// pi/2 split into three parts whose products with an integer below 2^20 are exact.
+const HALF_PI_1 = 1.5707963267341256;
+const HALF_PI_2 = 6.077100506303966e-11;
+const HALF_PI_3 = 2.0222662487959506e-21;
+const TWO_OVER_PI = 0.6366197723675814;
+
+// Taylor coefficients 1/n!, with the sign of their term.
+const S3 = -1 / 6;
+const S5 = 1 / 120;
+const S7 = -1 / 5040;
+const S9 = 1 / 362880;
+const S11 = -1 / 39916800;
+const S13 = 1 / 6227020800;
+const S15 = -1 / 1307674368000;
+const S17 = 1 / 355687428096000;
+const C2 = -1 / 2;
+const C4 = 1 / 24;
+const C6 = -1 / 720;
+const C8 = 1 / 40320;
+const C10 = -1 / 3628800;
+const C12 = 1 / 479001600;
+const C14 = -1 / 87178291200;
+const C16 = 1 / 20922789888000;
+const C18 = -1 / 6402373705728000;
+
+/** sin(r) for |r| <= pi/4: the Taylor series to r^17, whose next term is below 1e-19. */
+function sinKernel(r: number): number {
+  const z = r * r;
+  return r + r * z * (S3 + z * (S5 + z * (S7 + z * (S9 + z * (S11 + z * (S13 + z * (S15 + z * S17)))))));
+}
+
+/** cos(r) for |r| <= pi/4: the Taylor series to r^18. */
+function cosKernel(r: number): number {
+  const z = r * r;
+  return 1 + z * (C2 + z * (C4 + z * (C6 + z * (C8 + z * (C10 + z * (C12 + z * (C14 + z * (C16 + z * C18))))))));
+}
+
+/** Writes cos(angle) and sin(angle) into out[0], out[1]. */
+export function cosSin(angle: number, out: Float64Array | number[]): void {
+  const k = Math.round(angle * TWO_OVER_PI);
+  const r = angle - k * HALF_PI_1 - k * HALF_PI_2 - k * HALF_PI_3;
+  const c = cosKernel(r);
+  const s = sinKernel(r);
+  // The quadrant: k mod 4, as an integer in [0, 4) also for negative and huge k.
+  const quadrant = ((k % 4) + 4) % 4;
+  if (quadrant === 0) {
+    out[0] = c;
+    out[1] = s;
+  } else if (quadrant === 1) {
+    out[0] = -s;
+    out[1] = c;
+  } else if (quadrant === 2) {
+    out[0] = -c;
+    out[1] = -s;
+  } else {
+    out[0] = s;
+    out[1] = -c;
+  }
+}
+
+const scratch = new Float64Array(2);
+
+export function cos(angle: number): number {
+  cosSin(angle, scratch);
+  return scratch[0];
+}
+
+export function sin(angle: number): number {
+  cosSin(angle, scratch);
+  return scratch[1];
+}
+
+const QUARTER_PI = 0.7853981633974483;
+const HALF_PI = 1.5707963267948966;
+const PI = 3.141592653589793;
+/** tan(pi/8) = sqrt(2) - 1. */
+const TAN_EIGHTH_PI = 0.41421356237309503;
+
+/** atan(t) for |t| <= 0.2: the alternating series to t^25, whose next term is below 1e-19. */
+function atanKernel(t: number): number {
+  const z = t * t;
+  let sum = 0;
+  for (let n = 25; n >= 3; n -= 2) sum = (n % 4 === 1 ? 1 : -1) / n + z * sum;
+  return t + t * z * sum;
+}
+
+/** atan(t) for 0 <= t <= 1. */
+function atanUnit(t: number): number {
+  let base = 0;
+  if (t > TAN_EIGHTH_PI) {
+    // atan(t) = pi/4 + atan((t - 1) / (t + 1)), which lands in [-0.172, 0].
+    base = QUARTER_PI;
+    t = (t - 1) / (t + 1);
+  }
+  // atan(t) = 2 atan(t / (1 + sqrt(1 + t^2))) halves the argument's size: |t| <= 0.2 after it.
+  const half = t / (1 + Math.sqrt(1 + t * t));
+  return base + 2 * atanKernel(half);
+}
+
+/** The angle of (x, y) in [-pi, pi], as Math.atan2 defines it for finite inputs; 0 for (0, 0). */
+export function atan2(y: number, x: number): number {
+  if (y === 0 && x === 0) return 0;
+  const ax = Math.abs(x);
+  const ay = Math.abs(y);
+  // atan of the smaller over the larger, then reflected into the right octant.
+  let a = ay <= ax ? atanUnit(ay / ax) : HALF_PI - atanUnit(ax / ay);
+  if (x < 0) a = PI - a;
+  return y < 0 ? -a : a;
+}
+
+/**
+ * Advances a rotation (c, s) by the angle h*w without trigonometry: one step of the rotation's
+ * own differential equation, then renormalised (Box2D v3's b2IntegrateRotation), so its length
+ * stays 1 to round-off. Writes into out[0], out[1]. The rotation turned is at most a small
+ * fraction of a turn per sub-step, where the first-order step is accurate.
+ */
+export function advanceRotation(c: number, s: number, hw: number, out: Float64Array): void {
+  const c2 = c - hw * s;
+  const s2 = s + hw * c;
+  const length = Math.sqrt(c2 * c2 + s2 * s2);
+  const inverse = length > 0 ? 1 / length : 0;
+  out[0] = c2 * inverse;
+  out[1] = s2 * inverse;
+}

@@ -1,0 +1,41 @@
+/**
+ * What a pair function finds: up to two contact points sharing one normal, which points from
+ * shape A to shape B. Each point lies midway between the two surfaces, with the signed distance
+ * between them (`separation`, negative when they overlap) and a feature id naming the pair of
+ * features (edges, vertices) that made it, so that a point can inherit last step's impulse when
+ * the same features touch again (warm starting). Points are kept only when their separation is
+ * below the caller's margin: speculative points up to that distance apart let the solver stop
+ * bodies before they meet.
+ */
+export class Manifold {
+  pointCount = 0;
+  normalX = 0;
+  normalY = 0;
+  readonly x = new Float64Array(2);
+  readonly y = new Float64Array(2);
+  readonly separation = new Float64Array(2);
+  readonly id = new Int32Array(2);
+
+  clear(): void {
+    this.pointCount = 0;
+  }
+
+  setNormal(nx: number, ny: number): void {
+    this.normalX = nx;
+    this.normalY = ny;
+  }
+
+  addPoint(x: number, y: number, separation: number, id: number): void {
+    const k = this.pointCount++;
+    this.x[k] = x;
+    this.y[k] = y;
+    this.separation[k] = separation;
+    this.id[k] = id;
+  }
+
+  /** Turns a manifold of (B, A) into one of (A, B): the normal reverses, points and ids stay. */
+  flip(): void {
+    this.normalX = -this.normalX;
+    this.normalY = -this.normalY;
+  }
+}

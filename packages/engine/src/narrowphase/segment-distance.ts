@@ -1,0 +1,66 @@
+/**
+ * Closest points between segment 1, p1 + s (q1 - p1), and segment 2, p2 + t (q2 - p2), with s and
+ * t in [0, 1] (Ericson, Real-Time Collision Detection, 5.1.9): written to `closest` as the two
+ * points, their parameters and the squared distance. Degenerate (point) segments are handled.
+ */
+export class SegmentDistance {
+  x1 = 0;
+  y1 = 0;
+  x2 = 0;
+  y2 = 0;
+  fraction1 = 0;
+  fraction2 = 0;
+  distanceSquared = 0;
+
+  compute(p1x: number, p1y: number, q1x: number, q1y: number, p2x: number, p2y: number, q2x: number, q2y: number): this {
+    const d1x = q1x - p1x;
+    const d1y = q1y - p1y;
+    const d2x = q2x - p2x;
+    const d2y = q2y - p2y;
+    const rx = p1x - p2x;
+    const ry = p1y - p2y;
+    const a = d1x * d1x + d1y * d1y;
+    const e = d2x * d2x + d2y * d2y;
+    const f = d2x * rx + d2y * ry;
+    let s = 0;
+    let t = 0;
+    if (a === 0 && e === 0) {
+      s = 0;
+      t = 0;
+    } else if (a === 0) {
+      t = clamp01(f / e);
+    } else {
+      const c = d1x * rx + d1y * ry;
+      if (e === 0) {
+        s = clamp01(-c / a);
+      } else {
+        const b = d1x * d2x + d1y * d2y;
+        const denominator = a * e - b * b;
+        // Parallel segments (denominator 0): any s works; 0 is then corrected by the clamps below.
+        s = denominator > 0 ? clamp01((b * f - c * e) / denominator) : 0;
+        t = (b * s + f) / e;
+        if (t < 0) {
+          t = 0;
+          s = clamp01(-c / a);
+        } else if (t > 1) {
+          t = 1;
+          s = clamp01((b - c) / a);
+        }
+      }
+    }
+    this.fraction1 = s;
+    this.fraction2 = t;
+    this.x1 = p1x + s * d1x;
+    this.y1 = p1y + s * d1y;
+    this.x2 = p2x + t * d2x;
+    this.y2 = p2y + t * d2y;
+    const dx = this.x2 - this.x1;
+    const dy = this.y2 - this.y1;
+    this.distanceSquared = dx * dx + dy * dy;
+    return this;
+  }
+}
+
+function clamp01(v: number): number {
+  return v < 0 ? 0 : v > 1 ? 1 : v;
+}

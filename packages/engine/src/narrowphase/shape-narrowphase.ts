@@ -1,0 +1,301 @@
+import type { BodyStore } from '../store/body-store.js';
+import type { PairConsumer } from '../store/pair-sink.js';
+import type { SegmentStore } from '../store/segment-store.js';
+import type { ShapeStore } from '../store/shape-store.js';
+import { ContactBuffer } from '../store/contact-buffer.js';
+import { TypeCode } from '../store/body-types.js';
+import { grownCapacity, grow } from '../util/grow.js';
+import type { StaticTree } from '../broadphase/static-tree.js';
+import { ContactList, WORLD } from './contact-list.js';
+import { Manifold } from './manifold.js';
+import { WorldShape } from './world-shape.js';
+import { collide } from './dispatch.js';
+
+/** Static tree entry ids: a static body's shape by its shape slot; segments and walls above. */
+export const SEGMENT_ENTRY = 2 ** 24;
+export const WALL_ENTRY = 2 ** 25;
+
+/** What world shapes the narrow-phase can meet besides bodies: the segments, and the box. */
+export interface WorldShapes {
+  segments: SegmentStore;
+  /** The box's walls as four rectangles (see boxWall), or null without a box. */
+  box: { width: number; height: number } | null;
+  /** How thick the walls are, outside the box. */
+  wallThickness: number;
+}
+
+/** Fills `out` with wall w (BoxWall numbering: x = 0, x = width, y = 0, y = height) of the box. */
+export function boxWall(world: WorldShapes, w: number, out: WorldShape): WorldShape {
+  const { width, height } = world.box!;
+  const t = world.wallThickness;
+  if (w === 0) return out.rectangle(-t, -t, 0, height + t);
+  if (w === 1) return out.rectangle(width, -t, width + t, height + t);
+  if (w === 2) return out.rectangle(-t, -t, width + t, 0);
+  return out.rectangle(-t, height, width + t, height + t);
+}
+
+/**
+ * The narrow-phase of worlds with shapes, in two passes.
+ *
+ * `consume` (the broad-phase's consumer) keeps the candidate body pairs that could touch: at
+ * least one awake moving body and one dynamic, collision layers open at body level, and bounding
+ * circles (which include the speculative margin) overlapping, a test that depends on the pair
+ * alone, so every broad-phase hands on the same pairs. `gatherStatic` adds each awake dynamic
+ * body's pairs with static things from the static tree: static bodies as body pairs, segments and
+ * walls as world pairs.
+ *
+ * `build` then sorts the body pairs canonically and runs the shape pairs of each through the
+ * dispatch table, in order, into the step's ContactList, each contact inheriting its impulses
+ * from last step's list. A sleeping body touched by an awake one is noted in `wake`: its island
+ * wakes after this step, so that it wakes whole, with its own contacts, rather than falling for
+ * a step without them.
+ */
+export class ShapeNarrowPhase implements PairConsumer {
+  readonly candidates = new ContactBuffer();
+  current = new ContactList();
+  previous = new ContactList();
+  /** Pairs dropped by collision layers (body level in consume, shape level in build). */
+  filtered = 0;
+  /** Shape pairs run through a pair function in the last build. */
+  shapePairs = 0;
+  /** Sleepers an awake body touched this step: their islands wake at its end. */
+  wake = new Int32Array(16);
+  wakeCount = 0;
+  private worldBody = new Int32Array(16);
+  private worldEntry = new Int32Array(16);
+  private worldCount = 0;
+  private stamp = new Int32Array(0);
+  private epoch = 0;
+  private readonly shapeA = new WorldShape();
+  private readonly shapeB = new WorldShape();
+  private readonly manifold = new Manifold();
+
+  constructor(private readonly bodies: BodyStore) {}
+
+  begin(): void {
+    this.filtered = 0;
+    this.candidates.clear();
+    this.worldCount = 0;
+    this.wakeCount = 0;
+  }
+
+  accept(pairs: Int32Array, from: number, to: number): void {
+    // Only reached with PairSink.contactsDirect, which the shape route leaves off.
+    for (let p = from; p < to; p += 2) this.consume1(pairs[p], pairs[p + 1]);
+  }
+
+  consume(a: Int32Array, b: Int32Array, count: number): void {
+    for (let k = 0; k < count; k++) this.consume1(a[k], b[k]);
+  }
+
+  private consume1(i: number, j: number): void {
+    const { type, asleep, category, mask, x, y, radius } = this.bodies;
+    const movingI = type[i] === TypeCode.kinematic || (type[i] === TypeCode.dynamic && asleep[i] === 0);
+    const movingJ = type[j] === TypeCode.kinematic || (type[j] === TypeCode.dynamic && asleep[j] === 0);
+    if (!(movingI || movingJ)) return;
+    if (type[i] !== TypeCode.dynamic && type[j] !== TypeCode.dynamic) return;
+    if ((category[i] & mask[j]) === 0 || (category[j] & mask[i]) === 0) {
+      this.filtered++;
+      return;
+    }
+    const dx = x[j] - x[i];
+    const dy = y[j] - y[i];
+    const reach = radius[i] + radius[j];
+    if (dx * dx + dy * dy >= reach * reach) return;
+    if (i < j) this.candidates.push(i, j);
+    else this.candidates.push(j, i);
+  }
+
+  /** Pairs of each awake dynamic body with the static tree's entries its bounding box overlaps. */
+  gatherStatic(tree: StaticTree, shapes: ShapeStore, segments: SegmentStore): void {
+    const bodies = this.bodies;
+    const { type, asleep, x, y, radius, category, mask, slotCount } = bodies;
+    if (this.stamp.length < slotCount) this.stamp = new Int32Array(grownCapacity(this.stamp.length, slotCount));
+    for (let i = 0; i < slotCount; i++) {
+      if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
+      const r = radius[i];
+      const found = tree.query(x[i] - r, y[i] - r, x[i] + r, y[i] + r);
+      if (found === 0) continue;
+      const stamp = ++this.epoch;
+      for (let f = 0; f < found; f++) {
+        const entry = tree.found[f];
+        if (entry < SEGMENT_ENTRY) {
+          const s = shapes.body[entry];
+          if (this.stamp[s] === stamp) continue;
+          this.stamp[s] = stamp;
+          if ((category[i] & mask[s]) === 0 || (category[s] & mask[i]) === 0) {
+            this.filtered++;
+            continue;
+          }
+          if (i < s) this.candidates.push(i, s);
+          else this.candidates.push(s, i);
+        } else {
+          if (entry < WALL_ENTRY) {
+            const g = entry - SEGMENT_ENTRY;
+            if ((category[i] & segments.mask[g]) === 0 || (segments.category[g] & mask[i]) === 0) {
+              this.filtered++;
+              continue;
+            }
+          }
+          this.pushWorld(i, entry);
+        }
+      }
+    }
+  }
+
+  /**
+   * Builds the step's contact list in canonical order, inheriting impulses from the last step's.
+   * `margin` is the speculative distance (0: touching only), `slop` the solver's linear slop.
+   */
+  build(shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number): void {
+    const last = this.current;
+    this.current = this.previous;
+    this.previous = last;
+    const list = this.current;
+    list.clear();
+    const bodies = this.bodies;
+    this.candidates.sortCanonical(bodies.slotCount);
+    const { lo, hi, count } = this.candidates;
+    let w = 0;
+    let p = 0;
+    this.shapePairs = 0;
+    for (let k = 0; k <= count; k++) {
+      const i = k < count ? lo[k] : Infinity;
+      // World pairs of bodies below i come first, after those bodies' body pairs.
+      while (w < this.worldCount && this.worldBody[w] < i) {
+        p = this.collideWorld(this.worldBody[w], this.worldEntry[w], shapes, world, margin, slop, wallFriction, wallRestitution, p);
+        w++;
+      }
+      if (k === count) break;
+      p = this.collideBodies(i, hi[k], shapes, margin, slop, p);
+    }
+  }
+
+  memoryBytes(): number {
+    return this.candidates.memoryBytes() + this.current.memoryBytes() + this.previous.memoryBytes() + this.worldBody.byteLength * 2 + this.stamp.byteLength + this.wake.byteLength;
+  }
+
+  private pushWorld(i: number, entry: number): void {
+    if (this.worldCount === this.worldBody.length) {
+      const capacity = grownCapacity(this.worldBody.length, this.worldCount + 1);
+      this.worldBody = grow(this.worldBody, capacity);
+      this.worldEntry = grow(this.worldEntry, capacity);
+    }
+    this.worldBody[this.worldCount] = i;
+    this.worldEntry[this.worldCount++] = entry;
+  }
+
+  private noteWake(slot: number): void {
+    if (this.wakeCount === this.wake.length) this.wake = grow(this.wake, 2 * this.wake.length);
+    this.wake[this.wakeCount++] = slot;
+  }
+
+  private collideBodies(i: number, j: number, shapes: ShapeStore, margin: number, slop: number, p: number): number {
+    const bodies = this.bodies;
+    const rigid = bodies.rigid!;
+    const { x, y } = bodies;
+    const { c, s, firstShape, shapeCount } = rigid;
+    const compound = shapeCount[i] > 1 || shapeCount[j] > 1;
+    const list = this.current;
+    p = this.seek(i, j, p);
+    let touching = false;
+    for (let sa = firstShape[i]; sa >= 0; sa = shapes.next[sa]) {
+      for (let sb = firstShape[j]; sb >= 0; sb = shapes.next[sb]) {
+        if ((shapes.category[sa] & shapes.mask[sb]) === 0 || (shapes.category[sb] & shapes.mask[sa]) === 0) {
+          this.filtered++;
+          continue;
+        }
+        if (shapes.sensor[sa] || shapes.sensor[sb]) continue;
+        if (compound) {
+          const ax = x[i] + c[i] * shapes.centroidX[sa] - s[i] * shapes.centroidY[sa];
+          const ay = y[i] + s[i] * shapes.centroidX[sa] + c[i] * shapes.centroidY[sa];
+          const bx = x[j] + c[j] * shapes.centroidX[sb] - s[j] * shapes.centroidY[sb];
+          const by = y[j] + s[j] * shapes.centroidX[sb] + c[j] * shapes.centroidY[sb];
+          const reach = shapes.extent[sa] + shapes.extent[sb] + margin;
+          if ((bx - ax) * (bx - ax) + (by - ay) * (by - ay) >= reach * reach) continue;
+        }
+        this.shapePairs++;
+        const a = this.shapeA.fromStore(shapes, sa, x[i], y[i], c[i], s[i]);
+        const b = this.shapeB.fromStore(shapes, sb, x[j], y[j], c[j], s[j]);
+        const m = this.manifold;
+        collide(a, b, margin, slop, m);
+        if (m.pointCount === 0) continue;
+        touching = true;
+        const friction = Math.sqrt(shapes.friction[sa] * shapes.friction[sb]);
+        const restitution = Math.max(shapes.restitution[sa], shapes.restitution[sb]);
+        const rolling = Math.max(shapes.rollingResistance[sa], shapes.rollingResistance[sb]);
+        const k = list.push(i, j, sa, sb, shapes.handleOf(sa), shapes.handleOf(sb), m, x[i], y[i], x[j], y[j], friction, restitution, rolling);
+        this.warmStart(k, p);
+      }
+    }
+    if (touching) {
+      const { type, asleep } = bodies;
+      if (asleep[i] && !asleep[j] && type[j] !== TypeCode.static) this.noteWake(i);
+      else if (asleep[j] && !asleep[i] && type[i] !== TypeCode.static) this.noteWake(j);
+    }
+    return p;
+  }
+
+  private collideWorld(i: number, entry: number, shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number, p: number): number {
+    const bodies = this.bodies;
+    const rigid = bodies.rigid!;
+    const { x, y } = bodies;
+    const { c, s, firstShape } = rigid;
+    const list = this.current;
+    const segments = world.segments;
+    const isWall = entry >= WALL_ENTRY;
+    const g = isWall ? entry - WALL_ENTRY : entry - SEGMENT_ENTRY;
+    const b = isWall
+      ? boxWall(world, g, this.shapeB)
+      : this.shapeB.capsule(segments.ax[g], segments.ay[g], segments.bx[g], segments.by[g], segments.thickness[g]);
+    const keyB = isWall ? -1 - g : segments.handleOf(g);
+    const otherFriction = isWall ? wallFriction : segments.friction[g];
+    const otherRestitution = isWall ? wallRestitution : segments.restitution[g];
+    const otherCategory = isWall ? 0xffffffff : segments.category[g];
+    const otherMask = isWall ? 0xffffffff : segments.mask[g];
+    p = this.seek(i, WORLD, p);
+    for (let sa = firstShape[i]; sa >= 0; sa = shapes.next[sa]) {
+      if ((shapes.category[sa] & otherMask) === 0 || (otherCategory & shapes.mask[sa]) === 0) continue;
+      if (shapes.sensor[sa]) continue;
+      this.shapePairs++;
+      const a = this.shapeA.fromStore(shapes, sa, x[i], y[i], c[i], s[i]);
+      const m = this.manifold;
+      collide(a, b, margin, slop, m);
+      if (m.pointCount === 0) continue;
+      const friction = Math.sqrt(shapes.friction[sa] * otherFriction);
+      const restitution = Math.max(shapes.restitution[sa], otherRestitution);
+      const k = list.push(i, WORLD, sa, entry, shapes.handleOf(sa), keyB, m, x[i], y[i], 0, 0, friction, restitution, shapes.rollingResistance[sa]);
+      this.warmStart(k, p);
+    }
+    return p;
+  }
+
+  /** Advances p in the previous list to the first contact of pair (i, j) or beyond it. */
+  private seek(i: number, j: number, p: number): number {
+    const prev = this.previous;
+    const jKey = j === WORLD ? Infinity : j;
+    while (p < prev.count) {
+      const pi = prev.bodyA[p];
+      const pj = prev.bodyB[p] === WORLD ? Infinity : prev.bodyB[p];
+      if (pi > i || (pi === i && pj >= jKey)) break;
+      p++;
+    }
+    return p;
+  }
+
+  /** Contact k inherits from the previous step's contact of the same two shapes, if any (from p on). */
+  private warmStart(k: number, p: number): void {
+    const prev = this.previous;
+    const list = this.current;
+    const i = list.bodyA[k];
+    const j = list.bodyB[k];
+    const keyA = list.keyA[k];
+    const keyB = list.keyB[k];
+    for (let q = p; q < prev.count && prev.bodyA[q] === i && prev.bodyB[q] === j; q++) {
+      if (prev.keyA[q] === keyA && prev.keyB[q] === keyB) {
+        list.inherit(k, prev, q);
+        return;
+      }
+    }
+  }
+}

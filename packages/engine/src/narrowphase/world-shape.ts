@@ -1,0 +1,95 @@
+import { MAX_POLYGON_VERTICES, ShapeKind, type ShapeKindCode } from '../shapes/geometry.js';
+import type { ShapeStore } from '../store/shape-store.js';
+import { SHAPE_STRIDE } from '../store/shape-store.js';
+
+/**
+ * A shape placed in the world for one narrow-phase test: its points and edge normals in world
+ * coordinates, and its rounding radius. Every shape kind reads as a rounded convex polygon here
+ * (a circle has one point, a capsule two), so the pair functions take this one form whatever
+ * stores the shape: a body's shape, a static segment, or a wall of the world's box.
+ * Two of these are reused by the narrow-phase: filling one allocates nothing.
+ */
+export class WorldShape {
+  kind: ShapeKindCode = ShapeKind.circle;
+  count = 0;
+  radius = 0;
+  readonly x = new Float64Array(MAX_POLYGON_VERTICES);
+  readonly y = new Float64Array(MAX_POLYGON_VERTICES);
+  readonly nx = new Float64Array(MAX_POLYGON_VERTICES);
+  readonly ny = new Float64Array(MAX_POLYGON_VERTICES);
+
+  /** Shape `slot` of a body whose centre of mass is at (px, py), turned by (c, s). */
+  fromStore(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number): this {
+    const n = shapes.vertexCount[slot];
+    const base = slot * SHAPE_STRIDE;
+    const { vx, vy, nx, ny } = shapes;
+    this.kind = shapes.kind[slot] as ShapeKindCode;
+    this.count = n;
+    this.radius = shapes.radius[slot];
+    for (let i = 0; i < n; i++) {
+      const lx = vx[base + i];
+      const ly = vy[base + i];
+      this.x[i] = px + c * lx - s * ly;
+      this.y[i] = py + s * lx + c * ly;
+      const qx = nx[base + i];
+      const qy = ny[base + i];
+      this.nx[i] = c * qx - s * qy;
+      this.ny[i] = s * qx + c * qy;
+    }
+    return this;
+  }
+
+  /** A circle of radius r at (cx, cy). */
+  circle(cx: number, cy: number, r: number): this {
+    this.kind = ShapeKind.circle;
+    this.count = 1;
+    this.radius = r;
+    this.x[0] = cx;
+    this.y[0] = cy;
+    return this;
+  }
+
+  /** A capsule of radius r around the segment (ax, ay)-(bx, by); a zero-length one is a circle. */
+  capsule(ax: number, ay: number, bx: number, by: number, r: number): this {
+    const ex = bx - ax;
+    const ey = by - ay;
+    const length = Math.sqrt(ex * ex + ey * ey);
+    if (!(length > 0)) return this.circle(ax, ay, r);
+    this.kind = ShapeKind.capsule;
+    this.count = 2;
+    this.radius = r;
+    this.x[0] = ax;
+    this.y[0] = ay;
+    this.x[1] = bx;
+    this.y[1] = by;
+    this.nx[0] = ey / length;
+    this.ny[0] = -ex / length;
+    this.nx[1] = -ey / length;
+    this.ny[1] = ex / length;
+    return this;
+  }
+
+  /** The axis-aligned rectangle [minX, maxX] x [minY, maxY]. */
+  rectangle(minX: number, minY: number, maxX: number, maxY: number): this {
+    this.kind = ShapeKind.polygon;
+    this.count = 4;
+    this.radius = 0;
+    this.x[0] = minX;
+    this.y[0] = minY;
+    this.x[1] = maxX;
+    this.y[1] = minY;
+    this.x[2] = maxX;
+    this.y[2] = maxY;
+    this.x[3] = minX;
+    this.y[3] = maxY;
+    this.nx[0] = 0;
+    this.ny[0] = -1;
+    this.nx[1] = 1;
+    this.ny[1] = 0;
+    this.nx[2] = 0;
+    this.ny[2] = 1;
+    this.nx[3] = -1;
+    this.ny[3] = 0;
+    return this;
+  }
+}

@@ -1,0 +1,194 @@
+import type { BodyStore } from '../store/body-store.js';
+import { TypeCode } from '../store/body-types.js';
+import { ContactList, WORLD } from '../narrowphase/contact-list.js';
+
+export interface ElasticSettings {
+  restitutionThreshold: number;
+  positionCorrection: number;
+  contactSlop: number;
+}
+
+/**
+ * The report's single pass (3.1.5, 5.10; the circle route's contact-solver.ts) for shapes that
+ * turn: each contact in canonical order, from the velocities as earlier contacts left them,
+ *
+ * 1. takes the collision impulse that reverses its points' approach, scaled by restitution e
+ *    (the largest of the two shapes', 0 below the threshold): with one point,
+ *    j = -(1 + e) vn / K, K = 1/ma + 1/mb + (ra x n)^2 / Ia + (rb x n)^2 / Ib; with two, the
+ *    two-point problem is solved as a block (both points, or one, or none take an impulse), so
+ *    that a box landing flat bounces flat instead of rocking. Every point that takes an impulse
+ *    leaves with -e times its approach speed, so at e = 1 without friction each contact keeps
+ *    the kinetic energy, linear plus rotational, to round-off (see the energy test);
+ * 2. with friction, a Coulomb impulse along the tangent at each point, at most mu times its
+ *    normal impulse;
+ * 3. removes the overlap (beyond contactSlop, times positionCorrection) by moving the two bodies
+ *    apart along the normal in proportion to their inverse masses, without turning them: a move
+ *    of position, not velocity, so energy is untouched.
+ *
+ * Sleeping, static and kinematic bodies are infinitely massive here. One pass cannot hold a
+ * stack up (each contact forgets the others); the soft step does (solver: 'soft').
+ */
+export class ElasticPass {
+  solve(bodies: BodyStore, contacts: ContactList, settings: ElasticSettings): void {
+    const { x, y, vx, vy, invMass, type, asleep } = bodies;
+    const rigid = bodies.rigid!;
+    const { angularVelocity, invInertia } = rigid;
+    const count = contacts.count;
+    const threshold = settings.restitutionThreshold;
+    const correction = settings.positionCorrection;
+    const slop = settings.contactSlop;
+    for (let k = 0; k < count; k++) {
+      const a = contacts.bodyA[k];
+      const b = contacts.bodyB[k];
+      const movesA = type[a] === TypeCode.dynamic && asleep[a] === 0;
+      const movesB = b !== WORLD && type[b] === TypeCode.dynamic && asleep[b] === 0;
+      const mA = movesA ? invMass[a] : 0;
+      const iA = movesA ? invInertia[a] : 0;
+      const mB = movesB ? invMass[b] : 0;
+      const iB = movesB ? invInertia[b] : 0;
+      if (mA + mB === 0) continue;
+      let vax = vx[a];
+      let vay = vy[a];
+      let wa = angularVelocity[a];
+      let vbx = b === WORLD ? 0 : vx[b];
+      let vby = b === WORLD ? 0 : vy[b];
+      let wb = b === WORLD ? 0 : angularVelocity[b];
+      const nx = contacts.normalX[k];
+      const ny = contacts.normalY[k];
+      const n = contacts.pointCount[k];
+      const at0 = 2 * k;
+      const r0ax = contacts.anchorAX[at0];
+      const r0ay = contacts.anchorAY[at0];
+      const r0bx = contacts.anchorBX[at0];
+      const r0by = contacts.anchorBY[at0];
+      const rn0a = r0ax * ny - r0ay * nx;
+      const rn0b = r0bx * ny - r0by * nx;
+      const u0 = (vbx - wb * r0by - (vax - wa * r0ay)) * nx + (vby + wb * r0bx - (vay + wa * r0ax)) * ny;
+      let p0 = 0;
+      let p1 = 0;
+      let r1ax = 0;
+      let r1ay = 0;
+      let r1bx = 0;
+      let r1by = 0;
+      let rn1a = 0;
+      let rn1b = 0;
+      let u1 = 0;
+      const k00 = mA + mB + iA * rn0a * rn0a + iB * rn0b * rn0b;
+      if (n === 2) {
+        const at1 = at0 + 1;
+        r1ax = contacts.anchorAX[at1];
+        r1ay = contacts.anchorAY[at1];
+        r1bx = contacts.anchorBX[at1];
+        r1by = contacts.anchorBY[at1];
+        rn1a = r1ax * ny - r1ay * nx;
+        rn1b = r1bx * ny - r1by * nx;
+        u1 = (vbx - wb * r1by - (vax - wa * r1ay)) * nx + (vby + wb * r1bx - (vay + wa * r1ax)) * ny;
+      }
+      const approach = Math.max(-u0, n === 2 ? -u1 : -Infinity);
+      if (approach > 0) {
+        contacts.approachSpeed[at0] = -u0;
+        if (n === 2) contacts.approachSpeed[at0 + 1] = -u1;
+        const e = approach < threshold ? 0 : contacts.restitution[k];
+        const scale = 1 + e;
+        if (n === 1) {
+          if (u0 < 0 && k00 > 0) p0 = (-scale * u0) / k00;
+        } else {
+          const k11 = mA + mB + iA * rn1a * rn1a + iB * rn1b * rn1b;
+          const k01 = mA + mB + iA * rn0a * rn1a + iB * rn0b * rn1b;
+          const det = k00 * k11 - k01 * k01;
+          // Each point's target: u' >= -e u, with complementarity; try both, then each alone.
+          const b0 = scale * u0;
+          const b1 = scale * u1;
+          let solved = false;
+          if (det > 1e-9 * k00 * k11) {
+            const q0 = (-k11 * b0 + k01 * b1) / det;
+            const q1 = (k01 * b0 - k00 * b1) / det;
+            if (q0 >= 0 && q1 >= 0) {
+              p0 = q0;
+              p1 = q1;
+              solved = true;
+            }
+          }
+          if (!solved && k00 > 0) {
+            const q0 = -b0 / k00;
+            if (q0 >= 0 && k01 * q0 + b1 >= 0) {
+              p0 = q0;
+              solved = true;
+            }
+          }
+          if (!solved && k11 > 0) {
+            const q1 = -b1 / k11;
+            if (q1 >= 0 && k01 * q1 + b0 >= 0) {
+              p1 = q1;
+              solved = true;
+            }
+          }
+        }
+        if (p0 !== 0 || p1 !== 0) {
+          const px = (p0 + p1) * nx;
+          const py = (p0 + p1) * ny;
+          vax -= mA * px;
+          vay -= mA * py;
+          vbx += mB * px;
+          vby += mB * py;
+          wa -= iA * (p0 * rn0a + p1 * rn1a);
+          wb += iB * (p0 * rn0b + p1 * rn1b);
+          contacts.normalImpulse[at0] = p0;
+          contacts.totalNormalImpulse[at0] = p0;
+          if (n === 2) {
+            contacts.normalImpulse[at0 + 1] = p1;
+            contacts.totalNormalImpulse[at0 + 1] = p1;
+          }
+        }
+        const friction = contacts.friction[k];
+        if (friction > 0) {
+          const tx = ny;
+          const ty = -nx;
+          for (let p = 0; p < n; p++) {
+            const limit = friction * (p === 0 ? p0 : p1);
+            if (limit === 0) continue;
+            const rax = p === 0 ? r0ax : r1ax;
+            const ray = p === 0 ? r0ay : r1ay;
+            const rbx = p === 0 ? r0bx : r1bx;
+            const rby = p === 0 ? r0by : r1by;
+            const vt = (vbx - wb * rby - (vax - wa * ray)) * tx + (vby + wb * rbx - (vay + wa * rax)) * ty;
+            const rta = rax * ty - ray * tx;
+            const rtb = rbx * ty - rby * tx;
+            const kt = mA + mB + iA * rta * rta + iB * rtb * rtb;
+            let jt = kt > 0 ? -vt / kt : 0;
+            jt = jt < -limit ? -limit : jt > limit ? limit : jt;
+            vax -= mA * jt * tx;
+            vay -= mA * jt * ty;
+            vbx += mB * jt * tx;
+            vby += mB * jt * ty;
+            wa -= iA * jt * rta;
+            wb += iB * jt * rtb;
+          }
+        }
+        if (movesA) {
+          vx[a] = vax;
+          vy[a] = vay;
+          angularVelocity[a] = wa;
+        }
+        if (movesB) {
+          vx[b] = vbx;
+          vy[b] = vby;
+          angularVelocity[b] = wb;
+        }
+      }
+      let deepest = contacts.separation[at0];
+      if (n === 2 && contacts.separation[at0 + 1] < deepest) deepest = contacts.separation[at0 + 1];
+      const excess = -deepest - slop;
+      if (!(excess > 0)) continue;
+      const push = (excess * correction) / (mA + mB);
+      if (movesA) {
+        x[a] -= push * mA * nx;
+        y[a] -= push * mA * ny;
+      }
+      if (movesB) {
+        x[b] += push * mB * nx;
+        y[b] += push * mB * ny;
+      }
+    }
+  }
+}

@@ -1,0 +1,184 @@
+import type { BodyStore } from '../store/body-store.js';
+import type { SegmentStore } from '../store/segment-store.js';
+import type { ShapeStore } from '../store/shape-store.js';
+import { TypeCode } from '../store/body-types.js';
+import type { BroadPhase } from '../broadphase/broadphase.js';
+import { PairSink } from '../store/pair-sink.js';
+import { StaticTree } from '../broadphase/static-tree.js';
+import { ShapeNarrowPhase, SEGMENT_ENTRY, WALL_ENTRY, boxWall, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
+import { WorldShape } from '../narrowphase/world-shape.js';
+import { SoftStep, type SoftSettings } from '../solver/soft-step.js';
+import { ElasticPass, type ElasticSettings } from '../solver/elastic-pass.js';
+import { integrateRigid } from '../integrate/rigid-motion.js';
+import { clearForces } from '../integrate/motion.js';
+import { bodyBounds, shapeBounds } from '../shapes/bounds.js';
+import type { StepStats } from './stats.js';
+import { nowMs } from '../util/timer.js';
+
+export type SolverName = 'auto' | 'elastic' | 'soft';
+export const SOLVER_NAMES: readonly SolverName[] = ['auto', 'elastic', 'soft'];
+
+/** What the shape route reads each step, derived once from the world's options. */
+export interface ShapeRouteSettings {
+  gravity: { x: number; y: number };
+  box: { width: number; height: number } | null;
+  /** 'soft': Box2D v3's soft step; 'elastic': the report's single pass. */
+  solver: 'soft' | 'elastic';
+  explicitEuler: boolean;
+  soft: SoftSettings;
+  elastic: ElasticSettings;
+  /** Speculative distance: contact points are kept up to this far apart. */
+  margin: number;
+  /** The solver's linear slop (Box2D's B2_LINEAR_SLOP), for the narrow-phase's tie-breaking. */
+  slop: number;
+  wallFriction: number;
+  wallRestitution: number;
+}
+
+const bounds = new Float64Array(4);
+
+/**
+ * The step of a world with shapes, as a list of stages over the stores:
+ *
+ *   soft:    broad-phase -> narrow-phase -> solve (sub-steps) -> contain -> report
+ *   elastic: integrate -> broad-phase -> narrow-phase -> solve (one pass) -> contain -> report
+ *
+ * The soft step collides first, from where the bodies stand, and moves them inside its solve with
+ * speculative contacts (Box2D v3's order); the elastic pass keeps the report's order, moving
+ * first and resolving the overlaps found. Static bodies, segments and the box's walls (four thick
+ * rectangles outside it) live in a static tree, rebuilt only when they change; `contain` keeps
+ * every shape inside the box whatever got past the walls.
+ */
+export class ShapeRoute {
+  readonly narrow: ShapeNarrowPhase;
+  readonly pairs: PairSink;
+  readonly tree = new StaticTree();
+  readonly soft = new SoftStep();
+  readonly elastic = new ElasticPass();
+  private treeVersion = -1;
+  private readonly world: WorldShapes;
+  private readonly wall = new WorldShape();
+
+  constructor(
+    private readonly bodies: BodyStore,
+    private readonly shapes: ShapeStore,
+    private readonly segments: SegmentStore,
+    readonly settings: ShapeRouteSettings,
+  ) {
+    this.narrow = new ShapeNarrowPhase(bodies);
+    this.pairs = new PairSink(this.narrow, nowMs);
+    const box = settings.box;
+    this.world = { segments, box, wallThickness: box ? Math.max(box.width, box.height) : 0 };
+  }
+
+  run(dt: number, broad: BroadPhase, staticVersion: number, stats: StepStats): void {
+    const { bodies, settings, narrow, pairs } = this;
+    const t0 = nowMs();
+    const elastic = settings.solver === 'elastic';
+    if (elastic) integrateRigid(bodies, settings.gravity.x, settings.gravity.y, dt, settings.explicitEuler);
+    const t1 = nowMs();
+    if (staticVersion !== this.treeVersion) this.rebuildTree(staticVersion);
+    narrow.begin();
+    pairs.begin();
+    pairs.contactsDirect = false;
+    const pairTests = broad.findPairs(bodies, pairs);
+    pairs.flush();
+    narrow.gatherStatic(this.tree, this.shapes, this.segments);
+    const t2 = nowMs();
+    narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution);
+    const t3 = nowMs();
+    const contacts = narrow.current;
+    if (elastic) this.elastic.solve(bodies, contacts, settings.elastic);
+    else this.soft.solve(bodies, contacts, settings.gravity.x, settings.gravity.y, dt, settings.soft);
+    const t4 = nowMs();
+    if (settings.box) this.contain(settings.box);
+    const t5 = nowMs();
+    for (let k = 0; k < narrow.wakeCount; k++) bodies.wake(narrow.wake[k]);
+    clearForces(bodies);
+    const rigid = bodies.rigid!;
+    rigid.torque.fill(0, 0, bodies.slotCount);
+    const t6 = nowMs();
+    stats.steps++;
+    stats.bodies = bodies.liveCount;
+    stats.pairTests = pairTests;
+    stats.candidatePairs = pairs.total;
+    stats.contacts = contacts.count;
+    stats.segmentContacts = 0;
+    stats.sweptBodies = 0;
+    stats.filteredPairs = narrow.filtered;
+    stats.sleepingBodies = bodies.sleepingCount;
+    stats.integrateMs = t1 - t0;
+    stats.boundaryMs = 0;
+    stats.broadphaseMs = t2 - t1 - pairs.consumerMs;
+    stats.narrowphaseMs = t3 - t2 + pairs.consumerMs;
+    stats.solveMs = t4 - t3;
+    stats.correctMs = t5 - t4;
+    stats.reportMs = t6 - t5;
+    stats.totalMs = t6 - t0;
+  }
+
+  memoryBytes(): number {
+    return this.narrow.memoryBytes() + this.pairs.memoryBytes() + this.tree.memoryBytes() + this.soft.memoryBytes();
+  }
+
+  /** Static bodies' shapes, the segments and the box's walls, each under its entry id. */
+  private rebuildTree(version: number): void {
+    this.treeVersion = version;
+    const { tree, bodies, shapes, segments } = this;
+    const rigid = bodies.rigid!;
+    tree.clear();
+    for (let slot = 0; slot < bodies.slotCount; slot++) {
+      if (bodies.type[slot] !== TypeCode.static) continue;
+      for (let s = rigid.firstShape[slot]; s >= 0; s = shapes.next[s]) {
+        shapeBounds(shapes, s, bodies.x[slot], bodies.y[slot], rigid.c[slot], rigid.s[slot], bounds);
+        tree.add(s, bounds[0], bounds[1], bounds[2], bounds[3]);
+      }
+    }
+    for (let g = 0; g < segments.slotCount; g++) {
+      if (!segments.live[g]) continue;
+      const t = segments.thickness[g];
+      tree.add(
+        SEGMENT_ENTRY + g,
+        Math.min(segments.ax[g], segments.bx[g]) - t,
+        Math.min(segments.ay[g], segments.by[g]) - t,
+        Math.max(segments.ax[g], segments.bx[g]) + t,
+        Math.max(segments.ay[g], segments.by[g]) + t,
+      );
+    }
+    if (this.world.box) {
+      for (let w = 0; w < 4; w++) {
+        const r = boxWall(this.world, w, this.wall);
+        tree.add(WALL_ENTRY + w, r.x[0], r.y[0], r.x[2], r.y[2]);
+      }
+    }
+    tree.finish();
+  }
+
+  /** Moves each moving body whose shapes reach past the box back inside it (centred if it is wider). */
+  private contain(box: { width: number; height: number }): void {
+    const { bodies, shapes } = this;
+    const { x, y, radius, type, slotCount } = bodies;
+    const rigid = bodies.rigid!;
+    const { width, height } = box;
+    for (let i = 0; i < slotCount; i++) {
+      const t = type[i];
+      if (t !== TypeCode.dynamic && t !== TypeCode.kinematic) continue;
+      const px = x[i];
+      const py = y[i];
+      const r = radius[i];
+      if (px - r >= 0 && px + r <= width && py - r >= 0 && py + r <= height) continue;
+      bodyBounds(shapes, rigid.firstShape[i], px, py, rigid.c[i], rigid.s[i], bounds);
+      if (!(bounds[0] <= bounds[2])) continue;
+      x[i] = px + containShift(bounds[0], bounds[2], width);
+      y[i] = py + containShift(bounds[1], bounds[3], height);
+    }
+  }
+}
+
+/** How far to move [lo, hi] to lie within [0, size]: centred when it is wider than that. */
+function containShift(lo: number, hi: number, size: number): number {
+  if (hi - lo > size) return size / 2 - (lo + hi) / 2;
+  if (lo < 0) return -lo;
+  if (hi > size) return size - hi;
+  return 0;
+}
