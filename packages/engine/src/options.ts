@@ -432,5 +432,7 @@ export function shapeRouteSettings(resolved: ResolvedWorldOptions, gravity: Vect
     slop,
     wallFriction: resolved.friction,
     wallRestitution: resolved.restitution,
+    sleeping: { enabled: resolved.sleeping, speed: resolved.sleepSpeedGiven ?? 0.05 * unit, time: resolved.sleepTime },
+    continuous: resolved.continuous,
   };
 }

@@ -295,6 +295,7 @@ export class World {
     const s = this.slot(handle);
     this.disturbances.note(this.bodies, s);
     if (this.bodies.type[s] === TypeCode.static) this.staticVersion++;
+    if (this.shapeRoute && this.bodies.rigid!.flags[s] & BodyFlag.bullet) this.shapeRoute.bullets--;
     this.shapes.removeAll(s);
     this.bodies.remove(s);
     this.geometryVersion++;
@@ -671,7 +672,7 @@ export class World {
     if (dt < 0) throw new RangeError(`dt must be >= 0, got ${dt}`);
     this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
     if (this.shapeRoute) {
-      this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats);
+      this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion);
     } else {
       this.pipeline.run(dt);
       if (this.turning) turnCircles(this.bodies, dt);
@@ -889,6 +890,7 @@ export class World {
     rigid.angularDamping[slot] = body.angularDamping;
     if (shape) this.shapes.add(slot, shape);
     else this.shapes.update(slot);
+    if (body.flags & BodyFlag.bullet) this.shapeRoute!.bullets++;
     this.shapesChanged(slot);
     return b.handleOf(slot);
   }

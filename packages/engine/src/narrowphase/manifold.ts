@@ -3,9 +3,10 @@
  * shape A to shape B. Each point lies midway between the two surfaces, with the signed distance
  * between them (`separation`, negative when they overlap) and a feature id naming the pair of
  * features (edges, vertices) that made it, so that a point can inherit last step's impulse when
- * the same features touch again (warm starting). Points are kept only when their separation is
- * below the caller's margin: speculative points up to that distance apart let the solver stop
- * bodies before they meet.
+ * the same features touch again (warm starting). A manifold exists when its shapes are closer than
+ * the caller's margin: speculative points up to that distance apart let the solver stop bodies
+ * before they meet (a polygon face keeps its second point even beyond the margin, see
+ * polygon-polygon.ts).
  */
 export class Manifold {
   pointCount = 0;

@@ -24,7 +24,9 @@ import { SegmentDistance } from './segment-distance.js';
  *    meeting, or rounded corners, where the face normal would be wrong): one point along the line
  *    between them.
  * 4. Otherwise the incident edge is clipped to the reference face's span: two points, each
- *    midway between the surfaces, kept when closer than the margin.
+ *    midway between the surfaces. Both are kept even when one lies beyond the margin, as Box2D
+ *    keeps them: a box meeting a thin wall corner first at speed turns about that corner, and
+ *    without a speculative point on its other corner the solve lets that one swing through.
  *
  * A capsule is a two-point polygon here, its two edges the two sides of its segment.
  */
@@ -125,17 +127,18 @@ export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, sl
   // surface lies r1 out along n.
   const lowBack = r2 + sepLow / 2;
   const highBack = r2 + sepHigh / 2;
+  if (sepLow > margin && sepHigh > margin) return;
   // A point's id names the feature of A, then that of B (an edge by its first vertex), whichever
   // polygon is the reference, as Box2D does: when a near tie flips the reference between steps,
   // points made by the same two features keep their ids and so their warm-started impulses.
   if (flip) {
     m.setNormal(-nx, -ny);
-    if (sepHigh < margin) m.addPoint(vHighX - highBack * nx, vHighY - highBack * ny, sepHigh, i21 * 8 + i12);
-    if (sepLow < margin) m.addPoint(vLowX - lowBack * nx, vLowY - lowBack * ny, sepLow, i22 * 8 + i11);
+    m.addPoint(vHighX - highBack * nx, vHighY - highBack * ny, sepHigh, i21 * 8 + i12);
+    m.addPoint(vLowX - lowBack * nx, vLowY - lowBack * ny, sepLow, i22 * 8 + i11);
   } else {
     m.setNormal(nx, ny);
-    if (sepLow < margin) m.addPoint(vLowX - lowBack * nx, vLowY - lowBack * ny, sepLow, i11 * 8 + i22);
-    if (sepHigh < margin) m.addPoint(vHighX - highBack * nx, vHighY - highBack * ny, sepHigh, i12 * 8 + i21);
+    m.addPoint(vLowX - lowBack * nx, vLowY - lowBack * ny, sepLow, i11 * 8 + i22);
+    m.addPoint(vHighX - highBack * nx, vHighY - highBack * ny, sepHigh, i12 * 8 + i21);
   }
 }
 

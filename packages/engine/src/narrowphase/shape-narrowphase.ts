@@ -69,6 +69,7 @@ export class ShapeNarrowPhase implements PairConsumer {
   private readonly shapeA = new WorldShape();
   private readonly shapeB = new WorldShape();
   private readonly manifold = new Manifold();
+  private wakeSpeed = 0;
 
   constructor(private readonly bodies: BodyStore) {}
 
@@ -147,7 +148,8 @@ export class ShapeNarrowPhase implements PairConsumer {
    * Builds the step's contact list in canonical order, inheriting impulses from the last step's.
    * `margin` is the speculative distance (0: touching only), `slop` the solver's linear slop.
    */
-  build(shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number): void {
+  build(shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number, wakeSpeed: number): void {
+    this.wakeSpeed = wakeSpeed;
     const last = this.current;
     this.current = this.previous;
     this.previous = last;
@@ -190,6 +192,16 @@ export class ShapeNarrowPhase implements PairConsumer {
     this.wake[this.wakeCount++] = slot;
   }
 
+  /** Whether the awake body in `slot` wakes a sleeper it touches: kinematic, or faster than the sleep speed (rim included). */
+  private wakes(slot: number): boolean {
+    const bodies = this.bodies;
+    const t = bodies.type[slot];
+    if (t === TypeCode.kinematic) return true;
+    if (t !== TypeCode.dynamic) return false;
+    const v = Math.sqrt(bodies.vx[slot] * bodies.vx[slot] + bodies.vy[slot] * bodies.vy[slot]) + bodies.radius[slot] * Math.abs(bodies.rigid!.angularVelocity[slot]);
+    return v > this.wakeSpeed;
+  }
+
   private collideBodies(i: number, j: number, shapes: ShapeStore, margin: number, slop: number, p: number): number {
     const bodies = this.bodies;
     const rigid = bodies.rigid!;
@@ -223,15 +235,16 @@ export class ShapeNarrowPhase implements PairConsumer {
         touching = true;
         const friction = Math.sqrt(shapes.friction[sa] * shapes.friction[sb]);
         const restitution = Math.max(shapes.restitution[sa], shapes.restitution[sb]);
-        const rolling = Math.max(shapes.rollingResistance[sa], shapes.rollingResistance[sb]);
+        // Box2D's rule: the larger coefficient times the larger radius, a lever arm for the torque.
+        const rolling = Math.max(shapes.rollingResistance[sa], shapes.rollingResistance[sb]) * Math.max(shapes.radius[sa], shapes.radius[sb]);
         const k = list.push(i, j, sa, sb, shapes.handleOf(sa), shapes.handleOf(sb), m, x[i], y[i], x[j], y[j], friction, restitution, rolling);
         this.warmStart(k, p);
       }
     }
     if (touching) {
-      const { type, asleep } = bodies;
-      if (asleep[i] && !asleep[j] && type[j] !== TypeCode.static) this.noteWake(i);
-      else if (asleep[j] && !asleep[i] && type[i] !== TypeCode.static) this.noteWake(j);
+      const asleep = bodies.asleep;
+      if (asleep[i] && !asleep[j] && this.wakes(j)) this.noteWake(i);
+      else if (asleep[j] && !asleep[i] && this.wakes(i)) this.noteWake(j);
     }
     return p;
   }
@@ -264,7 +277,8 @@ export class ShapeNarrowPhase implements PairConsumer {
       if (m.pointCount === 0) continue;
       const friction = Math.sqrt(shapes.friction[sa] * otherFriction);
       const restitution = Math.max(shapes.restitution[sa], otherRestitution);
-      const k = list.push(i, WORLD, sa, entry, shapes.handleOf(sa), keyB, m, x[i], y[i], 0, 0, friction, restitution, shapes.rollingResistance[sa]);
+      const rolling = shapes.rollingResistance[sa] * Math.max(shapes.radius[sa], b.radius);
+      const k = list.push(i, WORLD, sa, entry, shapes.handleOf(sa), keyB, m, x[i], y[i], 0, 0, friction, restitution, rolling);
       this.warmStart(k, p);
     }
     return p;

@@ -49,7 +49,7 @@ export class BodyShapes {
       // The circle keeps the exact mass it was made with; its inertia is that of a uniform disc.
       bodies.setMass(slot, mass, (mass * r * r) / 2);
       bodies.setRadius(slot, r + margin);
-      rigid.shapeCount[slot] = 1;
+      rigid.minExtent[slot] = r;
     }
     bodies.setStaticsApart();
   }
@@ -151,7 +151,9 @@ export class BodyShapes {
     let category = 0;
     let mask = 0;
     let first = true;
+    let minExtent = Infinity;
     for (let s = rigid.firstShape[slot]; s >= 0; s = store.next[s]) {
+      minExtent = Math.min(minExtent, innerExtent(store, s));
       const m = store.density[s] * store.area[s];
       const cx = store.centroidX[s];
       const cy = store.centroidY[s];
@@ -171,6 +173,7 @@ export class BodyShapes {
       first = false;
     }
     const shapeless = rigid.firstShape[slot] < 0;
+    rigid.minExtent[slot] = shapeless ? 0 : minExtent;
     bodies.setMass(slot, shapeless ? 1 : mass, inertia);
     bodies.setRadius(slot, reach + this.margin);
     // A body collides if any of its shapes may: the narrow-phase then checks shape by shape.
@@ -203,4 +206,18 @@ export class BodyShapes {
     }
     rigid.shapeCount[slot]--;
   }
+}
+
+/** How far a shape's surface is from its centroid at the nearest: its radius, plus for a polygon the distance to its nearest edge line. */
+function innerExtent(store: ShapeStore, s: number): number {
+  if (store.kind[s] !== 2) return store.radius[s];
+  const base = s * SHAPE_STRIDE;
+  const cx = store.centroidX[s];
+  const cy = store.centroidY[s];
+  let least = Infinity;
+  for (let i = 0; i < store.vertexCount[s]; i++) {
+    const d = store.nx[base + i] * (store.vx[base + i] - cx) + store.ny[base + i] * (store.vy[base + i] - cy);
+    if (d < least) least = d;
+  }
+  return least + store.radius[s];
 }

@@ -55,8 +55,15 @@ export class ElasticPass {
       let wb = b === WORLD ? 0 : angularVelocity[b];
       const nx = contacts.normalX[k];
       const ny = contacts.normalY[k];
-      const n = contacts.pointCount[k];
-      const at0 = 2 * k;
+      let n = contacts.pointCount[k];
+      let at0 = 2 * k;
+      // Points apart (a polygon face keeps its second point, see polygon-polygon.ts) take no part.
+      if (n === 2 && !(contacts.separation[at0 + 1] < 0)) n = 1;
+      else if (n === 2 && !(contacts.separation[at0] < 0)) {
+        n = 1;
+        at0++;
+      }
+      if (!(contacts.separation[at0] < 0)) continue;
       const r0ax = contacts.anchorAX[at0];
       const r0ay = contacts.anchorAY[at0];
       const r0bx = contacts.anchorBX[at0];
@@ -109,16 +116,20 @@ export class ElasticPass {
               solved = true;
             }
           }
+          // A released point's speed is checked with a tolerance for round-off: a flat face (or
+          // fixed rotation) makes the two points move alike, and a target met to the last bit
+          // must count as met.
+          const tolerance = 1e-9 * (Math.abs(b0) + Math.abs(b1));
           if (!solved && k00 > 0) {
             const q0 = -b0 / k00;
-            if (q0 >= 0 && k01 * q0 + b1 >= 0) {
+            if (q0 >= 0 && k01 * q0 + b1 >= -tolerance) {
               p0 = q0;
               solved = true;
             }
           }
           if (!solved && k11 > 0) {
             const q1 = -b1 / k11;
-            if (q1 >= 0 && k01 * q1 + b0 >= 0) {
+            if (q1 >= 0 && k01 * q1 + b0 >= -tolerance) {
               p1 = q1;
               solved = true;
             }

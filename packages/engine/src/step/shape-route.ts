@@ -10,6 +10,9 @@ import { WorldShape } from '../narrowphase/world-shape.js';
 import { SoftStep, type SoftSettings } from '../solver/soft-step.js';
 import { ElasticPass, type ElasticSettings } from '../solver/elastic-pass.js';
 import { integrateRigid } from '../integrate/rigid-motion.js';
+import { IslandSleep } from '../solver/island-sleep.js';
+import { ContinuousShapes } from '../solver/continuous-shapes.js';
+import type { Queries } from '../query/queries.js';
 import { clearForces } from '../integrate/motion.js';
 import { bodyBounds, shapeBounds } from '../shapes/bounds.js';
 import type { StepStats } from './stats.js';
@@ -33,6 +36,9 @@ export interface ShapeRouteSettings {
   slop: number;
   wallFriction: number;
   wallRestitution: number;
+  sleeping: { enabled: boolean; speed: number; time: number };
+  /** Sweep fast bodies against static things (continuous collision). */
+  continuous: boolean;
 }
 
 const bounds = new Float64Array(4);
@@ -55,6 +61,8 @@ export class ShapeRoute {
   readonly tree = new StaticTree();
   readonly soft = new SoftStep();
   readonly elastic = new ElasticPass();
+  readonly islands = new IslandSleep();
+  readonly continuous = new ContinuousShapes();
   private treeVersion = -1;
   private readonly world: WorldShapes;
   private readonly wall = new WorldShape();
@@ -71,13 +79,18 @@ export class ShapeRoute {
     this.world = { segments, box, wallThickness: box ? Math.max(box.width, box.height) : 0 };
   }
 
-  run(dt: number, broad: BroadPhase, staticVersion: number, stats: StepStats): void {
+  run(dt: number, broad: BroadPhase, staticVersion: number, stats: StepStats, queries: Queries, queryVersion: number): void {
     const { bodies, settings, narrow, pairs } = this;
     const t0 = nowMs();
     const elastic = settings.solver === 'elastic';
-    if (elastic) integrateRigid(bodies, settings.gravity.x, settings.gravity.y, dt, settings.explicitEuler);
-    const t1 = nowMs();
     if (staticVersion !== this.treeVersion) this.rebuildTree(staticVersion);
+    const sweep = settings.continuous && (this.tree.count > 0 || this.bullets > 0);
+    if (sweep) this.continuous.remember(bodies);
+    if (elastic) {
+      integrateRigid(bodies, settings.gravity.x, settings.gravity.y, dt, settings.explicitEuler);
+      if (sweep) this.sweep(queries, -1 - queryVersion, true);
+    }
+    const t1 = nowMs();
     narrow.begin();
     pairs.begin();
     pairs.contactsDirect = false;
@@ -85,14 +98,19 @@ export class ShapeRoute {
     pairs.flush();
     narrow.gatherStatic(this.tree, this.shapes, this.segments);
     const t2 = nowMs();
-    narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution);
+    narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution, settings.sleeping.speed);
     const t3 = nowMs();
     const contacts = narrow.current;
     if (elastic) this.elastic.solve(bodies, contacts, settings.elastic);
-    else this.soft.solve(bodies, contacts, settings.gravity.x, settings.gravity.y, dt, settings.soft);
+    else {
+      this.soft.solve(bodies, contacts, settings.gravity.x, settings.gravity.y, dt, settings.soft);
+      if (sweep) this.sweep(queries, -1 - queryVersion, false);
+    }
     const t4 = nowMs();
     if (settings.box) this.contain(settings.box);
     const t5 = nowMs();
+    const sleeping = settings.sleeping;
+    if (sleeping.enabled) this.islands.update(bodies, contacts, dt, sleeping.speed, sleeping.time);
     for (let k = 0; k < narrow.wakeCount; k++) bodies.wake(narrow.wake[k]);
     clearForces(bodies);
     const rigid = bodies.rigid!;
@@ -104,7 +122,7 @@ export class ShapeRoute {
     stats.candidatePairs = pairs.total;
     stats.contacts = contacts.count;
     stats.segmentContacts = 0;
-    stats.sweptBodies = 0;
+    stats.sweptBodies = sweep ? this.continuous.swept : 0;
     stats.filteredPairs = narrow.filtered;
     stats.sleepingBodies = bodies.sleepingCount;
     stats.integrateMs = t1 - t0;
@@ -117,8 +135,18 @@ export class ShapeRoute {
     stats.totalMs = t6 - t0;
   }
 
+  /** Bullets in the world: the continuous stage runs for them even with nothing static. */
+  bullets = 0;
+
+  /** `queryVersion`: one no later query shares, since bodies move again after the sweep. */
+  private sweep(queries: Queries, queryVersion: number, bounce: boolean): void {
+    const { settings } = this;
+    const threshold = bounce ? settings.elastic.restitutionThreshold : settings.soft.restitutionThreshold;
+    this.continuous.run(this.bodies, this.shapes, this.tree, this.world, this.bullets > 0 ? queries : null, queryVersion, settings.margin, settings.slop, bounce, threshold, settings.wallRestitution);
+  }
+
   memoryBytes(): number {
-    return this.narrow.memoryBytes() + this.pairs.memoryBytes() + this.tree.memoryBytes() + this.soft.memoryBytes();
+    return this.continuous.memoryBytes() + this.narrow.memoryBytes() + this.pairs.memoryBytes() + this.tree.memoryBytes() + this.soft.memoryBytes() + this.islands.memoryBytes();
   }
 
   /** Static bodies' shapes, the segments and the box's walls, each under its entry id. */

@@ -228,11 +228,26 @@ export class BodyStore {
     this.linearDamping[slot] = linearDamping;
   }
 
+  /** Wakes a body, and with it every body of the island it fell asleep with (see RigidColumns.islandNext). */
   wake(slot: number): void {
     this.sleepTime[slot] = 0;
     if (this.asleep[slot]) {
       this.asleep[slot] = 0;
       this.sleepingCount--;
+    }
+    const rigid = this.rigid;
+    if (rigid === null || rigid.islandNext[slot] < 0) return;
+    let s = rigid.islandNext[slot];
+    rigid.islandNext[slot] = -1;
+    while (s !== slot && s >= 0) {
+      const next = rigid.islandNext[s];
+      rigid.islandNext[s] = -1;
+      this.sleepTime[s] = 0;
+      if (this.asleep[s]) {
+        this.asleep[s] = 0;
+        this.sleepingCount--;
+      }
+      s = next;
     }
   }
 

@@ -33,6 +33,13 @@ export class RigidColumns {
   firstShape = new Int32Array(0);
   shapeCount = new Int32Array(0);
   flags = new Uint8Array(0);
+  /** The smallest distance from the centre of one of the body's shapes to its surface: moving less than half this in a step, it cannot pass through anything. */
+  minExtent = new Float64Array(0);
+  /**
+   * The next body of the island this body fell asleep with, around a ring, or -1: waking one
+   * body of a sleeping island wakes the whole ring (see BodyStore.wake).
+   */
+  islandNext = new Int32Array(0);
 
   /** Grows every column to `capacity` slots; new slots get the identity rotation. */
   reserve(capacity: number): void {
@@ -50,7 +57,10 @@ export class RigidColumns {
     this.firstShape = grow(this.firstShape, capacity);
     this.shapeCount = grow(this.shapeCount, capacity);
     this.flags = grow(this.flags, capacity);
+    this.islandNext = grow(this.islandNext, capacity);
+    this.minExtent = grow(this.minExtent, capacity);
     this.c.fill(1, old, capacity);
+    this.islandNext.fill(-1, old, capacity);
     this.firstShape.fill(-1, old, capacity);
     this.capacity = capacity;
   }
@@ -69,9 +79,11 @@ export class RigidColumns {
     this.firstShape[slot] = -1;
     this.shapeCount[slot] = 0;
     this.flags[slot] = 0;
+    this.islandNext[slot] = -1;
+    this.minExtent[slot] = 0;
   }
 
   memoryBytes(): number {
-    return this.c.byteLength * 9 + this.firstShape.byteLength * 2 + this.flags.byteLength;
+    return this.c.byteLength * 10 + this.firstShape.byteLength * 3 + this.flags.byteLength;
   }
 }
