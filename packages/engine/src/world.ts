@@ -251,6 +251,7 @@ export class World {
     if (b.type[slot] === TypeCode.dynamic && !(this.shapes.massWith(slot, shape) > 0)) this.requireMass(handle, this.shapes.massWith(slot, shape));
     this.assertShapeInBox(shape.geometry, b.x[slot], b.y[slot], rigid.c[slot], rigid.s[slot], rigid.localCenterX[slot], rigid.localCenterY[slot]);
     const s = this.shapes.add(slot, shape);
+    if (shape.sensor) this.useEvents();
     this.shapesChanged(slot);
     return this.shapes.store.handleOf(s);
   }
@@ -672,7 +673,7 @@ export class World {
     if (dt < 0) throw new RangeError(`dt must be >= 0, got ${dt}`);
     this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
     if (this.shapeRoute) {
-      this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion);
+      this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion, this.pipeline.events, this.pipeline.settings.solver.hitThreshold);
     } else {
       this.pipeline.run(dt);
       if (this.turning) turnCircles(this.bodies, dt);
@@ -706,7 +707,8 @@ export class World {
 
   /**
    * Touch events of the last step, when the world was created with `contactEvents: true` (begin
-   * and end) or a `hitEventThreshold` (hits). The object and its arrays are reused by every step.
+   * and end) or a `hitEventThreshold` (hits), or holds a sensor (whose overlaps are reported here).
+   * The object and its arrays are reused by every step.
    */
   contactEvents(): ContactEventsView {
     const events = this.pipeline.events;
@@ -831,9 +833,15 @@ export class World {
     const settings = shapeRouteSettings(this.resolved, this.pipeline.settings.gravity);
     settings.explicitEuler = this.pipeline.integrator === 'explicit-euler';
     this.shapes.engage(settings.margin);
+    this.queries.shapes = this.shapes.store;
     this.shapeRoute = new ShapeRoute(this.bodies, this.shapes.store, this.segments, settings);
     this.staticVersion++;
     this.geometryVersion++;
+  }
+
+  /** Sensors report through the events, which a world with a sensor keeps whatever its options. */
+  private useEvents(): void {
+    if (!this.pipeline.events) this.pipeline.events = new ContactEvents();
   }
 
   /** The rotational columns, with each circle made so far given a disc's inertia. */
@@ -890,6 +898,7 @@ export class World {
     rigid.angularDamping[slot] = body.angularDamping;
     if (shape) this.shapes.add(slot, shape);
     else this.shapes.update(slot);
+    if (shape?.sensor) this.useEvents();
     if (body.flags & BodyFlag.bullet) this.shapeRoute!.bullets++;
     this.shapesChanged(slot);
     return b.handleOf(slot);

@@ -58,6 +58,10 @@ export class ShapeNarrowPhase implements PairConsumer {
   filtered = 0;
   /** Shape pairs run through a pair function in the last build. */
   shapePairs = 0;
+  /** Sensor overlaps found this step: (sensor shape slot, visitor shape slot). */
+  sensorSlots = new Int32Array(16);
+  visitorSlots = new Int32Array(16);
+  sensorCount = 0;
   /** Sleepers an awake body touched this step: their islands wake at its end. */
   wake = new Int32Array(16);
   wakeCount = 0;
@@ -78,6 +82,7 @@ export class ShapeNarrowPhase implements PairConsumer {
     this.candidates.clear();
     this.worldCount = 0;
     this.wakeCount = 0;
+    this.sensorCount = 0;
   }
 
   accept(pairs: Int32Array, from: number, to: number): void {
@@ -187,6 +192,15 @@ export class ShapeNarrowPhase implements PairConsumer {
     this.worldEntry[this.worldCount++] = entry;
   }
 
+  private noteSensor(sensor: number, visitor: number): void {
+    if (this.sensorCount === this.sensorSlots.length) {
+      this.sensorSlots = grow(this.sensorSlots, 2 * this.sensorSlots.length);
+      this.visitorSlots = grow(this.visitorSlots, 2 * this.visitorSlots.length);
+    }
+    this.sensorSlots[this.sensorCount] = sensor;
+    this.visitorSlots[this.sensorCount++] = visitor;
+  }
+
   private noteWake(slot: number): void {
     if (this.wakeCount === this.wake.length) this.wake = grow(this.wake, 2 * this.wake.length);
     this.wake[this.wakeCount++] = slot;
@@ -217,7 +231,8 @@ export class ShapeNarrowPhase implements PairConsumer {
           this.filtered++;
           continue;
         }
-        if (shapes.sensor[sa] || shapes.sensor[sb]) continue;
+        const sensing = shapes.sensor[sa] !== shapes.sensor[sb];
+        if (shapes.sensor[sa] && shapes.sensor[sb]) continue;
         if (compound) {
           const ax = x[i] + c[i] * shapes.centroidX[sa] - s[i] * shapes.centroidY[sa];
           const ay = y[i] + s[i] * shapes.centroidX[sa] + c[i] * shapes.centroidY[sa];
@@ -230,6 +245,15 @@ export class ShapeNarrowPhase implements PairConsumer {
         const a = this.shapeA.fromStore(shapes, sa, x[i], y[i], c[i], s[i]);
         const b = this.shapeB.fromStore(shapes, sb, x[j], y[j], c[j], s[j]);
         const m = this.manifold;
+        if (sensing) {
+          // A sensor reports overlap (any point closer than 0) and takes no contact.
+          collide(a, b, 0, slop, m);
+          if (m.pointCount > 0 && (m.separation[0] < 0 || (m.pointCount === 2 && m.separation[1] < 0))) {
+            if (shapes.sensor[sa]) this.noteSensor(sa, sb);
+            else this.noteSensor(sb, sa);
+          }
+          continue;
+        }
         collide(a, b, margin, slop, m);
         if (m.pointCount === 0) continue;
         touching = true;

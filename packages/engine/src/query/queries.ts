@@ -2,6 +2,8 @@ import type { BodyStore } from '../store/body-store.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
 import { LiveExtent } from '../broadphase/live-extent.js';
 import { rayCircle, rayCircleEntry } from './ray-circle.js';
+import type { ShapeStore } from '../store/shape-store.js';
+import { rayNormal, rayShape, shapeContains, shapeOverlapsBox } from './shape-queries.js';
 
 export interface RayHit {
   handle: number;
@@ -26,7 +28,64 @@ export class Queries {
   private stamp = new Uint32Array(0);
   private epoch = 0;
 
+  /** A world's shapes once it has them: bodies are then tested shape by shape, their bounding circles only narrowing the search. */
+  shapes: ShapeStore | null = null;
+
   constructor(private readonly bodies: BodyStore) {}
+
+  /** Whether body `slot` contains the point: its circle, or one of its shapes. */
+  private contains(slot: number, px: number, py: number): boolean {
+    const bodies = this.bodies;
+    const dx = px - bodies.x[slot];
+    const dy = py - bodies.y[slot];
+    const inCircle = dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot];
+    const shapes = this.shapes;
+    if (shapes === null || !inCircle) return inCircle;
+    const rigid = bodies.rigid!;
+    for (let k = rigid.firstShape[slot]; k >= 0; k = shapes.next[k]) {
+      if (shapeContains(shapes, k, bodies.x[slot], bodies.y[slot], rigid.c[slot], rigid.s[slot], px, py)) return true;
+    }
+    return false;
+  }
+
+  /** Whether body `slot` overlaps the box: its circle, or one of its shapes. */
+  private overlaps(slot: number, minX: number, minY: number, maxX: number, maxY: number): boolean {
+    const bodies = this.bodies;
+    const cx = bodies.x[slot];
+    const cy = bodies.y[slot];
+    const dx = cx - Math.min(Math.max(cx, minX), maxX);
+    const dy = cy - Math.min(Math.max(cy, minY), maxY);
+    const nearCircle = dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot];
+    const shapes = this.shapes;
+    if (shapes === null || !nearCircle) return nearCircle;
+    const rigid = bodies.rigid!;
+    for (let k = rigid.firstShape[slot]; k >= 0; k = shapes.next[k]) {
+      if (shapeOverlapsBox(shapes, k, cx, cy, rigid.c[slot], rigid.s[slot], minX, minY, maxX, maxY)) return true;
+    }
+    return false;
+  }
+
+  /** The fraction at which the ray enters body `slot` (its circle or first shape hit), or -1; the normal in rayNormal for shapes. */
+  private rayBody(slot: number, x1: number, y1: number, dx: number, dy: number): number {
+    const bodies = this.bodies;
+    const shapes = this.shapes;
+    if (shapes === null) return rayCircle(x1, y1, dx, dy, bodies.x[slot], bodies.y[slot], bodies.radius[slot]);
+    const rigid = bodies.rigid!;
+    let best = -1;
+    let nx = 0;
+    let ny = 0;
+    for (let k = rigid.firstShape[slot]; k >= 0; k = shapes.next[k]) {
+      const t = rayShape(shapes, k, bodies.x[slot], bodies.y[slot], rigid.c[slot], rigid.s[slot], x1, y1, dx, dy);
+      if (t >= 0 && (best < 0 || t < best)) {
+        best = t;
+        nx = rayNormal.x;
+        ny = rayNormal.y;
+      }
+    }
+    rayNormal.x = nx;
+    rayNormal.y = ny;
+    return best;
+  }
 
   point(version: number, px: number, py: number, mask: number, out: number[]): number[] {
     if (!this.prepare(version)) return out;
@@ -40,9 +99,7 @@ export class Queries {
       for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
         const slot = grid.sortedSlot[m];
         if ((bodies.category[slot] & mask) === 0) continue;
-        const dx = px - bodies.x[slot];
-        const dy = py - bodies.y[slot];
-        if (dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot]) out.push(bodies.handleOf(slot));
+        if (this.contains(slot, px, py)) out.push(bodies.handleOf(slot));
       }
     }
     return out.sort(ascending);
@@ -73,11 +130,7 @@ export class Queries {
       for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
         const slot = grid.sortedSlot[m];
         if ((bodies.category[slot] & mask) === 0) continue;
-        const cx = bodies.x[slot];
-        const cy = bodies.y[slot];
-        const dx = cx - Math.min(Math.max(cx, minX), maxX);
-        const dy = cy - Math.min(Math.max(cy, minY), maxY);
-        if (dx * dx + dy * dy <= bodies.radius[slot] * bodies.radius[slot]) out.push(handles ? bodies.handleOf(slot) : slot);
+        if (this.overlaps(slot, minX, minY, maxX, maxY)) out.push(handles ? bodies.handleOf(slot) : slot);
       }
     }
     return out;
@@ -93,7 +146,9 @@ export class Queries {
     this.walk(version, x1, y1, x2, y2, mask, false);
     if (this.bestFraction === Infinity) return null;
     const t = this.bestFraction;
-    return writeHit(into ?? blankHit(), this.bodies, this.bestSlot, t, x1, y1, x2 - x1, y2 - y1);
+    rayNormal.x = this.bestNormalX;
+    rayNormal.y = this.bestNormalY;
+    return this.write(into ?? blankHit(), this.bestSlot, t, x1, y1, x2 - x1, y2 - y1);
   }
 
   /**
@@ -121,6 +176,20 @@ export class Queries {
   private bestFraction = Infinity;
   private bestSlot = -1;
   private bestHandle = -1;
+  private bestNormalX = 0;
+  private bestNormalY = 0;
+
+  /** A hit on a circle (from its centre), or on a shape (at the entry, with rayShape's normal). */
+  private write(hit: RayHit, slot: number, t: number, x1: number, y1: number, dx: number, dy: number): RayHit {
+    if (this.shapes === null) return writeHit(hit, this.bodies, slot, t, x1, y1, dx, dy);
+    hit.handle = this.bodies.handleOf(slot);
+    hit.fraction = t;
+    hit.x = x1 + t * dx;
+    hit.y = y1 + t * dy;
+    hit.normalX = rayNormal.x;
+    hit.normalY = rayNormal.y;
+    return hit;
+  }
 
   /**
    * Walks the cells the segment crosses (Amanatides & Woo) over a grid widened by one cell on each
@@ -185,17 +254,19 @@ export class Queries {
         stamp[m] = epoch;
         const slot = grid.sortedSlot[m];
         if ((bodies.category[slot] & mask) === 0) continue;
-        const t = rayCircle(x1, y1, dx, dy, bodies.x[slot], bodies.y[slot], bodies.radius[slot]);
+        const t = this.rayBody(slot, x1, y1, dx, dy);
         if (t < 0) continue;
         if (all) {
           const k = this.hitCount++;
           const reused = this.hits[k];
           const hit = typeof reused === 'object' && reused !== null ? reused : (this.hits[k] = this.spareHits.pop() ?? blankHit());
-          writeHit(hit, bodies, slot, t, x1, y1, dx, dy);
+          this.write(hit, slot, t, x1, y1, dx, dy);
         } else if (t < this.bestFraction || (t === this.bestFraction && bodies.handleOf(slot) < this.bestHandle)) {
           this.bestFraction = t;
           this.bestSlot = slot;
           this.bestHandle = bodies.handleOf(slot);
+          this.bestNormalX = rayNormal.x;
+          this.bestNormalY = rayNormal.y;
         }
       }
     }

@@ -67,7 +67,7 @@ export class StepPipeline {
     public broadPhase: BroadPhase,
     public integrator: IntegratorName,
     readonly settings: StepSettings,
-    readonly events: ContactEvents | null,
+    public events: ContactEvents | null,
   ) {
     this.narrowPhase = new NarrowPhase(bodies, this.contacts);
     this.pairs = new PairSink(this.narrowPhase, nowMs);

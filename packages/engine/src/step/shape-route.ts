@@ -13,6 +13,7 @@ import { integrateRigid } from '../integrate/rigid-motion.js';
 import { IslandSleep } from '../solver/island-sleep.js';
 import { ContinuousShapes } from '../solver/continuous-shapes.js';
 import type { Queries } from '../query/queries.js';
+import type { ContactEvents } from '../store/contact-events.js';
 import { clearForces } from '../integrate/motion.js';
 import { bodyBounds, shapeBounds } from '../shapes/bounds.js';
 import type { StepStats } from './stats.js';
@@ -79,9 +80,10 @@ export class ShapeRoute {
     this.world = { segments, box, wallThickness: box ? Math.max(box.width, box.height) : 0 };
   }
 
-  run(dt: number, broad: BroadPhase, staticVersion: number, stats: StepStats, queries: Queries, queryVersion: number): void {
+  run(dt: number, broad: BroadPhase, staticVersion: number, stats: StepStats, queries: Queries, queryVersion: number, events: ContactEvents | null, hitThreshold: number): void {
     const { bodies, settings, narrow, pairs } = this;
     const t0 = nowMs();
+    events?.clear();
     const elastic = settings.solver === 'elastic';
     if (staticVersion !== this.treeVersion) this.rebuildTree(staticVersion);
     const sweep = settings.continuous && (this.tree.count > 0 || this.bullets > 0);
@@ -112,6 +114,7 @@ export class ShapeRoute {
     const sleeping = settings.sleeping;
     if (sleeping.enabled) this.islands.update(bodies, contacts, dt, sleeping.speed, sleeping.time);
     for (let k = 0; k < narrow.wakeCount; k++) bodies.wake(narrow.wake[k]);
+    events?.updateShapes(bodies, this.shapes, this.segments, contacts, hitThreshold, narrow.sensorSlots, narrow.visitorSlots, narrow.sensorCount);
     clearForces(bodies);
     const rigid = bodies.rigid!;
     rigid.torque.fill(0, 0, bodies.slotCount);

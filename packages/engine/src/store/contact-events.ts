@@ -1,8 +1,11 @@
 import type { BodyStore } from './body-store.js';
 import type { SegmentStore } from './segment-store.js';
-import type { ContactBuffer } from './contact-buffer.js';
 import { grownCapacity, grow } from '../util/grow.js';
 import { PairDiff, type SlotOwner } from './pair-diff.js';
+import type { ShapeStore } from './shape-store.js';
+import { ContactBuffer } from './contact-buffer.js';
+import { WORLD, type ContactList } from '../narrowphase/contact-list.js';
+import { SEGMENT_ENTRY, WALL_ENTRY } from '../narrowphase/shape-narrowphase.js';
 
 /** The box walls have no handles: events name them by their BoxWall number. */
 const BOX_WALLS: SlotOwner = { handleOf: (wall) => wall };
@@ -59,6 +62,35 @@ export interface ContactEventsView {
   readonly wallEndCount: number;
   readonly wallEndBody: Readonly<Float64Array>;
   readonly wallEndWall: Readonly<Float64Array>;
+  /**
+   * In a world with shapes, the touches between bodies shape by shape: shapeBeginA[k] and
+   * shapeBeginB[k] are the handles of two shapes (the lower shape slot first) that started
+   * touching this step; a body pair's begin comes with its first shape pair's. A shape's touches
+   * with segments and walls are reported per body in the segment and wall lists. Empty in a
+   * world of circles only.
+   */
+  readonly shapeBeginCount: number;
+  readonly shapeBeginA: Readonly<Float64Array>;
+  readonly shapeBeginB: Readonly<Float64Array>;
+  readonly shapeEndCount: number;
+  readonly shapeEndA: Readonly<Float64Array>;
+  readonly shapeEndB: Readonly<Float64Array>;
+  /** Collisions of two shapes at or above the hit threshold, with their approach speed; B is a segment handle when a shape hit a segment. */
+  readonly shapeHitCount: number;
+  readonly shapeHitA: Readonly<Float64Array>;
+  readonly shapeHitB: Readonly<Float64Array>;
+  readonly shapeHitSpeed: Readonly<Float64Array>;
+  /**
+   * Sensors: sensorBeginSensor[k], a sensor shape's handle, started overlapping the shape
+   * sensorBeginVisitor[k] this step; sensorEnd* likewise for overlaps that ended (or whose shape
+   * was destroyed, or whose visitor fell asleep). Sensors do not see other sensors.
+   */
+  readonly sensorBeginCount: number;
+  readonly sensorBeginSensor: Readonly<Float64Array>;
+  readonly sensorBeginVisitor: Readonly<Float64Array>;
+  readonly sensorEndCount: number;
+  readonly sensorEndSensor: Readonly<Float64Array>;
+  readonly sensorEndVisitor: Readonly<Float64Array>;
 }
 
 /** Hits of one kind: what hit (a), what it hit (b), both as handles or wall numbers, and the approach speed. */
@@ -122,6 +154,12 @@ export class ContactEvents implements ContactEventsView {
   private readonly wallHits = new HitList();
   private readonly touchingSegments = new TouchList();
   private readonly touchingWalls = new TouchList();
+  private readonly shapeTouches = new PairDiff();
+  private readonly sensorTouches = new PairDiff();
+  private readonly shapeHits = new HitList();
+  private readonly touchingBodies = new TouchList();
+  private readonly touchingShapes = new ContactBuffer();
+  private readonly sensing = new ContactBuffer();
 
   get hitCount(): number {
     return this.hits.count;
@@ -214,7 +252,59 @@ export class ContactEvents implements ContactEventsView {
     return this.wallTouches.endB;
   }
 
+  get shapeBeginCount(): number {
+    return this.shapeTouches.beginCount;
+  }
+  get shapeBeginA(): Float64Array {
+    return this.shapeTouches.beginA;
+  }
+  get shapeBeginB(): Float64Array {
+    return this.shapeTouches.beginB;
+  }
+  get shapeEndCount(): number {
+    return this.shapeTouches.endCount;
+  }
+  get shapeEndA(): Float64Array {
+    return this.shapeTouches.endA;
+  }
+  get shapeEndB(): Float64Array {
+    return this.shapeTouches.endB;
+  }
+  get shapeHitCount(): number {
+    return this.shapeHits.count;
+  }
+  get shapeHitA(): Float64Array {
+    return this.shapeHits.a;
+  }
+  get shapeHitB(): Float64Array {
+    return this.shapeHits.b;
+  }
+  get shapeHitSpeed(): Float64Array {
+    return this.shapeHits.speed;
+  }
+  get sensorBeginCount(): number {
+    return this.sensorTouches.beginCount;
+  }
+  get sensorBeginSensor(): Float64Array {
+    return this.sensorTouches.beginA;
+  }
+  get sensorBeginVisitor(): Float64Array {
+    return this.sensorTouches.beginB;
+  }
+  get sensorEndCount(): number {
+    return this.sensorTouches.endCount;
+  }
+  get sensorEndSensor(): Float64Array {
+    return this.sensorTouches.endA;
+  }
+  get sensorEndVisitor(): Float64Array {
+    return this.sensorTouches.endB;
+  }
+
   clear(): void {
+    this.shapeTouches.clear();
+    this.sensorTouches.clear();
+    this.shapeHits.count = 0;
     this.touches.clear();
     this.segmentTouches.clear();
     this.wallTouches.clear();
@@ -257,8 +347,84 @@ export class ContactEvents implements ContactEventsView {
     this.wallTouches.update(onWalls.a, onWalls.b, onWalls.count, bodies, BOX_WALLS);
   }
 
+  /**
+   * A step of a world with shapes: touches from its contact list (a contact touches while it has a
+   * manifold, speculative points included, as in Box2D), per body pair, per shape pair and with
+   * segments and walls; hits from the points that took an impulse approaching at `hitThreshold` or
+   * faster; and the sensors' overlaps, (sensor slot, visitor slot) pairs.
+   */
+  updateShapes(
+    bodies: BodyStore,
+    shapes: ShapeStore,
+    segments: SegmentStore,
+    contacts: ContactList,
+    hitThreshold: number,
+    sensorSlots: Int32Array,
+    visitorSlots: Int32Array,
+    sensorCount: number,
+  ): void {
+    const { touchingBodies, touchingSegments, touchingWalls, touchingShapes } = this;
+    touchingBodies.count = 0;
+    touchingSegments.count = 0;
+    touchingWalls.count = 0;
+    touchingShapes.clear();
+    for (let k = 0; k < contacts.count; k++) {
+      const a = contacts.bodyA[k];
+      const b = contacts.bodyB[k];
+      const sa = contacts.shapeA[k];
+      const sb = contacts.shapeB[k];
+      if (b === WORLD) {
+        if (sb >= WALL_ENTRY) {
+          const wall = sb - WALL_ENTRY;
+          // Several shapes of a body on one wall make one touch.
+          if (!(touchingWalls.count > 0 && touchingWalls.a[touchingWalls.count - 1] === a && touchingWalls.b[touchingWalls.count - 1] === wall)) touchingWalls.push(a, wall);
+        } else {
+          const g = sb - SEGMENT_ENTRY;
+          if (!(touchingSegments.count > 0 && touchingSegments.a[touchingSegments.count - 1] === a && touchingSegments.b[touchingSegments.count - 1] === g)) touchingSegments.push(a, g);
+        }
+      } else {
+        if (!(touchingBodies.count > 0 && touchingBodies.a[touchingBodies.count - 1] === a && touchingBodies.b[touchingBodies.count - 1] === b)) touchingBodies.push(a, b);
+        touchingShapes.push(Math.min(sa, sb), Math.max(sa, sb));
+      }
+      let fastest = 0;
+      for (let p = 0; p < contacts.pointCount[k]; p++) {
+        const at = 2 * k + p;
+        if (contacts.totalNormalImpulse[at] > 0 && contacts.approachSpeed[at] > fastest) fastest = contacts.approachSpeed[at];
+      }
+      if (fastest > 0 && fastest >= hitThreshold) {
+        if (b === WORLD) {
+          if (sb >= WALL_ENTRY) this.wallHits.push(bodies.handleOf(a), sb - WALL_ENTRY, fastest);
+          else {
+            this.segmentHits.push(bodies.handleOf(a), segments.handleOf(sb - SEGMENT_ENTRY), fastest);
+            this.shapeHits.push(shapes.handleOf(sa), segments.handleOf(sb - SEGMENT_ENTRY), fastest);
+          }
+        } else {
+          this.hits.push(bodies.handleOf(a), bodies.handleOf(b), fastest);
+          this.shapeHits.push(shapes.handleOf(sa), shapes.handleOf(sb), fastest);
+        }
+      }
+    }
+    // Segment touches diff in (body, segment) order, which the contact list already keeps; shape pairs need sorting.
+    touchingShapes.sortCanonical(shapes.slotCount);
+    this.touches.update(touchingBodies.a, touchingBodies.b, touchingBodies.count, bodies, bodies);
+    this.segmentTouches.update(touchingSegments.a, touchingSegments.b, touchingSegments.count, bodies, segments);
+    this.wallTouches.update(touchingWalls.a, touchingWalls.b, touchingWalls.count, bodies, BOX_WALLS);
+    this.shapeTouches.update(touchingShapes.lo, touchingShapes.hi, touchingShapes.count, shapes, shapes);
+    const sensing = this.sensing;
+    sensing.clear();
+    for (let k = 0; k < sensorCount; k++) sensing.push(sensorSlots[k], visitorSlots[k]);
+    sensing.sortCanonical(shapes.slotCount);
+    this.sensorTouches.update(sensing.lo, sensing.hi, sensing.count, shapes, shapes);
+  }
+
   memoryBytes(): number {
     return (
+      this.shapeTouches.memoryBytes() +
+      this.sensorTouches.memoryBytes() +
+      this.shapeHits.memoryBytes() +
+      this.touchingBodies.memoryBytes() +
+      this.touchingShapes.memoryBytes() +
+      this.sensing.memoryBytes() +
       this.touches.memoryBytes() +
       this.segmentTouches.memoryBytes() +
       this.wallTouches.memoryBytes() +

@@ -1,0 +1,102 @@
+import type { ShapeStore } from '../store/shape-store.js';
+import { ShapeKind } from '../shapes/geometry.js';
+import { WorldShape } from '../narrowphase/world-shape.js';
+import { ShapeDistance } from '../narrowphase/distance.js';
+import { rayCircle } from './ray-circle.js';
+import { rayCapsule } from './ray-capsule.js';
+
+const placed = new WorldShape();
+const probe = new WorldShape();
+const distance = new ShapeDistance();
+
+/** Where the last rayShape hit entered: the outward unit normal there. */
+export const rayNormal = { x: 0, y: 0 };
+
+/** Whether shape `slot` of a body at (px, py) turned (c, s) contains the point (boundary included). */
+export function shapeContains(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, qx: number, qy: number): boolean {
+  placed.fromStore(shapes, slot, px, py, c, s);
+  probe.circle(qx, qy, 0);
+  return distance.compute(placed, probe).distance <= placed.radius;
+}
+
+/** Whether the shape overlaps the box [minX, maxX] x [minY, maxY] (touching included). */
+export function shapeOverlapsBox(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, minX: number, minY: number, maxX: number, maxY: number): boolean {
+  placed.fromStore(shapes, slot, px, py, c, s);
+  probe.rectangle(minX, minY, maxX, maxY);
+  return distance.compute(placed, probe).distance <= placed.radius;
+}
+
+/**
+ * The fraction in [0, 1] at which the segment (x1, y1) + t (dx, dy) enters the shape, or -1; a
+ * start inside the shape is not a hit, as for circles. The entry's normal goes to `rayNormal`.
+ * A polygon without rounding clips the ray against its edges (Cyrus-Beck); a rounded one is the
+ * union of its core and a capsule around each edge, and a ray from outside meets a capsule first.
+ */
+export function rayShape(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, x1: number, y1: number, dx: number, dy: number): number {
+  const g = placed.fromStore(shapes, slot, px, py, c, s);
+  const r = g.radius;
+  if (g.kind === ShapeKind.circle) {
+    const t = rayCircle(x1, y1, dx, dy, g.x[0], g.y[0], r);
+    if (t >= 0) setNormalFrom(x1 + t * dx - g.x[0], y1 + t * dy - g.y[0]);
+    return t;
+  }
+  if (g.kind === ShapeKind.capsule || r > 0) {
+    let best = -1;
+    const edges = g.kind === ShapeKind.capsule ? 1 : g.count;
+    // A start inside the rounded shape is not a hit.
+    probe.circle(x1, y1, 0);
+    if (distance.compute(g, probe).distance <= r) return -1;
+    for (let i = 0; i < edges; i++) {
+      const j = i + 1 === g.count ? 0 : i + 1;
+      const t = rayCapsule(x1, y1, dx, dy, g.x[i], g.y[i], g.x[j], g.y[j], r);
+      if (t >= 0 && (best < 0 || t < best)) {
+        best = t;
+        // The normal from the edge's closest point to the entry point.
+        const hx = x1 + t * dx;
+        const hy = y1 + t * dy;
+        const ex = g.x[j] - g.x[i];
+        const ey = g.y[j] - g.y[i];
+        const lengthSq = ex * ex + ey * ey;
+        let u = lengthSq > 0 ? ((hx - g.x[i]) * ex + (hy - g.y[i]) * ey) / lengthSq : 0;
+        u = u < 0 ? 0 : u > 1 ? 1 : u;
+        setNormalFrom(hx - (g.x[i] + u * ex), hy - (g.y[i] + u * ey));
+      }
+    }
+    return best;
+  }
+  // Cyrus-Beck: the ray's parameter range inside every edge's half-plane.
+  let enter = 0;
+  let exit = 1;
+  let entering = -1;
+  for (let i = 0; i < g.count; i++) {
+    const nx = g.nx[i];
+    const ny = g.ny[i];
+    const numerator = nx * (g.x[i] - x1) + ny * (g.y[i] - y1);
+    const denominator = nx * dx + ny * dy;
+    if (denominator === 0) {
+      if (numerator < 0) return -1;
+      continue;
+    }
+    const t = numerator / denominator;
+    if (denominator < 0) {
+      if (t > enter) {
+        enter = t;
+        entering = i;
+      }
+    } else if (t < exit) {
+      exit = t;
+    }
+    if (exit < enter) return -1;
+  }
+  // No entering edge: the start lies inside.
+  if (entering < 0) return -1;
+  rayNormal.x = g.nx[entering];
+  rayNormal.y = g.ny[entering];
+  return enter;
+}
+
+function setNormalFrom(x: number, y: number): void {
+  const length = Math.sqrt(x * x + y * y);
+  rayNormal.x = length > 0 ? x / length : 0;
+  rayNormal.y = length > 0 ? y / length : 0;
+}
