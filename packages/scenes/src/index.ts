@@ -5,9 +5,16 @@ import { mixed, mixedParams } from './mixed.js';
 import { funnel, funnelParams } from './funnel.js';
 import type { ParamSpecs } from './params.js';
 import type { Scene } from './scene.js';
+import type { ShapeScene } from './shape-scene.js';
+import { pyramid, pyramidParams } from './pyramid.js';
+import { verticalStack, verticalStackParams } from './vertical-stack.js';
+import { cardHouse, cardHouseParams } from './card-house.js';
+import { ramp, rampParams } from './ramp.js';
 
 export { Prng } from './prng.js';
 export { buildWorld, type Scene, type SceneSegment, type BuildOptions, type Layers } from './scene.js';
+export { buildShapeWorld, boxBody, type ShapeScene, type SceneBody, type SceneShape, type ShapeBuildOptions } from './shape-scene.js';
+export { pyramid, pyramidParams, verticalStack, verticalStackParams, cardHouse, cardHouseParams, ramp, rampParams };
 export { resolveParams, type ParamSpec, type ParamSpecs } from './params.js';
 export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams, funnel, funnelParams };
 
@@ -54,4 +61,42 @@ export function buildScene(name: string, params?: Partial<Record<string, number>
     throw new RangeError(`unknown scene '${name}'; scenes: ${SCENE_NAMES.join(', ')}`);
   }
   return SCENES[name as SceneName].build(params);
+}
+
+export interface ShapeSceneDefinition {
+  description: string;
+  params: ParamSpecs;
+  build(params?: Partial<Record<string, number>>): ShapeScene;
+}
+
+/** Scenes of bodies with shapes, by name (see ShapeScene). */
+export const SHAPE_SCENES = {
+  pyramid: {
+    description: "Box2D v3's large_pyramid: 5,050 unit boxes (base 100) on a static ground, friction 0.6",
+    params: pyramidParams,
+    build: pyramid,
+  },
+  'vertical-stack': {
+    description: 'A column of 15 boxes on the ground; massRatio makes the top one heavy',
+    params: verticalStackParams,
+    build: verticalStack,
+  },
+  'card-house': {
+    description: "Box2D v3's card house: thin cards leaning in pairs, five storeys, friction 0.7",
+    params: cardHouseParams,
+    build: cardHouse,
+  },
+  ramp: {
+    description: 'A box on a tilted static ramp: it sticks while tan(angle) <= friction, else slides',
+    params: rampParams,
+    build: ramp,
+  },
+} satisfies Record<string, ShapeSceneDefinition>;
+
+export type ShapeSceneName = keyof typeof SHAPE_SCENES;
+export const SHAPE_SCENE_NAMES = Object.keys(SHAPE_SCENES) as ShapeSceneName[];
+
+export function buildShapeScene(name: string, params?: Partial<Record<string, number>>): ShapeScene {
+  if (!(name in SHAPE_SCENES)) throw new RangeError(`unknown shape scene '${name}'; shape scenes: ${SHAPE_SCENE_NAMES.join(', ')}`);
+  return SHAPE_SCENES[name as ShapeSceneName].build(params);
 }

@@ -45,6 +45,19 @@ export class ContactList {
   totalNormalImpulse = new Float64Array(0);
   /** Approach speed along the normal before the solve (positive when approaching), for hit events. */
   approachSpeed = new Float64Array(0);
+  /**
+   * For recycling (see ShapeNarrowPhase): the two bodies' rotations when the manifold was last
+   * computed, B's centre and rotation relative to A then, and each point's separation then.
+   */
+  cacheAC = new Float64Array(0);
+  cacheAS = new Float64Array(0);
+  cacheBC = new Float64Array(0);
+  cacheBS = new Float64Array(0);
+  relativeX = new Float64Array(0);
+  relativeY = new Float64Array(0);
+  relativeC = new Float64Array(0);
+  relativeS = new Float64Array(0);
+  baseSeparation = new Float64Array(0);
   private capacity = 0;
 
   clear(): void {
@@ -103,6 +116,87 @@ export class ContactList {
       this.tangentImpulse[at] = 0;
       this.totalNormalImpulse[at] = 0;
       this.approachSpeed[at] = 0;
+      this.baseSeparation[at] = m.separation[p];
+    }
+    return k;
+  }
+
+  /** Notes the poses the manifold of contact k was computed at (centres and rotations of A and B). */
+  cache(k: number, ax: number, ay: number, ac: number, as: number, bx: number, by: number, bc: number, bs: number): void {
+    this.cacheAC[k] = ac;
+    this.cacheAS[k] = as;
+    this.cacheBC[k] = bc;
+    this.cacheBS[k] = bs;
+    const dx = bx - ax;
+    const dy = by - ay;
+    // B's centre and rotation in A's frame.
+    this.relativeX[k] = ac * dx + as * dy;
+    this.relativeY[k] = -as * dx + ac * dy;
+    this.relativeC[k] = ac * bc + as * bs;
+    this.relativeS[k] = ac * bs - as * bc;
+  }
+
+  /**
+   * Appends a copy of contact `from` of `previous` whose manifold is kept (recycled): same normal,
+   * points, ids, impulses and cache, anchors turned with their bodies since the cache (by
+   * (dac, das) and (dbc, dbs)), and separations brought up to date from how the anchors moved
+   * apart along the normal, as the soft step's sub-steps do.
+   */
+  recycle(previous: ContactList, from: number, ax: number, ay: number, dac: number, das: number, bx: number, by: number, dbc: number, dbs: number): number {
+    if (this.count === this.capacity) this.grow(this.count + 1);
+    const k = this.count++;
+    this.bodyA[k] = previous.bodyA[from];
+    this.bodyB[k] = previous.bodyB[from];
+    this.shapeA[k] = previous.shapeA[from];
+    this.shapeB[k] = previous.shapeB[from];
+    this.keyA[k] = previous.keyA[from];
+    this.keyB[k] = previous.keyB[from];
+    const n = previous.pointCount[from];
+    this.pointCount[k] = n;
+    const nx = previous.normalX[from];
+    const ny = previous.normalY[from];
+    this.normalX[k] = nx;
+    this.normalY[k] = ny;
+    this.friction[k] = previous.friction[from];
+    this.restitution[k] = previous.restitution[from];
+    this.rollingResistance[k] = previous.rollingResistance[from];
+    this.rollingImpulse[k] = previous.rollingImpulse[from];
+    this.cacheAC[k] = previous.cacheAC[from];
+    this.cacheAS[k] = previous.cacheAS[from];
+    this.cacheBC[k] = previous.cacheBC[from];
+    this.cacheBS[k] = previous.cacheBS[from];
+    this.relativeX[k] = previous.relativeX[from];
+    this.relativeY[k] = previous.relativeY[from];
+    this.relativeC[k] = previous.relativeC[from];
+    this.relativeS[k] = previous.relativeS[from];
+    const dcx = bx - ax;
+    const dcy = by - ay;
+    for (let p = 0; p < n; p++) {
+      const at = 2 * k + p;
+      const was = 2 * from + p;
+      // The anchors as they were cached (undo last step's turn), turned by the motion since.
+      const base = previous.baseSeparation[was];
+      const rAx0 = previous.anchorAX[was];
+      const rAy0 = previous.anchorAY[was];
+      const rBx0 = previous.anchorBX[was];
+      const rBy0 = previous.anchorBY[was];
+      const rAx = dac * rAx0 - das * rAy0;
+      const rAy = das * rAx0 + dac * rAy0;
+      const rBx = dbc * rBx0 - dbs * rBy0;
+      const rBy = dbs * rBx0 + dbc * rBy0;
+      this.anchorAX[at] = rAx0;
+      this.anchorAY[at] = rAy0;
+      this.anchorBX[at] = rBx0;
+      this.anchorBY[at] = rBy0;
+      this.separation[at] = base + (dcx + rBx - rAx) * nx + (dcy + rBy - rAy) * ny;
+      this.pointX[at] = ax + rAx;
+      this.pointY[at] = ay + rAy;
+      this.id[at] = previous.id[was];
+      this.normalImpulse[at] = previous.normalImpulse[was];
+      this.tangentImpulse[at] = previous.tangentImpulse[was];
+      this.totalNormalImpulse[at] = 0;
+      this.approachSpeed[at] = 0;
+      this.baseSeparation[at] = base;
     }
     return k;
   }
@@ -129,7 +223,7 @@ export class ContactList {
   }
 
   memoryBytes(): number {
-    return this.capacity * (4 * 4 + 8 * 2 + 1 + 8 * 6) + 2 * this.capacity * (8 * 11 + 4);
+    return this.capacity * (4 * 4 + 8 * 2 + 1 + 8 * 14) + 2 * this.capacity * (8 * 12 + 4);
   }
 
   private grow(needed: number): void {
@@ -159,6 +253,15 @@ export class ContactList {
     this.tangentImpulse = grow(this.tangentImpulse, 2 * c);
     this.totalNormalImpulse = grow(this.totalNormalImpulse, 2 * c);
     this.approachSpeed = grow(this.approachSpeed, 2 * c);
+    this.cacheAC = grow(this.cacheAC, c);
+    this.cacheAS = grow(this.cacheAS, c);
+    this.cacheBC = grow(this.cacheBC, c);
+    this.cacheBS = grow(this.cacheBS, c);
+    this.relativeX = grow(this.relativeX, c);
+    this.relativeY = grow(this.relativeY, c);
+    this.relativeC = grow(this.relativeC, c);
+    this.relativeS = grow(this.relativeS, c);
+    this.baseSeparation = grow(this.baseSeparation, 2 * c);
     this.capacity = c;
   }
 }

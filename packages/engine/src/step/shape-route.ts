@@ -100,7 +100,8 @@ export class ShapeRoute {
     pairs.flush();
     narrow.gatherStatic(this.tree, this.shapes, this.segments);
     const t2 = nowMs();
-    narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution, settings.sleeping.speed);
+    // Only the soft step keeps manifolds between steps: the elastic pass works on fresh overlaps.
+    narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution, settings.sleeping.speed, elastic ? 0 : 10 * settings.slop, dt);
     const t3 = nowMs();
     const contacts = narrow.current;
     if (elastic) this.elastic.solve(bodies, contacts, settings.elastic);

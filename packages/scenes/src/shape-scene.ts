@@ -1,0 +1,67 @@
+import { World, type ShapeOptions, type WorldOptions } from '@maxgrid/engine';
+
+/** One shape of a scene body: the engine's ShapeOptions, as plain data. */
+export type SceneShape = ShapeOptions;
+
+/** One body of a shape scene, in the scene's units (y pointing down, as on screen). */
+export interface SceneBody {
+  x: number;
+  y: number;
+  angle?: number;
+  vx?: number;
+  vy?: number;
+  angularVelocity?: number;
+  type?: 'static' | 'kinematic' | 'dynamic';
+  shapes: SceneShape[];
+}
+
+/**
+ * A scene of bodies with shapes, as plain data, like `Scene` is for circles: the engine builds it
+ * with buildShapeWorld, and the lab's adapters build the same bodies in each peer engine. Angles
+ * are radians, positive from +x towards +y (clockwise on a y-down screen). Scenes draw no angle
+ * through Math.sin or Math.cos (their rounding is each runtime's own): only the engine turns an
+ * angle into a rotation, with its own functions.
+ */
+export interface ShapeScene {
+  name: string;
+  kind: 'shapes';
+  params: Readonly<Record<string, number>>;
+  /** A box that contains every body, or null for an open world. */
+  bounds: { width: number; height: number } | null;
+  gravity: { x: number; y: number };
+  /** The World options the scene is meant for (friction, restitution, lengthUnit, solver, sleeping...). */
+  world: Pick<WorldOptions, 'friction' | 'restitution' | 'restitutionThreshold' | 'lengthUnit' | 'solver' | 'sleeping' | 'substeps'>;
+  bodies: SceneBody[];
+  /** Static walls besides the bodies, as for createSegment. */
+  segments: { x1: number; y1: number; x2: number; y2: number; thickness: number }[];
+  /** Where to look: the region the interesting bodies occupy, for renderers. */
+  view: { minX: number; minY: number; maxX: number; maxY: number };
+}
+
+/** World options a caller may add to the scene's own (the scene's win where both are given). */
+export type ShapeBuildOptions = Omit<WorldOptions, 'bounds' | 'gravity'>;
+
+/** A maxgrid world holding the scene; body k gets handle k. */
+export function buildShapeWorld(scene: ShapeScene, options: ShapeBuildOptions = {}): World {
+  const world = new World({ ...options, ...scene.world, bounds: scene.bounds, gravity: scene.gravity });
+  world.reserve(scene.bodies.length);
+  for (const body of scene.bodies) {
+    const handle = world.createBody({
+      x: body.x,
+      y: body.y,
+      angle: body.angle,
+      vx: body.vx,
+      vy: body.vy,
+      angularVelocity: body.angularVelocity,
+      type: body.type,
+    });
+    for (const shape of body.shapes) world.addShape(handle, shape);
+  }
+  for (const s of scene.segments) world.createSegment(s);
+  return world;
+}
+
+/** A box body (width x height) as scene data. */
+export function boxBody(x: number, y: number, width: number, height: number, extra: Omit<SceneBody, 'x' | 'y' | 'shapes'> = {}, material: Partial<SceneShape> = {}): SceneBody {
+  return { x, y, ...extra, shapes: [{ kind: 'box', width, height, ...material } as SceneShape] };
+}
