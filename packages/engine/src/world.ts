@@ -261,7 +261,9 @@ export class World {
     const s = this.shapeSlot(shapeHandle);
     const slot = this.shapes.store.body[s];
     const rigid = this.bodies.rigid!;
-    if (this.bodies.type[slot] === TypeCode.dynamic && rigid.shapeCount[slot] > 1) this.requireMass(this.bodies.handleOf(slot), this.shapes.massWithout(slot, s));
+    if (this.bodies.type[slot] === TypeCode.dynamic && rigid.shapeCount[slot] > 1 && !(this.shapes.massWithout(slot, s) > 0)) {
+      this.requireMass(this.bodies.handleOf(slot), this.shapes.massWithout(slot, s));
+    }
     this.disturbances.note(this.bodies, slot);
     this.shapes.remove(s);
     this.shapesChanged(slot);

@@ -1,12 +1,32 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
+import { cosSin } from '../math/trig.js';
+
+const turn = new Float64Array(2);
+
+/**
+ * Turns body i's rotation by the angle a exactly (the engine's own cosine and sine, so the same
+ * bits everywhere): free flight keeps its angular velocity, and the first-order step the soft
+ * solver takes per small sub-step would lag here by atan(w dt) against w dt.
+ */
+function turnBy(c: Float64Array, s: Float64Array, i: number, a: number): void {
+  cosSin(a, turn);
+  const c0 = c[i];
+  const s0 = s[i];
+  const c2 = c0 * turn[0] - s0 * turn[1];
+  const s2 = s0 * turn[0] + c0 * turn[1];
+  // Renormalised, so that round-off does not grow the rotation's length over many steps.
+  const length = Math.sqrt(c2 * c2 + s2 * s2);
+  c[i] = c2 / length;
+  s[i] = s2 / length;
+}
 
 /**
  * Integration of bodies that turn, for the shape route's elastic pass (the soft step integrates
  * within its sub-steps): positions and velocities as the world's integrator says (the report's
  * explicit Euler, or semi-implicit), with forces, damping and gravity scale, and the rotation
- * advanced by its angular velocity without trigonometry (see math/trig.ts advanceRotation).
+ * turned by its angular velocity times dt (turnBy).
  * Kinematic bodies move and turn as they were told; sleepers and static bodies stay.
  */
 export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: number, explicit: boolean): void {
@@ -42,13 +62,7 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
         angularVelocity[i] = w;
       }
     }
-    if (w === 0) continue;
-    const hw = w * dt;
-    const c2 = c[i] - hw * s[i];
-    const s2 = s[i] + hw * c[i];
-    const length = Math.sqrt(c2 * c2 + s2 * s2);
-    c[i] = c2 / length;
-    s[i] = s2 / length;
+    if (w !== 0) turnBy(c, s, i, w * dt);
   }
 }
 
@@ -68,12 +82,6 @@ export function turnCircles(bodies: BodyStore, dt: number): void {
       w = (flags[i] & BodyFlag.fixedRotation) !== 0 ? 0 : (w + invInertia[i] * torque[i] * dt) / (1 + dt * angularDamping[i]);
       angularVelocity[i] = w;
     }
-    if (w === 0) continue;
-    const hw = w * dt;
-    const c2 = c[i] - hw * s[i];
-    const s2 = s[i] + hw * c[i];
-    const length = Math.sqrt(c2 * c2 + s2 * s2);
-    c[i] = c2 / length;
-    s[i] = s2 / length;
+    if (w !== 0) turnBy(c, s, i, w * dt);
   }
 }

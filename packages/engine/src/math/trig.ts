@@ -108,15 +108,16 @@ function atanUnit(t: number): number {
   return base + 2 * atanKernel(half);
 }
 
-/** The angle of (x, y) in [-pi, pi], as Math.atan2 defines it for finite inputs; 0 for (0, 0). */
+/** The angle of (x, y) in [-pi, pi], as Math.atan2 defines it for finite inputs, signed zeros included. */
 export function atan2(y: number, x: number): number {
-  if (y === 0 && x === 0) return 0;
+  if (y === 0 && x === 0) return 1 / x < 0 ? (1 / y < 0 ? -PI : PI) : y;
   const ax = Math.abs(x);
   const ay = Math.abs(y);
   // atan of the smaller over the larger, then reflected into the right octant.
   let a = ay <= ax ? atanUnit(ay / ax) : HALF_PI - atanUnit(ax / ay);
   if (x < 0) a = PI - a;
-  return y < 0 ? -a : a;
+  // The sign of y, -0 included, as Math.atan2 gives it (-pi just below the negative x axis).
+  return y < 0 || 1 / y < 0 ? -a : a;
 }
 
 /**

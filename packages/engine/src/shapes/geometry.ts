@@ -346,6 +346,8 @@ export function checkPolygon(xs: Float64Array, ys: Float64Array, count: number):
     // Distance of point i from the line through its neighbours, positive outside.
     const bulge = ((xs[i] - xs[p]) * ey - (ys[i] - ys[p]) * ex) / length;
     if (Math.abs(bulge) <= tolerance) return { problem: 'collinear', index: reversed ? count - 1 - i : i };
+    // Inside the line through its neighbours: a reflex corner, the point where convexity fails.
+    if (bulge < 0) return { problem: 'concave', index: reversed ? count - 1 - i : i, edge: reversed ? count - 1 - n : p };
   }
   for (let e = 0; e < count; e++) {
     const f = e + 1 === count ? 0 : e + 1;

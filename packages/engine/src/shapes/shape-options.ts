@@ -245,7 +245,9 @@ function polygonPoints(input: unknown): void {
     case 'collinear':
       throw new RangeError(`vertices must not be collinear: ${original(check.index)} lies on the line through its neighbours; remove it`);
     case 'concave':
-      throw new RangeError(`vertices must form a convex polygon in order: ${original(check.index)} lies inside or on the line of the edge from vertices[${check.edge}]`);
+      throw new RangeError(
+        `vertices must form a convex polygon in order: ${original(check.index)} lies on the inner side of the line through vertices[${check.edge}] and its neighbour (a reflex corner, or edges that cross)`,
+      );
   }
 }
 

@@ -1,0 +1,98 @@
+import { describe, expect, it } from 'vitest';
+import { World } from '../src/index.js';
+
+/** Runs `call`, expects `kind` with a message matching `message`, and checks the world did not change. */
+function refuses(world: World, call: () => unknown, kind: typeof TypeError | typeof RangeError, message: RegExp): void {
+  const before = { hash: world.stateHash(), bodies: world.bodyCount, shapes: world.shapeCount };
+  let thrown: unknown;
+  try {
+    call();
+  } catch (error) {
+    thrown = error;
+  }
+  expect(thrown).toBeInstanceOf(kind);
+  expect((thrown as Error).message).toMatch(message);
+  expect({ hash: world.stateHash(), bodies: world.bodyCount, shapes: world.shapeCount }).toEqual(before);
+}
+
+const square = [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1, y: 1 }, { x: 0, y: 1 }];
+
+describe('bad shapes are refused by name, and the world is left as it was', () => {
+  const world = new World();
+  world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+
+  it('polygons: not convex, too many vertices, duplicates, collinear points, no area', () => {
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 1, y: 0.5 }, { x: 2, y: 2 }, { x: 0, y: 2 }] }), RangeError, /convex.*vertices\[2\] \(1, 0.5\)/);
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: Array.from({ length: 9 }, (_, k) => ({ x: Math.cos(k), y: Math.sin(k) })) }), RangeError, /3 to 8 points, got 9/);
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }] }), RangeError, /distinct: vertices\[2\] \(1, 0\) repeats vertices\[1\]/);
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 2, y: 0 }, { x: 1, y: 1 }] }), RangeError, /collinear: vertices\[1\] \(1, 0\)/);
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 2, y: 2 }] }), RangeError, /no area/);
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: NaN }, { x: 0, y: 1 }] }), TypeError, /vertices\[1\]\.y must be a finite number, got NaN/);
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: 'square' as never }), TypeError, /vertices must be an array/);
+    // A self-intersecting star has every turn the same way round and is still refused.
+    const star = [0, 2, 4, 1, 3].map((k) => ({ x: Math.cos((k * 2 * Math.PI) / 5), y: Math.sin((k * 2 * Math.PI) / 5) }));
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: star }), RangeError, /convex/);
+  });
+
+  it('clockwise polygons are accepted and turned counter-clockwise', () => {
+    const h = world.createPolygon({ x: 5, y: 5, vertices: [...square].reverse() });
+    expect(world.getBody(h).mass).toBeCloseTo(1, 12);
+    world.destroyBody(h);
+  });
+
+  it('sizes, angles and materials', () => {
+    refuses(world, () => world.createBox({ x: 0, y: 0, width: 0, height: 1 }), RangeError, /width must be > 0, got 0/);
+    refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, radius: 0.5 }), RangeError, /radius must be less than half/);
+    refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, angle: NaN }), TypeError, /angle must be a finite number, got NaN/);
+    refuses(world, () => world.createCapsule({ x: 0, y: 0, length: -1, radius: 1 }), RangeError, /length must be > 0, got -1/);
+    refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, friction: -0.1 }), RangeError, /friction must be >= 0/);
+    refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, mass: 2, density: 3 }), TypeError, /mass or density, not both/);
+    refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, colour: 'red' } as never), TypeError, /unknown option 'colour'/);
+    refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, type: 'static', vx: 3 }), RangeError, /vx of a static body must be 0/);
+  });
+
+  it('a dynamic body whose shapes have no mass', () => {
+    refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, density: 0 }), RangeError, /needs mass/);
+    const h = world.createBody({ x: 3, y: 0 });
+    refuses(world, () => world.addShape(h, { kind: 'circle', radius: 1, density: 0 }), RangeError, new RegExp(`body ${h} needs mass`));
+    const s = world.addShape(h, { kind: 'circle', radius: 1 });
+    world.addShape(h, { kind: 'box', width: 1, height: 1, density: 0, sensor: true });
+    refuses(world, () => world.destroyShape(s), RangeError, /needs mass: its shapes would give it mass 0/);
+    // Static and kinematic bodies need no mass.
+    const k = world.createBox({ x: 0, y: 9, width: 1, height: 1, density: 0, type: 'kinematic' });
+    refuses(world, () => world.setType(k, 'dynamic'), RangeError, /needs mass/);
+    world.destroyBody(k);
+    world.destroyBody(h);
+  });
+
+  it('shapes on destroyed bodies, stale and foreign handles', () => {
+    const h = world.createBody({ x: 3, y: 0 });
+    const s = world.addShape(h, { kind: 'circle', radius: 1 });
+    world.destroyBody(h);
+    refuses(world, () => world.addShape(h, { kind: 'circle', radius: 1 }), RangeError, /stale/);
+    refuses(world, () => world.getShape(s), RangeError, /shape handle .* is stale/);
+    refuses(world, () => world.destroyShape(s), RangeError, /stale/);
+    refuses(world, () => world.getShape(0), RangeError, /is a body or segment handle, not a shape handle/);
+    refuses(world, () => world.getBody(s), RangeError, /is a shape handle, not a body handle/);
+    refuses(world, () => world.addShape(world.handles()[0], { kind: 'triangle' } as never), RangeError, /kind must be one of/);
+  });
+
+  it('transforms and spins that would break the state', () => {
+    const h = world.handles()[0];
+    refuses(world, () => world.setTransform(h, 0, 0, Infinity), TypeError, /angle must be a finite number/);
+    refuses(world, () => world.setAngularVelocity(h, NaN), TypeError, /angularVelocity must be a finite number/);
+    refuses(world, () => world.applyTorque(h, 1e308), RangeError, /non-finite/);
+    refuses(world, () => world.applyAngularImpulse(h, 1e308), RangeError, /non-finite/);
+    const wall = world.createBox({ x: 0, y: 20, width: 1, height: 1, type: 'static' });
+    refuses(world, () => world.setAngularVelocity(wall, 1), RangeError, /static/);
+    refuses(world, () => world.applyTorque(wall, 1), RangeError, /only dynamic bodies take a torque/);
+  });
+
+  it('shapes must fit the box of a boxed world', () => {
+    const boxed = new World({ bounds: { width: 10, height: 10 } });
+    refuses(boxed, () => boxed.createBox({ x: 1, y: 5, width: 3, height: 1 }), RangeError, /outside the box/);
+    const h = boxed.createBox({ x: 5, y: 5, width: 3, height: 1 });
+    refuses(boxed, () => boxed.setTransform(h, 9, 5, 0), RangeError, /outside the box/);
+    refuses(boxed, () => boxed.addShape(h, { kind: 'circle', radius: 1, offsetX: 5 }), RangeError, /outside the box/);
+  });
+});

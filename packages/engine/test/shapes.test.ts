@@ -1,0 +1,172 @@
+import { describe, expect, it } from 'vitest';
+import { World } from '../src/index.js';
+import { cos, sin, atan2, cosSin } from '../src/math/trig.js';
+
+describe('deterministic trigonometry (the engine never calls Math.sin in a step)', () => {
+  it('cos, sin and atan2 agree with the runtime to a few ulps over many turns', () => {
+    let worst = 0;
+    for (let k = -20000; k <= 20000; k++) {
+      const a = k * 0.0123456789;
+      worst = Math.max(worst, Math.abs(cos(a) - Math.cos(a)), Math.abs(sin(a) - Math.sin(a)));
+      const y = Math.sin(a) * (1 + (k % 7));
+      const x = Math.cos(a) * (1 + (k % 5));
+      worst = Math.max(worst, Math.abs(atan2(y, x) - Math.atan2(y, x)));
+    }
+    // A few units in the last place of results up to pi (one ulp there is 4.4e-16).
+    expect(worst).toBeLessThan(1e-15);
+  });
+
+  it('rotations built from an angle are unit length and turn +x towards +y for positive angles', () => {
+    const out = new Float64Array(2);
+    for (const a of [0, 0.5, 1, Math.PI / 2, 2, Math.PI, -1, 1e4]) {
+      cosSin(a, out);
+      expect(Math.abs(out[0] * out[0] + out[1] * out[1] - 1)).toBeLessThan(1e-15);
+    }
+    cosSin(Math.PI / 2, out);
+    expect(out[1]).toBeCloseTo(1, 15);
+    // The sense of angles, as documented: a body turned by +pi/2 carries its +x axis to +y
+    // (downwards on the engine's y-down screens: a clockwise turn there).
+    const world = new World();
+    const box = world.createBox({ x: 0, y: 0, width: 4, height: 1, angle: Math.PI / 2 });
+    expect(world.queryPoint(0, 1.8)).toEqual([box]);
+    expect(world.queryPoint(1.8, 0)).toEqual([]);
+  });
+});
+
+describe('bodies and shapes', () => {
+  it('a box has the mass and inertia of a uniform rectangle, and turns from its angle', () => {
+    const world = new World();
+    const h = world.createBox({ x: 3, y: -2, width: 2, height: 1, density: 3, angle: 0.25 });
+    const b = world.getBody(h);
+    expect(b.mass).toBeCloseTo(6, 12);
+    expect(b.inertia).toBeCloseTo((6 * (4 + 1)) / 12, 12);
+    expect(b.x).toBe(3);
+    expect(b.y).toBe(-2);
+    expect(b.angle).toBeCloseTo(0.25, 15);
+    expect(b.shapes).toHaveLength(1);
+    expect(world.getShape(b.shapes[0]).kind).toBe('polygon');
+  });
+
+  it('a capsule and a rounded polygon get the mass of the shape that collides (sampled)', () => {
+    const world = new World();
+    const capsule = world.getBody(world.createCapsule({ x: 0, y: 0, length: 2, radius: 0.5 }));
+    expect(capsule.mass).toBeCloseTo(2 * 1 + Math.PI * 0.25, 12);
+    const rounded = world.getBody(world.createBox({ x: 0, y: 0, width: 2.5, height: 2.5, radius: 0.25 }));
+    // Core 2 x 2, perimeter band 8 x 0.25, four quarter discs: exact area.
+    expect(rounded.mass).toBeCloseTo(4 + 2 + Math.PI * 0.0625, 12);
+    // Inertia of that rounded square, measured on a fine grid of cells: 6.3572.
+    expect(rounded.inertia).toBeCloseTo(6.35717, 3);
+  });
+
+  it('a compound L of two boxes has the centre of mass and inertia from both (parallel axes)', () => {
+    const world = new World();
+    const h = world.createBody({ x: 10, y: 0 });
+    world.addShape(h, { kind: 'box', width: 2, height: 1, offsetX: 1, offsetY: 0.5 });
+    world.addShape(h, { kind: 'box', width: 1, height: 2, offsetX: 0.5, offsetY: 2 });
+    const b = world.getBody(h);
+    // Box 1: mass 2 at (1, 0.5); box 2: mass 2 at (0.5, 2); centre (0.75, 1.25) from the origin.
+    expect(b.mass).toBeCloseTo(4, 12);
+    expect(b.centerX).toBeCloseTo(10.75, 12);
+    expect(b.centerY).toBeCloseTo(1.25, 12);
+    expect(b.x).toBeCloseTo(10, 12);
+    const own = (2 * (4 + 1)) / 12 + (2 * (1 + 4)) / 12;
+    const offsets = 2 * (0.25 * 0.25 + 0.75 * 0.75) + 2 * (0.25 * 0.25 + 0.75 * 0.75);
+    expect(b.inertia).toBeCloseTo(own + offsets, 12);
+    // Removing a shape moves the centre back; the origin stays.
+    world.destroyShape(b.shapes[1]);
+    const after = world.getBody(h);
+    expect(after.centerX).toBeCloseTo(11, 12);
+    expect(after.x).toBeCloseTo(10, 12);
+    expect(after.mass).toBeCloseTo(2, 12);
+  });
+
+  it('an offset circle shape sits off the origin, and the body turns about its centre of mass', () => {
+    const world = new World();
+    const h = world.createBody({ x: 0, y: 0, angularVelocity: 1 });
+    world.addShape(h, { kind: 'circle', radius: 1, offsetX: 3 });
+    expect(world.getBody(h).centerX).toBeCloseTo(3, 12);
+    for (let s = 0; s < 60; s++) world.step(1 / 60);
+    const b = world.getBody(h);
+    // The centre stays; the origin swings around it at radius 3.
+    expect(b.centerX).toBeCloseTo(3, 12);
+    expect(Math.hypot(b.x - 3, b.y)).toBeCloseTo(3, 9);
+    expect(b.angle).toBeCloseTo(1, 3);
+  });
+
+  it('setTransform places the origin and angle; a polygon given clockwise is stored counter-clockwise', () => {
+    const world = new World();
+    const h = world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 0, y: 1 }, { x: 1, y: 1 }, { x: 1, y: 0 }] });
+    const shape = world.getShape(world.getBody(h).shapes[0]);
+    let twice = 0;
+    for (let i = 0; i < 4; i++) {
+      const a = shape.vertices[i];
+      const b = shape.vertices[(i + 1) % 4];
+      twice += a.x * b.y - b.x * a.y;
+    }
+    expect(twice).toBeCloseTo(2, 12);
+    world.setTransform(h, 5, 6, 1);
+    const b = world.getBody(h);
+    expect(b.x).toBeCloseTo(5, 12);
+    expect(b.y).toBeCloseTo(6, 12);
+    expect(b.angle).toBeCloseTo(1, 14);
+  });
+
+  it('torque, angular impulse and damping change the spin as I w = impulse', () => {
+    const world = new World();
+    const h = world.createBox({ x: 0, y: 0, width: 2, height: 2 });
+    const inertia = world.getBody(h).inertia;
+    world.applyAngularImpulse(h, 3);
+    expect(world.getBody(h).angularVelocity).toBeCloseTo(3 / inertia, 12);
+    world.applyTorque(h, 6);
+    world.step(1 / 60);
+    expect(world.getBody(h).angularVelocity).toBeCloseTo(3 / inertia + 6 / 60 / inertia, 9);
+    world.setAngularDamping(h, 1);
+    const w0 = world.getBody(h).angularVelocity;
+    world.step(0.1);
+    // Damping acts per sub-step, as in Box2D: four of 0.025 s.
+    expect(world.getBody(h).angularVelocity).toBeCloseTo(w0 / 1.025 ** 4, 9);
+    world.setFixedRotation(h, true);
+    expect(world.getBody(h).angularVelocity).toBe(0);
+    world.applyAngularImpulse(h, 3);
+    expect(world.getBody(h).angularVelocity).toBe(0);
+  });
+
+  it('kinetic energy counts the spin, and angular momentum counts orbit and spin', () => {
+    const world = new World();
+    const h = world.createBox({ x: 2, y: 0, width: 1, height: 1, vy: 3, angularVelocity: 4 });
+    const b = world.getBody(h);
+    expect(world.kineticEnergy()).toBeCloseTo(0.5 * 1 * 9 + 0.5 * b.inertia * 16, 12);
+    expect(world.angularMomentum()).toBeCloseTo(2 * 3 * 1 + b.inertia * 4, 12);
+  });
+
+  it('views expose rotation columns and walk every shape', () => {
+    const world = new World();
+    expect(world.views().c.length).toBe(0);
+    expect(world.views().shapes).toBeNull();
+    world.createBox({ x: 1, y: 1, width: 2, height: 2, angle: 0.3 });
+    world.createCapsule({ x: 5, y: 1, length: 2, radius: 0.5 });
+    const v = world.views();
+    expect(v.c[0]).toBeCloseTo(Math.cos(0.3), 15);
+    const shapes = v.shapes!;
+    let live = 0;
+    for (let k = 0; k < shapes.slotCount; k++) live += shapes.live[k];
+    expect(live).toBe(2);
+    expect(shapes.vertexCount[0]).toBe(4);
+    expect(shapes.kind[1]).toBe(1);
+  });
+
+  it('a world of circles stays on the circle route; a box, or friction, moves it to the shape route', () => {
+    const circles = new World();
+    circles.createCircle({ x: 0, y: 0, radius: 1 });
+    circles.setAngularVelocity(circles.handles()[0], 2);
+    expect(circles.route.route).toBe('circles');
+    circles.step(1);
+    expect(circles.getBody(circles.handles()[0]).angle).toBeCloseTo(2, 12);
+    const mixed = new World();
+    mixed.createCircle({ x: 0, y: 0, radius: 1 });
+    mixed.createBox({ x: 5, y: 0, width: 1, height: 1 });
+    expect(mixed.route).toEqual({ route: 'shapes', solver: 'soft' });
+    expect(new World({ friction: 0.5 }).route.route).toBe('shapes');
+    expect(new World({ solver: 'elastic', friction: 0.5 }).route).toEqual({ route: 'shapes', solver: 'elastic' });
+  });
+});
