@@ -1,0 +1,60 @@
+import { describe, expect, it } from 'vitest';
+import { World } from '../src/index.js';
+
+const DT = 1 / 60;
+
+describe('continuous collision with shapes', () => {
+  it.each([10, 100, 1000, 10_000, 1e6])('a thin static wall stops a spinning box and a capsule at %s m/s', (speed) => {
+    const world = new World({ restitution: 0.5, friction: 0.3 });
+    world.createBox({ x: 10, y: 0, width: 0.05, height: 10, type: 'static' });
+    const box = world.createBox({ x: 0, y: -2, width: 0.5, height: 0.5, vx: speed, angularVelocity: 3 });
+    const capsule = world.createCapsule({ x: 0, y: 2, length: 1, radius: 0.1, vx: speed, angle: 1 });
+    for (let s = 0; s < 120; s++) {
+      world.step(DT);
+      expect(world.getBody(box).x).toBeLessThan(10);
+      expect(world.getBody(capsule).x).toBeLessThan(10);
+    }
+  });
+
+  it('a thin segment and a wall of the box stop them too', () => {
+    const world = new World({ bounds: { width: 20, height: 20 }, restitution: 0.5 });
+    world.createSegment({ x1: 10, y1: 0, x2: 10, y2: 10 });
+    const box = world.createBox({ x: 2, y: 5, width: 0.5, height: 0.5, vx: 5000, angularVelocity: 2 });
+    const low = world.createBox({ x: 2, y: 15, width: 0.5, height: 0.5, vx: 5000, angularVelocity: -2 });
+    for (let s = 0; s < 60; s++) {
+      world.step(DT);
+      expect(world.getBody(box).x).toBeLessThan(10);
+      expect(world.getBody(low).x).toBeLessThan(20);
+    }
+  });
+
+  it('without continuous collision the box tunnels (negative control)', () => {
+    const world = new World({ restitution: 0.5, continuous: false });
+    world.createBox({ x: 10, y: 0, width: 0.05, height: 10, type: 'static' });
+    const box = world.createBox({ x: 0, y: 0, width: 0.5, height: 0.5, vx: 1000 });
+    for (let s = 0; s < 10; s++) world.step(DT);
+    expect(world.getBody(box).x).toBeGreaterThan(10);
+  });
+
+  it('a bullet does not pass through a thin moving plank; an ordinary fast body does', () => {
+    for (const bullet of [true, false]) {
+      const world = new World({ restitution: 0 });
+      const plank = world.createBox({ x: 10, y: 0, width: 0.05, height: 4, density: 10 });
+      const shot = world.createCircle({ x: 0, y: 0, radius: 0.05, vx: 900, bullet });
+      let crossed = false;
+      for (let s = 0; s < 5; s++) {
+        world.step(DT);
+        if (world.getBody(shot).x > world.getBody(plank).x + 0.2) crossed = true;
+      }
+      expect(crossed).toBe(!bullet);
+    }
+  });
+
+  it('a fast box sliding along the ground is not stopped by the ground it rests on', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, friction: 0 });
+    world.createBox({ x: 0, y: 1, width: 4000, height: 2, type: 'static' });
+    const box = world.createBox({ x: 0, y: -0.5, width: 1, height: 1, vx: 300 });
+    for (let s = 0; s < 60; s++) world.step(DT);
+    expect(world.getBody(box).x).toBeGreaterThan(295);
+  });
+});

@@ -1,0 +1,73 @@
+import { describe, expect, it } from 'vitest';
+import { World } from '../src/index.js';
+import { buildShapeScene, buildShapeWorld } from '@maxgrid/scenes';
+
+const DT = 1 / 60;
+
+function sleeping(world: World): number {
+  return world.stats.sleepingBodies;
+}
+
+describe('island sleeping with shapes', () => {
+  it('a settled pyramid falls asleep as a whole, in one step', () => {
+    const world = buildShapeWorld(buildShapeScene('pyramid', { base: 20 }), { sleeping: true });
+    const boxes = world.bodyCount - 1;
+    let first = -1;
+    for (let s = 0; s < 600 && first < 0; s++) {
+      world.step(DT);
+      if (sleeping(world) > 0) first = s;
+    }
+    expect(first).toBeGreaterThan(0);
+    expect(sleeping(world)).toBe(boxes);
+  });
+
+  it('wakes as a whole when something hits it, and falls asleep again', () => {
+    const world = buildShapeWorld(buildShapeScene('pyramid', { base: 20 }), { sleeping: true });
+    const boxes = world.bodyCount - 1;
+    for (let s = 0; s < 300; s++) world.step(DT);
+    expect(sleeping(world)).toBe(boxes);
+    // A ball dropped on the top box (at y = -19.5, x = 0).
+    world.createCircle({ x: 0, y: -30, radius: 0.5, vy: 20, density: 5, friction: 0.6 });
+    const counts: number[] = [];
+    for (let s = 0; s < 60; s++) {
+      world.step(DT);
+      counts.push(sleeping(world));
+    }
+    // From all asleep to none in one step: never part of the pyramid.
+    const woke = counts.indexOf(0);
+    expect(woke).toBeGreaterThan(0);
+    expect(counts.slice(0, woke).every((c) => c === boxes)).toBe(true);
+    for (let s = 0; s < 900; s++) world.step(DT);
+    // The boxes sleep again (the ball may still be rolling away on the long ground).
+    expect(world.handles().slice(1, boxes + 1).every((h) => !world.isAwake(h))).toBe(true);
+  });
+
+  it('a sleeping island wakes whole when one of its bodies is disturbed through the API', () => {
+    const world = buildShapeWorld(buildShapeScene('vertical-stack', { count: 5 }), { sleeping: true });
+    for (let s = 0; s < 300; s++) world.step(DT);
+    expect(sleeping(world)).toBe(5);
+    world.applyImpulse(world.handles()[3], 0.1, 0);
+    expect(sleeping(world)).toBe(5);
+    expect(world.handles().slice(1).every((h) => world.isAwake(h))).toBe(true);
+  });
+
+  it('two piles apart are two islands: hitting one leaves the other asleep', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, sleeping: true });
+    world.createBox({ x: 0, y: 1, width: 100, height: 2, type: 'static' });
+    const left = [0, 1, 2].map((k) => world.createBox({ x: -10, y: -0.5 - k, width: 1, height: 1 }));
+    const right = [0, 1, 2].map((k) => world.createBox({ x: 10, y: -0.5 - k, width: 1, height: 1 }));
+    for (let s = 0; s < 300; s++) world.step(DT);
+    expect(sleeping(world)).toBe(6);
+    world.setVelocity(left[2], 1, 0);
+    expect(left.every((h) => world.isAwake(h))).toBe(true);
+    expect(right.every((h) => !world.isAwake(h))).toBe(true);
+  });
+
+  it('a body resting on a moving kinematic platform stays awake', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.8, restitution: 0, sleeping: true });
+    world.createBox({ x: 0, y: 0, width: 10, height: 1, type: 'kinematic', vx: 0.5 });
+    const box = world.createBox({ x: 0, y: -1, width: 1, height: 1 });
+    for (let s = 0; s < 300; s++) world.step(DT);
+    expect(world.isAwake(box)).toBe(true);
+  });
+});

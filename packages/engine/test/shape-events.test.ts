@@ -1,0 +1,99 @@
+import { describe, expect, it } from 'vitest';
+import { World } from '../src/index.js';
+
+const DT = 1 / 60;
+
+describe('events with shapes', () => {
+  it('a box dropped on the ground: one begin (body and shape), hits at impact, an end when it is lifted away', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, contactEvents: true, hitEventThreshold: 1 });
+    const ground = world.createBox({ x: 0, y: 1, width: 20, height: 2, type: 'static' });
+    const box = world.createBox({ x: 0, y: -3, width: 1, height: 1 });
+    const groundShape = world.getBody(ground).shapes[0];
+    const boxShape = world.getBody(box).shapes[0];
+    let begins = 0;
+    let shapeBegins = 0;
+    let hits = 0;
+    let ends = 0;
+    for (let s = 0; s < 120; s++) {
+      world.step(DT);
+      const e = world.contactEvents();
+      begins += e.beginCount;
+      ends += e.endCount;
+      for (let k = 0; k < e.shapeBeginCount; k++) {
+        expect([e.shapeBeginA[k], e.shapeBeginB[k]].sort()).toEqual([groundShape, boxShape].sort());
+        shapeBegins++;
+      }
+      for (let k = 0; k < e.hitCount; k++) {
+        expect(e.hitSpeed[k]).toBeGreaterThan(5);
+        hits++;
+      }
+    }
+    expect(begins).toBe(1);
+    expect(shapeBegins).toBe(1);
+    expect(hits).toBe(1);
+    expect(ends).toBe(0);
+    world.setTransform(box, 0, -10, 0);
+    world.step(DT);
+    expect(world.contactEvents().endCount).toBe(1);
+    expect(world.contactEvents().shapeEndCount).toBe(1);
+  });
+
+  it('a compound body reports each of its shapes, and its body pair once', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, contactEvents: true });
+    world.createBox({ x: 0, y: 1, width: 20, height: 2, type: 'static' });
+    const table = world.createBody({ x: 0, y: -1 });
+    world.addShape(table, { kind: 'box', width: 0.2, height: 1, offsetX: -1 });
+    world.addShape(table, { kind: 'box', width: 0.2, height: 1, offsetX: 1 });
+    world.addShape(table, { kind: 'box', width: 2.2, height: 0.2, offsetY: -0.6 });
+    let begins = 0;
+    let shapeBegins = 0;
+    for (let s = 0; s < 60; s++) {
+      world.step(DT);
+      begins += world.contactEvents().beginCount;
+      shapeBegins += world.contactEvents().shapeBeginCount;
+    }
+    expect(begins).toBe(1);
+    expect(shapeBegins).toBe(2);
+  });
+
+  it('segments and the box walls report touches and hits with shapes', () => {
+    const world = new World({ bounds: { width: 20, height: 20 }, gravity: { x: 0, y: 10 }, restitution: 0, friction: 0.5, hitEventThreshold: 1 });
+    world.createSegment({ x1: 0, y1: 10, x2: 10, y2: 10 });
+    world.createBox({ x: 5, y: 5, width: 1, height: 1 });
+    world.createBox({ x: 15, y: 5, width: 1, height: 1 });
+    let segmentHits = 0;
+    let wallHits = 0;
+    for (let s = 0; s < 120; s++) {
+      world.step(DT);
+      segmentHits += world.contactEvents().segmentHitCount;
+      wallHits += world.contactEvents().wallHitCount;
+    }
+    expect(segmentHits).toBe(1);
+    expect(wallHits).toBe(1);
+  });
+
+  it('a sensor reports a box passing through it and never collides with it', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, restitution: 0 });
+    const gate = world.createBox({ x: 0, y: 5, width: 4, height: 1, type: 'static', sensor: true });
+    const box = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+    const sensorShape = world.getBody(gate).shapes[0];
+    const boxShape = world.getBody(box).shapes[0];
+    const begins: number[] = [];
+    const ends: number[] = [];
+    for (let s = 0; s < 120; s++) {
+      world.step(DT);
+      const e = world.contactEvents();
+      for (let k = 0; k < e.sensorBeginCount; k++) {
+        expect(e.sensorBeginSensor[k]).toBe(sensorShape);
+        expect(e.sensorBeginVisitor[k]).toBe(boxShape);
+        begins.push(s);
+      }
+      for (let k = 0; k < e.sensorEndCount; k++) ends.push(s);
+    }
+    expect(begins).toHaveLength(1);
+    expect(ends).toHaveLength(1);
+    expect(ends[0]).toBeGreaterThan(begins[0]);
+    // It fell straight through: free fall, untouched by the sensor.
+    expect(world.getBody(box).vy).toBeCloseTo(10 * 2, 6);
+  });
+});

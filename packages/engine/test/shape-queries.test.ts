@@ -1,0 +1,52 @@
+import { describe, expect, it } from 'vitest';
+import { World } from '../src/index.js';
+
+describe('queries with shapes', () => {
+  const world = new World();
+  const box = world.createBox({ x: 0, y: 0, width: 2, height: 1, angle: Math.PI / 4 });
+  const capsule = world.createCapsule({ x: 5, y: 0, length: 2, radius: 0.5 });
+  const triangle = world.createPolygon({ x: 10, y: 0, vertices: [{ x: -1, y: -1 }, { x: 1, y: -1 }, { x: 0, y: 1 }] });
+  const table = world.createBody({ x: 20, y: 0 });
+  world.addShape(table, { kind: 'box', width: 0.2, height: 2, offsetX: -1 });
+  world.addShape(table, { kind: 'box', width: 0.2, height: 2, offsetX: 1 });
+
+  it('points: inside the turned box and the capsule cap, not just inside a bounding circle', () => {
+    expect(world.queryPoint(0.6, 0.6)).toEqual([box]);
+    expect(world.queryPoint(0.9, -0.2)).toEqual([]);
+    expect(world.queryPoint(6.4, 0)).toEqual([capsule]);
+    expect(world.queryPoint(6.6, 0)).toEqual([]);
+    expect(world.queryPoint(10, 0.9)).toEqual([triangle]);
+    expect(world.queryPoint(10.6, 0.9)).toEqual([]);
+    // Between the table's legs lies nothing.
+    expect(world.queryPoint(20, 0)).toEqual([]);
+    expect(world.queryPoint(21, 0.5)).toEqual([table]);
+  });
+
+  it('boxes: overlap with the shape itself', () => {
+    expect(world.queryAABB(-0.2, 0.9, 0.2, 1.2)).toEqual([box]);
+    expect(world.queryAABB(0.8, 0.8, 1.2, 1.2)).toEqual([]);
+    expect(world.queryAABB(19.7, -0.5, 20.3, 0.5)).toEqual([]);
+    expect(world.queryAABB(-100, -100, 100, 100)).toEqual([box, capsule, triangle, table]);
+  });
+
+  it('rays: the first shape entered, its entry point and outward normal', () => {
+    const hit = world.rayCast(-10, 0, 30, 0)!;
+    expect(hit.handle).toBe(box);
+    // The turned box's top edge (local y = 0.5) crosses y = 0 a quarter of the way from its left
+    // corner (-1.06, -0.35) to its right one (0.35, 1.06): at x = -1 / sqrt 2.
+    expect(hit.x).toBeCloseTo(-Math.SQRT1_2, 12);
+    expect(hit.normalX).toBeCloseTo(-Math.SQRT1_2, 12);
+    expect(hit.normalY).toBeCloseTo(Math.SQRT1_2, 12);
+    const all = world.rayCastAll(-10, 0, 30, 0);
+    expect(all.map((h) => h.handle)).toEqual([box, capsule, triangle, table]);
+    expect(all[1].x).toBeCloseTo(3.5, 12);
+    expect(all[1].normalX).toBeCloseTo(-1, 12);
+    expect(all[3].x).toBeCloseTo(18.9, 12);
+    const down = world.rayCast(10, 5, 10, -5)!;
+    expect(down.handle).toBe(triangle);
+    expect(down.y).toBeCloseTo(1, 12);
+    expect(Math.hypot(down.normalX, down.normalY)).toBeCloseTo(1, 12);
+    // From inside a shape the ray ignores it.
+    expect(world.rayCast(5, 0, 5, 10)).toBeNull();
+  });
+});
