@@ -31,39 +31,49 @@ const DQS = 6;
 const DYNAMIC = 7;
 const BODY = 8;
 
-// A contact constraint's fields, then two points of POINT fields each.
+// A contact constraint's fields, then two points of POINT fields each. Constraints are stored in
+// pairs, field by field, the two of a pair side by side (lane 0, lane 1), so that a SIMD kernel
+// loads a field of both with one instruction: field F of constraint i is at
+// (i >> 1) * PAIR + (i & 1) + F, which is why every field offset below is even.
 const NX = 0;
-const NY = 1;
-const FRICTION = 2;
-const RESTITUTION = 3;
-const ROLLING = 4;
-const ROLLING_IMPULSE = 5;
-const ROLLING_MASS = 6;
-const MA = 7;
-const IA = 8;
-const MB = 9;
-const IB = 10;
-const BIAS_RATE = 11;
-const MASS_SCALE = 12;
-const IMPULSE_SCALE = 13;
-const POINTS = 14;
-const CONTACT = 15;
-const P = 16;
+const NY = 2;
+const FRICTION = 4;
+const RESTITUTION = 6;
+const ROLLING = 8;
+const ROLLING_IMPULSE = 10;
+const ROLLING_MASS = 12;
+const MA = 14;
+const IA = 16;
+const MB = 18;
+const IB = 20;
+const BIAS_RATE = 22;
+const MASS_SCALE = 24;
+const IMPULSE_SCALE = 26;
+/** 1 or 2; 0 for the empty lane that pads a colour to whole pairs. */
+const POINTS = 28;
+const CONTACT = 30;
+const P = 32;
 const RAX = 0;
-const RAY = 1;
-const RBX = 2;
-const RBY = 3;
-const BASE_SEPARATION = 4;
-const NORMAL_IMPULSE = 5;
-const TANGENT_IMPULSE = 6;
-const MAX_NORMAL_IMPULSE = 7;
-const NORMAL_MASS = 8;
-const TANGENT_MASS = 9;
-const RELATIVE_VELOCITY = 10;
+const RAY = 2;
+const RBX = 4;
+const RBY = 6;
+const BASE_SEPARATION = 8;
+const NORMAL_IMPULSE = 10;
+const TANGENT_IMPULSE = 12;
+const MAX_NORMAL_IMPULSE = 14;
+const NORMAL_MASS = 16;
+const TANGENT_MASS = 18;
+const RELATIVE_VELOCITY = 20;
 /** The normal speed at the sub-step a point first took an impulse (negative, approaching), or 0. */
-const IMPACT_VELOCITY = 11;
-const POINT = 12;
-const STRIDE = P + 2 * POINT;
+const IMPACT_VELOCITY = 22;
+const POINT = 24;
+/** Doubles per pair of constraints. */
+export const PAIR = P + 2 * POINT;
+
+/** Where constraint i's fields start (add a field offset). */
+function at(i: number): number {
+  return (i >> 1) * PAIR + (i & 1);
+}
 
 /** Colours of the constraint graph, as Box2D's B2_GRAPH_COLOR_COUNT less its overflow; contacts that find none come last. */
 const COLOURS = 23;
@@ -72,6 +82,7 @@ const MOVING_COLOURS = COLOURS - 4;
 const NO_COLOUR = 255;
 /** Strides for visiting contacts when colouring them: the first that does not divide the count. */
 const STRIDE_PRIMES = [7919, 7927, 7933, 7937];
+
 
 /** The most a body turns in one step, as in Box2D (B2_MAX_ROTATION): a quarter of a half turn. */
 const MAX_ROTATION = 0.25 * Math.PI;
@@ -98,7 +109,7 @@ const MAX_ROTATION = 0.25 * Math.PI;
  * its two bodies (Gauss-Seidel), so the result depends on that order alone. Awake dynamic and
  * kinematic bodies take part; static and sleeping ones are the "dummy" body 0, which never moves.
  *
- * Data: body states packed 8 doubles apart and constraints STRIDE doubles apart in two
+ * Data: body states packed 8 doubles apart and constraints in pairs of PAIR doubles, in two
  * Float64Arrays, so that a constraint's solve touches three short runs of memory.
  */
 export class SoftStep {
@@ -109,7 +120,8 @@ export class SoftStep {
   private states = new Float64Array(BODY);
   private constraints = new Float64Array(0);
   private pairs = new Int32Array(0);
-  private constraintCount = 0;
+  /** Constraint lanes in use: twice the pairs, an empty lane closing a colour of odd size. */
+  private laneCount = 0;
   private colourOf = new Uint8Array(0);
   private order = new Int32Array(0);
   private used = new Uint32Array(0);
@@ -191,12 +203,6 @@ export class SoftStep {
     const invInertia = rigid.invInertia;
     const { index, states } = this;
     const count = contacts.count;
-    if (this.constraints.length < count * STRIDE) {
-      const capacity = grownCapacity(this.constraints.length / STRIDE, count);
-      this.constraints = new Float64Array(capacity * STRIDE);
-      this.pairs = new Int32Array(2 * capacity);
-    }
-    const { constraints, pairs } = this;
     // Stiffer against static bodies, so that a pile does not sink into the ground.
     const hertz = Math.min(settings.contactHertz, 0.25 / h);
     const zeta = settings.contactDampingRatio;
@@ -205,15 +211,30 @@ export class SoftStep {
     // take colours from the top down, so that they come last and have the last word, and a pile
     // does not sink into the ground.
     this.colour(contacts, count);
-    const { colourOf, order } = this;
-    const n = this.constraintCount;
-    for (let i = 0; i < n; i++) {
+    const lanes = this.laneCount;
+    if (this.constraints.length < (lanes >> 1) * PAIR) {
+      const capacity = grownCapacity(this.constraints.length / PAIR, lanes >> 1);
+      this.constraints = new Float64Array(capacity * PAIR);
+      this.pairs = new Int32Array(4 * capacity);
+    }
+    const { constraints, pairs, order } = this;
+    for (let i = 0; i < lanes; i++) {
       const k = order[i];
+      const c = at(i);
+      if (k < 0) {
+        // The empty lane of a colour's last pair: no points, on the dummy body.
+        pairs[2 * i] = 0;
+        pairs[2 * i + 1] = 0;
+        constraints[c + POINTS] = 0;
+        constraints[c + RESTITUTION] = 0;
+        constraints[c + ROLLING] = 0;
+        constraints[c + ROLLING_IMPULSE] = 0;
+        continue;
+      }
       const a = contacts.bodyA[k];
       const b = contacts.bodyB[k];
       const ia = index[a];
       const ib = b === WORLD ? 0 : index[b];
-      const c = i * STRIDE;
       pairs[2 * i] = ia;
       pairs[2 * i + 1] = ib;
       const mA = ia === 0 ? 0 : invMass[a];
@@ -256,19 +277,19 @@ export class SoftStep {
       const tx = ny;
       const ty = -nx;
       for (let p = 0; p < pointCount; p++) {
-        const at = 2 * k + p;
+        const point = 2 * k + p;
         const q = c + P + p * POINT;
-        const rAx = contacts.anchorAX[at];
-        const rAy = contacts.anchorAY[at];
-        const rBx = contacts.anchorBX[at];
-        const rBy = contacts.anchorBY[at];
+        const rAx = contacts.anchorAX[point];
+        const rAy = contacts.anchorAY[point];
+        const rBx = contacts.anchorBX[point];
+        const rBy = contacts.anchorBY[point];
         constraints[q + RAX] = rAx;
         constraints[q + RAY] = rAy;
         constraints[q + RBX] = rBx;
         constraints[q + RBY] = rBy;
-        constraints[q + BASE_SEPARATION] = contacts.separation[at] - ((rBx - rAx) * nx + (rBy - rAy) * ny);
-        constraints[q + NORMAL_IMPULSE] = contacts.normalImpulse[at];
-        constraints[q + TANGENT_IMPULSE] = contacts.tangentImpulse[at];
+        constraints[q + BASE_SEPARATION] = contacts.separation[point] - ((rBx - rAx) * nx + (rBy - rAy) * ny);
+        constraints[q + NORMAL_IMPULSE] = contacts.normalImpulse[point];
+        constraints[q + TANGENT_IMPULSE] = contacts.tangentImpulse[point];
         constraints[q + MAX_NORMAL_IMPULSE] = 0;
         const rnA = rAx * ny - rAy * nx;
         const rnB = rBx * ny - rBy * nx;
@@ -283,15 +304,14 @@ export class SoftStep {
         const vn = dvx * nx + dvy * ny;
         constraints[q + RELATIVE_VELOCITY] = vn;
         constraints[q + IMPACT_VELOCITY] = 0;
-        contacts.approachSpeed[at] = -vn;
+        contacts.approachSpeed[point] = -vn;
       }
     }
-    void colourOf;
   }
 
   /**
    * Gives each contact with a moving body a colour (greedy: the lowest free for both bodies), and
-   * lists them in `order` colour by colour, each colour in canonical order; sets constraintCount.
+   * lists them in `order` colour by colour, each colour in canonical order and padded to whole pairs; sets laneCount.
    *
    * Contacts are visited in a scattered order, k -> k * STRIDE_PRIME mod count, not in canonical
    * order: canonical order runs through space (slots follow creation), so a greedy sweep in it
@@ -301,19 +321,16 @@ export class SoftStep {
    * does (0.18). The order depends on the contact count alone, so the result on the contacts.
    */
   private colour(contacts: ContactList, count: number): void {
-    if (this.colourOf.length < count) {
-      this.colourOf = new Uint8Array(grownCapacity(this.colourOf.length, count));
-      this.order = new Int32Array(this.colourOf.length);
-    }
-    const { index, colourOf, order, colourStart } = this;
+    if (this.colourOf.length < count) this.colourOf = new Uint8Array(grownCapacity(this.colourOf.length, count));
+    const { index, colourOf, colourStart } = this;
     if (this.used.length < this.awakeCount + 1) this.used = new Uint32Array(grownCapacity(this.used.length, this.awakeCount + 1));
     const used = this.used;
     used.fill(0, 0, this.awakeCount + 1);
     colourStart.fill(0);
     let stride = 1;
-    for (const prime of STRIDE_PRIMES) {
-      if (count % prime !== 0) {
-        stride = prime;
+    for (let p = 0; p < STRIDE_PRIMES.length; p++) {
+      if (count % STRIDE_PRIMES[p] !== 0) {
+        stride = STRIDE_PRIMES[p];
         break;
       }
     }
@@ -347,13 +364,26 @@ export class SoftStep {
       colourOf[k] = colour;
       if (colour !== NO_COLOUR) colourStart[colour + 1]++;
     }
-    for (let c = 0; c <= COLOURS; c++) colourStart[c + 1] += colourStart[c];
-    this.constraintCount = colourStart[COLOURS + 1];
-    // Counting sort by colour, stable: each colour in canonical order. Contacts with no colour
-    // left (more neighbours than colours) come after all the colours.
+    // Lanes per colour: each colour rounded up to whole pairs; the contacts with no colour left
+    // (more neighbours than colours) may share bodies, so each takes a pair of its own, and they
+    // come after all the colours.
+    let lanes = 0;
+    for (let c = 0; c <= COLOURS; c++) {
+      const size = colourStart[c + 1];
+      colourStart[c + 1] = lanes;
+      lanes += c === COLOURS ? 2 * size : size + (size & 1);
+    }
+    this.laneCount = lanes;
+    if (this.order.length < lanes) this.order = new Int32Array(grownCapacity(this.order.length, lanes));
+    const order = this.order;
+    order.fill(-1, 0, lanes);
+    // Counting sort by colour, stable: each colour in canonical order.
     for (let k = 0; k < count; k++) {
       const colour = colourOf[k];
-      if (colour !== NO_COLOUR) order[colourStart[colour]++] = k;
+      if (colour === NO_COLOUR) continue;
+      const slot = colourStart[colour + 1];
+      order[slot] = k;
+      colourStart[colour + 1] = slot + (colour === COLOURS ? 2 : 1);
     }
   }
 
@@ -378,9 +408,9 @@ export class SoftStep {
 
   private warmStart(): void {
     const { constraints, pairs, states } = this;
-    const n = this.constraintCount;
+    const n = this.laneCount;
     for (let i = 0; i < n; i++) {
-      const c = i * STRIDE;
+      const c = at(i);
       const sa = pairs[2 * i] * BODY;
       const sb = pairs[2 * i + 1] * BODY;
       const mA = constraints[c + MA];
@@ -436,9 +466,9 @@ export class SoftStep {
    */
   private solveContacts(inverseH: number, pushSpeed: number): void {
     const { constraints, pairs, states } = this;
-    const n = this.constraintCount;
+    const n = this.laneCount;
     for (let i = 0; i < n; i++) {
-      const c = i * STRIDE;
+      const c = at(i);
       const sa = pairs[2 * i] * BODY;
       const sb = pairs[2 * i + 1] * BODY;
       const mA = constraints[c + MA];
@@ -538,9 +568,9 @@ export class SoftStep {
    */
   private relaxContacts(inverseH: number): void {
     const { constraints, pairs, states } = this;
-    const n = this.constraintCount;
+    const n = this.laneCount;
     for (let i = 0; i < n; i++) {
-      const c = i * STRIDE;
+      const c = at(i);
       const sa = pairs[2 * i] * BODY;
       const sb = pairs[2 * i + 1] * BODY;
       const mA = constraints[c + MA];
@@ -706,9 +736,9 @@ export class SoftStep {
    */
   private applyRestitution(threshold: number): void {
     const { constraints, pairs, states } = this;
-    const n = this.constraintCount;
+    const n = this.laneCount;
     for (let i = 0; i < n; i++) {
-      const c = i * STRIDE;
+      const c = at(i);
       const e = constraints[c + RESTITUTION];
       if (e === 0) continue;
       const sa = pairs[2 * i] * BODY;
@@ -839,18 +869,19 @@ export class SoftStep {
   /** Keeps the impulses on the contacts, for the next step's warm start and for events. */
   private store(contacts: ContactList): void {
     const { constraints } = this;
-    const n = this.constraintCount;
+    const n = this.laneCount;
     for (let i = 0; i < n; i++) {
-      const c = i * STRIDE;
+      const c = at(i);
+      const pointCount = constraints[c + POINTS];
+      if (pointCount === 0) continue;
       const k = constraints[c + CONTACT];
       contacts.rollingImpulse[k] = constraints[c + ROLLING_IMPULSE];
-      const pointCount = constraints[c + POINTS];
       for (let p = 0; p < pointCount; p++) {
         const q = c + P + p * POINT;
-        const at = 2 * k + p;
-        contacts.normalImpulse[at] = constraints[q + NORMAL_IMPULSE];
-        contacts.tangentImpulse[at] = constraints[q + TANGENT_IMPULSE];
-        contacts.totalNormalImpulse[at] = constraints[q + MAX_NORMAL_IMPULSE];
+        const point = 2 * k + p;
+        contacts.normalImpulse[point] = constraints[q + NORMAL_IMPULSE];
+        contacts.tangentImpulse[point] = constraints[q + TANGENT_IMPULSE];
+        contacts.totalNormalImpulse[point] = constraints[q + MAX_NORMAL_IMPULSE];
       }
     }
   }
