@@ -4,6 +4,7 @@
 // - grid-kernel.ts -> grid-kernel-wasm.ts, and body-kernel.ts -> body-kernel-wasm.ts, each twice:
 //   for a private memory, and for a shared one (a parallel step's grid and body columns, which its
 //   threads all work on).
+// - soft-step.ts -> soft-step-wasm.ts, with 128-bit SIMD, for a private memory.
 // Each output is skipped when it is newer than this script and every file under assembly/ (an
 // entry's imports are not traced, so any change there rebuilds both kernels: a few seconds).
 import { execFileSync } from 'node:child_process';
@@ -38,6 +39,13 @@ const KERNELS = [
     source: 'body-kernel.ts',
     out: 'body-kernel-wasm.ts',
     variants: [{ name: 'BODY_KERNEL_WASM', flags: [] }, sharedVariant('BODY_KERNEL_SHARED_WASM', 'src/store/body-kernel.ts')],
+  },
+  {
+    source: 'soft-step.ts',
+    out: 'soft-step-wasm.ts',
+    // 128-bit SIMD: two constraints per instruction. Runtimes without it fail to compile the
+    // module, and the soft step runs its TypeScript passes (src/solver/soft-step-kernel.ts).
+    variants: [{ name: 'SOFT_STEP_WASM', flags: ['--enable', 'simd'] }],
   },
 ];
 

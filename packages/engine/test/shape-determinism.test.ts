@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { World, BROADPHASE_NAMES } from '../src/index.js';
+import { setSoftStepKernelEnabled } from '../src/solver/soft-step-kernel.js';
 import { buildShapeScene, buildShapeWorld } from '@maxgrid/scenes';
 
 interface Spec {
@@ -98,6 +99,35 @@ describe('determinism with shapes', () => {
     const world = buildShapeWorld(buildShapeScene('pyramid', { base: 30 }));
     for (let s = 0; s < 120; s++) world.step(1 / 60);
     expect(world.stateHash()).toBe(GOLDEN_PYRAMID_30);
+  });
+
+  it('the soft step gives the same bits with its WebAssembly SIMD passes as with its TypeScript ones', () => {
+    const withKernel = (on: boolean, run: () => string): string => {
+      setSoftStepKernelEnabled(on);
+      try {
+        return run();
+      } finally {
+        setSoftStepKernelEnabled(true);
+      }
+    };
+    const pyramid = (): string => {
+      const world = buildShapeWorld(buildShapeScene('pyramid', { base: 30 }));
+      for (let s = 0; s < 120; s++) world.step(1 / 60);
+      return world.stateHash();
+    };
+    expect(withKernel(false, pyramid)).toBe(GOLDEN_PYRAMID_30);
+    expect(withKernel(true, pyramid)).toBe(GOLDEN_PYRAMID_30);
+    fc.assert(
+      fc.property(specArbitrary, (spec) => {
+        const run = (): string => {
+          const world = build({ ...spec, solver: 'soft' }, 'maxgrid');
+          for (let s = 0; s < 60; s++) world.step(1 / 60);
+          return world.stateHash();
+        };
+        expect(withKernel(true, run)).toBe(withKernel(false, run));
+      }),
+      { numRuns: 30, seed: 20261202 },
+    );
   });
 
   it('a warm step grows no buffer (allocation) on a shape scene', () => {

@@ -3,6 +3,7 @@ import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import { ContactList, WORLD } from '../narrowphase/contact-list.js';
 import { grownCapacity } from '../util/grow.js';
+import { SoftStepKernel } from './soft-step-kernel.js';
 
 /** The soft step's tuning, in the world's length units (see WorldOptions.lengthUnit). */
 export interface SoftSettings {
@@ -110,14 +111,18 @@ const MAX_ROTATION = 0.25 * Math.PI;
  * kinematic bodies take part; static and sleeping ones are the "dummy" body 0, which never moves.
  *
  * Data: body states packed 8 doubles apart and constraints in pairs of PAIR doubles, in two
- * Float64Arrays, so that a constraint's solve touches three short runs of memory.
+ * Float64Arrays, so that a constraint's solve touches three short runs of memory. Where the
+ * runtime has WebAssembly SIMD they live in the kernel's memory, and its passes replace the
+ * warm start, solve and relax loops below with the same bits (soft-step-kernel.ts); the choice is
+ * made once, when the soft step is made.
  */
 export class SoftStep {
+  private readonly kernel = SoftStepKernel.create();
   /** Solver index per body slot (1..n), 0 for bodies that do not move in the solve. */
   private index = new Int32Array(0);
   private awake = new Int32Array(0);
   private awakeCount = 0;
-  private states = new Float64Array(BODY);
+  private states = new Float64Array(0);
   private constraints = new Float64Array(0);
   private pairs = new Int32Array(0);
   /** Constraint lanes in use: twice the pairs, an empty lane closing a colour of odd size. */
@@ -143,12 +148,16 @@ export class SoftStep {
     const h = dt / substeps;
     const inverseH = 1 / h;
     this.prepare(bodies, contacts, h, settings);
+    const { kernel, laneCount } = this;
     for (let i = 0; i < substeps; i++) {
       this.integrateVelocities(bodies, gx, gy, h);
-      this.warmStart();
-      this.solveContacts(inverseH, settings.contactPushSpeed);
+      if (kernel !== null) kernel.warmStart(laneCount);
+      else this.warmStart();
+      if (kernel !== null) kernel.solve(laneCount, inverseH, settings.contactPushSpeed);
+      else this.solveContacts(inverseH, settings.contactPushSpeed);
       this.integratePositions(bodies, h, dt, settings.maxLinearSpeed);
-      this.relaxContacts(inverseH);
+      if (kernel !== null) kernel.relax(laneCount, inverseH);
+      else this.relaxContacts(inverseH);
     }
     this.applyRestitution(settings.restitutionThreshold);
     this.store(contacts);
@@ -156,7 +165,26 @@ export class SoftStep {
   }
 
   memoryBytes(): number {
-    return this.index.byteLength + this.awake.byteLength + this.states.byteLength + this.constraints.byteLength + this.pairs.byteLength;
+    const solverBytes = this.kernel !== null ? this.kernel.memoryBytes() : this.states.byteLength + this.constraints.byteLength + this.pairs.byteLength;
+    return this.index.byteLength + this.awake.byteLength + solverBytes;
+  }
+
+  /**
+   * At least these lengths for the states, constraints and pairs. The kernel keeps all three
+   * arrays' contents; the plain arrays are grown only before they are filled.
+   */
+  private reserve(states: number, constraints: number, pairs: number): void {
+    const kernel = this.kernel;
+    if (kernel !== null) {
+      kernel.reserve(states, constraints, pairs);
+      this.states = kernel.states;
+      this.constraints = kernel.constraints;
+      this.pairs = kernel.pairs;
+      return;
+    }
+    if (this.states.length < states) this.states = new Float64Array(states);
+    if (this.constraints.length < constraints) this.constraints = new Float64Array(constraints);
+    if (this.pairs.length < pairs) this.pairs = new Int32Array(pairs);
   }
 
   private gatherBodies(bodies: BodyStore): void {
@@ -178,7 +206,7 @@ export class SoftStep {
       }
     }
     this.awakeCount = n;
-    if (this.states.length < (n + 1) * BODY) this.states = new Float64Array(grownCapacity(this.states.length, (n + 1) * BODY));
+    if (this.states.length < (n + 1) * BODY) this.reserve(grownCapacity(this.states.length, (n + 1) * BODY), 0, 0);
     const states = this.states;
     // Body 0: static, sleeping, or the world's shapes.
     states.fill(0, 0, BODY);
@@ -201,7 +229,7 @@ export class SoftStep {
     const { invMass } = bodies;
     const rigid = bodies.rigid!;
     const invInertia = rigid.invInertia;
-    const { index, states } = this;
+    const index = this.index;
     const count = contacts.count;
     // Stiffer against static bodies, so that a pile does not sink into the ground.
     const hertz = Math.min(settings.contactHertz, 0.25 / h);
@@ -214,10 +242,9 @@ export class SoftStep {
     const lanes = this.laneCount;
     if (this.constraints.length < (lanes >> 1) * PAIR) {
       const capacity = grownCapacity(this.constraints.length / PAIR, lanes >> 1);
-      this.constraints = new Float64Array(capacity * PAIR);
-      this.pairs = new Int32Array(4 * capacity);
+      this.reserve(0, capacity * PAIR, 4 * capacity);
     }
-    const { constraints, pairs, order } = this;
+    const { constraints, pairs, order, states } = this;
     for (let i = 0; i < lanes; i++) {
       const k = order[i];
       const c = at(i);
