@@ -10,11 +10,12 @@ import { pyramid, pyramidParams } from './pyramid.js';
 import { verticalStack, verticalStackParams } from './vertical-stack.js';
 import { cardHouse, cardHouseParams } from './card-house.js';
 import { ramp, rampParams } from './ramp.js';
+import { uniformPolygons, uniformPolygonsParams } from './uniform-polygons.js';
 
 export { Prng } from './prng.js';
 export { buildWorld, type Scene, type SceneSegment, type BuildOptions, type Layers } from './scene.js';
 export { buildShapeWorld, boxBody, type ShapeScene, type SceneBody, type SceneShape, type ShapeBuildOptions } from './shape-scene.js';
-export { pyramid, pyramidParams, verticalStack, verticalStackParams, cardHouse, cardHouseParams, ramp, rampParams };
+export { pyramid, pyramidParams, verticalStack, verticalStackParams, cardHouse, cardHouseParams, ramp, rampParams, uniformPolygons, uniformPolygonsParams };
 export { resolveParams, type ParamSpec, type ParamSpecs } from './params.js';
 export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams, funnel, funnelParams };
 
@@ -90,6 +91,11 @@ export const SHAPE_SCENES = {
     description: 'A box on a tilted static ramp: it sticks while tan(angle) <= friction, else slides',
     params: rampParams,
     build: ramp,
+  },
+  'uniform-polygons': {
+    description: "The uniform scene with shapes: squares and hexagons, circumradius in [4, 8], 25% filled, elastic, frictionless, no gravity",
+    params: uniformPolygonsParams,
+    build: uniformPolygons,
   },
 } satisfies Record<string, ShapeSceneDefinition>;
 
