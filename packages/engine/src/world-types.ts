@@ -67,22 +67,23 @@ export interface QueryOptions {
 
 /**
  * Shapes of a world that has them, indexed by shape slot: walk [0, slotCount) and skip slots
- * whose `live` is 0. A shape's points are vertexX/vertexY[slot * stride + i] for i below
- * vertexCount[slot], relative to its body's centre of mass in the body's frame: the world point is
- * (x + c px - s py, y + s px + c py) with the body's views. `kind` is 0 circle, 1 capsule,
- * 2 polygon; `radius` rounds every kind.
+ * whose `live` is 0. Point i of a shape, for i below vertexCount[slot], is (px, py) =
+ * (vertices[at], vertices[at + 1]) with at = slot * stride + vertexStart + 4 i (the next two
+ * doubles are the normal of the edge from it), relative to its body's centre of mass in the body's
+ * frame: the world point is (x + c px - s py, y + s px + c py) with the body's views. `kind` is 0
+ * circle, 1 capsule, 2 polygon; `radius` rounds every kind.
  */
 export interface ShapeViews {
   readonly slotCount: number;
   readonly stride: number;
+  readonly vertexStart: number;
   readonly live: Readonly<Uint8Array>;
   readonly body: Readonly<Int32Array>;
   readonly kind: Readonly<Uint8Array>;
   readonly vertexCount: Readonly<Uint8Array>;
   readonly radius: Readonly<Float64Array>;
   readonly sensor: Readonly<Uint8Array>;
-  readonly vertexX: Readonly<Float64Array>;
-  readonly vertexY: Readonly<Float64Array>;
+  readonly vertices: Readonly<Float64Array>;
 }
 
 /**

@@ -16,7 +16,7 @@ import { ShapeRoute } from './step/shape-route.js';
 import { turnCircles } from './integrate/rigid-motion.js';
 import { atan2, cosSin } from './math/trig.js';
 import { BodyFlag } from './store/rigid-columns.js';
-import { SHAPE_STRIDE, type NewShape } from './store/shape-store.js';
+import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type NewShape } from './store/shape-store.js';
 import { Geometry, SHAPE_KIND_NAMES } from './shapes/geometry.js';
 import { bodyBounds } from './shapes/bounds.js';
 import {
@@ -109,14 +109,14 @@ export class World {
   private readonly shapeViewsRecord = {
     slotCount: 0,
     stride: SHAPE_STRIDE,
+    vertexStart: SHAPE_VERTICES,
     live: new Uint8Array(0),
     body: new Int32Array(0),
     kind: new Uint8Array(0),
     vertexCount: new Uint8Array(0),
     radius: new Float64Array(0),
     sensor: new Uint8Array(0),
-    vertexX: new Float64Array(0),
-    vertexY: new Float64Array(0),
+    vertices: new Float64Array(0),
   };
 
   constructor(options: WorldOptions = {}) {
@@ -193,7 +193,7 @@ export class World {
       rigid.s[slot] = spin.s;
       rigid.angularVelocity[slot] = spin.angularVelocity;
       rigid.flags[slot] = spin.flags;
-      rigid.angularDamping[slot] = spin.angularDamping;
+      this.bodies.setAngularDamping(slot, spin.angularDamping);
       this.bodies.setMass(slot, body.mass, (body.mass * body.radius * body.radius) / 2);
       if (spin.angularVelocity !== 0) this.turning = true;
     }
@@ -278,7 +278,7 @@ export class World {
     const cx = rigid.localCenterX[slot];
     const cy = rigid.localCenterY[slot];
     const vertices: { x: number; y: number }[] = [];
-    for (let i = 0; i < store.vertexCount[s]; i++) vertices.push({ x: store.vx[s * SHAPE_STRIDE + i] + cx, y: store.vy[s * SHAPE_STRIDE + i] + cy });
+    for (let i = 0, at = s * SHAPE_STRIDE + SHAPE_VERTICES; i < store.vertexCount[s]; i++, at += VERTEX) vertices.push({ x: store.record[at] + cx, y: store.record[at + 1] + cy });
     return {
       kind: SHAPE_KIND_NAMES[store.kind[s]],
       body: this.bodies.handleOf(slot),
@@ -549,7 +549,9 @@ export class World {
 
   setAngularDamping(handle: number, damping: number): void {
     const s = this.slot(handle);
-    this.useRigid().angularDamping[s] = nonNegativeNumber('angularDamping', damping);
+    const value = nonNegativeNumber('angularDamping', damping);
+    this.useRigid();
+    this.bodies.setAngularDamping(s, value);
     this.bodies.wake(s);
   }
 
@@ -787,8 +789,7 @@ export class World {
       sv.vertexCount = store.vertexCount;
       sv.radius = store.radius;
       sv.sensor = store.sensor;
-      sv.vertexX = store.vx;
-      sv.vertexY = store.vy;
+      sv.vertices = store.record;
       v.shapes = sv;
     } else {
       v.shapes = null;
@@ -897,7 +898,7 @@ export class World {
     rigid.s[slot] = body.s;
     rigid.angularVelocity[slot] = body.angularVelocity;
     rigid.flags[slot] = body.flags;
-    rigid.angularDamping[slot] = body.angularDamping;
+    b.setAngularDamping(slot, body.angularDamping);
     if (shape) this.shapes.add(slot, shape);
     else this.shapes.update(slot);
     if (shape?.sensor) this.useEvents();

@@ -33,12 +33,13 @@ import { SegmentDistance } from './segment-distance.js';
 export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, slop: number, m: Manifold): void {
   m.clear();
   const radius = a.radius + b.radius;
-  const separationA = maxSeparation(a, b);
+  const limit = margin + radius;
+  const separationA = maxSeparation(a, b, limit);
   const edgeA = found.edge;
-  if (separationA - radius > margin) return;
-  const separationB = maxSeparation(b, a);
+  if (separationA > limit) return;
+  const separationB = maxSeparation(b, a, limit);
   const edgeB = found.edge;
-  if (separationB - radius > margin) return;
+  if (separationB > limit) return;
   const flip = separationB > separationA;
   const ref = flip ? b : a;
   const inc = flip ? a : b;
@@ -145,8 +146,13 @@ export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, sl
 const found = { edge: 0 };
 const edges = new SegmentDistance();
 
-/** The largest, over p's edges, of how far q's deepest point lies outside that edge; the edge in `found`. */
-function maxSeparation(p: WorldShape, q: WorldShape): number {
+/**
+ * The largest, over p's edges, of how far q's deepest point lies outside that edge; the edge in
+ * `found`. Stops at the first edge beyond `limit`, which settles that the two are apart (most
+ * pairs the broad-phase hands on are), and leaves an edge as soon as one of q's points lies no
+ * further out than the best so far.
+ */
+function maxSeparation(p: WorldShape, q: WorldShape, limit: number): number {
   let best = -Infinity;
   let bestEdge = 0;
   const qn = q.count;
@@ -158,11 +164,16 @@ function maxSeparation(p: WorldShape, q: WorldShape): number {
     let deepest = Infinity;
     for (let j = 0; j < qn; j++) {
       const s = nx * (q.x[j] - vx) + ny * (q.y[j] - vy);
-      if (s < deepest) deepest = s;
+      if (s < deepest) {
+        deepest = s;
+        // This edge can no longer be the best one.
+        if (deepest <= best) break;
+      }
     }
     if (deepest > best) {
       best = deepest;
       bestEdge = i;
+      if (best > limit) break;
     }
   }
   found.edge = bestEdge;

@@ -1,7 +1,7 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { PairConsumer } from '../store/pair-sink.js';
 import type { SegmentStore } from '../store/segment-store.js';
-import type { ShapeStore } from '../store/shape-store.js';
+import { SHAPE_STRIDE, ShapeField, type ShapeStore } from '../store/shape-store.js';
 import { ContactBuffer } from '../store/contact-buffer.js';
 import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
@@ -37,6 +37,12 @@ export function boxWall(world: WorldShapes, w: number, out: WorldShape): WorldSh
   if (w === 2) return out.rectangle(-t, -t, width + t, 0);
   return out.rectangle(-t, height, width + t, height + t);
 }
+
+/**
+ * Pairs ahead whose shape records build touches before it tests the current pair: a software
+ * prefetch, so that the cache misses of later pairs overlap the arithmetic of this one.
+ */
+const AHEAD = 4;
 
 /**
  * The narrow-phase of worlds with shapes, in two passes.
@@ -83,6 +89,8 @@ export class ShapeNarrowPhase implements PairConsumer {
   private dt = 0;
   /** Contacts whose manifold the last build kept from the step before (see recyclable). */
   recycled = 0;
+  /** What build's look-ahead read (see AHEAD); kept so that the reads are not optimised away. */
+  touched = 0;
 
   constructor(private readonly bodies: BodyStore) {}
 
@@ -121,39 +129,55 @@ export class ShapeNarrowPhase implements PairConsumer {
     else this.candidates.push(j, i);
   }
 
-  /** Pairs of each awake dynamic body with the static tree's entries its bounding box overlaps. */
-  gatherStatic(tree: StaticTree, shapes: ShapeStore, segments: SegmentStore): void {
+  /**
+   * Pairs of each awake dynamic body with the static tree's entries its bounding box overlaps
+   * (static bodies as body pairs, segments as world pairs), and with each wall of the box its
+   * bounding circle reaches (the walls lie outside the box, so past a side is overlap).
+   */
+  gatherStatic(tree: StaticTree, shapes: ShapeStore, world: WorldShapes): void {
     const bodies = this.bodies;
     const { type, asleep, x, y, radius, category, mask, slotCount } = bodies;
+    const segments = world.segments;
+    const box = world.box;
+    const width = box ? box.width : 0;
+    const height = box ? box.height : 0;
+    const searchTree = tree.count > 0;
     if (this.stamp.length < slotCount) this.stamp = new Int32Array(grownCapacity(this.stamp.length, slotCount));
     for (let i = 0; i < slotCount; i++) {
       if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
+      const px = x[i];
+      const py = y[i];
       const r = radius[i];
-      const found = tree.query(x[i] - r, y[i] - r, x[i] + r, y[i] + r);
-      if (found === 0) continue;
-      const stamp = ++this.epoch;
-      for (let f = 0; f < found; f++) {
-        const entry = tree.found[f];
-        if (entry < SEGMENT_ENTRY) {
-          const s = shapes.body[entry];
-          if (this.stamp[s] === stamp) continue;
-          this.stamp[s] = stamp;
-          if ((category[i] & mask[s]) === 0 || (category[s] & mask[i]) === 0) {
-            this.filtered++;
-            continue;
-          }
-          if (i < s) this.candidates.push(i, s);
-          else this.candidates.push(s, i);
-        } else {
-          if (entry < WALL_ENTRY) {
+      const found = searchTree ? tree.query(px - r, py - r, px + r, py + r) : 0;
+      if (found > 0) {
+        const stamp = ++this.epoch;
+        for (let f = 0; f < found; f++) {
+          const entry = tree.found[f];
+          if (entry < SEGMENT_ENTRY) {
+            const s = shapes.body[entry];
+            if (this.stamp[s] === stamp) continue;
+            this.stamp[s] = stamp;
+            if ((category[i] & mask[s]) === 0 || (category[s] & mask[i]) === 0) {
+              this.filtered++;
+              continue;
+            }
+            if (i < s) this.candidates.push(i, s);
+            else this.candidates.push(s, i);
+          } else {
             const g = entry - SEGMENT_ENTRY;
             if ((category[i] & segments.mask[g]) === 0 || (segments.category[g] & mask[i]) === 0) {
               this.filtered++;
               continue;
             }
+            this.pushWorld(i, entry);
           }
-          this.pushWorld(i, entry);
         }
+      }
+      if (box !== null) {
+        if (px - r <= 0) this.pushWorld(i, WALL_ENTRY);
+        if (px + r >= width) this.pushWorld(i, WALL_ENTRY + 1);
+        if (py - r <= 0) this.pushWorld(i, WALL_ENTRY + 2);
+        if (py + r >= height) this.pushWorld(i, WALL_ENTRY + 3);
       }
     }
   }
@@ -179,7 +203,11 @@ export class ShapeNarrowPhase implements PairConsumer {
     let w = 0;
     let p = 0;
     this.shapePairs = 0;
+    const record = shapes.record;
+    const firstShape = bodies.rigid!.firstShape;
+    let touched = 0;
     for (let k = 0; k <= count; k++) {
+      if (k + AHEAD < count) touched += record[firstShape[hi[k + AHEAD]] * SHAPE_STRIDE] + record[firstShape[lo[k + AHEAD]] * SHAPE_STRIDE];
       const i = k < count ? lo[k] : Infinity;
       // World pairs of bodies below i come first, after those bodies' body pairs.
       while (w < this.worldCount && this.worldBody[w] < i) {
@@ -189,6 +217,7 @@ export class ShapeNarrowPhase implements PairConsumer {
       if (k === count) break;
       p = this.collideBodies(i, hi[k], shapes, margin, slop, p);
     }
+    this.touched = touched;
   }
 
   memoryBytes(): number {
@@ -238,14 +267,20 @@ export class ShapeNarrowPhase implements PairConsumer {
     const list = this.current;
     p = this.seek(i, j, p);
     let touching = false;
-    for (let sa = firstShape[i]; sa >= 0; sa = shapes.next[sa]) {
-      for (let sb = firstShape[j]; sb >= 0; sb = shapes.next[sb]) {
-        if ((shapes.category[sa] & shapes.mask[sb]) === 0 || (shapes.category[sb] & shapes.mask[sa]) === 0) {
+    // Each shape's header in its record: one run of memory per shape (see ShapeStore.record).
+    const record = shapes.record;
+    for (let sa = firstShape[i]; sa >= 0; sa = record[sa * SHAPE_STRIDE + ShapeField.next]) {
+      const ra = sa * SHAPE_STRIDE;
+      for (let sb = firstShape[j]; sb >= 0; sb = record[sb * SHAPE_STRIDE + ShapeField.next]) {
+        const rb = sb * SHAPE_STRIDE;
+        if ((record[ra + ShapeField.category] & record[rb + ShapeField.mask]) === 0 || (record[rb + ShapeField.category] & record[ra + ShapeField.mask]) === 0) {
           this.filtered++;
           continue;
         }
-        const sensing = shapes.sensor[sa] !== shapes.sensor[sb];
-        if (shapes.sensor[sa] && shapes.sensor[sb]) continue;
+        const sensorA = record[ra + ShapeField.sensor];
+        const sensorB = record[rb + ShapeField.sensor];
+        const sensing = sensorA !== sensorB;
+        if (sensorA === 1 && sensorB === 1) continue;
         if (compound) {
           const ax = x[i] + c[i] * shapes.centroidX[sa] - s[i] * shapes.centroidY[sa];
           const ay = y[i] + s[i] * shapes.centroidX[sa] + c[i] * shapes.centroidY[sa];
@@ -254,8 +289,10 @@ export class ShapeNarrowPhase implements PairConsumer {
           const reach = shapes.extent[sa] + shapes.extent[sb] + margin;
           if ((bx - ax) * (bx - ax) + (by - ay) * (by - ay) >= reach * reach) continue;
         }
+        const keyA = record[ra + ShapeField.handle];
+        const keyB = record[rb + ShapeField.handle];
         if (!sensing && this.recycleDistance > 0) {
-          const q = this.find(p, i, j, shapes.handleOf(sa), shapes.handleOf(sb));
+          const q = this.find(p, i, j, keyA, keyB);
           if (q >= 0 && this.recyclable(q, i, j)) {
             this.recycleFrom(q, i, j);
             touching = true;
@@ -270,7 +307,7 @@ export class ShapeNarrowPhase implements PairConsumer {
           // A sensor reports overlap (any point closer than 0) and takes no contact.
           collide(a, b, 0, slop, m);
           if (m.pointCount > 0 && (m.separation[0] < 0 || (m.pointCount === 2 && m.separation[1] < 0))) {
-            if (shapes.sensor[sa]) this.noteSensor(sa, sb);
+            if (sensorA === 1) this.noteSensor(sa, sb);
             else this.noteSensor(sb, sa);
           }
           continue;
@@ -282,7 +319,7 @@ export class ShapeNarrowPhase implements PairConsumer {
         const restitution = Math.max(shapes.restitution[sa], shapes.restitution[sb]);
         // Box2D's rule: the larger coefficient times the larger radius, a lever arm for the torque.
         const rolling = Math.max(shapes.rollingResistance[sa], shapes.rollingResistance[sb]) * Math.max(shapes.radius[sa], shapes.radius[sb]);
-        const k = list.push(i, j, sa, sb, shapes.handleOf(sa), shapes.handleOf(sb), m, x[i], y[i], x[j], y[j], friction, restitution, rolling);
+        const k = list.push(i, j, sa, sb, keyA, keyB, m, x[i], y[i], x[j], y[j], friction, restitution, rolling);
         list.cache(k, x[i], y[i], c[i], s[i], x[j], y[j], c[j], s[j]);
         this.warmStart(k, p);
       }

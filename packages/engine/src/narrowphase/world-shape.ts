@@ -1,6 +1,6 @@
 import { MAX_POLYGON_VERTICES, ShapeKind, type ShapeKindCode } from '../shapes/geometry.js';
 import type { ShapeStore } from '../store/shape-store.js';
-import { SHAPE_STRIDE } from '../store/shape-store.js';
+import { SHAPE_STRIDE, SHAPE_VERTICES, ShapeField, VERTEX } from '../store/shape-store.js';
 
 /**
  * A shape placed in the world for one narrow-phase test: its points and edge normals in world
@@ -20,21 +20,22 @@ export class WorldShape {
 
   /** Shape `slot` of a body whose centre of mass is at (px, py), turned by (c, s). */
   fromStore(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number): this {
-    const n = shapes.vertexCount[slot];
+    const g = shapes.record;
     const base = slot * SHAPE_STRIDE;
-    const { vx, vy, nx, ny } = shapes;
-    this.kind = shapes.kind[slot] as ShapeKindCode;
+    const n = g[base + ShapeField.count];
+    this.kind = g[base + ShapeField.kind] as ShapeKindCode;
     this.count = n;
-    this.radius = shapes.radius[slot];
-    for (let i = 0; i < n; i++) {
-      const lx = vx[base + i];
-      const ly = vy[base + i];
-      this.x[i] = px + c * lx - s * ly;
-      this.y[i] = py + s * lx + c * ly;
-      const qx = nx[base + i];
-      const qy = ny[base + i];
-      this.nx[i] = c * qx - s * qy;
-      this.ny[i] = s * qx + c * qy;
+    this.radius = g[base + ShapeField.radius];
+    const { x, y, nx, ny } = this;
+    for (let i = 0, at = base + SHAPE_VERTICES; i < n; i++, at += VERTEX) {
+      const lx = g[at];
+      const ly = g[at + 1];
+      const qx = g[at + 2];
+      const qy = g[at + 3];
+      x[i] = px + c * lx - s * ly;
+      y[i] = py + s * lx + c * ly;
+      nx[i] = c * qx - s * qy;
+      ny[i] = s * qx + c * qy;
     }
     return this;
   }

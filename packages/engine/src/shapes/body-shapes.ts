@@ -1,6 +1,6 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
-import { ShapeStore, SHAPE_STRIDE, type NewShape } from '../store/shape-store.js';
+import { ShapeStore, SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type NewShape } from '../store/shape-store.js';
 import { areaProperties, emptyAreaProperties, Geometry } from './geometry.js';
 
 const props = emptyAreaProperties();
@@ -158,11 +158,10 @@ export class BodyShapes {
       const cx = store.centroidX[s];
       const cy = store.centroidY[s];
       inertia += store.density[s] * store.areaInertia[s] + m * (cx * cx + cy * cy);
-      const base = s * SHAPE_STRIDE;
       let far = 0;
-      for (let i = 0; i < store.vertexCount[s]; i++) {
-        const vx = store.vx[base + i];
-        const vy = store.vy[base + i];
+      for (let i = 0, at = s * SHAPE_STRIDE + SHAPE_VERTICES; i < store.vertexCount[s]; i++, at += VERTEX) {
+        const vx = store.record[at];
+        const vy = store.record[at + 1];
         const d = vx * vx + vy * vy;
         if (d > far) far = d;
       }
@@ -189,7 +188,7 @@ export class BodyShapes {
     if (last < 0) rigid.firstShape[slot] = s;
     else {
       while (store.next[last] >= 0) last = store.next[last];
-      store.next[last] = s;
+      store.setNext(last, s);
     }
     rigid.shapeCount[slot]++;
     return s;
@@ -202,7 +201,7 @@ export class BodyShapes {
     else {
       let s = rigid.firstShape[slot];
       while (store.next[s] !== shapeSlot) s = store.next[s];
-      store.next[s] = store.next[shapeSlot];
+      store.setNext(s, store.next[shapeSlot]);
     }
     rigid.shapeCount[slot]--;
   }
@@ -211,12 +210,12 @@ export class BodyShapes {
 /** How far a shape's surface is from its centroid at the nearest: its radius, plus for a polygon the distance to its nearest edge line. */
 function innerExtent(store: ShapeStore, s: number): number {
   if (store.kind[s] !== 2) return store.radius[s];
-  const base = s * SHAPE_STRIDE;
+  const g = store.record;
   const cx = store.centroidX[s];
   const cy = store.centroidY[s];
   let least = Infinity;
-  for (let i = 0; i < store.vertexCount[s]; i++) {
-    const d = store.nx[base + i] * (store.vx[base + i] - cx) + store.ny[base + i] * (store.vy[base + i] - cy);
+  for (let i = 0, at = s * SHAPE_STRIDE + SHAPE_VERTICES; i < store.vertexCount[s]; i++, at += VERTEX) {
+    const d = g[at + 2] * (g[at] - cx) + g[at + 3] * (g[at + 1] - cy);
     if (d < least) least = d;
   }
   return least + store.radius[s];

@@ -1,20 +1,20 @@
 import type { ShapeStore } from '../store/shape-store.js';
-import { SHAPE_STRIDE } from '../store/shape-store.js';
+import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX } from '../store/shape-store.js';
 
 /**
  * The axis-aligned box around shape `slot` of a body at centre (px, py) turned by (c, s): its
  * points placed in the world, widened by its radius. Written to out as minX, minY, maxX, maxY.
  */
 export function shapeBounds(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, out: Float64Array): Float64Array {
-  const base = slot * SHAPE_STRIDE;
   const n = shapes.vertexCount[slot];
+  const g = shapes.record;
   let minX = Infinity;
   let minY = Infinity;
   let maxX = -Infinity;
   let maxY = -Infinity;
-  for (let i = 0; i < n; i++) {
-    const lx = shapes.vx[base + i];
-    const ly = shapes.vy[base + i];
+  for (let i = 0, at = slot * SHAPE_STRIDE + SHAPE_VERTICES; i < n; i++, at += VERTEX) {
+    const lx = g[at];
+    const ly = g[at + 1];
     const wx = px + c * lx - s * ly;
     const wy = py + s * lx + c * ly;
     if (wx < minX) minX = wx;

@@ -5,7 +5,7 @@ import { BodyFlag } from '../store/rigid-columns.js';
 import type { StaticTree } from '../broadphase/static-tree.js';
 import type { Queries } from '../query/queries.js';
 import { WorldShape } from '../narrowphase/world-shape.js';
-import { SEGMENT_ENTRY, WALL_ENTRY, boxWall, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
+import { SEGMENT_ENTRY, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
 import { grownCapacity } from '../util/grow.js';
 import { impact, sweepRotation, timeOfImpact, type Sweep } from './time-of-impact.js';
 
@@ -24,6 +24,8 @@ const other = new WorldShape();
  * found at that pose, stops or bounces it. Bullets are swept against moving bodies too (at where
  * they ended the step), so that a fast projectile cannot pass through a thin dynamic plank;
  * other pairs of moving bodies are not, as the report argues, since their order would matter.
+ * The box's walls need no sweep: each is as thick as the box is wide, so nothing passes through
+ * one in a step, and the route's containment puts a body that went into one back at its face.
  *
  * The elastic pass, which integrates before it collides (the report's order), sweeps right after
  * integration and bounces a body at its impact itself (`bounce`): an elastic impulse along the
@@ -79,7 +81,6 @@ export class ContinuousShapes {
     slop: number,
     bounce: boolean,
     restitutionThreshold: number,
-    wallRestitution: number,
   ): number {
     const { x, y, type, asleep, radius, slotCount } = bodies;
     const rigid = bodies.rigid!;
@@ -87,19 +88,25 @@ export class ContinuousShapes {
     const sweep = this.sweep;
     this.swept = 0;
     this.hitCount = 0;
-    for (let pass = 0; pass < 2; pass++) {
+    const { x0, y0, c0, s0 } = this;
+    // Bullets go second, against the others where they ended up.
+    const passes = queries !== null ? 2 : 1;
+    for (let pass = 0; pass < passes; pass++) {
       for (let i = 0; i < slotCount; i++) {
         if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
+        const reach = radius[i] - margin;
+        const dx = x[i] - x0[i];
+        const dy = y[i] - y0[i];
+        const dc = c[i] - c0[i];
+        const ds = s[i] - s0[i];
+        // How far any point moved, bounded: the centre's path plus the turn at the rim; first
+        // with |dx| + |dy| >= the length, which settles most bodies without a square root.
+        const slow = SAFETY * minExtent[i];
+        if (Math.abs(dx) + Math.abs(dy) + 2 * (Math.abs(dc) + Math.abs(ds)) * reach < slow) continue;
+        const moved = Math.sqrt(dx * dx + dy * dy) + 2 * Math.sqrt(dc * dc + ds * ds) * reach;
+        if (moved < slow) continue;
         const bullet = (flags[i] & BodyFlag.bullet) !== 0;
         if (bullet !== (pass === 1)) continue;
-        const reach = radius[i] - margin;
-        const dx = x[i] - this.x0[i];
-        const dy = y[i] - this.y0[i];
-        const dc = c[i] - this.c0[i];
-        const ds = s[i] - this.s0[i];
-        // How far any point moved, bounded: the centre's path plus the turn at the rim.
-        const moved = Math.sqrt(dx * dx + dy * dy) + 2 * Math.sqrt(dc * dc + ds * ds) * reach;
-        if (moved < SAFETY * minExtent[i]) continue;
         this.swept++;
         sweep.x0 = this.x0[i];
         sweep.y0 = this.y0[i];
@@ -125,15 +132,12 @@ export class ContinuousShapes {
             if (!this.layers(bodies, i, shapes, entry)) continue;
             other.fromStore(shapes, entry, x[owner], y[owner], c[owner], s[owner]);
             restitution = shapes.restitution[entry];
-          } else if (entry < WALL_ENTRY) {
+          } else {
             const g = entry - SEGMENT_ENTRY;
             const seg = world.segments;
             if ((bodies.category[i] & seg.mask[g]) === 0 || (seg.category[g] & bodies.mask[i]) === 0) continue;
             other.capsule(seg.ax[g], seg.ay[g], seg.bx[g], seg.by[g], seg.thickness[g]);
             restitution = seg.restitution[g];
-          } else {
-            boxWall(world, entry - WALL_ENTRY, other);
-            restitution = wallRestitution;
           }
           best = this.earliest(shapes, rigid.firstShape[i], best, slop, restitution);
         }

@@ -5,8 +5,7 @@ import { TypeCode } from '../store/body-types.js';
 import type { BroadPhase } from '../broadphase/broadphase.js';
 import { PairSink } from '../store/pair-sink.js';
 import { StaticTree } from '../broadphase/static-tree.js';
-import { ShapeNarrowPhase, SEGMENT_ENTRY, WALL_ENTRY, boxWall, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
-import { WorldShape } from '../narrowphase/world-shape.js';
+import { ShapeNarrowPhase, SEGMENT_ENTRY, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
 import { SoftStep, type SoftSettings } from '../solver/soft-step.js';
 import { ElasticPass, type ElasticSettings } from '../solver/elastic-pass.js';
 import { integrateRigid } from '../integrate/rigid-motion.js';
@@ -66,7 +65,6 @@ export class ShapeRoute {
   readonly continuous = new ContinuousShapes();
   private treeVersion = -1;
   private readonly world: WorldShapes;
-  private readonly wall = new WorldShape();
 
   constructor(
     private readonly bodies: BodyStore,
@@ -98,7 +96,7 @@ export class ShapeRoute {
     pairs.contactsDirect = false;
     const pairTests = broad.findPairs(bodies, pairs);
     pairs.flush();
-    narrow.gatherStatic(this.tree, this.shapes, this.segments);
+    narrow.gatherStatic(this.tree, this.shapes, this.world);
     const t2 = nowMs();
     // Only the soft step keeps manifolds between steps: the elastic pass works on fresh overlaps.
     narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution, settings.sleeping.speed, elastic ? 0 : 10 * settings.slop, dt);
@@ -146,14 +144,18 @@ export class ShapeRoute {
   private sweep(queries: Queries, queryVersion: number, bounce: boolean): void {
     const { settings } = this;
     const threshold = bounce ? settings.elastic.restitutionThreshold : settings.soft.restitutionThreshold;
-    this.continuous.run(this.bodies, this.shapes, this.tree, this.world, this.bullets > 0 ? queries : null, queryVersion, settings.margin, settings.slop, bounce, threshold, settings.wallRestitution);
+    this.continuous.run(this.bodies, this.shapes, this.tree, this.world, this.bullets > 0 ? queries : null, queryVersion, settings.margin, settings.slop, bounce, threshold);
   }
 
   memoryBytes(): number {
     return this.continuous.memoryBytes() + this.narrow.memoryBytes() + this.pairs.memoryBytes() + this.tree.memoryBytes() + this.soft.memoryBytes() + this.islands.memoryBytes();
   }
 
-  /** Static bodies' shapes, the segments and the box's walls, each under its entry id. */
+  /**
+   * Static bodies' shapes and the segments, each under its entry id. The box's walls are not in
+   * the tree: a body meets one exactly when its bounding circle reaches past that side of the box,
+   * which gatherStatic tests directly.
+   */
   private rebuildTree(version: number): void {
     this.treeVersion = version;
     const { tree, bodies, shapes, segments } = this;
@@ -176,12 +178,6 @@ export class ShapeRoute {
         Math.max(segments.ax[g], segments.bx[g]) + t,
         Math.max(segments.ay[g], segments.by[g]) + t,
       );
-    }
-    if (this.world.box) {
-      for (let w = 0; w < 4; w++) {
-        const r = boxWall(this.world, w, this.wall);
-        tree.add(WALL_ENTRY + w, r.x[0], r.y[0], r.x[2], r.y[2]);
-      }
     }
     tree.finish();
   }

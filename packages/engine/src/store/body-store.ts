@@ -196,7 +196,7 @@ export class BodyStore {
   }
 
   remove(slot: number): void {
-    if (this.gravityScale[slot] !== 1 || this.linearDamping[slot] !== 0) this.customMotionCount--;
+    if (this.hasCustomMotion(slot)) this.customMotionCount--;
     this.wake(slot);
     // Out of the counts: a freed slot keeps an open filter, which add() then counts from.
     this.setFilter(slot, 1, ALL_LAYERS);
@@ -221,11 +221,22 @@ export class BodyStore {
   }
 
   setMotion(slot: number, gravityScale: number, linearDamping: number): void {
-    const wasCustom = this.gravityScale[slot] !== 1 || this.linearDamping[slot] !== 0;
-    const isCustom = gravityScale !== 1 || linearDamping !== 0;
-    this.customMotionCount += Number(isCustom) - Number(wasCustom);
+    const wasCustom = this.hasCustomMotion(slot);
     this.gravityScale[slot] = gravityScale;
     this.linearDamping[slot] = linearDamping;
+    this.customMotionCount += Number(this.hasCustomMotion(slot)) - Number(wasCustom);
+  }
+
+  /** Sets a body's angular damping (rotation columns in use), keeping customMotionCount. */
+  setAngularDamping(slot: number, damping: number): void {
+    const wasCustom = this.hasCustomMotion(slot);
+    this.rigid!.angularDamping[slot] = damping;
+    this.customMotionCount += Number(this.hasCustomMotion(slot)) - Number(wasCustom);
+  }
+
+  /** Whether the body's motion is more than velocity plus the world's gravity (see customMotionCount). */
+  private hasCustomMotion(slot: number): boolean {
+    return this.gravityScale[slot] !== 1 || this.linearDamping[slot] !== 0 || (this.rigid !== null && this.rigid.angularDamping[slot] !== 0);
   }
 
   /** Wakes a body, and with it every body of the island it fell asleep with (see RigidColumns.islandNext). */
