@@ -5,17 +5,31 @@ import type { Manifold } from './manifold.js';
 export const WORLD = -1;
 
 /**
- * The step's contacts between shapes, in the canonical order: by (body A slot, body B slot), a
- * contact with a world shape after every contact of its body with bodies, then by shape pair in
- * the bodies' shape order. Each holds its manifold (normal, up to two points with anchors
- * relative to each body's centre of mass) and what the solver accumulated on it, which the next
- * step inherits point by point where the same features touch again (warm starting).
+ * The step's contacts between shapes. Each contact lives in a slot that it keeps for as long as
+ * its two shapes touch, step after step (Box2D's persistent contacts); `order` lists this step's
+ * slots in the canonical order: by (body A slot, body B slot), a contact with a world shape after
+ * every contact of its body with bodies, then by shape pair in the bodies' shape order. Stages
+ * walk `order`, so results depend on that order alone, never on which slot a contact got.
+ *
+ * Each slot holds its manifold (normal, up to two points with anchors relative to each body's
+ * centre of mass) and what the solver accumulated on it. A contact whose manifold is kept
+ * (`refresh`, see ShapeNarrowPhase.recyclable) is updated where it lies, a few fields, instead of
+ * being copied into a new list: piles at rest keep nearly all their contacts, and copying a
+ * contact's forty-odd fields was a third of a 5,050-box pyramid's narrow-phase. A recomputed one
+ * (`rewrite`) inherits its impulses point by point where the same features touch again (warm
+ * starting); a new one (`add`) starts from none.
  *
  * Keys: body slots, and shape handles (ShapeStore's, with generation; for a world shape its
  * segment handle or wall code), so that a reused slot never passes its impulses to a newcomer.
  */
 export class ContactList {
+  /** Contacts this step: order[0, count). */
   count = 0;
+  /** This step's contact slots, in canonical order. */
+  order = new Int32Array(0);
+  /** Last step's, while the narrow-phase builds this one (see begin). */
+  previousOrder = new Int32Array(0);
+  previousCount = 0;
   bodyA = new Int32Array(0);
   bodyB = new Int32Array(0);
   shapeA = new Int32Array(0);
@@ -59,16 +73,48 @@ export class ContactList {
   relativeS = new Float64Array(0);
   baseSeparation = new Float64Array(0);
   private capacity = 0;
+  /** Slots handed out so far; those below it not in use are on the free list. */
+  private slotCount = 0;
+  private freeSlots = new Int32Array(0);
+  private freeCount = 0;
+  /** The step a slot was last listed in (see begin), so that finish frees the rest. */
+  private listed = new Uint32Array(0);
+  private epoch = 0;
 
+  /** Starts a step's list: this step's order becomes last step's, and the new one is empty. */
+  begin(): void {
+    const last = this.order;
+    this.order = this.previousOrder;
+    this.previousOrder = last;
+    this.previousCount = this.count;
+    this.count = 0;
+    this.epoch++;
+    if (this.order.length < this.previousOrder.length) this.order = new Int32Array(this.previousOrder.length);
+  }
+
+  /** Frees the slots of last step's contacts that this step did not list. */
+  finish(): void {
+    const { previousOrder, listed, epoch } = this;
+    for (let n = 0; n < this.previousCount; n++) {
+      const k = previousOrder[n];
+      if (listed[k] !== epoch) this.freeSlots[this.freeCount++] = k;
+    }
+    this.previousCount = 0;
+  }
+
+  /** Drops every contact (a world whose contacts no longer mean anything, say after a reset). */
   clear(): void {
     this.count = 0;
+    this.previousCount = 0;
+    this.slotCount = 0;
+    this.freeCount = 0;
   }
 
   /**
-   * Appends a contact with its manifold; points get their anchors from the two centres of mass
-   * (ax, ay) and (bx, by), and start with no impulse (see inherit).
+   * A new contact with its manifold, listed next; points get their anchors from the two centres
+   * of mass (ax, ay) and (bx, by), and start with no impulse. Returns its slot.
    */
-  push(
+  add(
     bodyA: number,
     bodyB: number,
     shapeA: number,
@@ -84,22 +130,105 @@ export class ContactList {
     restitution: number,
     rollingResistance: number,
   ): number {
-    if (this.count === this.capacity) this.grow(this.count + 1);
-    const k = this.count++;
+    let k: number;
+    if (this.freeCount > 0) k = this.freeSlots[--this.freeCount];
+    else {
+      if (this.slotCount === this.capacity) this.grow(this.slotCount + 1);
+      k = this.slotCount++;
+    }
     this.bodyA[k] = bodyA;
     this.bodyB[k] = bodyB;
     this.shapeA[k] = shapeA;
     this.shapeB[k] = shapeB;
     this.keyA[k] = keyA;
     this.keyB[k] = keyB;
-    const n = m.pointCount;
-    this.pointCount[k] = n;
-    this.normalX[k] = m.normalX;
-    this.normalY[k] = m.normalY;
     this.friction[k] = friction;
     this.restitution[k] = restitution;
     this.rollingResistance[k] = rollingResistance;
     this.rollingImpulse[k] = 0;
+    this.write(k, m, ax, ay, bx, by);
+    for (let p = 0; p < m.pointCount; p++) {
+      this.normalImpulse[2 * k + p] = 0;
+      this.tangentImpulse[2 * k + p] = 0;
+    }
+    this.list(k);
+    return k;
+  }
+
+  /**
+   * Contact k, listed last step, with a manifold computed anew, listed next: each new point takes
+   * the impulses of the old point with the same feature id, others start from none; so does the
+   * rolling impulse.
+   */
+  rewrite(k: number, m: Manifold, ax: number, ay: number, bx: number, by: number): void {
+    const oldCount = this.pointCount[k];
+    const id0 = this.id[2 * k];
+    const id1 = this.id[2 * k + 1];
+    const normal0 = this.normalImpulse[2 * k];
+    const normal1 = this.normalImpulse[2 * k + 1];
+    const tangent0 = this.tangentImpulse[2 * k];
+    const tangent1 = this.tangentImpulse[2 * k + 1];
+    this.write(k, m, ax, ay, bx, by);
+    for (let p = 0; p < m.pointCount; p++) {
+      const at = 2 * k + p;
+      const id = m.id[p];
+      if (oldCount > 0 && id0 === id) {
+        this.normalImpulse[at] = normal0;
+        this.tangentImpulse[at] = tangent0;
+      } else if (oldCount > 1 && id1 === id) {
+        this.normalImpulse[at] = normal1;
+        this.tangentImpulse[at] = tangent1;
+      } else {
+        this.normalImpulse[at] = 0;
+        this.tangentImpulse[at] = 0;
+      }
+    }
+    this.list(k);
+  }
+
+  /**
+   * Contact k, listed last step, keeping its manifold (recycled), listed next: same normal,
+   * points, ids, impulses and anchors, with separations brought up to date from how the anchors
+   * moved apart along the normal since the manifold was computed, as the soft step's sub-steps
+   * do: each body turned by (dac, das) and (dbc, dbs) since, now centred at (ax, ay), (bx, by).
+   */
+  refresh(k: number, ax: number, ay: number, dac: number, das: number, bx: number, by: number, dbc: number, dbs: number): void {
+    const n = this.pointCount[k];
+    const nx = this.normalX[k];
+    const ny = this.normalY[k];
+    const dcx = bx - ax;
+    const dcy = by - ay;
+    for (let p = 0; p < n; p++) {
+      const at = 2 * k + p;
+      const rAx0 = this.anchorAX[at];
+      const rAy0 = this.anchorAY[at];
+      const rBx0 = this.anchorBX[at];
+      const rBy0 = this.anchorBY[at];
+      const rAx = dac * rAx0 - das * rAy0;
+      const rAy = das * rAx0 + dac * rAy0;
+      const rBx = dbc * rBx0 - dbs * rBy0;
+      const rBy = dbs * rBx0 + dbc * rBy0;
+      this.separation[at] = this.baseSeparation[at] + (dcx + rBx - rAx) * nx + (dcy + rBy - rAy) * ny;
+      this.pointX[at] = ax + rAx;
+      this.pointY[at] = ay + rAy;
+      this.totalNormalImpulse[at] = 0;
+      this.approachSpeed[at] = 0;
+    }
+    this.list(k);
+  }
+
+  private list(k: number): void {
+    if (this.count === this.order.length) this.order = grow(this.order, grownCapacity(this.order.length, this.count + 1));
+    this.order[this.count++] = k;
+    this.listed[k] = this.epoch;
+  }
+
+  /** Slot k's manifold: normal, points, anchors from the centres (ax, ay), (bx, by), separations, ids. */
+  private write(k: number, m: Manifold, ax: number, ay: number, bx: number, by: number): void {
+    const n = m.pointCount;
+    this.pointCount[k] = n;
+    this.normalX[k] = m.normalX;
+    this.normalY[k] = m.normalY;
     for (let p = 0; p < n; p++) {
       const at = 2 * k + p;
       const px = m.x[p];
@@ -111,14 +240,11 @@ export class ContactList {
       this.anchorBX[at] = px - bx;
       this.anchorBY[at] = py - by;
       this.separation[at] = m.separation[p];
+      this.baseSeparation[at] = m.separation[p];
       this.id[at] = m.id[p];
-      this.normalImpulse[at] = 0;
-      this.tangentImpulse[at] = 0;
       this.totalNormalImpulse[at] = 0;
       this.approachSpeed[at] = 0;
-      this.baseSeparation[at] = m.separation[p];
     }
-    return k;
   }
 
   /** Notes the poses the manifold of contact k was computed at (centres and rotations of A and B). */
@@ -136,94 +262,8 @@ export class ContactList {
     this.relativeS[k] = ac * bs - as * bc;
   }
 
-  /**
-   * Appends a copy of contact `from` of `previous` whose manifold is kept (recycled): same normal,
-   * points, ids, impulses and cache, anchors turned with their bodies since the cache (by
-   * (dac, das) and (dbc, dbs)), and separations brought up to date from how the anchors moved
-   * apart along the normal, as the soft step's sub-steps do.
-   */
-  recycle(previous: ContactList, from: number, ax: number, ay: number, dac: number, das: number, bx: number, by: number, dbc: number, dbs: number): number {
-    if (this.count === this.capacity) this.grow(this.count + 1);
-    const k = this.count++;
-    this.bodyA[k] = previous.bodyA[from];
-    this.bodyB[k] = previous.bodyB[from];
-    this.shapeA[k] = previous.shapeA[from];
-    this.shapeB[k] = previous.shapeB[from];
-    this.keyA[k] = previous.keyA[from];
-    this.keyB[k] = previous.keyB[from];
-    const n = previous.pointCount[from];
-    this.pointCount[k] = n;
-    const nx = previous.normalX[from];
-    const ny = previous.normalY[from];
-    this.normalX[k] = nx;
-    this.normalY[k] = ny;
-    this.friction[k] = previous.friction[from];
-    this.restitution[k] = previous.restitution[from];
-    this.rollingResistance[k] = previous.rollingResistance[from];
-    this.rollingImpulse[k] = previous.rollingImpulse[from];
-    this.cacheAC[k] = previous.cacheAC[from];
-    this.cacheAS[k] = previous.cacheAS[from];
-    this.cacheBC[k] = previous.cacheBC[from];
-    this.cacheBS[k] = previous.cacheBS[from];
-    this.relativeX[k] = previous.relativeX[from];
-    this.relativeY[k] = previous.relativeY[from];
-    this.relativeC[k] = previous.relativeC[from];
-    this.relativeS[k] = previous.relativeS[from];
-    const dcx = bx - ax;
-    const dcy = by - ay;
-    for (let p = 0; p < n; p++) {
-      const at = 2 * k + p;
-      const was = 2 * from + p;
-      // The anchors as they were cached (undo last step's turn), turned by the motion since.
-      const base = previous.baseSeparation[was];
-      const rAx0 = previous.anchorAX[was];
-      const rAy0 = previous.anchorAY[was];
-      const rBx0 = previous.anchorBX[was];
-      const rBy0 = previous.anchorBY[was];
-      const rAx = dac * rAx0 - das * rAy0;
-      const rAy = das * rAx0 + dac * rAy0;
-      const rBx = dbc * rBx0 - dbs * rBy0;
-      const rBy = dbs * rBx0 + dbc * rBy0;
-      this.anchorAX[at] = rAx0;
-      this.anchorAY[at] = rAy0;
-      this.anchorBX[at] = rBx0;
-      this.anchorBY[at] = rBy0;
-      this.separation[at] = base + (dcx + rBx - rAx) * nx + (dcy + rBy - rAy) * ny;
-      this.pointX[at] = ax + rAx;
-      this.pointY[at] = ay + rAy;
-      this.id[at] = previous.id[was];
-      this.normalImpulse[at] = previous.normalImpulse[was];
-      this.tangentImpulse[at] = previous.tangentImpulse[was];
-      this.totalNormalImpulse[at] = 0;
-      this.approachSpeed[at] = 0;
-      this.baseSeparation[at] = base;
-    }
-    return k;
-  }
-
-  /**
-   * Gives contact k the impulses of the contact `from` in `previous` (the same shapes touching
-   * last step): points with the same feature id take theirs, as does the rolling impulse.
-   */
-  inherit(k: number, previous: ContactList, from: number): void {
-    this.rollingImpulse[k] = previous.rollingImpulse[from];
-    const n = this.pointCount[k];
-    const m = previous.pointCount[from];
-    for (let p = 0; p < n; p++) {
-      const at = 2 * k + p;
-      const id = this.id[at];
-      for (let q = 0; q < m; q++) {
-        const was = 2 * from + q;
-        if (previous.id[was] !== id) continue;
-        this.normalImpulse[at] = previous.normalImpulse[was];
-        this.tangentImpulse[at] = previous.tangentImpulse[was];
-        break;
-      }
-    }
-  }
-
   memoryBytes(): number {
-    return this.capacity * (4 * 4 + 8 * 2 + 1 + 8 * 14) + 2 * this.capacity * (8 * 12 + 4);
+    return this.capacity * (4 * 4 + 8 * 2 + 1 + 8 * 14 + 4 + 4) + 2 * this.capacity * (8 * 12 + 4) + this.order.byteLength + this.previousOrder.byteLength;
   }
 
   private grow(needed: number): void {
@@ -262,6 +302,8 @@ export class ContactList {
     this.relativeC = grow(this.relativeC, c);
     this.relativeS = grow(this.relativeS, c);
     this.baseSeparation = grow(this.baseSeparation, 2 * c);
+    this.freeSlots = grow(this.freeSlots, c);
+    this.listed = grow(this.listed, c);
     this.capacity = c;
   }
 }

@@ -62,8 +62,8 @@ const AHEAD = 4;
  */
 export class ShapeNarrowPhase implements PairConsumer {
   readonly candidates = new ContactBuffer();
-  current = new ContactList();
-  previous = new ContactList();
+  /** The step's contacts (persistent: see ContactList). */
+  readonly current = new ContactList();
   /** Pairs dropped by collision layers (body level in consume, shape level in build). */
   filtered = 0;
   /** Shape pairs run through a pair function in the last build. */
@@ -89,6 +89,8 @@ export class ShapeNarrowPhase implements PairConsumer {
   private dt = 0;
   /** Contacts whose manifold the last build kept from the step before (see recyclable). */
   recycled = 0;
+  /** Per body slot, 1 where its contacts are recomputed whatever they did (see noteFastBodies). */
+  private fastBody = new Uint8Array(0);
   /** What build's look-ahead read (see AHEAD); kept so that the reads are not optimised away. */
   touched = 0;
 
@@ -192,11 +194,9 @@ export class ShapeNarrowPhase implements PairConsumer {
     this.margin = margin;
     this.dt = dt;
     this.recycled = 0;
-    const last = this.current;
-    this.current = this.previous;
-    this.previous = last;
+    if (recycleDistance > 0) this.noteFastBodies();
     const list = this.current;
-    list.clear();
+    list.begin();
     const bodies = this.bodies;
     this.candidates.sortCanonical(bodies.slotCount);
     const { lo, hi, count } = this.candidates;
@@ -218,10 +218,11 @@ export class ShapeNarrowPhase implements PairConsumer {
       p = this.collideBodies(i, hi[k], shapes, margin, slop, p);
     }
     this.touched = touched;
+    list.finish();
   }
 
   memoryBytes(): number {
-    return this.candidates.memoryBytes() + this.current.memoryBytes() + this.previous.memoryBytes() + this.worldBody.byteLength * 2 + this.stamp.byteLength + this.wake.byteLength;
+    return this.candidates.memoryBytes() + this.current.memoryBytes() + this.worldBody.byteLength * 2 + this.stamp.byteLength + this.wake.byteLength;
   }
 
   private pushWorld(i: number, entry: number): void {
@@ -291,13 +292,11 @@ export class ShapeNarrowPhase implements PairConsumer {
         }
         const keyA = record[ra + ShapeField.handle];
         const keyB = record[rb + ShapeField.handle];
-        if (!sensing && this.recycleDistance > 0) {
-          const q = this.find(p, i, j, keyA, keyB);
-          if (q >= 0 && this.recyclable(q, i, j)) {
-            this.recycleFrom(q, i, j);
-            touching = true;
-            continue;
-          }
+        const q = sensing ? -1 : this.find(p, i, j, keyA, keyB);
+        if (q >= 0 && this.recycleDistance > 0 && this.recyclable(q, i, j)) {
+          this.recycleFrom(q, i, j);
+          touching = true;
+          continue;
         }
         this.shapePairs++;
         const a = this.shapeA.fromStore(shapes, sa, x[i], y[i], c[i], s[i]);
@@ -319,9 +318,10 @@ export class ShapeNarrowPhase implements PairConsumer {
         const restitution = Math.max(shapes.restitution[sa], shapes.restitution[sb]);
         // Box2D's rule: the larger coefficient times the larger radius, a lever arm for the torque.
         const rolling = Math.max(shapes.rollingResistance[sa], shapes.rollingResistance[sb]) * Math.max(shapes.radius[sa], shapes.radius[sb]);
-        const k = list.push(i, j, sa, sb, keyA, keyB, m, x[i], y[i], x[j], y[j], friction, restitution, rolling);
+        let k = q;
+        if (q >= 0) list.rewrite(q, m, x[i], y[i], x[j], y[j]);
+        else k = list.add(i, j, sa, sb, keyA, keyB, m, x[i], y[i], x[j], y[j], friction, restitution, rolling);
         list.cache(k, x[i], y[i], c[i], s[i], x[j], y[j], c[j], s[j]);
-        this.warmStart(k, p);
       }
     }
     if (touching) {
@@ -353,12 +353,11 @@ export class ShapeNarrowPhase implements PairConsumer {
     for (let sa = firstShape[i]; sa >= 0; sa = shapes.next[sa]) {
       if ((shapes.category[sa] & otherMask) === 0 || (otherCategory & shapes.mask[sa]) === 0) continue;
       if (shapes.sensor[sa]) continue;
-      if (this.recycleDistance > 0) {
-        const q = this.find(p, i, WORLD, shapes.handleOf(sa), keyB);
-        if (q >= 0 && this.recyclable(q, i, WORLD)) {
-          this.recycleFrom(q, i, WORLD);
-          continue;
-        }
+      const keyA = shapes.handleOf(sa);
+      const q = this.find(p, i, WORLD, keyA, keyB);
+      if (q >= 0 && this.recycleDistance > 0 && this.recyclable(q, i, WORLD)) {
+        this.recycleFrom(q, i, WORLD);
+        continue;
       }
       this.shapePairs++;
       const a = this.shapeA.fromStore(shapes, sa, x[i], y[i], c[i], s[i]);
@@ -368,31 +367,37 @@ export class ShapeNarrowPhase implements PairConsumer {
       const friction = Math.sqrt(shapes.friction[sa] * otherFriction);
       const restitution = Math.max(shapes.restitution[sa], otherRestitution);
       const rolling = shapes.rollingResistance[sa] * Math.max(shapes.radius[sa], b.radius);
-      const k = list.push(i, WORLD, sa, entry, shapes.handleOf(sa), keyB, m, x[i], y[i], 0, 0, friction, restitution, rolling);
+      let k = q;
+      if (q >= 0) list.rewrite(q, m, x[i], y[i], 0, 0);
+      else k = list.add(i, WORLD, sa, entry, keyA, keyB, m, x[i], y[i], 0, 0, friction, restitution, rolling);
       list.cache(k, x[i], y[i], c[i], s[i], 0, 0, 1, 0);
-      this.warmStart(k, p);
     }
     return p;
   }
 
-  /** Advances p in the previous list to the first contact of pair (i, j) or beyond it. */
+  /** Advances p in last step's order to the first contact of pair (i, j) or beyond it. */
   private seek(i: number, j: number, p: number): number {
-    const prev = this.previous;
+    const list = this.current;
+    const { previousOrder, previousCount, bodyA, bodyB } = list;
     const jKey = j === WORLD ? Infinity : j;
-    while (p < prev.count) {
-      const pi = prev.bodyA[p];
-      const pj = prev.bodyB[p] === WORLD ? Infinity : prev.bodyB[p];
+    while (p < previousCount) {
+      const k = previousOrder[p];
+      const pi = bodyA[k];
+      const pj = bodyB[k] === WORLD ? Infinity : bodyB[k];
       if (pi > i || (pi === i && pj >= jKey)) break;
       p++;
     }
     return p;
   }
 
-  /** The previous step's contact of the same two shapes (from p on), or -1. */
+  /** The slot of last step's contact of the same two shapes (from p on in its order), or -1. */
   private find(p: number, i: number, j: number, keyA: number, keyB: number): number {
-    const prev = this.previous;
-    for (let q = p; q < prev.count && prev.bodyA[q] === i && prev.bodyB[q] === j; q++) {
-      if (prev.keyA[q] === keyA && prev.keyB[q] === keyB) return q;
+    const list = this.current;
+    const { previousOrder, previousCount, bodyA, bodyB } = list;
+    for (let n = p; n < previousCount; n++) {
+      const k = previousOrder[n];
+      if (bodyA[k] !== i || bodyB[k] !== j) break;
+      if (list.keyA[k] === keyA && list.keyB[k] === keyB) return k;
     }
     return -1;
   }
@@ -407,12 +412,12 @@ export class ShapeNarrowPhase implements PairConsumer {
    * and piles at rest skip the pair functions.
    */
   private recyclable(q: number, i: number, j: number): boolean {
-    const prev = this.previous;
+    const prev = this.current;
     const bodies = this.bodies;
     const { x, y, radius } = bodies;
     const rigid = bodies.rigid!;
     const { c, s } = rigid;
-    if (this.fast(i) || (j !== WORLD && this.fast(j))) return false;
+    if (this.fastBody[i] === 1 || (j !== WORLD && this.fastBody[j] === 1)) return false;
     const ac = c[i];
     const as = s[i];
     const bc = j === WORLD ? 1 : c[j];
@@ -434,19 +439,30 @@ export class ShapeNarrowPhase implements PairConsumer {
     return moved + Math.max(extentA, extentB) * Math.abs(turn) < this.recycleDistance;
   }
 
-  /** A body that moved more than half its smallest extent in a step, or a bullet: its contacts are always recomputed. */
-  private fast(slot: number): boolean {
+  /**
+   * Notes the bodies whose contacts are always recomputed (fastBody): those that move more than
+   * half their smallest extent in a step, and bullets.
+   */
+  private noteFastBodies(): void {
     const bodies = this.bodies;
+    const { vx, vy, radius, type, slotCount } = bodies;
     const rigid = bodies.rigid!;
-    if (bodies.type[slot] === TypeCode.static) return false;
-    if ((rigid.flags[slot] & BodyFlag.bullet) !== 0) return true;
-    const v = Math.sqrt(bodies.vx[slot] * bodies.vx[slot] + bodies.vy[slot] * bodies.vy[slot]) + (bodies.radius[slot] - this.margin) * Math.abs(rigid.angularVelocity[slot]);
-    return v * this.dt > 0.5 * rigid.minExtent[slot];
+    const { angularVelocity, flags, minExtent } = rigid;
+    if (this.fastBody.length < slotCount) this.fastBody = new Uint8Array(grownCapacity(this.fastBody.length, slotCount));
+    const fastBody = this.fastBody;
+    for (let i = 0; i < slotCount; i++) {
+      if (type[i] === TypeCode.static || type[i] === TypeCode.free) {
+        fastBody[i] = 0;
+        continue;
+      }
+      const v = Math.sqrt(vx[i] * vx[i] + vy[i] * vy[i]) + (radius[i] - this.margin) * Math.abs(angularVelocity[i]);
+      fastBody[i] = (flags[i] & BodyFlag.bullet) !== 0 || v * this.dt > 0.5 * minExtent[i] ? 1 : 0;
+    }
   }
 
   /** Keeps contact q of the previous step for bodies i and j (see recyclable). */
   private recycleFrom(q: number, i: number, j: number): void {
-    const prev = this.previous;
+    const list = this.current;
     const bodies = this.bodies;
     const rigid = bodies.rigid!;
     const { c, s } = rigid;
@@ -455,27 +471,11 @@ export class ShapeNarrowPhase implements PairConsumer {
     const bc = j === WORLD ? 1 : c[j];
     const bs = j === WORLD ? 0 : s[j];
     // Each body's turn since the cache: q q0^-1.
-    const dac = ac * prev.cacheAC[q] + as * prev.cacheAS[q];
-    const das = as * prev.cacheAC[q] - ac * prev.cacheAS[q];
-    const dbc = bc * prev.cacheBC[q] + bs * prev.cacheBS[q];
-    const dbs = bs * prev.cacheBC[q] - bc * prev.cacheBS[q];
-    this.current.recycle(prev, q, bodies.x[i], bodies.y[i], dac, das, j === WORLD ? 0 : bodies.x[j], j === WORLD ? 0 : bodies.y[j], dbc, dbs);
+    const dac = ac * list.cacheAC[q] + as * list.cacheAS[q];
+    const das = as * list.cacheAC[q] - ac * list.cacheAS[q];
+    const dbc = bc * list.cacheBC[q] + bs * list.cacheBS[q];
+    const dbs = bs * list.cacheBC[q] - bc * list.cacheBS[q];
+    list.refresh(q, bodies.x[i], bodies.y[i], dac, das, j === WORLD ? 0 : bodies.x[j], j === WORLD ? 0 : bodies.y[j], dbc, dbs);
     this.recycled++;
-  }
-
-  /** Contact k inherits from the previous step's contact of the same two shapes, if any (from p on). */
-  private warmStart(k: number, p: number): void {
-    const prev = this.previous;
-    const list = this.current;
-    const i = list.bodyA[k];
-    const j = list.bodyB[k];
-    const keyA = list.keyA[k];
-    const keyB = list.keyB[k];
-    for (let q = p; q < prev.count && prev.bodyA[q] === i && prev.bodyB[q] === j; q++) {
-      if (prev.keyA[q] === keyA && prev.keyB[q] === keyB) {
-        list.inherit(k, prev, q);
-        return;
-      }
-    }
   }
 }

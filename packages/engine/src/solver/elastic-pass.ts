@@ -37,7 +37,9 @@ export class ElasticPass {
     const threshold = settings.restitutionThreshold;
     const correction = settings.positionCorrection;
     const slop = settings.contactSlop;
-    for (let k = 0; k < count; k++) {
+    const order = contacts.order;
+    for (let listed = 0; listed < count; listed++) {
+      const k = order[listed];
       const a = contacts.bodyA[k];
       const b = contacts.bodyB[k];
       const movesA = type[a] === TypeCode.dynamic && asleep[a] === 0;

@@ -42,8 +42,9 @@ export class IslandSleep {
       blocked[i] = 0;
       ringHead[i] = -1;
     }
-    const { bodyA, bodyB, pointCount, count } = contacts;
-    for (let k = 0; k < count; k++) {
+    const { bodyA, bodyB, pointCount, count, order } = contacts;
+    for (let n = 0; n < count; n++) {
+      const k = order[n];
       if (pointCount[k] === 0) continue;
       const a = bodyA[k];
       const b = bodyB[k];

@@ -3,10 +3,10 @@ import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelM
 
 /**
  * The soft step's body states, constraints and constraint pairs laid out in one WebAssembly
- * memory, and its three hot passes (warm start, solve, relax) compiled from
- * assembly/soft-step.ts over them, two constraints per 128-bit SIMD instruction. The passes give
- * the same bits as SoftStep's TypeScript loops, which serve wherever WebAssembly or its SIMD is
- * missing, and every other stage of the step works on the same arrays either way.
+ * memory, and its hot passes compiled from assembly/soft-step.ts over them: warm start, solve and
+ * relax, two constraints per 128-bit SIMD instruction, and the sub-steps' body integration. They
+ * give the same bits as SoftStep's TypeScript loops, which serve wherever WebAssembly or its SIMD
+ * is missing, and every other stage of the step works on the same arrays either way.
  *
  * Why: the passes are most of a pile's step (Box2D's pyramid, 5,050 boxes: 8 of its 14 ms), and
  * they are arithmetic on two independent constraints at a time, which V8's JIT cannot vectorise.
@@ -16,6 +16,8 @@ interface SoftStepExports {
   warmStart(states: number, constraints: number, pairs: number, lanes: number): void;
   solve(states: number, constraints: number, pairs: number, lanes: number, inverseH: number, pushSpeed: number): void;
   relax(states: number, constraints: number, pairs: number, lanes: number, inverseH: number): void;
+  integrateVelocities(states: number, n: number, dvx: number, dvy: number): void;
+  integratePositions(states: number, n: number, h: number, maxLinearSpeed: number, maxAngular: number): void;
 }
 
 /** v128 loads are fastest on 16-byte boundaries. */
@@ -101,5 +103,14 @@ export class SoftStepKernel {
 
   relax(lanes: number, inverseH: number): void {
     this.fn.relax(this.states.byteOffset, this.constraints.byteOffset, this.pairs.byteOffset, lanes, inverseH);
+  }
+
+  /** Bodies 1..n's velocities plus (dvx, dvy), where no body has forces, damping or a gravity scale. */
+  integrateVelocities(n: number, dvx: number, dvy: number): void {
+    this.fn.integrateVelocities(this.states.byteOffset, n, dvx, dvy);
+  }
+
+  integratePositions(n: number, h: number, maxLinearSpeed: number, maxAngular: number): void {
+    this.fn.integratePositions(this.states.byteOffset, n, h, maxLinearSpeed, maxAngular);
   }
 }

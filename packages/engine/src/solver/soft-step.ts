@@ -50,7 +50,7 @@ const IB = 20;
 const BIAS_RATE = 22;
 const MASS_SCALE = 24;
 const IMPULSE_SCALE = 26;
-/** 1 or 2; 0 for the empty lane that pads a colour to whole pairs. */
+/** 1 or 2; 0 for the empty lanes that pad a colour to whole quads. */
 const POINTS = 28;
 const CONTACT = 30;
 const P = 32;
@@ -71,6 +71,20 @@ const POINT = 24;
 /** Doubles per pair of constraints. */
 export const PAIR = P + 2 * POINT;
 
+/**
+ * Box2D's b2MakeSoft: the bias rate, mass scale and impulse scale of a spring of `hertz` with
+ * damping ratio `zeta` over a sub-step h, into out[0..2].
+ */
+function makeSoft(hertz: number, zeta: number, h: number, out: Float64Array): void {
+  const omega = 2 * Math.PI * hertz;
+  const a1 = 2 * zeta + h * omega;
+  const a2 = h * omega * a1;
+  const a3 = 1 / (1 + a2);
+  out[0] = omega / a1;
+  out[1] = a2 * a3;
+  out[2] = a3;
+}
+
 /** Where constraint i's fields start (add a field offset). */
 function at(i: number): number {
   return (i >> 1) * PAIR + (i & 1);
@@ -81,6 +95,8 @@ const COLOURS = 23;
 /** Contacts between two moving bodies use the lower colours only, leaving the top ones to static contacts. */
 const MOVING_COLOURS = COLOURS - 4;
 const NO_COLOUR = 255;
+/** Lanes the kernel solves together (assembly/soft-step.ts): a colour is padded to a multiple of them. */
+const QUAD = 4;
 /** Strides for visiting contacts when colouring them: the first that does not divide the count. */
 const STRIDE_PRIMES = [7919, 7927, 7933, 7937];
 
@@ -125,12 +141,15 @@ export class SoftStep {
   private states = new Float64Array(0);
   private constraints = new Float64Array(0);
   private pairs = new Int32Array(0);
-  /** Constraint lanes in use: twice the pairs, an empty lane closing a colour of odd size. */
+  /** Constraint lanes in use: each colour padded with empty lanes to a multiple of QUAD. */
   private laneCount = 0;
   private colourOf = new Uint8Array(0);
   private order = new Int32Array(0);
   private used = new Uint32Array(0);
   private readonly colourStart = new Int32Array(COLOURS + 2);
+  /** Bias rate, mass scale and impulse scale of contacts between moving bodies, and of those with a static one. */
+  private readonly softness = new Float64Array(3);
+  private readonly staticSoftness = new Float64Array(3);
 
   /** Bodies that moved in the last solve, by solver index - 1: their slots. */
   get movedCount(): number {
@@ -148,14 +167,19 @@ export class SoftStep {
     const h = dt / substeps;
     const inverseH = 1 / h;
     this.prepare(bodies, contacts, h, settings);
-    const { kernel, laneCount } = this;
+    const { kernel, laneCount, awakeCount } = this;
+    // Velocity plus gravity alone, the kernel's case: the general loop's terms are then 0 and its factors 1.
+    const plain = kernel !== null && bodies.customMotionCount === 0 && !bodies.forcesPending;
+    const maxAngular = MAX_ROTATION / dt;
     for (let i = 0; i < substeps; i++) {
-      this.integrateVelocities(bodies, gx, gy, h);
+      if (plain) kernel.integrateVelocities(awakeCount, h * (0 + gx), h * (0 + gy));
+      else this.integrateVelocities(bodies, gx, gy, h);
       if (kernel !== null) kernel.warmStart(laneCount);
       else this.warmStart();
       if (kernel !== null) kernel.solve(laneCount, inverseH, settings.contactPushSpeed);
       else this.solveContacts(inverseH, settings.contactPushSpeed);
-      this.integratePositions(bodies, h, dt, settings.maxLinearSpeed);
+      if (kernel !== null) kernel.integratePositions(awakeCount, h, settings.maxLinearSpeed, maxAngular);
+      else this.integratePositions(h, settings.maxLinearSpeed, maxAngular);
       if (kernel !== null) kernel.relax(laneCount, inverseH);
       else this.relaxContacts(inverseH);
     }
@@ -216,7 +240,7 @@ export class SoftStep {
       const b = (k + 1) * BODY;
       states[b + VX] = vx[slot];
       states[b + VY] = vy[slot];
-      states[b + W] = rigid.angularVelocity[slot];
+      states[b + W] = (rigid.flags[slot] & BodyFlag.fixedRotation) !== 0 ? 0 : rigid.angularVelocity[slot];
       states[b + DPX] = 0;
       states[b + DPY] = 0;
       states[b + DQC] = 1;
@@ -233,7 +257,9 @@ export class SoftStep {
     const count = contacts.count;
     // Stiffer against static bodies, so that a pile does not sink into the ground.
     const hertz = Math.min(settings.contactHertz, 0.25 / h);
-    const zeta = settings.contactDampingRatio;
+    const { softness, staticSoftness } = this;
+    makeSoft(hertz, settings.contactDampingRatio, h, softness);
+    makeSoft(2 * hertz, settings.contactDampingRatio, h, staticSoftness);
     // Colour the contacts (Box2D v3's constraint graph): each colour holds contacts that share no
     // moving body, and colours are solved in turn (see `colour`). Contacts with a static body
     // take colours from the top down, so that they come last and have the last word, and a pile
@@ -268,15 +294,10 @@ export class SoftStep {
       const iA = ia === 0 ? 0 : invInertia[a];
       const mB = ib === 0 ? 0 : invMass[b];
       const iB = ib === 0 ? 0 : invInertia[b];
-      const onStatic = ia === 0 || ib === 0;
-      const omega = 2 * Math.PI * (onStatic ? 2 * hertz : hertz);
-      // Box2D's b2MakeSoft: bias rate, mass scale and impulse scale of a damped spring over h.
-      const a1 = 2 * zeta + h * omega;
-      const a2 = h * omega * a1;
-      const a3 = 1 / (1 + a2);
-      constraints[c + BIAS_RATE] = omega / a1;
-      constraints[c + MASS_SCALE] = a2 * a3;
-      constraints[c + IMPULSE_SCALE] = a3;
+      const soft = ia === 0 || ib === 0 ? staticSoftness : softness;
+      constraints[c + BIAS_RATE] = soft[0];
+      constraints[c + MASS_SCALE] = soft[1];
+      constraints[c + IMPULSE_SCALE] = soft[2];
       const nx = contacts.normalX[k];
       const ny = contacts.normalY[k];
       constraints[c + NX] = nx;
@@ -285,7 +306,7 @@ export class SoftStep {
       constraints[c + RESTITUTION] = contacts.restitution[k];
       constraints[c + ROLLING] = contacts.rollingResistance[k];
       constraints[c + ROLLING_IMPULSE] = contacts.rollingImpulse[k];
-      constraints[c + ROLLING_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
+      constraints[c + ROLLING_MASS] = contacts.rollingResistance[k] > 0 && iA + iB > 0 ? 1 / (iA + iB) : 0;
       constraints[c + MA] = mA;
       constraints[c + IA] = iA;
       constraints[c + MB] = mB;
@@ -338,7 +359,7 @@ export class SoftStep {
 
   /**
    * Gives each contact with a moving body a colour (greedy: the lowest free for both bodies), and
-   * lists them in `order` colour by colour, each colour in canonical order and padded to whole pairs; sets laneCount.
+   * lists them in `order` colour by colour, each colour in canonical order and padded to whole quads; sets laneCount.
    *
    * Contacts are visited in a scattered order, k -> k * STRIDE_PRIME mod count, not in canonical
    * order: canonical order runs through space (slots follow creation), so a greedy sweep in it
@@ -361,7 +382,9 @@ export class SoftStep {
         break;
       }
     }
-    for (let visit = 0, k = 0; visit < count; visit++, k = (k + stride) % count) {
+    const contactOrder = contacts.order;
+    for (let visit = 0, n = 0; visit < count; visit++, n = (n + stride) % count) {
+      const k = contactOrder[n];
       const b = contacts.bodyB[k];
       const ia = index[contacts.bodyA[k]];
       const ib = b === WORLD ? 0 : index[b];
@@ -388,29 +411,29 @@ export class SoftStep {
           }
         }
       }
-      colourOf[k] = colour;
+      colourOf[n] = colour;
       if (colour !== NO_COLOUR) colourStart[colour + 1]++;
     }
-    // Lanes per colour: each colour rounded up to whole pairs; the contacts with no colour left
-    // (more neighbours than colours) may share bodies, so each takes a pair of its own, and they
-    // come after all the colours.
+    // Lanes per colour: each colour rounded up to whole quads (the kernel's two pairs of lanes);
+    // the contacts with no colour left (more neighbours than colours) may share bodies, so each
+    // takes a quad of its own, and they come after all the colours.
     let lanes = 0;
     for (let c = 0; c <= COLOURS; c++) {
       const size = colourStart[c + 1];
       colourStart[c + 1] = lanes;
-      lanes += c === COLOURS ? 2 * size : size + (size & 1);
+      lanes += c === COLOURS ? QUAD * size : (size + QUAD - 1) & -QUAD;
     }
     this.laneCount = lanes;
     if (this.order.length < lanes) this.order = new Int32Array(grownCapacity(this.order.length, lanes));
     const order = this.order;
     order.fill(-1, 0, lanes);
-    // Counting sort by colour, stable: each colour in canonical order.
-    for (let k = 0; k < count; k++) {
-      const colour = colourOf[k];
+    // Counting sort by colour, stable: each colour in canonical order; lanes hold contact slots.
+    for (let n = 0; n < count; n++) {
+      const colour = colourOf[n];
       if (colour === NO_COLOUR) continue;
-      const slot = colourStart[colour + 1];
-      order[slot] = k;
-      colourStart[colour + 1] = slot + (colour === COLOURS ? 2 : 1);
+      const lane = colourStart[colour + 1];
+      order[lane] = contactOrder[n];
+      colourStart[colour + 1] = lane + (colour === COLOURS ? QUAD : 1);
     }
   }
 
@@ -714,11 +737,10 @@ export class SoftStep {
     }
   }
 
-  private integratePositions(bodies: BodyStore, h: number, dt: number, maxLinearSpeed: number): void {
-    const { awake, awakeCount, states } = this;
-    const flags = bodies.rigid!.flags;
+  /** A fixed rotation's spin is 0 throughout (gatherBodies, integrateVelocities), and its inertia infinite. */
+  private integratePositions(h: number, maxLinearSpeed: number, maxAngular: number): void {
+    const { awakeCount, states } = this;
     const maxSpeedSq = maxLinearSpeed * maxLinearSpeed;
-    const maxAngular = MAX_ROTATION / dt;
     for (let k = 0; k < awakeCount; k++) {
       const b = (k + 1) * BODY;
       let vx = states[b + VX];
@@ -731,7 +753,6 @@ export class SoftStep {
         vy *= ratio;
       }
       if (w * w > maxAngular * maxAngular) w = w > 0 ? maxAngular : -maxAngular;
-      if ((flags[awake[k]] & BodyFlag.fixedRotation) !== 0) w = 0;
       states[b + VX] = vx;
       states[b + VY] = vy;
       states[b + W] = w;

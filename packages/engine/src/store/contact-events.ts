@@ -368,7 +368,8 @@ export class ContactEvents implements ContactEventsView {
     touchingSegments.count = 0;
     touchingWalls.count = 0;
     touchingShapes.clear();
-    for (let k = 0; k < contacts.count; k++) {
+    for (let n = 0; n < contacts.count; n++) {
+      const k = contacts.order[n];
       const a = contacts.bodyA[k];
       const b = contacts.bodyB[k];
       const sa = contacts.shapeA[k];
