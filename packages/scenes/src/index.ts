@@ -11,11 +11,15 @@ import { verticalStack, verticalStackParams } from './vertical-stack.js';
 import { cardHouse, cardHouseParams } from './card-house.js';
 import { ramp, rampParams } from './ramp.js';
 import { uniformPolygons, uniformPolygonsParams } from './uniform-polygons.js';
+import { manyPyramids, manyPyramidsParams } from './many-pyramids.js';
+import { tumbler, tumblerParams } from './tumbler.js';
+import { polygonBox, polygonBoxParams } from './polygon-box.js';
 
 export { Prng } from './prng.js';
 export { buildWorld, type Scene, type SceneSegment, type BuildOptions, type Layers } from './scene.js';
 export { buildShapeWorld, boxBody, type ShapeScene, type SceneBody, type SceneShape, type ShapeBuildOptions } from './shape-scene.js';
 export { pyramid, pyramidParams, verticalStack, verticalStackParams, cardHouse, cardHouseParams, ramp, rampParams, uniformPolygons, uniformPolygonsParams };
+export { manyPyramids, manyPyramidsParams, tumbler, tumblerParams, polygonBox, polygonBoxParams };
 export { resolveParams, type ParamSpec, type ParamSpecs } from './params.js';
 export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams, funnel, funnelParams };
 
@@ -77,6 +81,11 @@ export const SHAPE_SCENES = {
     params: pyramidParams,
     build: pyramid,
   },
+  'many-pyramids': {
+    description: "Box2D v3's many_pyramids: 20 x 20 pyramids of base 10 (22,000 boxes), each row on its own floor",
+    params: manyPyramidsParams,
+    build: manyPyramids,
+  },
   'vertical-stack': {
     description: 'A column of 15 boxes on the ground; massRatio makes the top one heavy',
     params: verticalStackParams,
@@ -96,6 +105,16 @@ export const SHAPE_SCENES = {
     description: "The uniform scene with shapes: squares and hexagons, circumradius in [4, 8], 25% filled, elastic, frictionless, no gravity",
     params: uniformPolygonsParams,
     build: uniformPolygons,
+  },
+  'polygon-box': {
+    description: "The report's seed box with shapes: boxes, triangles, hexagons, capsules and circles, spinning, under gravity",
+    params: polygonBoxParams,
+    build: polygonBox,
+  },
+  tumbler: {
+    description: "Box2D v3's tumbler: 2,025 small boxes in a hollow square drum turned kinematically",
+    params: tumblerParams,
+    build: tumbler,
   },
 } satisfies Record<string, ShapeSceneDefinition>;
 

@@ -18,7 +18,7 @@ const SQRT3 = Math.sqrt(3);
  * The `uniform` scene with shapes (the report's noisy scene, as its section 7.4 asks of general
  * polygons): squares and regular hexagons in turn, circumradius uniform in [minRadius, maxRadius],
  * at random angles, filling `fill` of a square box, elastic (restitution 1), frictionless, no
- * gravity, on the report's single elastic pass. Bodies start on a jittered lattice, one per cell,
+ * gravity, on the report's single elastic pass; pixels (lengthUnit 50). Bodies start on a jittered lattice, one per cell,
  * apart at the default sizes and fill; listed row by row.
  */
 export function uniformPolygons(given?: Partial<Record<keyof typeof uniformPolygonsParams, number>>): ShapeScene {
@@ -71,7 +71,7 @@ export function uniformPolygons(given?: Partial<Record<keyof typeof uniformPolyg
     params: Object.freeze({ ...p }),
     bounds: { width: side, height: side },
     gravity: { x: 0, y: 0 },
-    world: { friction: 0, restitution: 1, solver: 'elastic' },
+    world: { friction: 0, restitution: 1, solver: 'elastic', lengthUnit: 50, sleeping: false },
     bodies,
     segments: [],
     view: { minX: 0, minY: 0, maxX: side, maxY: side },
