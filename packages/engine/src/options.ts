@@ -428,7 +428,9 @@ export function shapeRouteSettings(resolved: ResolvedWorldOptions, gravity: Vect
       positionCorrection: resolved.positionCorrection,
       contactSlop: resolved.contactSlop,
     },
-    margin: 4 * slop,
+    // The elastic pass works on overlaps alone, so its bodies need no speculative reach: a margin
+    // would only widen every bounding circle and send more pairs to the narrow-phase.
+    margin: resolved.solver === 'elastic' ? 0 : 4 * slop,
     slop,
     wallFriction: resolved.friction,
     wallRestitution: resolved.restitution,
