@@ -3,6 +3,10 @@ import { mkdirSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { SCENE_NAMES } from '@maxgrid/scenes';
 import { ENGINE_IDS } from './engines/registry.js';
+import { SHAPE_ENGINE_IDS } from './shape-engines/registry.js';
+
+/** Circle engines, then the shape engines not among them: experiments on shape scenes take the latter. */
+const ALL_ENGINE_IDS = [...ENGINE_IDS, ...SHAPE_ENGINE_IDS.filter((id) => !ENGINE_IDS.includes(id))];
 import { nRange } from './experiments/common.js';
 import { EXPERIMENTS, EXPERIMENT_NAMES, OVERRIDE_FLAGS as FLAGS, type Overrides } from './experiments/registry.js';
 
@@ -76,7 +80,7 @@ const program = new Command()
   .name('npm run lab --')
   .description("maxgrid's lab: the report's experiments against Box2D, planck, Rapier, Matter.js and p2")
   .addArgument(new Argument('<experiment>', 'what to run').choices(EXPERIMENT_NAMES))
-  .option('--engines <ids>', `comma-separated engines: ${ENGINE_IDS.join(', ')}`, list('--engines', oneOf('--engines', ENGINE_IDS)))
+  .option('--engines <ids>', `comma-separated engines: ${ALL_ENGINE_IDS.join(', ')} (shape experiments: ${SHAPE_ENGINE_IDS.join(', ')})`, list('--engines', oneOf('--engines', ALL_ENGINE_IDS)))
   .option('--n <list>', 'comma-separated body counts, e.g. 1000,4000', list('--n', positiveInteger('--n')))
   .option('--n-start <n>', 'first N of a range (the report: 10)', positiveInteger('--n-start'))
   .option('--n-end <n>', 'last N of a range (the report: 4200)', positiveInteger('--n-end'))

@@ -43,6 +43,8 @@ class MatterSimulation implements Simulation {
   }
 
   step(dt: number): void {
+    // Module-wide in Matter, and the shape adapter sets its own: set before each step.
+    (this.M.Resolver as unknown as { _restingThresh: number })._restingThresh = 0;
     this.M.Engine.update(this.engine, dt * 1000);
   }
 

@@ -9,8 +9,13 @@ export type Vec2 = Float32Array | number[];
 export interface P2Body {
   position: Vec2;
   velocity: Vec2;
+  angle: number;
+  angularVelocity: number;
   shapes: object[];
-  addShape(shape: object): void;
+  addShape(shape: object, offset?: [number, number], angle?: number): void;
+  updateMassProperties(): void;
+  adjustCenterOfMass(): void;
+  updateAABB(): void;
 }
 
 export interface P2World {
@@ -31,16 +36,23 @@ export interface P2Api {
       mass: number;
       type?: number;
       position: [number, number];
+      angle?: number;
       velocity?: [number, number];
+      angularVelocity?: number;
       fixedRotation?: boolean;
       damping?: number;
       angularDamping?: number;
       allowSleep?: boolean;
     }): P2Body;
     STATIC: number;
+    DYNAMIC: number;
+    KINEMATIC: number;
   };
   Circle: new (options: { radius: number }) => object;
   Box: new (options: { width: number; height: number }) => object;
+  Capsule: new (options: { length: number; radius: number }) => object;
+  Convex: new (options: { vertices: number[][] }) => object;
+  Line: new (options: { length: number }) => object;
   GSSolver: new (options: { iterations: number }) => object;
 }
 

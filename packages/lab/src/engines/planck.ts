@@ -14,7 +14,7 @@ class PlanckSimulation implements Simulation {
   private readonly world: InstanceType<Planck['World']>;
   private readonly bodies: PlanckBody[] = [];
 
-  constructor(pl: Planck, scene: Scene) {
+  constructor(private readonly pl: Planck, scene: Scene) {
     requirePeerScene(scene, 'planck');
     this.count = scene.count;
     this.world = new pl.World({
@@ -44,6 +44,8 @@ class PlanckSimulation implements Simulation {
   }
 
   step(dt: number): void {
+    // Process-wide in planck, and the shape adapter sets its own: set before each step.
+    this.pl.Settings.velocityThreshold = 0;
     this.world.step(dt, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
   }
 

@@ -1,5 +1,6 @@
 import type { Scene } from '@maxgrid/scenes';
 import type { Engine, EngineInfo } from '../engines/adapter.js';
+import type { ShapeEngine, ShapeEngineInfo } from '../shape-engines/adapter.js';
 
 export type Profile = 'quick' | 'full';
 
@@ -26,6 +27,8 @@ export interface Progress {
 
 export interface RunContext {
   engines: Engine[];
+  /** The engines of an experiment on shape scenes (Experiment.shapes). */
+  shapeEngines?: ShapeEngine[];
   environment: Environment;
   profile?: Profile | 'custom';
   progress?: Progress;
@@ -138,7 +141,7 @@ export function makeMeta(experiment: string, ctx: RunContext, options: object): 
     generatedAt: new Date().toISOString(),
     profile: ctx.profile ?? 'custom',
     environment: ctx.environment,
-    engines: ctx.engines.map((e) => e.info),
+    engines: [...ctx.engines.map((e) => e.info), ...(ctx.shapeEngines ?? []).map((e) => shapeEngineRow(e.info))],
     options: { ...options },
   };
 }
@@ -172,6 +175,18 @@ export function spread(values: readonly number[]): Spread {
     max: s[s.length - 1],
     mean: s.reduce((a, b) => a + b, 0) / s.length,
   };
+}
+
+/**
+ * A shape engine as a row of the settings table: its id marked `(shapes)` (its settings differ
+ * from the circle adapter's of the same engine), both profiles' settings, units per scene.
+ */
+export function shapeEngineRow(info: ShapeEngineInfo): EngineInfo {
+  const settings: Record<string, string | number | boolean> = {};
+  for (const [profile, values] of Object.entries(info.settings)) {
+    for (const [key, value] of Object.entries(values)) settings[`${profile}.${key}`] = value;
+  }
+  return { id: `${info.id} (shapes)`, package: info.package, version: info.version, precision: info.precision, lengthScale: 0, settings };
 }
 
 /** `engines` whose id starts with `maxgrid:`, as the maxgrid-only experiments need. */

@@ -34,6 +34,31 @@ import { targetsCsv } from './targets-csv.js';
 import { runScale, scaleCharts, scaleCsv, scaleDefaults, scaleSchema, type ScaleOptions, type ScaleResult } from './scale.js';
 import { runStepTime, stepTimeCharts, stepTimeCsv, stepTimeDefaults, stepTimeSchema, type StepTimeOptions, type StepTimeResult } from './step-time.js';
 
+import {
+  runShapeStepTime,
+  shapeStepTimeCharts,
+  shapeStepTimeCsv,
+  shapeStepTimeDefaults,
+  shapeStepTimeHeadline,
+  shapeStepTimeSchema,
+  shapeStepTimeTables,
+  type ShapeStepTimeOptions,
+  type ShapeStepTimeResult,
+} from './shape-step-time.js';
+import { runStability, stabilityCsv, stabilityDefaults, stabilityHeadline, stabilitySchema, stabilityTables, type StabilityOptions, type StabilityResult } from './stability.js';
+import { runShapeEnergy, shapeEnergyCharts, shapeEnergyCsv, shapeEnergyDefaults, shapeEnergyHeadline, shapeEnergySchema, shapeEnergyTables, type ShapeEnergyOptions, type ShapeEnergyResult } from './shape-energy.js';
+import {
+  runShapeFalsePositives,
+  shapeFalsePositiveCsv,
+  shapeFalsePositiveDefaults,
+  shapeFalsePositiveHeadline,
+  shapeFalsePositiveSchema,
+  shapeFalsePositiveTables,
+  type ShapeFalsePositiveOptions,
+  type ShapeFalsePositiveResult,
+} from './shape-false-positives.js';
+import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
+
 /** Command-line style overrides; each experiment takes the ones that mean something to it. */
 export interface Overrides {
   ns?: number[];
@@ -52,6 +77,8 @@ export interface Experiment<O extends object, R> {
   nodeOnly?: boolean;
   /** Measures its default engines whatever --engines says: the option is refused. */
   fixedEngines?: boolean;
+  /** Runs shape scenes: its engine ids name shape engines (src/shape-engines), loaded into RunContext.shapeEngines. */
+  shapes?: boolean;
   options(profile: Profile, overrides: Overrides): O;
   run(options: O, ctx: RunContext): Promise<R>;
   csv(result: R): string;
@@ -270,6 +297,86 @@ export const piles: Experiment<PilesOptions, PilesResult> = {
   headline: pilesHeadline,
 };
 
+/** The peers for shape scenes, after maxgrid's report broad-phase and its default. */
+const SHAPE_PEERS = SHAPE_ENGINE_IDS.filter((id) => !id.startsWith('maxgrid:'));
+
+export const shapeStepTime: Experiment<ShapeStepTimeOptions, ShapeStepTimeResult> = {
+  name: 'shape-step-time',
+  description: "Step time on shape scenes per engine: Box2D v3's pyramid, many pyramids and tumbler, and N sweeps of uniform-polygons and polygon-box; the answer to the report's 7.4",
+  schema: shapeStepTimeSchema,
+  defaultEngines: ['maxgrid:maxgrid', 'maxgrid:auto', ...SHAPE_PEERS],
+  nodeOnly: true,
+  shapes: true,
+  options(profile, o) {
+    reject('shape-step-time', o, ['runs', 'dt']);
+    const d = shapeStepTimeDefaults(profile);
+    return { ...d, runs: o.runs ?? d.runs, dt: o.dt ?? d.dt };
+  },
+  run: runShapeStepTime,
+  csv: shapeStepTimeCsv,
+  tables: shapeStepTimeTables,
+  headline: shapeStepTimeHeadline,
+  charts: shapeStepTimeCharts,
+};
+
+export const stability: Experiment<StabilityOptions, StabilityResult> = {
+  name: 'stability',
+  description: 'Stacks and friction per engine and settings profile: the pyramid, a 15-box stack, a 100:1 stack, the card house, a box on a ramp above and below its friction angle',
+  schema: stabilitySchema,
+  defaultEngines: ['maxgrid:maxgrid', ...SHAPE_PEERS],
+  nodeOnly: true,
+  shapes: true,
+  options(profile, o) {
+    reject('stability', o, ['seconds', 'dt']);
+    const d = stabilityDefaults(profile);
+    return { ...d, seconds: o.seconds ?? d.seconds, dt: o.dt ?? d.dt };
+  },
+  run: runStability,
+  csv: stabilityCsv,
+  charts: () => [],
+  tables: stabilityTables,
+  headline: stabilityHeadline,
+};
+
+export const shapeEnergy: Experiment<ShapeEnergyOptions, ShapeEnergyResult> = {
+  name: 'shape-energy',
+  description: 'Kinetic energy (linear + rotational) of elastic frictionless squares and hexagons over time, per engine and settings profile (report 5.13.1 with shapes)',
+  schema: shapeEnergySchema,
+  defaultEngines: ['maxgrid:maxgrid', ...SHAPE_PEERS],
+  nodeOnly: true,
+  shapes: true,
+  options(profile, o) {
+    reject('shape-energy', o, ['ns', 'seconds', 'dt']);
+    if (o.ns && o.ns.length !== 1) throw new RangeError(`option --n takes one value for experiment 'shape-energy', got ${o.ns.join(',')}`);
+    const d = shapeEnergyDefaults(profile);
+    return { ...d, n: o.ns?.[0] ?? d.n, seconds: o.seconds ?? d.seconds, dt: o.dt ?? d.dt };
+  },
+  run: runShapeEnergy,
+  csv: shapeEnergyCsv,
+  charts: shapeEnergyCharts,
+  tables: shapeEnergyTables,
+  headline: shapeEnergyHeadline,
+};
+
+export const shapeFalsePositives: Experiment<ShapeFalsePositiveOptions, ShapeFalsePositiveResult> = {
+  name: 'shape-false-positives',
+  description: "Broad-phase pairs examined, bounding-circle candidates and manifolds per body, and the narrow-phase's share of the step, per maxgrid broad-phase on shape mixes (report 7.4)",
+  schema: shapeFalsePositiveSchema,
+  defaultEngines: SHAPE_ENGINE_IDS.filter((id) => id.startsWith('maxgrid:')),
+  nodeOnly: true,
+  shapes: true,
+  options(profile, o) {
+    reject('shape-false-positives', o, ['dt']);
+    const d = shapeFalsePositiveDefaults(profile);
+    return { ...d, dt: o.dt ?? d.dt };
+  },
+  run: runShapeFalsePositives,
+  csv: shapeFalsePositiveCsv,
+  charts: () => [],
+  tables: shapeFalsePositiveTables,
+  headline: shapeFalsePositiveHeadline,
+};
+
 // The registry stores experiments of different option and result types side by side.
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 export type AnyExperiment = Experiment<any, any>;
@@ -285,6 +392,10 @@ export const EXPERIMENTS: Record<string, AnyExperiment> = {
   'sandbox-render': sandboxRender,
   threads,
   piles,
+  'shape-step-time': shapeStepTime,
+  stability,
+  'shape-energy': shapeEnergy,
+  'shape-false-positives': shapeFalsePositives,
 };
 
 /** Every experiment; `results` (Node only) runs them all and writes docs/results.md. */

@@ -4,6 +4,8 @@ import { dirname, join } from 'node:path';
 import type { Engine } from '../engines/adapter.js';
 import { box2dUsesSimd } from '../engines/box2d.js';
 import { loadEngines } from '../engines/registry.js';
+import type { ShapeEngine } from '../shape-engines/adapter.js';
+import { loadShapeEngines } from '../shape-engines/registry.js';
 
 const require = createRequire(import.meta.url);
 
@@ -16,4 +18,9 @@ export function box2dWasmBinary(): Uint8Array {
 /** `loadEngines` with the Node-only hooks filled in. */
 export function loadEnginesNode(ids: readonly string[]): Promise<Engine[]> {
   return loadEngines(ids, ids.includes('box2d-wasm') ? { box2dWasmBinary: box2dWasmBinary() } : {});
+}
+
+/** `loadShapeEngines` with box2d-wasm's bytes. */
+export function loadShapeEnginesNode(ids: readonly string[]): Promise<ShapeEngine[]> {
+  return loadShapeEngines(ids, ids.includes('box2d-wasm') ? { box2dWasmBinary: box2dWasmBinary() } : {});
 }

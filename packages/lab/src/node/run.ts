@@ -4,7 +4,7 @@ import type { Profile } from '../experiments/common.js';
 import type { AnyExperiment, Overrides } from '../experiments/registry.js';
 import { htmlReport, tablesFor } from '../report/html.js';
 import { machineLine, sectionMarkdown } from '../report/markdown.js';
-import { loadEnginesNode } from './engines.js';
+import { loadEnginesNode, loadShapeEnginesNode } from './engines.js';
 import { nodeEnvironment } from './machine.js';
 import { writeCharts, writeText } from './output.js';
 import { progressBar } from './progress.js';
@@ -28,12 +28,15 @@ export interface RunOutput {
 /** Runs one experiment in Node with a progress bar; options are validated before engines load. */
 export async function runExperiment(req: RunRequest): Promise<Omit<RunOutput, 'svgs'>> {
   const options = req.experiment.options(req.profile, req.overrides);
-  const engines = await loadEnginesNode(req.engineIds ?? req.experiment.defaultEngines);
+  const ids = req.engineIds ?? req.experiment.defaultEngines;
+  const engines = req.experiment.shapes ? [] : await loadEnginesNode(ids);
+  const shapeEngines = req.experiment.shapes ? await loadShapeEnginesNode(ids) : undefined;
   const custom = Object.values(req.overrides).some((v) => v !== undefined) || req.engineIds !== undefined;
   const bar = progressBar(req.experiment.name);
   try {
     const result = await req.experiment.run(options, {
       engines,
+      shapeEngines,
       environment: nodeEnvironment(),
       profile: custom ? 'custom' : req.profile,
       progress: bar.progress,

@@ -34,7 +34,7 @@ export function engineTable(engines: EngineInfo[]): Table {
       e.id,
       `${e.package}@${e.version}`,
       e.precision,
-      e.lengthScale === 1 ? 'scene px' : `1 px = ${e.lengthScale} m`,
+      e.lengthScale === 0 ? "1 m = the scene's lengthUnit" : e.lengthScale === 1 ? 'scene px' : `1 px = ${e.lengthScale} m`,
       Object.entries(e.settings)
         .map(([k, v]) => `${k}=${String(v)}`)
         .join('; '),

@@ -1,0 +1,358 @@
+import { buildShapeScene } from '@maxgrid/scenes';
+import { lineChart, type ChartSpec } from '../report/charts.js';
+import { fmt, ratioText, type Table } from '../report/tables.js';
+import type { ShapeProfile, StageTimes } from '../shape-engines/adapter.js';
+import { csvLine, makeMeta, metaSchema, now, rotate, spread, spreadSchema, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+
+/**
+ * Step time on scenes of shapes, every engine on the same scene: Box2D v3's fixed benchmarks
+ * (pyramid, many pyramids, tumbler) and two scenes swept over N (the report's noisy scene with
+ * squares and hexagons, elastic; the seed box with mixed shapes under gravity), so that the
+ * report's question 7.4 (where does Max Grid stop winning once shapes are general polygons?) is
+ * answered by ratios measured side by side. maxgrid also reports its stage times, which say why.
+ */
+export interface ShapeStepTimeOptions {
+  /** Scenes at one size each. */
+  fixed: { scene: string; params: Record<string, number> }[];
+  /** Scenes swept over N (their `n` parameter). */
+  sweeps: { scene: string; ns: number[]; profile: ShapeProfile }[];
+  /** The settings profile of the fixed scenes (see ShapeProfile). */
+  fixedProfile: ShapeProfile;
+  runs: number;
+  steps: number;
+  warmupSteps: number;
+  dt: number;
+  /** An engine whose median exceeds this on a sweep is not run at larger N of it. */
+  cutoffMs: number;
+  /** The maxgrid engine the 7.4 table measures peers against. */
+  baseline: string;
+}
+
+export function shapeStepTimeDefaults(profile: Profile): ShapeStepTimeOptions {
+  const common = { fixedProfile: 'defaults' as const, dt: 1 / 60, baseline: 'maxgrid:maxgrid' };
+  return profile === 'full'
+    ? {
+        ...common,
+        fixed: [
+          { scene: 'pyramid', params: { base: 100 } },
+          { scene: 'many-pyramids', params: {} },
+          { scene: 'tumbler', params: {} },
+        ],
+        sweeps: [
+          { scene: 'uniform-polygons', ns: [1000, 4000, 16000, 64000], profile: 'report' },
+          { scene: 'polygon-box', ns: [250, 1000, 4000, 16000], profile: 'defaults' },
+        ],
+        runs: 3,
+        steps: 300,
+        warmupSteps: 60,
+        cutoffMs: 1000,
+      }
+    : {
+        ...common,
+        fixed: [
+          { scene: 'pyramid', params: { base: 100 } },
+          { scene: 'many-pyramids', params: { rows: 5, columns: 5 } },
+          { scene: 'tumbler', params: {} },
+        ],
+        sweeps: [
+          { scene: 'uniform-polygons', ns: [1000, 4000, 16000, 64000], profile: 'report' },
+          { scene: 'polygon-box', ns: [250, 1000, 4000], profile: 'defaults' },
+        ],
+        runs: 1,
+        steps: 60,
+        warmupSteps: 30,
+        cutoffMs: 150,
+      };
+}
+
+export interface ShapeStepTimeRow {
+  scene: string;
+  /** The scene's size: N for sweeps, its body count for fixed scenes. */
+  n: number;
+  params: Record<string, number>;
+  profile: ShapeProfile;
+  engine: string;
+  /** Mean step time of each run, ms. */
+  runMs: number[];
+  ms: Spread;
+  /** maxgrid only: mean stage times and counts over the timed steps of the last run. */
+  stages: StageTimes | null;
+}
+
+export interface ShapeStepTimeResult {
+  meta: Meta;
+  options: ShapeStepTimeOptions;
+  rows: ShapeStepTimeRow[];
+  skipped: { scene: string; engine: string; fromN: number }[];
+}
+
+export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext): Promise<ShapeStepTimeResult> {
+  const engines = ctx.shapeEngines ?? [];
+  if (engines.length === 0) throw new RangeError('shape-step-time needs shape engines');
+  const rows: ShapeStepTimeRow[] = [];
+  const skipped: ShapeStepTimeResult['skipped'] = [];
+  const cases: { scene: string; params: Record<string, number>; profile: ShapeProfile; sweep: boolean }[] = [
+    ...o.fixed.map((f) => ({ scene: f.scene, params: f.params, profile: o.fixedProfile, sweep: false })),
+    ...o.sweeps.flatMap((s) => s.ns.map((n) => ({ scene: s.scene, params: { n }, profile: s.profile, sweep: true }))),
+  ];
+  const total = cases.length * o.runs * engines.length;
+  let done = 0;
+  const dropped = new Map<string, Set<string>>();
+  for (const c of cases) {
+    const out = dropped.get(c.scene) ?? new Set<string>();
+    dropped.set(c.scene, out);
+    const runMs = new Map<string, number[]>(engines.map((e) => [e.info.id, []]));
+    const stages = new Map<string, StageTimes>();
+    let size = 0;
+    for (let run = 0; run < o.runs; run++) {
+      const params = c.sweep ? { ...c.params, seed: run + 1 } : c.params;
+      for (const engine of rotate(engines, run)) {
+        const id = engine.info.id;
+        ctx.progress?.(done++, total, `${c.scene} ${JSON.stringify(c.params)} run ${run + 1} ${id}`);
+        if (out.has(id)) continue;
+        const scene = buildShapeScene(c.scene, params);
+        size = scene.bodies.length;
+        const sim = engine.create(scene, c.profile);
+        try {
+          for (let i = 0; i < o.warmupSteps; i++) sim.step(o.dt);
+          const sum: StageTimes = { broadphaseMs: 0, narrowphaseMs: 0, solveMs: 0, pairTests: 0, candidatePairs: 0, contacts: 0 };
+          let elapsed = 0;
+          for (let i = 0; i < o.steps; i++) {
+            // A clock pair per step, so that stage times can be read between steps; steps take
+            // milliseconds here, far above the clock's resolution.
+            const t = now();
+            sim.step(o.dt);
+            elapsed += now() - t;
+            const s = sim.stages?.();
+            if (s) for (const key of Object.keys(sum) as (keyof StageTimes)[]) sum[key] += s[key];
+          }
+          runMs.get(id)!.push(elapsed / o.steps);
+          if (sim.stages) {
+            for (const key of Object.keys(sum) as (keyof StageTimes)[]) sum[key] /= o.steps;
+            stages.set(id, sum);
+          }
+        } finally {
+          sim.dispose();
+        }
+        await ctx.yieldToHost?.();
+      }
+    }
+    for (const engine of engines) {
+      const id = engine.info.id;
+      const values = runMs.get(id)!;
+      if (values.length === 0) continue;
+      const row: ShapeStepTimeRow = { scene: c.scene, n: c.sweep ? c.params.n : size, params: c.params, profile: c.profile, engine: id, runMs: values, ms: spread(values), stages: stages.get(id) ?? null };
+      rows.push(row);
+      if (c.sweep && row.ms.median > o.cutoffMs && !out.has(id)) {
+        out.add(id);
+        const sweep = o.sweeps.find((s) => s.scene === c.scene)!;
+        const next = sweep.ns.find((m) => m > c.params.n);
+        if (next !== undefined) skipped.push({ scene: c.scene, engine: id, fromN: next });
+      }
+    }
+  }
+  ctx.progress?.(total, total, 'done');
+  return { meta: makeMeta('shape-step-time', ctx, o), options: o, rows, skipped };
+}
+
+/** The stage that took most of maxgrid's step, and its share. */
+export function dominantStage(s: StageTimes | null): string {
+  if (!s) return '';
+  const stages: [string, number][] = [
+    ['broad-phase', s.broadphaseMs],
+    ['narrow-phase', s.narrowphaseMs],
+    ['solver', s.solveMs],
+  ];
+  const total = stages.reduce((a, [, v]) => a + v, 0);
+  const [name, ms] = stages.reduce((a, b) => (b[1] > a[1] ? b : a));
+  return total > 0 ? `${name} ${Math.round((100 * ms) / total)} %` : '';
+}
+
+function peersOf(result: ShapeStepTimeResult): string[] {
+  return [...new Set(result.rows.map((r) => r.engine))].filter((e) => !e.startsWith('maxgrid:'));
+}
+
+function find(result: ShapeStepTimeResult, scene: string, n: number, engine: string): ShapeStepTimeRow | undefined {
+  return result.rows.find((r) => r.scene === scene && r.n === n && r.engine === engine);
+}
+
+/** Where a peer first steps faster than the baseline along a sweep, or null. */
+export function crossing(result: ShapeStepTimeResult, scene: string, peer: string): number | null {
+  const baseline = result.options.baseline;
+  const ns = [...new Set(result.rows.filter((r) => r.scene === scene).map((r) => r.n))].sort((a, b) => a - b);
+  for (const n of ns) {
+    const a = find(result, scene, n, peer);
+    const b = find(result, scene, n, baseline);
+    if (a && b && a.ms.median < b.ms.median) return n;
+  }
+  return null;
+}
+
+export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
+  const engines = [...new Set(result.rows.map((r) => r.engine))];
+  const cases = [...new Map(result.rows.map((r) => [`${r.scene} ${r.n}`, r])).values()];
+  const times: Table = {
+    title: 'Step time on shape scenes (median of runs, ms)',
+    headers: ['scene', 'N', 'profile', ...engines],
+    rows: cases.map((c) => [c.scene, String(c.n), c.profile, ...engines.map((e) => fmt(find(result, c.scene, c.n, e)?.ms.median))]),
+  };
+  const baseline = result.options.baseline;
+  const peers = peersOf(result);
+  const answer: Table = {
+    title: `Report 7.4: each peer's step time over ${baseline}'s (above 1: maxgrid is faster), and what takes maxgrid's step`,
+    headers: ['scene', 'N', `${baseline} ms`, ...peers, 'maxgrid pairs per body', 'maxgrid contacts per body', 'maxgrid stage that dominates'],
+    rows: cases.map((c) => {
+      const b = find(result, c.scene, c.n, baseline);
+      const s = b?.stages ?? null;
+      return [
+        c.scene,
+        String(c.n),
+        fmt(b?.ms.median),
+        ...peers.map((p) => {
+          const r = find(result, c.scene, c.n, p);
+          return r && b ? ratioText(r.ms.median / b.ms.median) : '';
+        }),
+        s ? fmt(s.candidatePairs / c.n) : '',
+        s ? fmt(s.contacts / c.n) : '',
+        dominantStage(s),
+      ];
+    }),
+  };
+  const sweeps = [...new Set(result.options.sweeps.map((s) => s.scene))];
+  const crossings: Table = {
+    title: 'Where a peer overtakes Max Grid along N (the first N at which it steps faster), if it does',
+    headers: ['scene', ...peers],
+    rows: sweeps.map((scene) => {
+      const largest = Math.max(...result.rows.filter((r) => r.scene === scene).map((r) => r.n));
+      return [scene, ...peers.map((p) => {
+        const n = crossing(result, scene, p);
+        return n === null ? `not up to N = ${largest}` : `N = ${n}`;
+      })];
+    }),
+  };
+  return [times, answer, crossings];
+}
+
+export function shapeStepTimeCharts(result: ShapeStepTimeResult): ChartSpec[] {
+  const baseline = result.options.baseline;
+  const charts: ChartSpec[] = [];
+  for (const sweep of result.options.sweeps) {
+    const rows = result.rows.filter((r) => r.scene === sweep.scene);
+    const engines = [...new Set(rows.map((r) => r.engine))];
+    charts.push(
+      lineChart({
+        id: `shape-step-time-${sweep.scene}`,
+        title: `Step time vs N, scene ${sweep.scene} (${sweep.profile} settings)`,
+        xName: 'N (bodies)',
+        yName: 'ms per step',
+        xLog: true,
+        yLog: true,
+        series: engines.map((e) => ({ name: e, points: rows.filter((r) => r.engine === e).map((r) => [r.n, r.ms.median] as [number, number]) })),
+      }),
+    );
+    const peers = peersOf(result);
+    charts.push(
+      lineChart({
+        id: `seven-four-${sweep.scene}`,
+        title: `Report 7.4, ${sweep.scene}: peer step time over ${baseline}'s (below 1: the peer is faster)`,
+        xName: 'N (bodies)',
+        yName: 'ratio',
+        xLog: true,
+        yLog: true,
+        series: [
+          ...peers.map((p) => ({
+            name: p,
+            points: rows
+              .filter((r) => r.engine === p)
+              .flatMap((r) => {
+                const b = find(result, sweep.scene, r.n, baseline);
+                return b ? [[r.n, r.ms.median / b.ms.median] as [number, number]] : [];
+              }),
+          })),
+          { name: 'parity', points: [...new Set(rows.map((r) => r.n))].sort((a, b) => a - b).map((n) => [n, 1] as [number, number]) },
+        ],
+      }),
+    );
+  }
+  return charts;
+}
+
+export function shapeStepTimeCsv(result: ShapeStepTimeResult): string {
+  const lines = [csvLine(['scene', 'n', 'profile', 'engine', 'median_ms', 'p25_ms', 'p75_ms', 'runs', 'broadphase_ms', 'narrowphase_ms', 'solve_ms', 'candidate_pairs', 'contacts'])];
+  for (const r of result.rows) {
+    const s = r.stages;
+    lines.push(csvLine([r.scene, r.n, r.profile, r.engine, r.ms.median, r.ms.p25, r.ms.p75, r.runMs.length, s?.broadphaseMs ?? '', s?.narrowphaseMs ?? '', s?.solveMs ?? '', s?.candidatePairs ?? '', s?.contacts ?? '']));
+  }
+  return lines.join('\n') + '\n';
+}
+
+export function shapeStepTimeHeadline(result: ShapeStepTimeResult): string[] {
+  const baseline = result.options.baseline;
+  const out: string[] = [];
+  const pyramid = result.rows.filter((r) => r.scene === 'pyramid');
+  const b = pyramid.find((r) => r.engine === baseline);
+  if (b) {
+    const others = pyramid.filter((r) => !r.engine.startsWith('maxgrid:')).map((r) => `${r.engine} ${fmt(r.ms.median)} ms (${ratioText(r.ms.median / b.ms.median)})`);
+    out.push(`Box2D v3's large pyramid (${b.n} bodies): ${baseline} ${fmt(b.ms.median)} ms a step; ${others.join(', ')}.`, '');
+  }
+  for (const sweep of result.options.sweeps) {
+    const largest = Math.max(...result.rows.filter((r) => r.scene === sweep.scene).map((r) => r.n));
+    const top = find(result, sweep.scene, largest, baseline);
+    if (!top) continue;
+    const peers = peersOf(result)
+      .map((p) => find(result, sweep.scene, largest, p))
+      .filter((r): r is ShapeStepTimeRow => r !== undefined)
+      .map((r) => `${r.engine} ${ratioText(r.ms.median / top.ms.median)}`);
+    const overtaken = peersOf(result).filter((p) => crossing(result, sweep.scene, p) !== null);
+    out.push(
+      `${sweep.scene} at N = ${largest}: ${baseline} ${fmt(top.ms.median)} ms a step (${dominantStage(top.stages)}); ${peers.join(', ')} as slow. ` +
+        (overtaken.length === 0 ? 'No peer overtakes it at any N measured.' : `Overtaken by ${overtaken.map((p) => `${p} from N = ${crossing(result, sweep.scene, p)}`).join(', ')}.`),
+      '',
+    );
+  }
+  return out;
+}
+
+const stagesSchema = {
+  type: ['object', 'null'],
+  required: ['broadphaseMs', 'narrowphaseMs', 'solveMs', 'pairTests', 'candidatePairs', 'contacts'],
+  properties: {
+    broadphaseMs: { type: 'number' },
+    narrowphaseMs: { type: 'number' },
+    solveMs: { type: 'number' },
+    pairTests: { type: 'number' },
+    candidatePairs: { type: 'number' },
+    contacts: { type: 'number' },
+  },
+  additionalProperties: false,
+} as const;
+
+export const shapeStepTimeSchema = {
+  $id: 'shape-step-time',
+  type: 'object',
+  required: ['meta', 'options', 'rows', 'skipped'],
+  properties: {
+    meta: metaSchema,
+    options: { type: 'object' },
+    rows: {
+      type: 'array',
+      items: {
+        type: 'object',
+        required: ['scene', 'n', 'params', 'profile', 'engine', 'runMs', 'ms', 'stages'],
+        properties: {
+          scene: { type: 'string' },
+          n: { type: 'integer', minimum: 0 },
+          params: { type: 'object' },
+          profile: { enum: ['report', 'defaults'] },
+          engine: { type: 'string' },
+          runMs: { type: 'array', minItems: 1, items: { type: 'number', minimum: 0 } },
+          ms: spreadSchema,
+          stages: stagesSchema,
+        },
+        additionalProperties: false,
+      },
+    },
+    skipped: { type: 'array' },
+  },
+  additionalProperties: false,
+} as const;

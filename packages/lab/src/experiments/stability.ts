@@ -1,0 +1,188 @@
+import { buildShapeScene, type ShapeScene } from '@maxgrid/scenes';
+import { fmt, type Table } from '../report/tables.js';
+import { allocatePoses, SHAPE_PROFILES, type ShapeProfile } from '../shape-engines/adapter.js';
+import { csvLine, makeMeta, metaSchema, type Meta, type Profile, type RunContext } from './common.js';
+
+/**
+ * Whether each engine's stacks stand and its friction matches theory: Box2D v3's large pyramid
+ * (how far the top box sinks, how far any box slides sideways), a 15-box stack with equal masses
+ * and with a heavy box on top, the card house, and a box on a ramp above and below its friction
+ * angle against g (sin - mu cos) t^2 / 2. Every engine with both settings profiles.
+ */
+export interface StabilityOptions {
+  pyramidBase: number;
+  /** Seconds each stacking test runs. */
+  seconds: number;
+  /** Seconds the ramp tests run. */
+  rampSeconds: number;
+  dt: number;
+  profiles: ShapeProfile[];
+}
+
+export function stabilityDefaults(profile: Profile): StabilityOptions {
+  return profile === 'full'
+    ? { pyramidBase: 100, seconds: 10, rampSeconds: 2, dt: 1 / 60, profiles: [...SHAPE_PROFILES] }
+    : { pyramidBase: 40, seconds: 10, rampSeconds: 2, dt: 1 / 60, profiles: [...SHAPE_PROFILES] };
+}
+
+/** The checks, by name: each builds its scene and judges the engine's end state. */
+interface Check {
+  name: string;
+  scene(o: StabilityOptions): ShapeScene;
+  seconds(o: StabilityOptions): number;
+  /** value: the measured quantity; reference: what theory or the start says; pass: the verdict. */
+  judge(start: Poses, end: Poses, scene: ShapeScene, seconds: number): { value: number; reference: number; unit: string; pass: boolean; detail: string };
+}
+
+type Poses = ReturnType<typeof allocatePoses>;
+
+const G = 10;
+
+/** The top body's drop as a percentage of its starting height above the ground (y = 0), and the largest sideways drift of any dynamic body. */
+function stackJudge(limitDrop: number, limitDrift: number): Check['judge'] {
+  return (start, end, scene) => {
+    const top = scene.bodies.length - 1;
+    const drop = ((end.y[top] - start.y[top]) / -start.y[top]) * 100;
+    let drift = 0;
+    for (let k = 0; k < scene.bodies.length; k++) {
+      if ((scene.bodies[k].type ?? 'dynamic') !== 'dynamic') continue;
+      drift = Math.max(drift, Math.abs(end.x[k] - start.x[k]));
+    }
+    const pass = Math.abs(drop) <= limitDrop && drift <= limitDrift && Number.isFinite(drop);
+    return { value: drop, reference: 0, unit: '% drop', pass, detail: `largest sideways drift ${fmt(drift)} m` };
+  };
+}
+
+function rampJudge(angle: number, friction: number): Check['judge'] {
+  return (start, end, _scene, seconds) => {
+    const k = 1;
+    const distance = Math.hypot(end.x[k] - start.x[k], end.y[k] - start.y[k]);
+    const theta = (angle * Math.PI) / 180;
+    const a = Math.max(0, G * (Math.sin(theta) - friction * Math.cos(theta)));
+    const expected = 0.5 * a * seconds * seconds;
+    const pass = expected === 0 ? distance < 0.01 : Math.abs(distance / expected - 1) < 0.02;
+    return { value: distance, reference: expected, unit: 'm slid', pass, detail: expected === 0 ? 'should stick' : `error ${fmt(100 * (distance / expected - 1))} %` };
+  };
+}
+
+const CHECKS: Check[] = [
+  { name: 'pyramid', scene: (o) => buildShapeScene('pyramid', { base: o.pyramidBase }), seconds: (o) => o.seconds, judge: stackJudge(1.5, 0.25) },
+  { name: 'vertical stack (15)', scene: () => buildShapeScene('vertical-stack', { count: 15 }), seconds: (o) => o.seconds, judge: stackJudge(1.5, 0.25) },
+  // The heavy box presses the soft contacts below it together (Box2D v3's sink the same): standing is the test.
+  { name: 'stack, heavy top (100:1)', scene: () => buildShapeScene('vertical-stack', { count: 4, massRatio: 100 }), seconds: (o) => o.seconds, judge: stackJudge(10, 0.25) },
+  { name: 'card house', scene: () => buildShapeScene('card-house', {}), seconds: (o) => o.seconds, judge: stackJudge(5, 0.1) },
+  { name: 'ramp 30 deg, mu 0.3 (slides)', scene: () => buildShapeScene('ramp', { angle: 30, friction: 0.3 }), seconds: (o) => o.rampSeconds, judge: rampJudge(30, 0.3) },
+  { name: 'ramp 20 deg, mu 0.5 (sticks)', scene: () => buildShapeScene('ramp', { angle: 20, friction: 0.5 }), seconds: (o) => o.rampSeconds, judge: rampJudge(20, 0.5) },
+];
+
+export interface StabilityRow {
+  check: string;
+  engine: string;
+  profile: ShapeProfile;
+  value: number;
+  reference: number;
+  unit: string;
+  pass: boolean;
+  detail: string;
+}
+
+export interface StabilityResult {
+  meta: Meta;
+  rows: StabilityRow[];
+}
+
+export async function runStability(o: StabilityOptions, ctx: RunContext): Promise<StabilityResult> {
+  const engines = ctx.shapeEngines ?? [];
+  const rows: StabilityRow[] = [];
+  const total = CHECKS.length * engines.length * o.profiles.length;
+  let done = 0;
+  for (const check of CHECKS) {
+    for (const engine of engines) {
+      for (const profile of o.profiles) {
+        ctx.progress?.(done++, total, `${check.name}: ${engine.info.id} (${profile})`);
+        const scene = check.scene(o);
+        const sim = engine.create(scene, profile);
+        try {
+          const start = allocatePoses(sim.count);
+          const end = allocatePoses(sim.count);
+          sim.read(start);
+          const seconds = check.seconds(o);
+          const steps = Math.round(seconds / o.dt);
+          for (let s = 0; s < steps; s++) {
+            sim.step(o.dt);
+            if (s % 60 === 0) await ctx.yieldToHost?.();
+          }
+          sim.read(end);
+          rows.push({ check: check.name, engine: engine.info.id, profile, ...check.judge(start, end, scene, steps * o.dt) });
+        } finally {
+          sim.dispose();
+        }
+      }
+    }
+  }
+  ctx.progress?.(total, total, 'done');
+  return { meta: makeMeta('stability', ctx, o), rows };
+}
+
+export function stabilityTables(result: StabilityResult): Table[] {
+  const engines = [...new Set(result.rows.map((r) => r.engine))];
+  const profiles = [...new Set(result.rows.map((r) => r.profile))];
+  const checks = [...new Set(result.rows.map((r) => r.check))];
+  return profiles.map((profile) => ({
+    title: `Stacking and friction, ${profile} settings: measured value (pass / FAIL); pyramid and stacks: the top box's drop in % of its height (pass: within 1.5 %, no box 0.25 m sideways; the 100:1 stack 10 %, the card house 5 %); ramps: metres slid in 2 s against g (sin - mu cos) t^2 / 2 (pass: within 2 %, or under 1 cm when it should stick)`,
+    headers: ['check', ...engines],
+    rows: checks.map((check) => [
+      check,
+      ...engines.map((e) => {
+        const r = result.rows.find((x) => x.check === check && x.engine === e && x.profile === profile);
+        return r ? `${fmt(r.value)} (${r.pass ? 'pass' : 'FAIL'})` : '';
+      }),
+    ]),
+  }));
+}
+
+export function stabilityCsv(result: StabilityResult): string {
+  const lines = [csvLine(['check', 'engine', 'profile', 'value', 'reference', 'unit', 'pass', 'detail'])];
+  for (const r of result.rows) lines.push(csvLine([r.check, r.engine, r.profile, r.value, r.reference, r.unit, r.pass ? 1 : 0, r.detail]));
+  return lines.join('\n') + '\n';
+}
+
+export function stabilityHeadline(result: StabilityResult): string[] {
+  const engines = [...new Set(result.rows.map((r) => r.engine))];
+  const line = (profile: ShapeProfile) =>
+    engines
+      .map((e) => {
+        const rows = result.rows.filter((r) => r.engine === e && r.profile === profile);
+        return `${e} ${rows.filter((r) => r.pass).length}/${rows.length}`;
+      })
+      .join(', ');
+  return [`Checks passed with the engines' own recommended settings: ${line('defaults')}; with the report's: ${line('report')}.`, ''];
+}
+
+export const stabilitySchema = {
+  $id: 'stability',
+  type: 'object',
+  required: ['meta', 'rows'],
+  properties: {
+    meta: metaSchema,
+    rows: {
+      type: 'array',
+      items: {
+        type: 'object',
+        required: ['check', 'engine', 'profile', 'value', 'reference', 'unit', 'pass', 'detail'],
+        properties: {
+          check: { type: 'string' },
+          engine: { type: 'string' },
+          profile: { enum: ['report', 'defaults'] },
+          value: { type: ['number', 'null'] },
+          reference: { type: 'number' },
+          unit: { type: 'string' },
+          pass: { type: 'boolean' },
+          detail: { type: 'string' },
+        },
+        additionalProperties: false,
+      },
+    },
+  },
+  additionalProperties: false,
+} as const;

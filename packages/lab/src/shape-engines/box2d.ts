@@ -1,0 +1,197 @@
+import type { SceneShape, ShapeScene } from '@maxgrid/scenes';
+import { materialOf, metersPerUnit, placedVertices, shapeWalls, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
+import { VERSIONS } from '../engines/versions.js';
+import { box2dUsesSimd } from '../engines/box2d.js';
+
+type Box2DModule = typeof Box2D & EmscriptenModule;
+
+/** Per profile: velocity and position iterations, continuous collision. */
+/** Per profile: velocity and position iterations, continuous collision, the restitution threshold (m/s; the report set Unity's to its minimum). */
+const PROFILE: Record<ShapeProfile, { velocity: number; position: number; continuous: boolean; restitutionThreshold: number }> = {
+  report: { velocity: 1, position: 1, continuous: false, restitutionThreshold: 0 },
+  defaults: { velocity: 8, position: 3, continuous: true, restitutionThreshold: 1 },
+};
+
+class Box2DShapes implements ShapeSimulation {
+  readonly count: number;
+  private readonly world: Box2D.b2World;
+  private readonly bodies: Box2D.b2Body[] = [];
+  private readonly S: number;
+  private readonly iterations: { velocity: number; position: number };
+  private readonly restitutionThreshold: number;
+
+  constructor(private readonly b2: Box2DModule, scene: ShapeScene, profile: ShapeProfile) {
+    const S = (this.S = metersPerUnit(scene));
+    this.count = scene.bodies.length;
+    this.iterations = PROFILE[profile];
+    this.restitutionThreshold = PROFILE[profile].restitutionThreshold;
+    const vec = new b2.b2Vec2(scene.gravity.x * S, scene.gravity.y * S);
+    this.world = new b2.b2World(vec);
+    this.world.SetAllowSleeping(false);
+    this.world.SetContinuousPhysics(PROFILE[profile].continuous);
+    this.world.SetSubStepping(false);
+    this.world.SetWarmStarting(true);
+    const fixture = new b2.b2FixtureDef();
+    const def = new b2.b2BodyDef();
+    try {
+      const wallFriction = scene.world.friction ?? 0.6;
+      const wallRestitution = scene.world.restitution ?? 0;
+      const statics: { shape: SceneShape; x: number; y: number }[] = [];
+      if (scene.bounds) for (const w of shapeWalls(scene.bounds)) statics.push({ shape: { kind: 'box', width: w.width, height: w.height, friction: wallFriction, restitution: wallRestitution }, x: w.cx, y: w.cy });
+      def.set_type(b2.b2_staticBody);
+      for (const w of statics) {
+        vec.Set(w.x * S, w.y * S);
+        def.set_position(vec);
+        const body = this.world.CreateBody(def);
+        this.fixtures(body, scene, w.shape, fixture);
+      }
+      for (const s of scene.segments) {
+        def.set_position(new b2.b2Vec2(0, 0));
+        const body = this.world.CreateBody(def);
+        const edge = new b2.b2EdgeShape();
+        edge.SetTwoSided(new b2.b2Vec2(s.x1 * S, s.y1 * S), new b2.b2Vec2(s.x2 * S, s.y2 * S));
+        edge.set_m_radius(Math.max(s.thickness * S, 0));
+        fixture.set_shape(edge);
+        fixture.set_friction(wallFriction);
+        fixture.set_restitution(wallRestitution);
+        fixture.set_density(0);
+        body.CreateFixture(fixture);
+        b2.destroy(edge);
+      }
+      for (const b of scene.bodies) {
+        const type = b.type ?? 'dynamic';
+        def.set_type(type === 'static' ? b2.b2_staticBody : type === 'kinematic' ? b2.b2_kinematicBody : b2.b2_dynamicBody);
+        vec.Set(b.x * S, b.y * S);
+        def.set_position(vec);
+        def.set_angle(b.angle ?? 0);
+        vec.Set((b.vx ?? 0) * S, (b.vy ?? 0) * S);
+        def.set_linearVelocity(vec);
+        def.set_angularVelocity(b.angularVelocity ?? 0);
+        def.set_allowSleep(false);
+        def.set_bullet(false);
+        const body = this.world.CreateBody(def);
+        for (const shape of b.shapes) this.fixtures(body, scene, shape, fixture);
+        this.bodies.push(body);
+      }
+    } finally {
+      for (const o of [vec, fixture, def]) b2.destroy(o);
+    }
+  }
+
+  /** Box2D 2.4 has no capsule: a box between two circles stands in for one. */
+  private fixtures(body: Box2D.b2Body, scene: ShapeScene, shape: SceneShape, fixture: Box2D.b2FixtureDef): void {
+    const { b2, S } = this;
+    const m = materialOf(scene, shape);
+    fixture.set_density(m.density);
+    fixture.set_friction(m.friction);
+    fixture.set_restitution(m.restitution);
+    fixture.set_restitutionThreshold(this.restitutionThreshold);
+    const ox = (shape.offsetX ?? 0) * S;
+    const oy = (shape.offsetY ?? 0) * S;
+    const a = ('offsetAngle' in shape ? (shape.offsetAngle ?? 0) : 0);
+    if (shape.kind === 'circle') {
+      const circle = new b2.b2CircleShape();
+      circle.set_m_radius(shape.radius * S);
+      circle.set_m_p(new b2.b2Vec2(ox, oy));
+      fixture.set_shape(circle);
+      body.CreateFixture(fixture);
+      b2.destroy(circle);
+      return;
+    }
+    if (shape.kind === 'capsule') {
+      const half = (shape.length / 2) * S;
+      const r = shape.radius * S;
+      const c = Math.cos(a);
+      const s = Math.sin(a);
+      const box = new b2.b2PolygonShape();
+      box.SetAsBox(half, r, new b2.b2Vec2(ox, oy), a);
+      fixture.set_shape(box);
+      body.CreateFixture(fixture);
+      b2.destroy(box);
+      for (const end of [-1, 1]) {
+        const circle = new b2.b2CircleShape();
+        circle.set_m_radius(r);
+        circle.set_m_p(new b2.b2Vec2(ox + end * half * c, oy + end * half * s));
+        fixture.set_shape(circle);
+        body.CreateFixture(fixture);
+        b2.destroy(circle);
+      }
+      return;
+    }
+    const vertices = placedVertices(shape);
+    const ptr = b2._malloc(8 * vertices.length);
+    try {
+      for (let i = 0; i < vertices.length; i++) {
+        b2.HEAPF32[(ptr >> 2) + 2 * i] = vertices[i].x * S;
+        b2.HEAPF32[(ptr >> 2) + 2 * i + 1] = vertices[i].y * S;
+      }
+      const polygon = new b2.b2PolygonShape();
+      polygon.Set(ptr, vertices.length);
+      fixture.set_shape(polygon);
+      body.CreateFixture(fixture);
+      b2.destroy(polygon);
+    } finally {
+      b2._free(ptr);
+    }
+  }
+
+  step(dt: number): void {
+    this.world.Step(dt, this.iterations.velocity, this.iterations.position);
+  }
+
+  read(out: PoseState): void {
+    const S = this.S;
+    for (let k = 0; k < this.count; k++) {
+      const body = this.bodies[k];
+      const p = body.GetPosition();
+      const v = body.GetLinearVelocity();
+      out.x[k] = p.get_x() / S;
+      out.y[k] = p.get_y() / S;
+      out.angle[k] = body.GetAngle();
+      out.vx[k] = v.get_x() / S;
+      out.vy[k] = v.get_y() / S;
+      out.angularVelocity[k] = body.GetAngularVelocity();
+    }
+  }
+
+  dispose(): void {
+    this.b2.destroy(this.world);
+  }
+}
+
+let modulePromise: Promise<Box2DModule> | undefined;
+
+export const box2dShapeProvider: ShapeEngineProvider = {
+  id: 'box2d-wasm',
+  async load(options = {}): Promise<ShapeEngine> {
+    modulePromise ??= import('box2d-wasm').then((m) => {
+      const factory = (m as unknown as { default: (o?: object) => Promise<Box2DModule> }).default;
+      const moduleOptions: Record<string, unknown> = {};
+      if (options.box2dLocateFile) moduleOptions.locateFile = options.box2dLocateFile;
+      if (options.box2dWasmBinary) moduleOptions.wasmBinary = options.box2dWasmBinary;
+      return factory(moduleOptions);
+    });
+    const b2 = await modulePromise;
+    const common = {
+      core: `Box2D 2.4 compiled to WebAssembly (${box2dUsesSimd() ? 'SIMD' : 'scalar'} build)`,
+      allowSleeping: false,
+      subStepping: false,
+      warmStarting: true,
+      capsule: 'a box between two circles (Box2D 2.4 has no capsule)',
+      units: '1 m = the scene lengthUnit',
+    };
+    return {
+      info: {
+        id: 'box2d-wasm',
+        package: 'box2d-wasm',
+        version: VERSIONS['box2d-wasm'],
+        precision: 'f32',
+        settings: {
+          report: { velocityIterations: PROFILE.report.velocity, positionIterations: PROFILE.report.position, continuousPhysics: PROFILE.report.continuous, restitutionThreshold: PROFILE.report.restitutionThreshold, ...common },
+          defaults: { velocityIterations: PROFILE.defaults.velocity, positionIterations: PROFILE.defaults.position, continuousPhysics: PROFILE.defaults.continuous, restitutionThreshold: PROFILE.defaults.restitutionThreshold, ...common },
+        },
+      },
+      create: (scene, profile) => new Box2DShapes(b2, scene, profile),
+    };
+  },
+};

@@ -1,0 +1,120 @@
+import type { SceneShape, ShapeScene } from '@maxgrid/scenes';
+import { materialOf, metersPerUnit, placedVertices, shapeWalls, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
+import { VERSIONS } from '../engines/versions.js';
+
+type Planck = typeof import('planck');
+type PlanckWorld = InstanceType<Planck['World']>;
+type PlanckBody = ReturnType<PlanckWorld['createBody']>;
+
+/** Per profile: iterations, continuous collision, and planck's restitution threshold (m/s; process-wide in planck, so set before each step). */
+const PROFILE: Record<ShapeProfile, { velocity: number; position: number; continuous: boolean; velocityThreshold: number }> = {
+  report: { velocity: 1, position: 1, continuous: false, velocityThreshold: 0 },
+  defaults: { velocity: 8, position: 3, continuous: true, velocityThreshold: 1 },
+};
+
+class PlanckShapes implements ShapeSimulation {
+  readonly count: number;
+  private readonly world: PlanckWorld;
+  private readonly bodies: PlanckBody[] = [];
+  private readonly S: number;
+  private readonly iterations: { velocity: number; position: number; velocityThreshold: number };
+
+  constructor(private readonly pl: Planck, scene: ShapeScene, profile: ShapeProfile) {
+    const S = (this.S = metersPerUnit(scene));
+    this.count = scene.bodies.length;
+    this.iterations = PROFILE[profile];
+    this.world = new pl.World({
+      gravity: { x: scene.gravity.x * S, y: scene.gravity.y * S },
+      allowSleep: false,
+      continuousPhysics: PROFILE[profile].continuous,
+      subStepping: false,
+      warmStarting: true,
+    });
+    const wall = { friction: scene.world.friction ?? 0.6, restitution: scene.world.restitution ?? 0 };
+    if (scene.bounds) {
+      for (const w of shapeWalls(scene.bounds)) {
+        const body = this.world.createBody({ type: 'static', position: { x: w.cx * S, y: w.cy * S } });
+        body.createFixture({ shape: new pl.Box((w.width / 2) * S, (w.height / 2) * S), ...wall });
+      }
+    }
+    for (const s of scene.segments) {
+      const body = this.world.createBody({ type: 'static' });
+      body.createFixture({ shape: new pl.Edge({ x: s.x1 * S, y: s.y1 * S }, { x: s.x2 * S, y: s.y2 * S }), ...wall });
+    }
+    for (const b of scene.bodies) {
+      const body = this.world.createBody({
+        type: b.type ?? 'dynamic',
+        position: { x: b.x * S, y: b.y * S },
+        angle: b.angle ?? 0,
+        linearVelocity: { x: (b.vx ?? 0) * S, y: (b.vy ?? 0) * S },
+        angularVelocity: b.angularVelocity ?? 0,
+        allowSleep: false,
+        bullet: false,
+      });
+      for (const shape of b.shapes) this.fixtures(body, scene, shape);
+      this.bodies.push(body);
+    }
+  }
+
+  /** planck, like Box2D 2.4, has no capsule: a box between two circles stands in for one. */
+  private fixtures(body: PlanckBody, scene: ShapeScene, shape: SceneShape): void {
+    const { pl, S } = this;
+    const material = materialOf(scene, shape);
+    const ox = (shape.offsetX ?? 0) * S;
+    const oy = (shape.offsetY ?? 0) * S;
+    const a = ('offsetAngle' in shape ? (shape.offsetAngle ?? 0) : 0);
+    if (shape.kind === 'circle') {
+      body.createFixture({ shape: new pl.Circle({ x: ox, y: oy }, shape.radius * S), ...material });
+    } else if (shape.kind === 'capsule') {
+      const half = (shape.length / 2) * S;
+      const r = shape.radius * S;
+      body.createFixture({ shape: new pl.Box(half, r, { x: ox, y: oy }, a), ...material });
+      for (const end of [-1, 1]) body.createFixture({ shape: new pl.Circle({ x: ox + end * half * Math.cos(a), y: oy + end * half * Math.sin(a) }, r), ...material });
+    } else {
+      body.createFixture({ shape: new pl.Polygon(placedVertices(shape).map((v) => ({ x: v.x * S, y: v.y * S }))), ...material });
+    }
+  }
+
+  step(dt: number): void {
+    this.pl.Settings.velocityThreshold = this.iterations.velocityThreshold;
+    this.world.step(dt, this.iterations.velocity, this.iterations.position);
+  }
+
+  read(out: PoseState): void {
+    const S = this.S;
+    for (let k = 0; k < this.count; k++) {
+      const b = this.bodies[k];
+      const p = b.getPosition();
+      const v = b.getLinearVelocity();
+      out.x[k] = p.x / S;
+      out.y[k] = p.y / S;
+      out.angle[k] = b.getAngle();
+      out.vx[k] = v.x / S;
+      out.vy[k] = v.y / S;
+      out.angularVelocity[k] = b.getAngularVelocity();
+    }
+  }
+
+  dispose(): void {}
+}
+
+export const planckShapeProvider: ShapeEngineProvider = {
+  id: 'planck',
+  async load(): Promise<ShapeEngine> {
+    const pl = (await import('planck')) as unknown as Planck;
+    const common = { allowSleep: false, subStepping: false, warmStarting: true, capsule: 'a box between two circles (planck has no capsule)', units: '1 m = the scene lengthUnit' };
+    return {
+      info: {
+        id: 'planck',
+        package: 'planck',
+        version: VERSIONS.planck,
+        precision: 'f64',
+        settings: {
+          report: { velocityIterations: PROFILE.report.velocity, positionIterations: PROFILE.report.position, continuousPhysics: PROFILE.report.continuous, 'Settings.velocityThreshold': PROFILE.report.velocityThreshold, ...common },
+          defaults: { velocityIterations: PROFILE.defaults.velocity, positionIterations: PROFILE.defaults.position, continuousPhysics: PROFILE.defaults.continuous, 'Settings.velocityThreshold': PROFILE.defaults.velocityThreshold, ...common },
+        },
+      },
+      create: (scene, profile) => new PlanckShapes(pl, scene, profile),
+    };
+  },
+};
