@@ -1,0 +1,63 @@
+import { describe, expect, it } from 'vitest';
+import { SHAPE_SCENES, SHAPE_SCENE_NAMES, buildShapeScene, buildShapeWorld } from '../src/index.js';
+
+/** A scene as plain numbers, for comparing builds bit for bit. */
+function digest(name: string, params: Record<string, number> = {}): string {
+  return JSON.stringify(buildShapeScene(name, params), (_, v) => (typeof v === 'number' ? Object.is(v, -0) ? '-0' : v.toString(16) : v));
+}
+
+describe('shape scenes', () => {
+  it('build the same bits every time, and a different seed builds another scene', () => {
+    for (const name of SHAPE_SCENE_NAMES) expect(digest(name), name).toBe(digest(name));
+    for (const name of ['uniform-polygons', 'polygon-box']) {
+      expect(digest(name, { n: 50, seed: 1 })).not.toBe(digest(name, { n: 50, seed: 2 }));
+    }
+  });
+
+  it("have Box2D v3's sizes: the large pyramid's 5,050 boxes, many_pyramids' 22,000, the tumbler's 2,025", () => {
+    const dynamic = (name: string) => buildShapeScene(name).bodies.filter((b) => (b.type ?? 'dynamic') === 'dynamic').length;
+    expect(dynamic('pyramid')).toBe(5050);
+    expect(dynamic('many-pyramids')).toBe(22000);
+    expect(buildShapeScene('many-pyramids').segments).toHaveLength(20);
+    expect(dynamic('tumbler')).toBe(2025);
+    expect(buildShapeScene('tumbler').bodies[0].type).toBe('kinematic');
+  });
+
+  it('uniform-polygons keeps its density as N grows: the box grows with the bodies, and they start apart', () => {
+    const small = buildShapeScene('uniform-polygons', { n: 1000 });
+    const large = buildShapeScene('uniform-polygons', { n: 4000 });
+    expect(large.bounds!.width / small.bounds!.width).toBeCloseTo(2, 1);
+    const world = buildShapeWorld(buildShapeScene('uniform-polygons', { n: 2000 }));
+    world.step(1 / 60);
+    // Elastic and apart at the start: the first step finds no overlap to push out, so energy is exact.
+    expect(world.stats.contacts).toBeLessThan(20);
+  });
+
+  it('polygon-box mixes five kinds in turn and every body fits its box', () => {
+    const scene = buildShapeScene('polygon-box', { n: 500 });
+    const kinds = scene.bodies.slice(0, 5).map((b) => b.shapes[0].kind);
+    expect(kinds).toEqual(['box', 'polygon', 'polygon', 'capsule', 'circle']);
+    for (const b of scene.bodies) {
+      expect(b.x).toBeGreaterThan(0);
+      expect(b.x).toBeLessThan(scene.bounds!.width);
+      expect(b.y).toBeGreaterThan(0);
+      expect(b.y).toBeLessThan(scene.bounds!.height);
+    }
+  });
+
+  it('every shape scene builds in the engine and steps', () => {
+    const small: Record<string, Record<string, number>> = { pyramid: { base: 10 }, 'many-pyramids': { rows: 2, columns: 2 }, 'uniform-polygons': { n: 200 }, 'polygon-box': { n: 200 }, tumbler: { grid: 10 } };
+    for (const name of SHAPE_SCENE_NAMES) {
+      const world = buildShapeWorld(buildShapeScene(name, small[name] ?? {}));
+      for (let s = 0; s < 10; s++) world.step(1 / 60);
+      expect(world.bodyCount, name).toBe(buildShapeScene(name, small[name] ?? {}).bodies.length);
+    }
+  });
+
+  it('refuse parameters out of range by name', () => {
+    expect(() => buildShapeScene('polygon-box', { size: 500 })).toThrow(/polygon-box/);
+    expect(() => buildShapeScene('uniform-polygons', { minRadius: 9, maxRadius: 8 })).toThrow(/minRadius/);
+    expect(() => buildShapeScene('tumbler', { grid: 0 })).toThrow(/grid/);
+    expect(Object.keys(SHAPE_SCENES)).toEqual(SHAPE_SCENE_NAMES);
+  });
+});
