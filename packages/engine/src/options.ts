@@ -33,7 +33,7 @@ export interface WorldOptions {
   /**
    * Friction of the box walls and default friction of new shapes, as `restitution` is. Default 0,
    * the report's frictionless circles; Box2D's default is 0.6. A pair's friction is the geometric
-   * mean of its two. Above 0 the world takes the shape route (docs/engine.md, "Two routes").
+   * mean of its two. Above 0 the world takes the shape route (docs/engine.md, "The shape route").
    */
   friction?: number;
   /**
