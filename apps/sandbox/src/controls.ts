@@ -1,9 +1,12 @@
 import { BROADPHASE_NAMES, INTEGRATOR_NAMES } from '@maxgrid/engine';
-import { SCENES } from '@maxgrid/scenes';
 import {
   NAIVE_LIMIT,
   SCENE_CHOICES,
   SEED_MAX,
+  SPAWN_KINDS,
+  SUBSTEP_CHOICES,
+  isShapeScene,
+  sceneDefinition,
   threadChoices,
   WORLD_TOGGLES,
   clampNumber,
@@ -15,6 +18,7 @@ import {
   type RendererName,
   type SceneChoice,
   type Settings,
+  type SpawnKind,
   type ToolName,
 } from './settings.js';
 
@@ -55,6 +59,9 @@ export class Controls {
   private readonly tool = byId<HTMLSelectElement>('tool');
   private readonly grid = byId<HTMLInputElement>('grid');
   private readonly aabb = byId<HTMLInputElement>('aabb');
+  private readonly contacts = byId<HTMLInputElement>('contacts');
+  private readonly spawn = byId<HTMLSelectElement>('spawn');
+  private readonly substeps = byId<HTMLSelectElement>('substeps');
   private readonly toggles = WORLD_TOGGLES.map((key) => ({ key, input: byId<HTMLInputElement>(`toggle-${key}`) }));
   private current: Settings;
 
@@ -62,11 +69,22 @@ export class Controls {
     this.current = copySettings(initial);
     // Enter in the seed box would submit the form and reload the page with raw slider positions.
     byId<HTMLFormElement>('settings').addEventListener('submit', (e) => e.preventDefault());
+    const circles = document.createElement('optgroup');
+    circles.label = 'Circles';
+    const shapes = document.createElement('optgroup');
+    shapes.label = 'Shapes';
     for (const name of SCENE_CHOICES) {
       const option = new Option(name, name);
-      option.title = SCENES[name].description;
-      this.sceneSelect.append(option);
+      option.title = sceneDefinition(name).description;
+      (isShapeScene(name) ? shapes : circles).append(option);
     }
+    this.sceneSelect.append(circles, shapes);
+    for (const kind of SPAWN_KINDS) this.spawn.append(new Option(kind, kind));
+    for (const count of SUBSTEP_CHOICES) this.substeps.append(new Option(String(count), String(count)));
+    this.substeps.addEventListener('change', () => {
+      this.current.substeps = Number(this.substeps.value);
+      this.events.scene(copySettings(this.current));
+    });
     this.seed.max = String(SEED_MAX);
     for (const name of BROADPHASE_NAMES) this.broadphase.append(new Option(name, name));
     for (const name of INTEGRATOR_NAMES) this.integrator.append(new Option(name, name));
@@ -107,9 +125,11 @@ export class Controls {
       this.current.tool = this.tool.value as ToolName;
       this.current.grid = this.grid.checked;
       this.current.aabb = this.aabb.checked;
+      this.current.contacts = this.contacts.checked;
+      this.current.spawn = this.spawn.value as SpawnKind;
       this.events.live(copySettings(this.current));
     };
-    for (const el of [this.broadphase, this.integrator, this.threads, this.renderer, this.tool, this.grid, this.aabb]) el.addEventListener('change', live);
+    for (const el of [this.broadphase, this.integrator, this.threads, this.renderer, this.tool, this.grid, this.aabb, this.contacts, this.spawn]) el.addEventListener('change', live);
     this.show(initial);
   }
 
@@ -128,6 +148,8 @@ export class Controls {
     }
     this.sceneSelect.value = s.scene;
     this.seed.value = String(s.seed);
+    // Box2D's benchmarks are one fixed layout: no seed to choose.
+    this.seed.disabled = !sceneDefinition(s.scene).params.seed;
     this.broadphase.value = s.broadphase;
     this.integrator.value = s.integrator;
     this.threads.value = String(s.threads);
@@ -135,6 +157,12 @@ export class Controls {
     this.tool.value = s.tool;
     this.grid.checked = s.grid;
     this.aabb.checked = s.aabb;
+    this.contacts.checked = s.contacts;
+    this.spawn.value = s.spawn;
+    this.substeps.value = String(s.substeps);
+    // Sub-steps belong to the soft step of worlds with shapes; the circle route has none.
+    this.substeps.disabled = !isShapeScene(s.scene);
+    this.substeps.title = this.substeps.disabled ? 'Sub-steps belong to the soft step of scenes with shapes' : "Box2D v3's soft step: sub-steps per step";
     for (const { key, input } of this.toggles) input.checked = s[key];
     // Naive tests every pair: offered only while a step stays well under a second.
     const naive = this.broadphase.querySelector<HTMLOptionElement>('option[value="naive"]');

@@ -1,4 +1,5 @@
 import type { QueryTool } from './query-tool.js';
+import type { SpawnKind } from './settings.js';
 import type { Simulation } from './simulation.js';
 import type { ViewTransform } from './view.js';
 
@@ -6,9 +7,9 @@ import type { ViewTransform } from './view.js';
 const CLICK_SLOP = 5;
 
 /**
- * Mouse, pen and touch through pointer events, by tool. Drag: press on a circle to drag it
- * (releasing throws it with the pointer's velocity), click empty space to add a circle of the
- * scene's size. Ray: press and drag to cast a ray from the press to the pointer. Point: hover to
+ * Mouse, pen and touch through pointer events, by tool. Drag: press on a body to drag it
+ * (releasing throws it with the pointer's velocity), click empty space to add a body of the
+ * scene's size, of the kind chosen. Ray: press and drag to cast a ray from the press to the pointer. Point: hover to
  * ask which circles contain the pointer. Box: press and drag to span a box from the press to the
  * pointer and ask which circles overlap it.
  */
@@ -18,6 +19,7 @@ export function attachPointer(
   view: ViewTransform,
   query: QueryTool,
   spawnRadius: () => number,
+  spawnKind: () => SpawnKind,
   onChange: () => void,
 ): void {
   let pointerId = -1;
@@ -94,8 +96,8 @@ export function attachPointer(
     const x = worldX(e);
     const y = worldY(e);
     const box = sim.box;
-    if (x < 0 || y < 0 || x > box.width || y > box.height) return;
-    sim.spawn(x, y, spawnRadius());
+    if (x < box.x || y < box.y || x > box.x + box.width || y > box.y + box.height) return;
+    sim.spawn(x, y, spawnRadius(), spawnKind());
     onChange();
   };
   target.addEventListener('pointerup', (e) => finish(e, false));

@@ -102,8 +102,8 @@ function rebuild(next: Settings): void {
 
 /** The choices that are not the scene: kept when a URL's scene falls back to its defaults. */
 function pickView(s: Settings): Partial<Settings> {
-  const { broadphase, integrator, renderer, grid, aabb, sleeping, piles, continuous, events, hits, layers, tool, threads } = s;
-  return { broadphase, integrator, renderer, grid, aabb, sleeping, piles, continuous, events, hits, layers, tool, threads };
+  const { broadphase, integrator, renderer, grid, aabb, contacts, sleeping, piles, continuous, events, hits, layers, tool, threads, substeps, spawn } = s;
+  return { broadphase, integrator, renderer, grid, aabb, contacts, sleeping, piles, continuous, events, hits, layers, tool, threads, substeps, spawn };
 }
 
 function threadsFailed(message: string): void {
@@ -151,7 +151,7 @@ function saveUrl(): void {
 function resize(): void {
   const box = sim.box;
   const dpr = Math.min(window.devicePixelRatio || 1, 2);
-  if (!view.fit(stage.clientWidth, stage.clientHeight, dpr, box.width, box.height)) return;
+  if (!view.fit(stage.clientWidth, stage.clientHeight, dpr, box.width, box.height, box.x, box.y)) return;
   for (const c of [renderer.canvas, overlay.canvas]) {
     c.width = view.width;
     c.height = view.height;
@@ -184,11 +184,11 @@ byId('download').addEventListener('click', () => {
   if (format === 'json') download(`${base}.json`, 'application/json', toJson(sim.recorder, settings, DT, world.broadphase, world.integrator));
   else download(`${base}.csv`, 'text/csv', toCsv(sim.recorder));
 });
-attachPointer(overlay.canvas, sim, view, query, () => spawnRadius(settings.scene, settings.params), refreshStats);
+attachPointer(overlay.canvas, sim, view, query, () => spawnRadius(settings.scene, settings.params), () => settings.spawn, refreshStats);
 
 // Read by the renderers and the overlay every frame: kept up to date in place, never rebuilt.
 const shapes: SceneShapes = { segments: sim.segments, staticCircles: 0, sleepers: 0 };
-const overlayOptions: OverlayOptions = { grid: false, aabb: false, held: -1, segments: sim.segments, touches: sim.touches, hits: sim.hits, query };
+const overlayOptions: OverlayOptions = { grid: false, aabb: false, contacts: false, held: -1, grab: null, segments: sim.segments, touches: sim.touches, hits: sim.hits, query };
 
 rebuild(settings);
 settings.renderer = selectRenderer(settings.renderer);
@@ -199,8 +199,24 @@ declare global {
   interface Window {
     /** Per-frame timings, read by the lab's sandbox-render experiment (see frame-log.ts). */
     __sandboxFrames?: { read(): FrameSample; clear(): void; webglDevice(): string | null };
+    /** For the end-to-end tests: a body's pose by handle, the engine's route, the region drawn, and the view's mapping to CSS pixels. */
+    __sandboxProbe?: {
+      pose(handle: number): { x: number; y: number; angle: number; type: string };
+      route(): string;
+      region(): { x: number; y: number; width: number; height: number };
+      toCss(x: number, y: number): { x: number; y: number };
+    };
   }
 }
+window.__sandboxProbe = {
+  pose: (handle) => {
+    const b = sim.world.getBody(handle);
+    return { x: b.x, y: b.y, angle: b.angle, type: b.type };
+  },
+  route: () => sim.world.route.route,
+  region: () => ({ ...sim.box }),
+  toCss: (x, y) => ({ x: (x * view.scale + view.offsetX) / view.dpr, y: (y * view.scale + view.offsetY) / view.dpr }),
+};
 window.__sandboxFrames = {
   read: () => ({
     ...frameLog.frames(),
@@ -237,7 +253,9 @@ function frame(now: number): void {
   renderer.draw(sim.world.views(), sim.colors, view, sim.box, shapes);
   overlayOptions.grid = settings.grid;
   overlayOptions.aabb = settings.aabb;
+  overlayOptions.contacts = settings.contacts;
   overlayOptions.held = sim.dragging;
+  overlayOptions.grab = sim.grabPoint();
   query.update(sim.world);
   overlay.draw(sim.world, view, overlayOptions);
   frameLog.record(now, drawStart - stepStart, performance.now() - drawStart, steps);

@@ -1,8 +1,27 @@
-import { SCENES, seedBoxParams, type ParamSpec } from '@maxgrid/scenes';
+import { SCENES, SHAPE_SCENES, seedBoxParams, type ParamSpec } from '@maxgrid/scenes';
 
-/** The scenes the page offers; bouncing-ball is one circle, a lab accuracy test rather than a view. */
-export const SCENE_CHOICES = ['seed-box', 'funnel', 'mixed', 'uniform'] as const;
+/** The circle scenes the page offers; bouncing-ball is one circle, a lab accuracy test rather than a view. */
+export const CIRCLE_SCENE_CHOICES = ['seed-box', 'funnel', 'mixed', 'uniform'] as const;
+/** The scenes of shapes (boxes, polygons, capsules that turn), after the circles. */
+export const SHAPE_SCENE_CHOICES = ['polygon-box', 'pyramid', 'uniform-polygons', 'many-pyramids', 'tumbler', 'vertical-stack', 'card-house', 'ramp'] as const;
+export const SCENE_CHOICES = [...CIRCLE_SCENE_CHOICES, ...SHAPE_SCENE_CHOICES] as const;
 export type SceneChoice = (typeof SCENE_CHOICES)[number];
+export type ShapeSceneChoice = (typeof SHAPE_SCENE_CHOICES)[number];
+
+export function isShapeScene(scene: SceneChoice): scene is ShapeSceneChoice {
+  return (SHAPE_SCENE_CHOICES as readonly string[]).includes(scene);
+}
+
+/** A scene's description and parameter specs, circle or shape. */
+export function sceneDefinition(scene: SceneChoice): { description: string; params: Record<string, ParamSpec> } {
+  const definition = isShapeScene(scene) ? SHAPE_SCENES[scene] : SCENES[scene];
+  return { description: definition.description, params: definition.params as Record<string, ParamSpec> };
+}
+
+/** The scene's default seed; scenes without one (Box2D's benchmarks) are seed 1 and ignore it. */
+export function defaultSeed(scene: SceneChoice): number {
+  return sceneDefinition(scene).params.seed?.default ?? 1;
+}
 
 export interface NumberSpec {
   key: string;
@@ -85,10 +104,32 @@ const PRESENTATION: Record<string, Presentation> = {
   maxSpeed: { label: 'Max speed', step: 10, max: 2000, format: fixed(0, ' px/s') },
   logRadius: { label: 'Log radii', step: 1, format: (v) => (v ? 'on' : 'off') },
   shuffle: { label: 'Random order', step: 1, format: (v) => (v ? 'on' : 'off') },
+  friction: { label: 'Friction', step: 0.05, max: 2, format: fixed(2) },
+  base: { label: 'Base', step: 1, max: 150, format: count },
+  rows: { label: 'Rows', step: 1, max: 40, format: count },
+  columns: { label: 'Columns', step: 1, max: 40, format: count },
+  count: { label: 'Boxes', step: 1, max: 100, format: count },
+  massRatio: { label: 'Top mass ratio', step: 1, max: 1000, format: fixed(0, '×') },
+  levels: { label: 'Storeys', step: 1, max: 10, format: count },
+  angle: { label: 'Slope', step: 1, format: fixed(0, '°') },
+  length: { label: 'Length', step: 1, max: 200, format: fixed(0, ' m') },
+  grid: { label: 'Boxes per side', step: 1, max: 120, format: count },
+  speed: { label: 'Drum speed', step: 1, min: -360, max: 360, format: fixed(0, '°/s') },
+  spin: { label: 'Spin', step: 0.1, max: 30, format: fixed(1, ' rad/s') },
+  maxSpin: { label: 'Max spin', step: 0.1, max: 30, format: fixed(1, ' rad/s') },
 };
 
-function fromSceneSpec(key: string, spec: ParamSpec): NumberSpec {
-  const look = PRESENTATION[key] ?? { label: key, step: spec.integer ? 1 : 0.01, format: fixed(2) };
+/** Scenes in metres (Box2D's benchmarks and stacks) rather than the report's pixels. */
+const METRIC_SCENES: readonly SceneChoice[] = ['pyramid', 'many-pyramids', 'tumbler', 'vertical-stack', 'card-house', 'ramp'];
+
+/** Their parameters shown in metres. */
+const METRIC_PRESENTATION: Record<string, Presentation> = {
+  gravity: { label: 'Gravity', step: 0.5, max: 100, format: fixed(1, ' m/s²') },
+  size: { label: 'Size', step: 0.05, max: 10, format: fixed(2, ' m') },
+};
+
+function fromSceneSpec(key: string, spec: ParamSpec, metric = false): NumberSpec {
+  const look = (metric ? METRIC_PRESENTATION[key] : undefined) ?? PRESENTATION[key] ?? { label: key, step: spec.integer ? 1 : 0.01, format: fixed(2) };
   const min = Math.max(spec.min, look.min ?? spec.min);
   const max = Math.min(spec.max, look.max ?? spec.max, key === 'n' ? QUANTITY_MAX : Infinity);
   return {
@@ -111,10 +152,10 @@ export function sceneSpecs(scene: SceneChoice): readonly NumberSpec[] {
   if (scene === 'seed-box') return SEED_BOX_SPECS;
   let specs = cache.get(scene);
   if (!specs) {
-    const params: Record<string, ParamSpec> = SCENES[scene].params;
+    const params: Record<string, ParamSpec> = sceneDefinition(scene).params;
     specs = Object.entries(params)
       .filter(([key]) => key !== 'seed')
-      .map(([key, spec]) => fromSceneSpec(key, spec));
+      .map(([key, spec]) => fromSceneSpec(key, spec, METRIC_SCENES.includes(scene)));
     cache.set(scene, specs);
   }
   return specs;
@@ -136,9 +177,12 @@ export function clampNumber(spec: NumberSpec, value: number): number {
   return Math.min(spec.max, Number(snapped.toFixed(6)));
 }
 
-/** Radius of a circle added by a click: the scene's typical size. */
+/** Radius (half the size) of a body added by a click: the scene's typical size. */
 export function spawnRadius(scene: SceneChoice, p: Record<string, number>): number {
   if (scene === 'mixed') return 1.5 * p.minRadius;
-  if (scene === 'uniform') return (p.minRadius + p.maxRadius) / 2;
+  if (scene === 'uniform' || scene === 'uniform-polygons') return (p.minRadius + p.maxRadius) / 2;
+  if (scene === 'tumbler') return 0.125;
+  if (scene === 'card-house') return 0.1;
+  if (scene === 'pyramid' || scene === 'many-pyramids' || scene === 'vertical-stack' || scene === 'ramp') return 0.5;
   return p.size;
 }

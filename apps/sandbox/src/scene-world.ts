@@ -1,5 +1,5 @@
 import type { BroadPhaseName, IntegratorName, World } from '@maxgrid/engine';
-import { buildWorld, type BuildOptions, type Scene } from '@maxgrid/scenes';
+import { buildShapeWorld, buildWorld, type BuildOptions, type Scene, type ShapeScene } from '@maxgrid/scenes';
 
 /** Collision layers of the Layers toggle: two body layers that pass through each other... */
 export const LAYER_A = 1;
@@ -91,8 +91,29 @@ export function buildSandboxWorld(scene: Scene, dt: number, c: WorldChoices): Wo
   return world;
 }
 
+/**
+ * A shape scene as a world with the sandbox's toggles: the scene's own world options (solver,
+ * lengthUnit, friction), the page's broad-phase, integrator, sub-steps, sleeping, continuous
+ * collision and events. The pile solver belongs to the circle route (the soft step stacks anyway)
+ * and layers to circles' slot parity, so both are left out here. Body k gets handle k.
+ */
+export function buildSandboxShapeWorld(scene: ShapeScene, dt: number, c: WorldChoices, substeps: number): World {
+  const world = { ...scene.world, sleeping: c.sleeping, substeps };
+  const g = Math.hypot(scene.gravity.x, scene.gravity.y);
+  return buildShapeWorld(
+    { ...scene, world },
+    {
+      broadphase: c.broadphase,
+      integrator: c.integrator,
+      continuous: c.continuous,
+      contactEvents: c.events,
+      ...(c.hits ? { hitEventThreshold: Math.max(8 * g * dt, (scene.world.lengthUnit ?? 1) * 0.5) } : {}),
+    },
+  );
+}
+
 /** Segments as one flat array (x1, y1, x2, y2, thickness per segment), for the renderers. */
-export function flatSegments(scene: Scene): Float64Array {
+export function flatSegments(scene: Scene | ShapeScene): Float64Array {
   const out = new Float64Array(scene.segments.length * 5);
   scene.segments.forEach((s, i) => out.set([s.x1, s.y1, s.x2, s.y2, s.thickness], i * 5));
   return out;

@@ -1,8 +1,8 @@
 import { BROADPHASE_NAMES, INTEGRATOR_NAMES, type BroadPhaseName, type IntegratorName } from '@maxgrid/engine';
-import { SCENES, seedBoxParams } from '@maxgrid/scenes';
-import { SCENE_CHOICES, clampNumber, defaultParams, sceneSpecs, type SceneChoice } from './scene-specs.js';
+import { seedBoxParams } from '@maxgrid/scenes';
+import { SCENE_CHOICES, clampNumber, defaultParams, defaultSeed, sceneDefinition, sceneSpecs, type SceneChoice } from './scene-specs.js';
 
-export { SCENE_CHOICES, clampNumber, sceneSpecs, type NumberSpec, type SceneChoice } from './scene-specs.js';
+export { SCENE_CHOICES, clampNumber, isShapeScene, sceneDefinition, sceneSpecs, type NumberSpec, type SceneChoice } from './scene-specs.js';
 
 /**
  * Everything the URL reproduces. The scene, its seed and its parameters always rebuild the same
@@ -30,7 +30,20 @@ export interface Settings {
   tool: ToolName;
   /** Threads stepping the world (world.startWorkers); 1 runs it on the page's own thread. */
   threads: number;
+  /** Sub-steps of the soft step (worlds with shapes); rebuilds. */
+  substeps: number;
+  /** What a click on empty space adds. */
+  spawn: SpawnKind;
+  /** Overlay: contact points and their normals. */
+  contacts: boolean;
 }
+
+export const SPAWN_KINDS = ['circle', 'box', 'polygon', 'capsule'] as const;
+export type SpawnKind = (typeof SPAWN_KINDS)[number];
+
+/** Sub-step counts offered for the soft step; Box2D v3's default is 4. */
+export const SUBSTEP_CHOICES = [1, 2, 4, 8, 16] as const;
+export const DEFAULT_SUBSTEPS = 4;
 
 /** Thread counts offered; the page offers those up to the machine's core count. */
 export const THREAD_CHOICES = [1, 2, 4, 8] as const;
@@ -63,7 +76,7 @@ export const NAIVE_LIMIT = 5000;
 export function defaultSettings(scene: SceneChoice = 'seed-box'): Settings {
   return {
     scene,
-    seed: SCENES[scene].params.seed.default,
+    seed: defaultSeed(scene),
     params: defaultParams(scene),
     broadphase: 'maxgrid',
     integrator: 'semi-implicit-euler',
@@ -78,6 +91,9 @@ export function defaultSettings(scene: SceneChoice = 'seed-box'): Settings {
     layers: false,
     threads: 1,
     tool: 'drag',
+    substeps: DEFAULT_SUBSTEPS,
+    spawn: 'circle',
+    contacts: false,
   };
 }
 
@@ -118,6 +134,10 @@ export function parseSettings(search: string): Settings {
   s.threads = (THREAD_CHOICES as readonly number[]).includes(threads) ? threads : 1;
   s.grid = flag(q, 'grid', false);
   s.aabb = flag(q, 'aabb', false);
+  s.contacts = flag(q, 'contacts', false);
+  const substeps = Number(q.get('substeps'));
+  s.substeps = (SUBSTEP_CHOICES as readonly number[]).includes(substeps) ? substeps : DEFAULT_SUBSTEPS;
+  s.spawn = oneOf(SPAWN_KINDS, q.get('spawn'), s.spawn);
   for (const key of WORLD_TOGGLES) s[key] = flag(q, key, s[key]);
   return s;
 }
@@ -133,6 +153,9 @@ export function serializeSettings(s: Settings): string {
   q.set('renderer', s.renderer);
   if (s.grid) q.set('grid', '1');
   if (s.aabb) q.set('aabb', '1');
+  if (s.contacts) q.set('contacts', '1');
+  if (s.substeps !== DEFAULT_SUBSTEPS) q.set('substeps', String(s.substeps));
+  if (s.spawn !== 'circle') q.set('spawn', s.spawn);
   const defaults = defaultSettings();
   for (const key of WORLD_TOGGLES) if (s[key] !== defaults[key]) q.set(key, s[key] ? '1' : '0');
   if (s.tool !== 'drag') q.set('tool', s.tool);
@@ -140,9 +163,9 @@ export function serializeSettings(s: Settings): string {
   return '?' + q.toString();
 }
 
-/** The scene's full parameter set for these settings: its sliders plus the seed. */
+/** The scene's full parameter set for these settings: its sliders plus the seed, where it takes one. */
 export function sceneParams(s: Settings): Record<string, number> {
-  return { ...s.params, seed: s.seed };
+  return sceneDefinition(s.scene).params.seed ? { ...s.params, seed: s.seed } : { ...s.params };
 }
 
 /** A copy that shares nothing with the original, so controls and page never alias params. */

@@ -1,11 +1,16 @@
 import { World, BodyTypeCode, type BroadPhaseName, type IntegratorName } from '@maxgrid/engine';
-import { buildScene } from '@maxgrid/scenes';
-import { sceneParams, type Settings } from './settings.js';
+import { buildScene, buildShapeScene } from '@maxgrid/scenes';
+import { isShapeScene, sceneParams, type Settings, type SpawnKind } from './settings.js';
 import { BodyColors } from './colors.js';
 import { Recorder } from './monitor/recorder.js';
 import { HitEvents } from './hit-events.js';
 import { TouchEvents } from './touch-events.js';
-import { buildSandboxWorld, flatSegments, hitThreshold, layerMask, layerOf } from './scene-world.js';
+import { buildSandboxShapeWorld, buildSandboxWorld, flatSegments, hitThreshold, layerMask, layerOf } from './scene-world.js';
+
+/** The drag spring on shapes: its frequency (Hz), damping ratio, and the most it accelerates a body, in gravities (or in scene sizes per second squared without gravity). */
+const DRAG_HERTZ = 4;
+const DRAG_DAMPING = 0.7;
+const DRAG_MAX_G = 10;
 
 /** The fixed physics step: rendering runs at whatever rate the display gives. */
 export const DT = 1 / 60;
@@ -32,8 +37,15 @@ export class Simulation {
   private boxWidth = 1600;
   private boxHeight = 900;
   private gravityY = 0;
-  /** Read every frame by the renderers, so one object kept up to date rather than a new one. */
-  readonly box = { width: 1600, height: 900 };
+  /**
+   * The region drawn: the scene's box, or for an open scene of shapes the region its bodies
+   * occupy. Read every frame by the renderers, so one object kept up to date rather than a new one.
+   */
+  readonly box = { x: 0, y: 0, width: 1600, height: 900 };
+  /** Whether the scene has a box of walls (shape scenes may be open: a pyramid on its ground). */
+  bounded = true;
+  /** A world of shapes (boxes, polygons, capsules that turn), or of circles. */
+  shapes = false;
   /** Static segments of the scene (x1, y1, x2, y2, thickness each); they never change. */
   segments: Float64Array = new Float64Array(0);
   /** Static circles in the scene: renderers skip their extra pass when there are none. */
@@ -48,6 +60,11 @@ export class Simulation {
   private dragHandle = -1;
   private dragX = 0;
   private dragY = 0;
+  /** Where a dragged shape was grabbed, in its body's frame from its origin. */
+  private grabX = 0;
+  private grabY = 0;
+  /** Gravity's magnitude, or a scene size per second squared: what the drag spring's force is capped by. */
+  private dragLimit = 0;
 
   constructor(private readonly now: () => number = () => performance.now()) {}
 
@@ -57,22 +74,45 @@ export class Simulation {
    * to fit the funnel, a minimum radius above the maximum).
    */
   rebuild(settings: Settings): void {
-    const scene = buildScene(settings.scene, sceneParams(settings));
-    const world = buildSandboxWorld(scene, DT, settings);
+    let world: World;
+    let segments: Float64Array;
+    let region: { x: number; y: number; width: number; height: number };
+    let gravity: { x: number; y: number };
+    let threshold: number;
+    if (isShapeScene(settings.scene)) {
+      const scene = buildShapeScene(settings.scene, sceneParams(settings));
+      world = buildSandboxShapeWorld(scene, DT, settings, settings.substeps);
+      segments = flatSegments(scene);
+      const v = scene.view;
+      region = scene.bounds ? { x: 0, y: 0, width: scene.bounds.width, height: scene.bounds.height } : { x: v.minX, y: v.minY, width: v.maxX - v.minX, height: v.maxY - v.minY };
+      gravity = scene.gravity;
+      this.bounded = scene.bounds !== null;
+      threshold = Math.max(8 * Math.hypot(gravity.x, gravity.y) * DT, (scene.world.lengthUnit ?? 1) * 0.5);
+    } else {
+      const scene = buildScene(settings.scene, sceneParams(settings));
+      world = buildSandboxWorld(scene, DT, settings);
+      segments = flatSegments(scene);
+      region = { x: 0, y: 0, width: scene.bounds.width, height: scene.bounds.height };
+      gravity = scene.gravity;
+      this.bounded = true;
+      threshold = hitThreshold(scene, DT);
+    }
     this.world?.stopWorkers();
     this.world = world;
-    this.layers = settings.layers;
+    this.shapes = world.route.route === 'shapes';
+    this.layers = settings.layers && !this.shapes;
     this.continuous = settings.continuous;
-    this.segments = flatSegments(scene);
+    this.segments = segments;
     this.touches.reset(settings.events);
-    this.hits.reset(settings.hits, hitThreshold(scene, DT));
-    this.boxWidth = scene.bounds.width;
-    this.boxHeight = scene.bounds.height;
-    this.box.width = this.boxWidth;
-    this.box.height = this.boxHeight;
-    this.gravityY = scene.gravity.y;
+    this.hits.reset(settings.hits, threshold);
+    this.boxWidth = region.width;
+    this.boxHeight = region.height;
+    Object.assign(this.box, region);
+    this.gravityY = gravity.y;
+    const g = Math.hypot(gravity.x, gravity.y);
+    this.dragLimit = DRAG_MAX_G * (g > 0 ? g : Math.min(region.width, region.height) / 10);
     const v = this.world.views();
-    this.colors.reset(settings.seed, v.slotCount, settings.layers);
+    this.colors.reset(settings.seed, v.slotCount, this.layers);
     this.dynamicMass = 0;
     this.staticCircles = 0;
     for (let s = 0; s < v.slotCount; s++) {
@@ -153,7 +193,7 @@ export class Simulation {
    */
   potentialEnergy(): number {
     const g = this.gravityY;
-    return this.world.potentialEnergy() + (g > 0 ? g * this.boxHeight * this.dynamicMass : 0);
+    return this.world.potentialEnergy() + (g > 0 ? g * (this.box.y + this.boxHeight) * this.dynamicMass : 0);
   }
 
   /** Whether gravity pulls bodies down, towards the floor. */
@@ -164,7 +204,7 @@ export class Simulation {
   /** Dynamic bodies whose centre is in the lower half of the box: shows a scene falling. */
   lowerHalf(): number {
     const v = this.world.views();
-    const half = this.boxHeight / 2;
+    const half = this.box.y + this.boxHeight / 2;
     let n = 0;
     for (let s = 0; s < v.slotCount; s++) if (v.type[s] === BodyTypeCode.dynamic && v.y[s] > half) n++;
     return n;
@@ -172,10 +212,15 @@ export class Simulation {
 
   /**
    * The handle of the topmost movable body under a world point, or -1. Static pegs are not
-   * picked up: a drag ends by making the body dynamic. Scans every body: per click only.
+   * picked up: a drag ends by making the body dynamic. Circles: scans every body (per click only);
+   * shapes: the engine's point query, shape by shape.
    */
   bodyAt(x: number, y: number): number {
     const v = this.world.views();
+    if (this.shapes) {
+      const found = this.world.queryPoint(x, y).filter((h) => v.type[this.world.slotOfHandle(h)] !== BodyTypeCode.static);
+      return found.length > 0 ? found[found.length - 1] : -1;
+    }
     let found = -1;
     for (let s = 0; s < v.slotCount; s++) {
       if (v.type[s] === BodyTypeCode.free || v.type[s] === BodyTypeCode.static) continue;
@@ -188,28 +233,40 @@ export class Simulation {
   }
 
   /**
-   * Holds a body at the pointer. It becomes kinematic while held, so it pushes others without being
-   * pushed back or pulled by gravity, and is thrown with the pointer's velocity when released.
+   * Holds a body at the pointer. A circle becomes kinematic while held, so it pushes others
+   * without being pushed back or pulled by gravity, and is thrown with the pointer's velocity when
+   * released. A shape stays dynamic and is pulled by a damped spring from the point where it was
+   * grabbed towards the pointer (a force and its torque each step): pulling a box out of a stack
+   * topples the stack rather than teleporting the box through it.
    */
   beginDrag(handle: number, x: number, y: number): void {
     this.dragHandle = handle;
-    this.dynamicMass -= this.world.getCircle(handle).mass;
-    this.world.setType(handle, 'kinematic');
     this.dragX = x;
     this.dragY = y;
+    if (this.shapes) {
+      const b = this.world.getBody(handle);
+      const c = Math.cos(b.angle);
+      const s = Math.sin(b.angle);
+      this.grabX = c * (x - b.x) + s * (y - b.y);
+      this.grabY = -s * (x - b.x) + c * (y - b.y);
+      this.world.setAwake(handle, true);
+      return;
+    }
+    this.dynamicMass -= this.world.getCircle(handle).mass;
+    this.world.setType(handle, 'kinematic');
   }
 
   moveDrag(x: number, y: number): void {
     this.dragX = x;
     this.dragY = y;
-    // While paused nothing steps, so move the body now for the user to see it follow.
-    if (this.paused && this.dragHandle >= 0) this.placeDragged(x, y);
+    // While paused nothing steps, so move a circle now for the user to see it follow.
+    if (this.paused && this.dragHandle >= 0 && !this.shapes) this.placeDragged(x, y);
   }
 
   endDrag(): void {
     const h = this.dragHandle;
     this.dragHandle = -1;
-    if (h < 0 || !this.world.hasBody(h)) return;
+    if (h < 0 || !this.world.hasBody(h) || this.shapes) return;
     const c = this.world.getCircle(h);
     this.world.setType(h, 'dynamic');
     this.dynamicMass += c.mass;
@@ -220,22 +277,45 @@ export class Simulation {
     return this.dragHandle;
   }
 
-  /** Adds a circle of the current mean size at a world point, clamped into the box. */
-  spawn(x: number, y: number, radius: number): number {
+  /** Where the held shape is grabbed, in the world, or null when nothing is held. */
+  grabPoint(): { x: number; y: number; toX: number; toY: number } | null {
+    const h = this.dragHandle;
+    if (h < 0 || !this.shapes || !this.world.hasBody(h)) return null;
+    const b = this.world.getBody(h);
+    const c = Math.cos(b.angle);
+    const s = Math.sin(b.angle);
+    return { x: b.x + c * this.grabX - s * this.grabY, y: b.y + s * this.grabX + c * this.grabY, toX: this.dragX, toY: this.dragY };
+  }
+
+  /**
+   * Adds a body of the current size (`radius`: half its size) at a world point, kept inside the
+   * box: a circle, a box, a hexagon or a capsule. Anything but a circle moves a world of circles
+   * to the shape route, once (the engine's rule).
+   */
+  spawn(x: number, y: number, radius: number, kind: SpawnKind = 'circle'): number {
     const r = Math.min(radius, this.boxWidth / 2, this.boxHeight / 2);
-    const cx = Math.min(this.boxWidth - r, Math.max(r, x));
-    const cy = Math.min(this.boxHeight - r, Math.max(r, y));
-    const handle = this.world.createCircle({ x: cx, y: cy, radius: r });
+    const cx = this.bounded ? Math.min(this.box.x + this.boxWidth - r, Math.max(this.box.x + r, x)) : x;
+    const cy = this.bounded ? Math.min(this.box.y + this.boxHeight - r, Math.max(this.box.y + r, y)) : y;
+    const world = this.world;
+    let handle: number;
+    if (kind === 'box') handle = world.createBox({ x: cx, y: cy, width: 1.4 * r, height: 1.4 * r });
+    else if (kind === 'capsule') handle = world.createCapsule({ x: cx, y: cy, length: r, radius: r / 2 });
+    else if (kind === 'polygon') {
+      const h = (Math.sqrt(3) / 2) * r;
+      handle = world.createPolygon({ x: cx, y: cy, vertices: [{ x: r, y: 0 }, { x: r / 2, y: h }, { x: -r / 2, y: h }, { x: -r, y: 0 }, { x: -r / 2, y: -h }, { x: r / 2, y: -h }] });
+    } else handle = world.createCircle({ x: cx, y: cy, radius: r });
+    this.shapes = world.route.route === 'shapes';
     // The new body joins the layer of its slot, as built ones do.
-    const slot = this.world.slotOfHandle(handle);
-    if (this.layers) this.world.setCollisionFilter(handle, layerOf(slot), layerMask(slot));
-    this.dynamicMass += this.world.getCircle(handle).mass;
-    this.colors.ensure(this.world.views().slotCount);
+    const slot = world.slotOfHandle(handle);
+    if (this.layers) world.setCollisionFilter(handle, layerOf(slot), layerMask(slot));
+    this.dynamicMass += world.getBody(handle).mass;
+    this.colors.ensure(world.views().slotCount);
     return handle;
   }
 
-  // The held body is steered by velocity, not teleported: the step then carries it exactly onto
-  // the pointer, and the solver sees a real velocity for the bodies it pushes.
+  // A held circle is steered by velocity, not teleported: the step then carries it exactly onto
+  // the pointer, and the solver sees a real velocity for the bodies it pushes. A held shape is
+  // pulled by the spring.
   private applyDrag(): void {
     const h = this.dragHandle;
     if (h < 0) return;
@@ -243,15 +323,57 @@ export class Simulation {
       this.dragHandle = -1;
       return;
     }
+    if (this.shapes) {
+      this.pullShape(h);
+      return;
+    }
     const c = this.world.getCircle(h);
-    const x = Math.min(this.boxWidth - c.radius, Math.max(c.radius, this.dragX));
-    const y = Math.min(this.boxHeight - c.radius, Math.max(c.radius, this.dragY));
+    const x = Math.min(this.box.x + this.boxWidth - c.radius, Math.max(this.box.x + c.radius, this.dragX));
+    const y = Math.min(this.box.y + this.boxHeight - c.radius, Math.max(this.box.y + c.radius, this.dragY));
     this.world.setVelocity(h, (x - c.x) / DT, (y - c.y) / DT);
+  }
+
+  /**
+   * A damped spring of DRAG_HERTZ from the grab point to the pointer, as a force at the grab
+   * point (so a torque too), scaled by the body's mass so every body follows alike, capped at
+   * DRAG_MAX_G gravities so a far pointer cannot fling a body through a wall.
+   */
+  private pullShape(h: number): void {
+    const world = this.world;
+    const b = world.getBody(h);
+    if (b.type !== 'dynamic') return;
+    const slot = world.slotOfHandle(h);
+    const v = world.views();
+    const cx = v.x[slot];
+    const cy = v.y[slot];
+    const c = Math.cos(b.angle);
+    const s = Math.sin(b.angle);
+    const px = b.x + c * this.grabX - s * this.grabY;
+    const py = b.y + s * this.grabX + c * this.grabY;
+    const rx = px - cx;
+    const ry = py - cy;
+    // The grab point's velocity: the centre's plus the spin's (w x r, y down: (-w ry, w rx)).
+    const vx = b.vx - b.angularVelocity * ry;
+    const vy = b.vy + b.angularVelocity * rx;
+    const omega = 2 * Math.PI * DRAG_HERTZ;
+    let ax = omega * omega * (this.dragX - px) - 2 * DRAG_DAMPING * omega * vx;
+    let ay = omega * omega * (this.dragY - py) - 2 * DRAG_DAMPING * omega * vy;
+    const a = Math.hypot(ax, ay);
+    if (a > this.dragLimit) {
+      ax *= this.dragLimit / a;
+      ay *= this.dragLimit / a;
+    }
+    const fx = b.mass * ax;
+    const fy = b.mass * ay;
+    world.applyForce(h, fx, fy);
+    // The force at the grab point turns the body: torque r x F.
+    const torque = rx * fy - ry * fx;
+    if (torque !== 0 && world.getBody(h).inertia > 0) world.applyTorque(h, torque);
   }
 
   private placeDragged(px: number, py: number): void {
     const h = this.dragHandle;
     const r = this.world.getCircle(h).radius;
-    this.world.setPosition(h, Math.min(this.boxWidth - r, Math.max(r, px)), Math.min(this.boxHeight - r, Math.max(r, py)));
+    this.world.setPosition(h, Math.min(this.box.x + this.boxWidth - r, Math.max(this.box.x + r, px)), Math.min(this.box.y + this.boxHeight - r, Math.max(this.box.y + r, py)));
   }
 }

@@ -1,6 +1,7 @@
 /**
- * Maps the world box onto a canvas, keeping its aspect ratio and centring it. All canvases of the
- * stage share one transform, so the overlay lines up with either renderer.
+ * Maps the world region (the box, or an open scene's region) onto a canvas, keeping its aspect
+ * ratio and centring it. All canvases of the stage share one transform, so the overlay lines up
+ * with either renderer.
  */
 export class ViewTransform {
   /** Device pixels per world unit. */
@@ -13,17 +14,19 @@ export class ViewTransform {
   /** Device pixels per CSS pixel. */
   dpr = 1;
 
-  fit(cssWidth: number, cssHeight: number, dpr: number, boxWidth: number, boxHeight: number): boolean {
+  fit(cssWidth: number, cssHeight: number, dpr: number, boxWidth: number, boxHeight: number, boxX = 0, boxY = 0): boolean {
     const width = Math.max(1, Math.round(cssWidth * dpr));
     const height = Math.max(1, Math.round(cssHeight * dpr));
     const scale = Math.min(width / boxWidth, height / boxHeight);
-    const changed = width !== this.width || height !== this.height || scale !== this.scale || dpr !== this.dpr;
+    const offsetX = (width - boxWidth * scale) / 2 - boxX * scale;
+    const offsetY = (height - boxHeight * scale) / 2 - boxY * scale;
+    const changed = width !== this.width || height !== this.height || scale !== this.scale || dpr !== this.dpr || offsetX !== this.offsetX || offsetY !== this.offsetY;
     this.width = width;
     this.height = height;
     this.dpr = dpr;
     this.scale = scale;
-    this.offsetX = (width - boxWidth * scale) / 2;
-    this.offsetY = (height - boxHeight * scale) / 2;
+    this.offsetX = offsetX;
+    this.offsetY = offsetY;
     return changed;
   }
 

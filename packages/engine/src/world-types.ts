@@ -115,3 +115,18 @@ export interface BodyViews {
   /** The shapes, or null in a world of circles only, whose bodies are each a circle of `radius`. */
   readonly shapes: ShapeViews | null;
 }
+
+/**
+ * The contact points of the last step, for drawing and inspection: point k at (x[k], y[k]) with
+ * the normal (nx[k], ny[k]) of its manifold, pointing from the first body to the second, and the
+ * signed distance between the surfaces there (negative: overlapping; positive: a speculative point
+ * the soft step holds apart). Read count entries; the object and its arrays are reused.
+ */
+export interface ContactPointViews {
+  readonly count: number;
+  readonly x: Readonly<Float64Array>;
+  readonly y: Readonly<Float64Array>;
+  readonly nx: Readonly<Float64Array>;
+  readonly ny: Readonly<Float64Array>;
+  readonly separation: Readonly<Float64Array>;
+}

@@ -10,7 +10,8 @@ import { ContactEvents, type ContactEventsView } from './store/contact-events.js
 import { Queries, type RayHit } from './query/queries.js';
 import { Disturbances } from './solver/disturbances.js';
 import { NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments, rayHitOutput, rayHitsOutput } from './query/query-args.js';
-import type { CircleState, BodyViews, BodyState, QueryOptions, ShapeState, ShapeViews } from './world-types.js';
+import type { CircleState, BodyViews, BodyState, ContactPointViews, QueryOptions, ShapeState, ShapeViews } from './world-types.js';
+import { grow, grownCapacity } from './util/grow.js';
 import { BodyShapes } from './shapes/body-shapes.js';
 import { ShapeRoute } from './step/shape-route.js';
 import { turnCircles } from './integrate/rigid-motion.js';
@@ -105,6 +106,14 @@ export class World {
     s: EMPTY,
     angularVelocity: EMPTY,
     shapes: null as ShapeViews | null,
+  };
+  private readonly contactPointsRecord = {
+    count: 0,
+    x: new Float64Array(0),
+    y: new Float64Array(0),
+    nx: new Float64Array(0),
+    ny: new Float64Array(0),
+    separation: new Float64Array(0),
   };
   private readonly shapeViewsRecord = {
     slotCount: 0,
@@ -707,6 +716,54 @@ export class World {
   /** 16 hex digits identifying the exact bits of every body's state; equal across runtimes. */
   stateHash(): string {
     return analytics.stateHash(this.bodies);
+  }
+
+  /**
+   * The contact points of the last step (see ContactPointViews): every manifold point of a world
+   * with shapes; for circles, one point per touching pair, midway between the surfaces.
+   */
+  contactPoints(): ContactPointViews {
+    const out = this.contactPointsRecord;
+    let n = 0;
+    const put = (x: number, y: number, nx: number, ny: number, separation: number) => {
+      if (n === out.x.length) {
+        const capacity = grownCapacity(out.x.length, n + 1);
+        out.x = grow(out.x, capacity);
+        out.y = grow(out.y, capacity);
+        out.nx = grow(out.nx, capacity);
+        out.ny = grow(out.ny, capacity);
+        out.separation = grow(out.separation, capacity);
+      }
+      out.x[n] = x;
+      out.y[n] = y;
+      out.nx[n] = nx;
+      out.ny[n] = ny;
+      out.separation[n++] = separation;
+    };
+    if (this.shapeRoute) {
+      const c = this.shapeRoute.narrow.current;
+      for (let listed = 0; listed < c.count; listed++) {
+        const k = c.order[listed];
+        for (let p = 0; p < c.pointCount[k]; p++) put(c.pointX[2 * k + p], c.pointY[2 * k + p], c.normalX[k], c.normalY[k], c.separation[2 * k + p]);
+      }
+    } else {
+      const { x, y, radius } = this.bodies;
+      const { lo, hi, count } = this.pipeline.contacts;
+      for (let k = 0; k < count; k++) {
+        const i = lo[k];
+        const j = hi[k];
+        const dx = x[j] - x[i];
+        const dy = y[j] - y[i];
+        const d = Math.sqrt(dx * dx + dy * dy);
+        const nx = d > 0 ? dx / d : 1;
+        const ny = d > 0 ? dy / d : 0;
+        const gap = d - radius[i] - radius[j];
+        const along = radius[i] + gap / 2;
+        put(x[i] + nx * along, y[i] + ny * along, nx, ny, gap);
+      }
+    }
+    out.count = n;
+    return out;
   }
 
   /**

@@ -170,3 +170,37 @@ describe('bodies and shapes', () => {
     expect(new World({ solver: 'elastic', friction: 0.5 }).route).toEqual({ route: 'shapes', solver: 'elastic' });
   });
 });
+
+describe('contact points', () => {
+  it('a box resting on the ground has two points at its bottom corners, the normal along the vertical', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0 });
+    world.createBox({ x: 0, y: 1, width: 20, height: 2, type: 'static' });
+    world.createBox({ x: 3, y: -0.5, width: 1, height: 1 });
+    for (let s = 0; s < 60; s++) world.step(1 / 60);
+    const p = world.contactPoints();
+    expect(p.count).toBe(2);
+    const xs = [p.x[0], p.x[1]].sort((a, b) => a - b);
+    expect(xs[0]).toBeCloseTo(2.5, 2);
+    expect(xs[1]).toBeCloseTo(3.5, 2);
+    for (let k = 0; k < 2; k++) {
+      expect(Math.abs(p.y[k])).toBeLessThan(0.01);
+      expect(Math.abs(p.nx[k])).toBeLessThan(1e-9);
+      expect(Math.abs(p.ny[k])).toBeCloseTo(1, 9);
+      expect(Math.abs(p.separation[k])).toBeLessThan(0.01);
+    }
+  });
+
+  it('touching circles have one point midway between their surfaces, the normal from the first to the second', () => {
+    const world = new World();
+    world.createCircle({ x: 0, y: 0, radius: 1 });
+    world.createCircle({ x: 1.8, y: 0, radius: 1 });
+    world.step(1 / 60);
+    // The report's separation moved them apart this step, 0.1 each: the point is where they now touch.
+    const p = world.contactPoints();
+    expect(p.count).toBe(1);
+    expect(p.nx[0]).toBeCloseTo(1, 9);
+    expect(p.x[0]).toBeCloseTo(0.9, 9);
+    expect(p.y[0]).toBe(0);
+    expect(Math.abs(p.separation[0])).toBeLessThan(1e-12);
+  });
+});

@@ -58,6 +58,8 @@ export class MonitorPanel {
     end: byId('stat-end'),
     hits: byId('stat-hits'),
     fastestHit: byId('stat-fastest-hit'),
+    stages: byId('stat-stages'),
+    route: byId('stat-route'),
   };
   // Rows for features that may not apply: shown only when the scene or a toggle makes them count.
   private readonly rows = {
@@ -112,6 +114,10 @@ export class MonitorPanel {
       // work. Measured on pair tests, since the grids already drop most non-touching pairs before
       // they become candidates.
       o.falsePositives.textContent = st.pairTests > 0 ? `${(100 * (1 - st.contacts / st.pairTests)).toFixed(1)}%` : '–';
+      // Where the step went: the broad-phase, the narrow-phase (manifolds with shapes) and the solver.
+      o.stages.textContent = `${st.broadphaseMs.toFixed(2)} / ${st.narrowphaseMs.toFixed(2)} / ${st.solveMs.toFixed(2)} ms`;
+      const route = world.route;
+      o.route.textContent = route.route === 'shapes' ? `shapes, ${route.solver === 'soft' ? 'soft step' : 'elastic pass'}` : 'circles';
       const r = this.rows;
       // Without gravity nothing falls, and where the bodies are says nothing.
       r.lowerHalf.hidden = !sim.falls;

@@ -2,6 +2,7 @@ import { BodyTypeCode, type BodyViews } from '@maxgrid/engine';
 import { PALETTE_SIZE, STATIC_COLOR, type BodyColors } from '../colors.js';
 import type { ViewTransform } from '../view.js';
 import { BACKGROUND, BOX_FILL, SLEEP_DIM, type Renderer, type SceneShapes } from './renderer.js';
+import { ShapeChains, addShapePath } from './shape-paths.js';
 
 const TAU = 2 * Math.PI;
 
@@ -12,6 +13,7 @@ const TAU = 2 * Math.PI;
  */
 export class Canvas2DRenderer implements Renderer {
   private readonly ctx: CanvasRenderingContext2D;
+  private readonly chains = new ShapeChains();
 
   constructor(readonly canvas: HTMLCanvasElement) {
     // willReadFrequently keeps this canvas on the CPU rasteriser. Chrome's GPU canvas re-tessellates
@@ -22,14 +24,14 @@ export class Canvas2DRenderer implements Renderer {
     this.ctx = ctx;
   }
 
-  draw(v: BodyViews, colors: BodyColors, view: ViewTransform, box: { width: number; height: number }, shapes: SceneShapes): void {
+  draw(v: BodyViews, colors: BodyColors, view: ViewTransform, box: { x: number; y: number; width: number; height: number }, shapes: SceneShapes): void {
     const ctx = this.ctx;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
     ctx.fillStyle = BACKGROUND;
     ctx.fillRect(0, 0, view.width, view.height);
     ctx.setTransform(view.scale, 0, 0, view.scale, view.offsetX, view.offsetY);
     ctx.fillStyle = BOX_FILL;
-    ctx.fillRect(0, 0, box.width, box.height);
+    ctx.fillRect(box.x, box.y, box.width, box.height);
 
     // Segments are capsules of radius `thickness`: a line that wide with round caps is exactly that.
     const seg = shapes.segments;
@@ -43,6 +45,10 @@ export class Canvas2DRenderer implements Renderer {
       ctx.stroke();
     }
 
+    if (v.shapes) {
+      this.drawShapes(v, colors, shapes);
+      return;
+    }
     const { x, y, radius, type, slotCount } = v;
     const { order, start } = colors;
     const tiny = 0.75 / view.scale;
@@ -69,6 +75,48 @@ export class Canvas2DRenderer implements Renderer {
       const asleep = v.asleep;
       ctx.beginPath();
       for (let s = 0; s < slotCount; s++) if (asleep[s] === 1 && type[s] !== BodyTypeCode.free) this.addCircle(x[s], y[s], radius[s], tiny);
+      ctx.fillStyle = SLEEP_DIM;
+      ctx.fill();
+    }
+  }
+
+  /**
+   * A world of shapes: every shape with its body's rotation, one path per palette colour as for
+   * circles, then static bodies in the static colour, then sleepers dimmed.
+   */
+  private drawShapes(v: BodyViews, colors: BodyColors, scene: SceneShapes): void {
+    const ctx = this.ctx;
+    const shapes = v.shapes!;
+    const chains = this.chains;
+    chains.update(v, shapes);
+    const { first, next } = chains;
+    const { type, slotCount } = v;
+    const { order, start } = colors;
+    for (let p = 0; p < PALETTE_SIZE; p++) {
+      const end = start[p + 1];
+      if (end === start[p]) continue;
+      ctx.beginPath();
+      for (let k = start[p]; k < end; k++) {
+        const b = order[k];
+        if (b >= slotCount || type[b] === BodyTypeCode.free || type[b] === BodyTypeCode.static) continue;
+        for (let sh = first[b]; sh >= 0; sh = next[sh]) addShapePath(ctx, v, shapes, sh, b);
+      }
+      ctx.fillStyle = colors.css[p];
+      ctx.fill();
+    }
+    ctx.beginPath();
+    for (let b = 0; b < slotCount; b++) {
+      if (type[b] !== BodyTypeCode.static) continue;
+      for (let sh = first[b]; sh >= 0; sh = next[sh]) addShapePath(ctx, v, shapes, sh, b);
+    }
+    ctx.fillStyle = STATIC_COLOR;
+    ctx.fill();
+    if (scene.sleepers > 0) {
+      ctx.beginPath();
+      for (let b = 0; b < slotCount; b++) {
+        if (v.asleep[b] !== 1 || type[b] === BodyTypeCode.free) continue;
+        for (let sh = first[b]; sh >= 0; sh = next[sh]) addShapePath(ctx, v, shapes, sh, b);
+      }
       ctx.fillStyle = SLEEP_DIM;
       ctx.fill();
     }

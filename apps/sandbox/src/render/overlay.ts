@@ -7,8 +7,12 @@ import type { ViewTransform } from '../view.js';
 export interface OverlayOptions {
   grid: boolean;
   aabb: boolean;
+  /** Contact points and their normals (world.contactPoints). */
+  contacts: boolean;
   /** Handle of the body being dragged, or -1. */
   held: number;
+  /** The drag spring of a held shape: from its grab point to the pointer. */
+  grab: { x: number; y: number; toX: number; toY: number } | null;
   /** Static segments (x1, y1, x2, y2, thickness each), for their AABBs. */
   segments: Float64Array;
   touches: TouchEvents;
@@ -19,6 +23,9 @@ export interface OverlayOptions {
 export const RAY_COLOR = '#f0f6fc';
 export const HIT_COLOR = '#ff7b72';
 const POINT_COLOR = '#e3b341';
+/** Contact points (dots) and their normals. */
+export const CONTACT_COLOR = '#3fb950';
+const NORMAL_COLOR = 'rgba(63, 185, 80, 0.7)';
 const FLASH_COLOR = 'rgba(255, 255, 255, 0.85)';
 /** Rings at hit bodies: a colour nothing else on the overlay uses, so they can be told apart. */
 export const HIT_RING_COLOR = '#d2a8ff';
@@ -46,7 +53,7 @@ export class Overlay {
     const ctx = this.ctx;
     const q = o.query;
     const querying = (q.tool === 'ray' && q.hasRay) || (q.tool === 'point' && q.hasPoint) || (q.tool === 'box' && q.hasBox);
-    const empty = !o.grid && !o.aabb && o.held < 0 && !o.touches.enabled && !o.hits.showing && !querying;
+    const empty = !o.grid && !o.aabb && !o.contacts && o.held < 0 && !o.touches.enabled && !o.hits.showing && !querying;
     if (empty && this.wasEmpty) return;
     this.wasEmpty = empty;
     ctx.setTransform(1, 0, 0, 1, 0, 0);
@@ -63,13 +70,27 @@ export class Overlay {
     if (o.aabb) this.drawBoxes(world, o.segments);
     if (o.touches.enabled) this.drawFlashes(world, o.touches, hairline);
     if (o.hits.showing) this.drawHits(world, o.hits, hairline);
+    if (o.contacts) this.drawContacts(world, hairline);
     if (o.held >= 0 && world.hasBody(o.held)) {
-      const c = world.getCircle(o.held);
+      const v = world.views();
+      const s = world.slotOfHandle(o.held);
       ctx.strokeStyle = '#ffffff';
       ctx.lineWidth = 2 * hairline;
       ctx.beginPath();
-      ctx.arc(c.x, c.y, c.radius + 3 * hairline, 0, 2 * Math.PI);
+      ctx.arc(v.x[s], v.y[s], v.radius[s] + 3 * hairline, 0, 2 * Math.PI);
       ctx.stroke();
+      const g = o.grab;
+      if (g) {
+        // The drag spring: from where the shape was grabbed to the pointer.
+        ctx.beginPath();
+        ctx.moveTo(g.x, g.y);
+        ctx.lineTo(g.toX, g.toY);
+        ctx.stroke();
+        ctx.beginPath();
+        ctx.arc(g.x, g.y, 3 * hairline, 0, 2 * Math.PI);
+        ctx.fillStyle = '#ffffff';
+        ctx.fill();
+      }
     }
     if (q.tool === 'ray' && q.hasRay) this.drawRay(q, hairline);
     if (q.tool === 'point' && q.hasPoint) this.drawPoint(world, q, hairline);
@@ -81,10 +102,36 @@ export class Overlay {
     const v = world.views();
     ctx.strokeStyle = 'rgba(255, 210, 80, 0.55)';
     ctx.beginPath();
-    for (let s = 0; s < v.slotCount; s++) {
-      if (v.type[s] === BodyTypeCode.free) continue;
-      const r = v.radius[s];
-      ctx.rect(v.x[s] - r, v.y[s] - r, 2 * r, 2 * r);
+    const shapes = v.shapes;
+    if (shapes) {
+      // Each shape's own box: its points placed with its body's pose, widened by its radius.
+      const { vertices, stride, vertexStart, body, vertexCount, radius, live } = shapes;
+      for (let k = 0; k < shapes.slotCount; k++) {
+        if (!live[k]) continue;
+        const b = body[k];
+        const c = v.c[b];
+        const sn = v.s[b];
+        let minX = Infinity;
+        let minY = Infinity;
+        let maxX = -Infinity;
+        let maxY = -Infinity;
+        for (let i = 0, at = k * stride + vertexStart; i < vertexCount[k]; i++, at += 4) {
+          const px = v.x[b] + c * vertices[at] - sn * vertices[at + 1];
+          const py = v.y[b] + sn * vertices[at] + c * vertices[at + 1];
+          minX = Math.min(minX, px);
+          maxX = Math.max(maxX, px);
+          minY = Math.min(minY, py);
+          maxY = Math.max(maxY, py);
+        }
+        const r = radius[k];
+        ctx.rect(minX - r, minY - r, maxX - minX + 2 * r, maxY - minY + 2 * r);
+      }
+    } else {
+      for (let s = 0; s < v.slotCount; s++) {
+        if (v.type[s] === BodyTypeCode.free) continue;
+        const r = v.radius[s];
+        ctx.rect(v.x[s] - r, v.y[s] - r, 2 * r, 2 * r);
+      }
     }
     for (let i = 0; i < seg.length; i += 5) {
       const t = seg[i + 4];
@@ -93,6 +140,26 @@ export class Overlay {
       ctx.rect(minX, minY, Math.max(seg[i], seg[i + 2]) + t - minX, Math.max(seg[i + 1], seg[i + 3]) + t - minY);
     }
     ctx.stroke();
+  }
+
+  /** A dot at each contact point and its manifold's normal, 12 device pixels long. */
+  private drawContacts(world: World, hairline: number): void {
+    const ctx = this.ctx;
+    const points = world.contactPoints();
+    const length = 12 * hairline;
+    ctx.strokeStyle = NORMAL_COLOR;
+    ctx.lineWidth = 1.5 * hairline;
+    ctx.beginPath();
+    for (let k = 0; k < points.count; k++) {
+      ctx.moveTo(points.x[k], points.y[k]);
+      ctx.lineTo(points.x[k] + points.nx[k] * length, points.y[k] + points.ny[k] * length);
+    }
+    ctx.stroke();
+    ctx.fillStyle = CONTACT_COLOR;
+    ctx.beginPath();
+    const r = 2 * hairline;
+    for (let k = 0; k < points.count; k++) ctx.rect(points.x[k] - r, points.y[k] - r, 2 * r, 2 * r);
+    ctx.fill();
   }
 
   // A ring rather than a fill: in a pile touches begin every step, and fills would hide the bodies.
@@ -188,11 +255,13 @@ export class Overlay {
     ctx.strokeStyle = POINT_COLOR;
     ctx.lineWidth = 2.5 * hairline;
     ctx.beginPath();
+    const v = world.views();
     for (const h of q.under) {
       if (!world.hasBody(h)) continue;
-      const c = world.getCircle(h);
-      ctx.moveTo(c.x + c.radius + 2 * hairline, c.y);
-      ctx.arc(c.x, c.y, c.radius + 2 * hairline, 0, 2 * Math.PI);
+      const s = world.slotOfHandle(h);
+      const r = v.radius[s] + 2 * hairline;
+      ctx.moveTo(v.x[s] + r, v.y[s]);
+      ctx.arc(v.x[s], v.y[s], r, 0, 2 * Math.PI);
     }
     ctx.stroke();
   }

@@ -15,7 +15,8 @@ export interface SceneShapes {
 /** Draws every live body from the engine's bulk views; one per canvas, chosen in the UI. */
 export interface Renderer {
   readonly canvas: HTMLCanvasElement;
-  draw(views: BodyViews, colors: BodyColors, view: ViewTransform, box: { width: number; height: number }, shapes: SceneShapes): void;
+  /** `box`: the region drawn (the scene's box, or an open scene's region), filled as the box. */
+  draw(views: BodyViews, colors: BodyColors, view: ViewTransform, box: { x: number; y: number; width: number; height: number }, shapes: SceneShapes): void;
 }
 
 export const BACKGROUND = '#0d1117';

@@ -3,6 +3,7 @@ import { STATIC_RGB, type BodyColors } from '../colors.js';
 import type { ViewTransform } from '../view.js';
 import type { Renderer, SceneShapes } from './renderer.js';
 import { SegmentLayer } from './webgl-segments.js';
+import { ShapeLayer } from './webgl-shapes.js';
 import { link, must } from './webgl-util.js';
 
 /** Per-instance state codes, the fourth float of each body. */
@@ -64,6 +65,7 @@ export class WebGLRenderer implements Renderer {
   private readonly uOffset: WebGLUniformLocation | null;
   private readonly uPixels: WebGLUniformLocation | null;
   private readonly segments: SegmentLayer;
+  private shapeLayer: ShapeLayer | null = null;
   private bodies = new Float32Array(0);
   private gpuCapacity = 0;
   private colorVersion = -1;
@@ -115,7 +117,7 @@ export class WebGLRenderer implements Renderer {
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
   }
 
-  draw(v: BodyViews, colors: BodyColors, view: ViewTransform, box: { width: number; height: number }, shapes: SceneShapes): void {
+  draw(v: BodyViews, colors: BodyColors, view: ViewTransform, box: { x: number; y: number; width: number; height: number }, shapes: SceneShapes): void {
     const gl = this.gl;
     const n = v.slotCount;
     gl.viewport(0, 0, view.width, view.height);
@@ -125,8 +127,8 @@ export class WebGLRenderer implements Renderer {
     // The box: a scissored clear is cheaper than another program.
     gl.enable(gl.SCISSOR_TEST);
     gl.scissor(
-      Math.round(view.offsetX),
-      Math.round(view.height - view.offsetY - box.height * view.scale),
+      Math.round(view.offsetX + box.x * view.scale),
+      Math.round(view.height - view.offsetY - (box.y + box.height) * view.scale),
       Math.round(box.width * view.scale),
       Math.round(box.height * view.scale),
     );
@@ -140,6 +142,12 @@ export class WebGLRenderer implements Renderer {
     const ox = (2 * view.offsetX) / view.width - 1;
     const oy = 1 - (2 * view.offsetY) / view.height;
     this.segments.draw(shapes.segments, sx, sy, ox, oy, view.scale);
+    if (v.shapes) {
+      colors.ensure(n);
+      this.shapeLayer ??= new ShapeLayer(gl);
+      this.shapeLayer.draw(v, v.shapes, colors, sx, sy, ox, oy);
+      return;
+    }
     if (n === 0) return;
 
     if (this.bodies.length < n * 4) this.bodies = new Float32Array(Math.max(n, (this.bodies.length / 4) * 2) * 4);
