@@ -9,6 +9,11 @@ import type { NewSegment } from './store/segment-store.js';
 import type { StepSettings } from './step/pipeline.js';
 import type { ShapeRouteSettings } from './step/shape-route.js';
 import {
+  MAX_MAGNITUDE,
+  MAX_RESTITUTION,
+  boundedNonNegative,
+  boundedNumber,
+  boundedPositive,
   finiteNumber,
   knownKeys,
   nonNegativeNumber,
@@ -57,7 +62,7 @@ export interface WorldOptions {
   contactHertz?: number;
   /** Damping ratio of the soft step's contacts. Default 10 (Box2D). */
   contactDampingRatio?: number;
-  /** The fastest a body moves in a world with shapes, length units per second. Default 400 x lengthUnit (Box2D's maximumLinearSpeed). */
+  /** The fastest a dynamic body moves, length units per second: the last stage of every step caps speeds at it. Default: with shapes 400 x lengthUnit (Box2D's maximumLinearSpeed); the circle engine 1e100, which only keeps numbers finite. At most 1e100. */
   maxLinearSpeed?: number;
   /**
    * Collisions approaching slower than this are inelastic, as Box2D's restitution threshold:
@@ -253,19 +258,19 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
   if (options.bounds !== undefined && options.bounds !== null) {
     const b = plainObject('bounds', options.bounds);
     knownKeys('bounds', b, ['width', 'height']);
-    bounds = { width: positiveNumber('bounds.width', b.width), height: positiveNumber('bounds.height', b.height) };
+    bounds = { width: boundedPositive('bounds.width', b.width), height: boundedPositive('bounds.height', b.height) };
   }
   return {
     bounds,
     gravity: options.gravity === undefined ? { x: 0, y: 0 } : vector('gravity', options.gravity),
-    restitution: options.restitution === undefined ? 1 : nonNegativeNumber('restitution', options.restitution),
+    restitution: options.restitution === undefined ? 1 : restitutionNumber('restitution', options.restitution),
     friction: options.friction === undefined ? 0 : nonNegativeNumber('friction', options.friction),
     solver: options.solver === undefined ? 'auto' : oneOf('solver', options.solver, ['auto', 'elastic', 'soft'] as const),
     substeps: options.substeps === undefined ? 4 : iterationCount('substeps', options.substeps),
     lengthUnit: options.lengthUnit === undefined ? 1 : positiveNumber('lengthUnit', options.lengthUnit),
     contactHertz: options.contactHertz === undefined ? 30 : positiveNumber('contactHertz', options.contactHertz),
     contactDampingRatio: options.contactDampingRatio === undefined ? 10 : nonNegativeNumber('contactDampingRatio', options.contactDampingRatio),
-    maxLinearSpeed: options.maxLinearSpeed === undefined ? null : positiveNumber('maxLinearSpeed', options.maxLinearSpeed),
+    maxLinearSpeed: options.maxLinearSpeed === undefined ? null : boundedPositive('maxLinearSpeed', options.maxLinearSpeed),
     restitutionThresholdGiven: options.restitutionThreshold === undefined ? null : nonNegativeNumber('restitutionThreshold', options.restitutionThreshold),
     sleepSpeedGiven: options.sleepSpeed === undefined ? null : nonNegativeNumber('sleepSpeed', options.sleepSpeed),
     restitutionThreshold:
@@ -319,7 +324,7 @@ export function layerBits(field: string, value: unknown): number {
 export function vector(field: string, input: unknown): Vector {
   const v = plainObject(field, input);
   knownKeys(field, v, ['x', 'y']);
-  return { x: finiteNumber(`${field}.x`, v.x), y: finiteNumber(`${field}.y`, v.y) };
+  return { x: boundedNumber(`${field}.x`, v.x), y: boundedNumber(`${field}.y`, v.y) };
 }
 
 export function broadphaseName(value: unknown): BroadPhaseName {
@@ -338,45 +343,51 @@ export function bodyType(value: unknown): BodyType {
 export function resolveCircle(input: unknown, defaultRestitution: number): NewBody {
   const o = plainObject('circle options', input);
   knownKeys('circle options', o, CIRCLE_KEYS);
-  const radius = positiveNumber('radius', o.radius);
+  const radius = boundedPositive('radius', o.radius);
   let mass: number;
   if (o.mass !== undefined) {
     if (o.density !== undefined) throw new TypeError(`give mass or density, not both (mass ${String(o.mass)}, density ${String(o.density)})`);
-    mass = positiveNumber('mass', o.mass);
-    // Collisions divide by the mass: its inverse must be finite too, or the first contact gives NaN.
-    if (!Number.isFinite(1 / mass)) throw new RangeError(`mass must be at least ${1 / Number.MAX_VALUE} (so that 1 / mass is finite), got ${mass}`);
+    mass = boundedPositive('mass', o.mass);
   } else {
     const density = o.density === undefined ? 1 : positiveNumber('density', o.density);
     mass = density * Math.PI * radius * radius;
-    if (!Number.isFinite(mass)) throw new RangeError(`mass from density ${density} and radius ${radius} is not finite`);
-    if (!Number.isFinite(1 / mass)) throw new RangeError(`mass from density ${density} and radius ${radius} is ${mass}, too small for 1 / mass to be finite`);
+    if (!(mass <= MAX_MAGNITUDE && mass >= 1 / MAX_MAGNITUDE)) {
+      throw new RangeError(`mass from density ${density} and radius ${radius} is ${mass}, outside [${1 / MAX_MAGNITUDE}, ${MAX_MAGNITUDE}] (so that no step can overflow)`);
+    }
   }
   return {
-    x: finiteNumber('x', o.x),
-    y: finiteNumber('y', o.y),
-    vx: o.vx === undefined ? 0 : finiteNumber('vx', o.vx),
-    vy: o.vy === undefined ? 0 : finiteNumber('vy', o.vy),
+    x: boundedNumber('x', o.x),
+    y: boundedNumber('y', o.y),
+    vx: o.vx === undefined ? 0 : boundedNumber('vx', o.vx),
+    vy: o.vy === undefined ? 0 : boundedNumber('vy', o.vy),
     radius,
     mass,
-    restitution: o.restitution === undefined ? defaultRestitution : nonNegativeNumber('restitution', o.restitution),
+    restitution: o.restitution === undefined ? defaultRestitution : restitutionNumber('restitution', o.restitution),
     type: TypeCode[o.type === undefined ? 'dynamic' : bodyType(o.type)],
     category: o.category === undefined ? 1 : layerBits('category', o.category),
     mask: o.mask === undefined ? 0xffffffff : layerBits('mask', o.mask),
-    gravityScale: o.gravityScale === undefined ? 1 : finiteNumber('gravityScale', o.gravityScale),
+    gravityScale: o.gravityScale === undefined ? 1 : boundedNumber('gravityScale', o.gravityScale),
     linearDamping: o.linearDamping === undefined ? 0 : nonNegativeNumber('linearDamping', o.linearDamping),
   };
+}
+
+/** A restitution: >= 0, at most MAX_RESTITUTION (above 1 a bounce adds energy, and speeds are capped at the world's top speed). */
+export function restitutionNumber(field: string, value: unknown): number {
+  const n = nonNegativeNumber(field, value);
+  if (!(n <= MAX_RESTITUTION)) throw new RangeError(`${field} must be at most ${MAX_RESTITUTION}, got ${describeValue(value)}`);
+  return n;
 }
 
 export function resolveSegment(input: unknown, defaultRestitution: number, defaultFriction: number): NewSegment {
   const o = plainObject('segment options', input);
   knownKeys('segment options', o, ['x1', 'y1', 'x2', 'y2', 'thickness', 'restitution', 'friction', 'category', 'mask']);
   const segment = {
-    ax: finiteNumber('x1', o.x1),
-    ay: finiteNumber('y1', o.y1),
-    bx: finiteNumber('x2', o.x2),
-    by: finiteNumber('y2', o.y2),
-    thickness: o.thickness === undefined ? 0 : nonNegativeNumber('thickness', o.thickness),
-    restitution: o.restitution === undefined ? defaultRestitution : nonNegativeNumber('restitution', o.restitution),
+    ax: boundedNumber('x1', o.x1),
+    ay: boundedNumber('y1', o.y1),
+    bx: boundedNumber('x2', o.x2),
+    by: boundedNumber('y2', o.y2),
+    thickness: o.thickness === undefined ? 0 : boundedNonNegative('thickness', o.thickness),
+    restitution: o.restitution === undefined ? defaultRestitution : restitutionNumber('restitution', o.restitution),
     friction: o.friction === undefined ? defaultFriction : nonNegativeNumber('friction', o.friction),
     category: o.category === undefined ? 1 : layerBits('category', o.category),
     mask: o.mask === undefined ? 0xffffffff : layerBits('mask', o.mask),

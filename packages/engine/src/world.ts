@@ -9,6 +9,7 @@ import { AutoBroadPhase } from './broadphase/auto.js';
 import { ContactEvents, type ContactEventsView } from './store/contact-events.js';
 import { Queries, type RayHit } from './query/queries.js';
 import { Disturbances } from './solver/disturbances.js';
+import { limitSpeeds } from './solver/speed-limit.js';
 import { NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments, rayHitOutput, rayHitsOutput } from './query/query-args.js';
 import type { CircleState, BodyViews, BodyState, ContactPointViews, QueryOptions, ShapeState, ShapeViews } from './world-types.js';
 import { grow, grownCapacity } from './util/grow.js';
@@ -18,7 +19,7 @@ import { turnCircles } from './integrate/rigid-motion.js';
 import { atan2, cosSin } from './math/trig.js';
 import { BodyFlag } from './store/rigid-columns.js';
 import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type NewShape } from './store/shape-store.js';
-import { Geometry, SHAPE_KIND_NAMES } from './shapes/geometry.js';
+import { Geometry, SHAPE_KIND_NAMES, areaProperties, emptyAreaProperties } from './shapes/geometry.js';
 import { bodyBounds } from './shapes/bounds.js';
 import {
   applyMassOption,
@@ -40,7 +41,7 @@ import { StepPipeline } from './step/pipeline.js';
 import { checkWorkerCount, DEFAULT_MIN_BODIES, ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
 import type { IntegratorName } from './integrate/integrator.js';
-import { describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
+import { MAX_DT, MAX_MAGNITUDE, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
 import { flag } from './options.js';
 import {
   bodyType,
@@ -257,7 +258,8 @@ export class World {
     this.engage();
     const b = this.bodies;
     const rigid = b.rigid!;
-    if (b.type[slot] === TypeCode.dynamic && !(this.shapes.massWith(slot, shape) > 0)) this.requireMass(handle, this.shapes.massWith(slot, shape));
+    if (b.type[slot] === TypeCode.dynamic) this.checkMass(handle, this.shapes.massWith(slot, shape));
+    else this.checkMass(handle, this.shapes.massWith(slot, shape), true);
     this.assertShapeInBox(shape.geometry, b.x[slot], b.y[slot], rigid.c[slot], rigid.s[slot], rigid.localCenterX[slot], rigid.localCenterY[slot]);
     const s = this.shapes.add(slot, shape);
     if (shape.sensor) this.useEvents();
@@ -448,8 +450,8 @@ export class World {
 
   setVelocity(handle: number, vx: number, vy: number): void {
     const s = this.slot(handle);
-    finiteNumber('vx', vx);
-    finiteNumber('vy', vy);
+    boundedNumber('vx', vx);
+    boundedNumber('vy', vy);
     if (this.bodies.type[s] === TypeCode.static) {
       throw new RangeError(`body ${handle} is static and cannot be given a velocity (${vx}, ${vy}); make it kinematic or dynamic first`);
     }
@@ -461,7 +463,7 @@ export class World {
   /** Sets a body's angular velocity, radians per second (see BodyState.angle for the sense); wakes it. */
   setAngularVelocity(handle: number, angularVelocity: number): void {
     const s = this.slot(handle);
-    finiteNumber('angularVelocity', angularVelocity);
+    boundedNumber('angularVelocity', angularVelocity);
     if (this.bodies.type[s] === TypeCode.static && angularVelocity !== 0) {
       throw new RangeError(`body ${handle} is static and cannot be given an angular velocity (${angularVelocity}); make it kinematic or dynamic first`);
     }
@@ -473,8 +475,8 @@ export class World {
   /** Moves a body's origin to (x, y): its centre follows. */
   setPosition(handle: number, x: number, y: number): void {
     const s = this.slot(handle);
-    finiteNumber('x', x);
-    finiteNumber('y', y);
+    boundedNumber('x', x);
+    boundedNumber('y', y);
     const rigid = this.bodies.rigid;
     this.placeBody(s, x, y, rigid ? rigid.c[s] : 1, rigid ? rigid.s[s] : 0);
   }
@@ -482,8 +484,8 @@ export class World {
   /** Moves a body's origin to (x, y) and turns it to `angle` radians; wakes it. */
   setTransform(handle: number, x: number, y: number, angle: number): void {
     const s = this.slot(handle);
-    finiteNumber('x', x);
-    finiteNumber('y', y);
+    boundedNumber('x', x);
+    boundedNumber('y', y);
     finiteNumber('angle', angle);
     cosSin(angle, rotation);
     this.placeBody(s, x, y, rotation[0], rotation[1]);
@@ -495,9 +497,9 @@ export class World {
     const b = this.bodies;
     const totalX = b.forceX[s] + fx;
     const totalY = b.forceY[s] + fy;
-    // Finite inputs can still sum, or divide by a small mass, past the largest double; the step would then spread infinities.
-    if (!Number.isFinite(totalX * b.invMass[s]) || !Number.isFinite(totalY * b.invMass[s])) {
-      throw new RangeError(`a force (${fx}, ${fy}) on body ${handle} would make its acceleration non-finite (pending force (${totalX}, ${totalY}), mass ${b.mass[s]})`);
+    // Finite inputs can still sum, or divide by a small mass, past what a step can take; it would then spread infinities.
+    if (!(Math.abs(totalX * b.invMass[s]) <= MAX_MAGNITUDE && Math.abs(totalY * b.invMass[s]) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`a force (${fx}, ${fy}) on body ${handle} would make its acceleration exceed ${MAX_MAGNITUDE} (pending force (${totalX}, ${totalY}), mass ${b.mass[s]})`);
     }
     b.forceX[s] = totalX;
     b.forceY[s] = totalY;
@@ -510,8 +512,8 @@ export class World {
     const s = this.dynamicSlot(handle, 'a torque', torque, 0);
     const rigid = this.useRigid();
     const total = rigid.torque[s] + torque;
-    if (!Number.isFinite(total * rigid.invInertia[s])) {
-      throw new RangeError(`a torque ${torque} on body ${handle} would make its angular acceleration non-finite (pending torque ${total}, inertia ${rigid.inertia[s]})`);
+    if (!(Math.abs(total * rigid.invInertia[s]) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`a torque ${torque} on body ${handle} would make its angular acceleration exceed ${MAX_MAGNITUDE} (pending torque ${total}, inertia ${rigid.inertia[s]})`);
     }
     rigid.torque[s] = total;
     this.bodies.forcesPending = true;
@@ -525,8 +527,8 @@ export class World {
     const b = this.bodies;
     const vx = b.vx[s] + ix * b.invMass[s];
     const vy = b.vy[s] + iy * b.invMass[s];
-    if (!Number.isFinite(vx) || !Number.isFinite(vy)) {
-      throw new RangeError(`an impulse (${ix}, ${iy}) on body ${handle} would make its velocity (${vx}, ${vy}) non-finite (mass ${b.mass[s]})`);
+    if (!(Math.abs(vx) <= MAX_MAGNITUDE && Math.abs(vy) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`an impulse (${ix}, ${iy}) on body ${handle} would make its velocity (${vx}, ${vy}) exceed ${MAX_MAGNITUDE} (mass ${b.mass[s]})`);
     }
     b.vx[s] = vx;
     b.vy[s] = vy;
@@ -538,7 +540,7 @@ export class World {
     const s = this.dynamicSlot(handle, 'an angular impulse', impulse, 0);
     const rigid = this.useRigid();
     const w = rigid.angularVelocity[s] + impulse * rigid.invInertia[s];
-    if (!Number.isFinite(w)) throw new RangeError(`an angular impulse ${impulse} on body ${handle} would make its angular velocity ${w} non-finite (inertia ${rigid.inertia[s]})`);
+    if (!(Math.abs(w) <= MAX_MAGNITUDE)) throw new RangeError(`an angular impulse ${impulse} on body ${handle} would make its angular velocity ${w} exceed ${MAX_MAGNITUDE} (inertia ${rigid.inertia[s]})`);
     rigid.angularVelocity[s] = w;
     if (w !== 0) this.turning = true;
     this.bodies.wake(s);
@@ -546,7 +548,7 @@ export class World {
 
   setGravityScale(handle: number, scale: number): void {
     const s = this.slot(handle);
-    this.bodies.setMotion(s, finiteNumber('gravityScale', scale), this.bodies.linearDamping[s]);
+    this.bodies.setMotion(s, boundedNumber('gravityScale', scale), this.bodies.linearDamping[s]);
     this.bodies.wake(s);
   }
 
@@ -684,12 +686,15 @@ export class World {
   step(dt: number): void {
     finiteNumber('dt', dt);
     if (dt < 0) throw new RangeError(`dt must be >= 0, got ${dt}`);
+    if (dt > MAX_DT) throw new RangeError(`dt must be at most ${MAX_DT} s (so that a step cannot overflow), got ${dt}`);
     this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
     if (this.shapeRoute) {
       this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion, this.pipeline.events, this.pipeline.settings.solver.hitThreshold);
+      limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);
     } else {
       this.pipeline.run(dt);
       if (this.turning) turnCircles(this.bodies, dt);
+      limitSpeeds(this.bodies, this.resolved.maxLinearSpeed ?? MAX_MAGNITUDE, MAX_MAGNITUDE);
     }
     this.geometryVersion++;
   }
@@ -925,7 +930,8 @@ export class World {
     const geometry = resolveGeometry(kind, o, new Geometry());
     const shape = resolveMaterial(o, this.materialDefaults(), geometry);
     applyMassOption(o, shape);
-    if (body.type === TypeCode.dynamic && !(shape.density > 0)) this.requireMass(-1, 0);
+    const mass = shape.density * areaProperties(geometry, this.massScratch).area;
+    this.checkMass(-1, mass, body.type !== TypeCode.dynamic);
     this.assertShapeInBox(geometry, body.x, body.y, body.c, body.s, 0, 0);
     if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
     if (!this.shapes.store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} shapes at once`);
@@ -970,6 +976,20 @@ export class World {
     this.geometryVersion++;
     this.bodies.wake(slot);
   }
+
+  /** A dynamic body's mass must be > 0; any body's within [1 / MAX_MAGNITUDE, MAX_MAGNITUDE] where it has one, so that no step overflows. */
+  private checkMass(handle: number, mass: number, massless = false): void {
+    if (!(mass > 0)) {
+      if (!massless) this.requireMass(handle, mass);
+      return;
+    }
+    if (!(mass <= MAX_MAGNITUDE && mass >= 1 / MAX_MAGNITUDE)) {
+      const which = handle >= 0 ? `body ${handle}` : 'the body';
+      throw new RangeError(`${which}'s shapes would give it mass ${mass}, outside [${1 / MAX_MAGNITUDE}, ${MAX_MAGNITUDE}] (so that no step can overflow); change their size or density`);
+    }
+  }
+
+  private readonly massScratch = emptyAreaProperties();
 
   private requireMass(handle: number, mass: number): never {
     const which = handle >= 0 ? `body ${handle}` : 'a dynamic body';

@@ -190,7 +190,7 @@ describe('grid WebAssembly kernel', () => {
           serial.bin(n, false, 0, 0, 1, columns, cells);
           // Body shares cut on chunk boundaries, as the threads' motion cuts them.
           const cut = (t: number) => (t === threads ? n : Math.floor(Math.floor((n * t) / threads) / CELL_CHUNK) * CELL_CHUNK);
-          for (let t = 0; t < threads; t++) parallel.cellsOf(cut(t), cut(t + 1), 0, 0, 1, columns);
+          for (let t = 0; t < threads; t++) parallel.cellsOf(cut(t), cut(t + 1), 0, 0, 1, columns, rows);
           // Bands of cells cut where threads cut them, and also right at chunks' extremes, where
           // "this chunk lies inside the band" and "this chunk misses it" change.
           const edges = new Set([0, cells]);

@@ -27,13 +27,14 @@ export function bin(
   minX: f64, minY: f64, inverse: f64, columns: i32, cells: i32,
   cellStart: usize, binOf: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
 ): void {
+  const rows = cells / columns;
   memory.fill(cellStart, 0, (<usize>cells + 2) << 2);
   const window = jumpWindow(columns, cells);
   let last: i32 = 0;
   let jumped: i32 = 0;
   for (let k: i32 = 0; k < n; k++) {
     const at = <usize>slotAt(slots, k) << 3;
-    const c = cellOf(load<f64>(ys + at), minY, inverse) * columns + cellOf(load<f64>(xs + at), minX, inverse);
+    const c = cellOf(load<f64>(ys + at), minY, inverse, rows) * columns + cellOf(load<f64>(xs + at), minX, inverse, columns);
     store<i32>(binOf + (<usize>k << 2), c);
     const counter = cellStart + (<usize>c << 2);
     store<i32>(counter, load<i32>(counter) + 1);
@@ -84,6 +85,7 @@ export function binBanded(
   cellStart: usize, binOf: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
   bandShift: i32, bandStart: usize, scratch: usize, scratchCapacity: i32,
 ): i32 {
+  const rows = cells / columns;
   const bands = ((cells - 1) >> bandShift) + 1;
   memory.fill(bandStart, 0, (<usize>bands + 1) << 2);
   const window = jumpWindow(columns, cells);
@@ -91,7 +93,7 @@ export function binBanded(
   let jumped: i32 = 0;
   for (let k: i32 = 0; k < n; k++) {
     const at = <usize>k << 3;
-    const c = cellOf(load<f64>(ys + at), minY, inverse) * columns + cellOf(load<f64>(xs + at), minX, inverse);
+    const c = cellOf(load<f64>(ys + at), minY, inverse, rows) * columns + cellOf(load<f64>(xs + at), minX, inverse, columns);
     store<i32>(binOf + (<usize>k << 2), c);
     countOne(bandStart, c >> bandShift);
     jumped += <i32>(abs<i32>(c - last) > window);
@@ -154,6 +156,7 @@ export function sortBand(
   b: i32, bandShift: i32, from: i32, to: i32, cells: i32, minX: f64, minY: f64, inverse: f64, columns: i32,
   cellStart: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize, scratch: usize, scratchCapacity: i32,
 ): void {
+  const rows = cells / columns;
   const capacity = <usize>scratchCapacity;
   const scratchX = scratch;
   const scratchY = scratchX + (capacity << 3);
@@ -170,7 +173,7 @@ export function sortBand(
   memory.copy(scratchSlot, sortedSlot + (<usize>from << 2), <usize>m << 2);
   for (let i: i32 = 0; i < m; i++) {
     const at = <usize>i << 3;
-    const c = cellOf(load<f64>(scratchY + at), minY, inverse) * columns + cellOf(load<f64>(scratchX + at), minX, inverse);
+    const c = cellOf(load<f64>(scratchY + at), minY, inverse, rows) * columns + cellOf(load<f64>(scratchX + at), minX, inverse, columns);
     store<i32>(scratchCell + (<usize>i << 2), c);
     countOne(cellStart, c);
   }

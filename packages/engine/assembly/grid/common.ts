@@ -10,17 +10,22 @@ export function jumpWindow(columns: i32, cells: i32): i32 {
 }
 
 /**
- * The TypeScript path's `(p - origin) * inverse | 0`. Offsets are >= 0, where flooring is
- * truncating, and adding 2^52 to a whole number below 2^52 leaves it in the low bits of the
- * double, which are then exactly `| 0` (ToInt32) of it; infinities and NaN (as arithmetic makes
- * it) give 0, as there.
+ * The TypeScript path's cell of a coordinate: `(p - origin) * inverse`, floored and clamped into
+ * [0, count), so that a body outside the grid's extent lands in an edge cell (see
+ * CellGrid.layout: clamping keeps touching bodies in neighbouring cells) and no index leaves the
+ * arrays. Flooring by adding 2^52 to a whole number below 2^52 leaves it in the low bits of the
+ * double; NaN clamps to 0.
  * Why not `<i32>`: V8 compiles WebAssembly's f64-to-i32 conversions with range checks, and this
  * way computing cells for 500,000 bodies took 1.3 ms against 3.2 (trunc_sat) and 1.7-2.2 (trapping).
  */
 // @ts-ignore: decorator
 @inline
-export function cellOf(p: f64, origin: f64, inverse: f64): i32 {
-  return <i32>reinterpret<i64>(floor((p - origin) * inverse) + 4503599627370496.0);
+export function cellOf(p: f64, origin: f64, inverse: f64, count: i32): i32 {
+  let t = floor((p - origin) * inverse);
+  t = t > 0 ? t : 0;
+  const last = <f64>(count - 1);
+  t = t < last ? t : last;
+  return <i32>reinterpret<i64>(t + 4503599627370496.0);
 }
 
 /** The k-th body to bin: slot k, or the k-th of a slot list. */

@@ -25,6 +25,7 @@ const CHUNK_SHIFT = 10;
 export function cellsOf(
   xs: usize, ys: usize, from: i32, to: i32, minX: f64, minY: f64, inverse: f64, columns: i32, cells: i32, binOf: usize, chunkCells: usize,
 ): i32 {
+  const rows = cells / columns;
   const window = jumpWindow(columns, cells);
   let jumped: i32 = 0;
   let last: i32 = 0;
@@ -35,7 +36,7 @@ export function cellsOf(
     let highest: i32 = i32.MIN_VALUE;
     for (let k = start; k < end; k++) {
       const at = <usize>k << 3;
-      const c = cellOf(load<f64>(ys + at), minY, inverse) * columns + cellOf(load<f64>(xs + at), minX, inverse);
+      const c = cellOf(load<f64>(ys + at), minY, inverse, rows) * columns + cellOf(load<f64>(xs + at), minX, inverse, columns);
       store<i32>(binOf + (<usize>k << 2), c);
       lowest = min(lowest, c);
       highest = max(highest, c);

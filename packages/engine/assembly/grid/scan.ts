@@ -48,7 +48,7 @@ export function scan(
     for (let k = load<i32>(cellStart + (<usize>rowStart << 2)); k < rowEnd; k++) {
       const at = <usize>k << 3;
       const ax = load<f64>(sortedX + at);
-      const column = cellOf(ax, minX, inverse);
+      const column = cellOf(ax, minX, inverse, columns);
       const c = rowStart + column;
       const sameRowEnd = load<i32>(cellStart + (<usize>(column + 1 < columns ? c + 2 : c + 1) << 2));
       let from: i32 = 0;

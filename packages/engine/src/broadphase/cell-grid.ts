@@ -6,6 +6,18 @@ import { ARENA_LIMIT_BYTES, GridKernel, gridKernelEnabled, type KernelLayout, ty
 import { pushOverlaps, scanRowsInScript } from './cell-grid-scan.js';
 
 /**
+ * The cell index of coordinate p along an axis of `count` cells from `origin`: floored, and
+ * clamped into [0, count), so that a body outside the grid's extent lands in an edge cell and no
+ * index leaves the arrays. Clamping keeps touching bodies in neighbouring cells (it never moves
+ * two coordinates further apart), so the extent a grid is laid over is a matter of speed alone.
+ * NaN clamps to 0. Within the extent, the `| 0` truncates exactly as Math.floor would, faster.
+ */
+export function cellIndex(p: number, origin: number, inverse: number, count: number): number {
+  const t = (p - origin) * inverse;
+  return t > 0 ? (t < count - 1 ? t | 0 : count - 1) : 0;
+}
+
+/**
  * One uniform grid over a set of bodies, built by counting sort: count per cell, prefix sum,
  * scatter. O(bodies + cells), nothing allocated per cell, and the scatter copies each body's x, y
  * and radius into cell order so that scans read memory sequentially instead of chasing slots
@@ -175,10 +187,9 @@ export class CellGrid {
     }
     const { cellStart, binOf, sortedSlot, sortedX, sortedY, sortedR } = this;
     cellStart.fill(0, 0, cells + 2);
-    // Offsets are >= 0 and below 2^31, so `| 0` truncates exactly as Math.floor would, faster.
     for (let k = 0; k < n; k++) {
       const i = slots === null ? k : slots[offset + k];
-      const c = ((y[i] - minY) * inv | 0) * columns + ((x[i] - minX) * inv | 0);
+      const c = cellIndex(y[i], minY, inv, rows) * columns + cellIndex(x[i], minX, inv, columns);
       binOf[k] = c;
       cellStart[c]++;
     }
@@ -305,7 +316,7 @@ export class CellGrid {
     return examined;
   }
 
-  /** Column of an x coordinate; may lie outside [0, columns) for points outside the extent. */
+  /** Column of an x coordinate; may lie outside [0, columns) for points outside the extent (unlike a body's cell, see cellIndex). */
   columnOf(px: number): number {
     return Math.floor((px - this.originX) * this.inverse);
   }

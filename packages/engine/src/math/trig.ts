@@ -46,8 +46,16 @@ function cosKernel(r: number): number {
   return 1 + z * (C2 + z * (C4 + z * (C6 + z * (C8 + z * (C10 + z * (C12 + z * (C14 + z * (C16 + z * C18))))))));
 }
 
+/** Beyond this the reduction by pi/2 below loses its exactness; larger angles are first taken modulo 2 pi. */
+const EXACT_REDUCTION = 2 ** 20 * HALF_PI_1;
+/** 2 pi as a double: `%` by it is exact (IEEE remainder), so the same bits everywhere. */
+const TWO_PI = 6.283185307179586;
+
 /** Writes cos(angle) and sin(angle) into out[0], out[1]. */
 export function cosSin(angle: number, out: Float64Array | number[]): void {
+  // Huge angles (a spin of 1e100 over a step) first come into range, so the series below always
+  // sees |r| <= pi/4 and gives a rotation of length 1; their sense of direction is lost anyway.
+  if (!(Math.abs(angle) <= EXACT_REDUCTION)) angle = angle % TWO_PI;
   const k = Math.round(angle * TWO_OVER_PI);
   const r = angle - k * HALF_PI_1 - k * HALF_PI_2 - k * HALF_PI_3;
   const c = cosKernel(r);

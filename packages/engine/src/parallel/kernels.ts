@@ -1,3 +1,4 @@
+import { cellIndex } from '../broadphase/cell-grid.js';
 import { BodyStore } from '../store/body-store.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
 import { CELL_CHUNK, type GridKernel } from '../broadphase/grid-kernel.js';
@@ -266,7 +267,7 @@ export class ThreadKernels {
       c[Slot.jumps + this.index] += kernel.cellsOf(from, to, minX, minY, inv, columns, rows);
       return;
     }
-    for (let k = from; k < to; k++) binOf[k] = ((y[k] - minY) * inv | 0) * columns + ((x[k] - minX) * inv | 0);
+    for (let k = from; k < to; k++) binOf[k] = cellIndex(y[k], minY, inv, rows) * columns + cellIndex(x[k], minX, inv, columns);
   }
 
   private count(): void {

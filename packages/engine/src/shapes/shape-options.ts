@@ -4,8 +4,8 @@ import { BodyFlag } from '../store/rigid-columns.js';
 import type { NewShape } from '../store/shape-store.js';
 import { cosSin } from '../math/trig.js';
 import { areaProperties, checkPolygon, emptyAreaProperties, Geometry, MAX_POLYGON_VERTICES } from './geometry.js';
-import { describeValue, finiteNumber, nonNegativeNumber, plainObject, positiveNumber, knownKeys } from '../util/validate.js';
-import { bodyType, flag, layerBits, type Vector } from '../options.js';
+import { boundedNonNegative, boundedNumber, boundedPositive, describeValue, finiteNumber, nonNegativeNumber, plainObject, knownKeys } from '../util/validate.js';
+import { bodyType, flag, layerBits, restitutionNumber, type Vector } from '../options.js';
 
 /** Where a body starts and how it moves. Angles in radians; see docs/engine.md for their sense. */
 export interface BodyOptions {
@@ -122,17 +122,17 @@ export function resolveBody(o: Record<string, unknown>): ResolvedBody {
   const bullet = o.bullet === undefined ? false : flag('bullet', o.bullet);
   const type = TypeCode[o.type === undefined ? 'dynamic' : bodyType(o.type)];
   return {
-    x: finiteNumber('x', o.x),
-    y: finiteNumber('y', o.y),
+    x: boundedNumber('x', o.x),
+    y: boundedNumber('y', o.y),
     c: rotation[0],
     s: rotation[1],
-    vx: o.vx === undefined ? 0 : type === TypeCode.static ? staticVelocity('vx', o.vx) : finiteNumber('vx', o.vx),
-    vy: o.vy === undefined ? 0 : type === TypeCode.static ? staticVelocity('vy', o.vy) : finiteNumber('vy', o.vy),
+    vx: o.vx === undefined ? 0 : type === TypeCode.static ? staticVelocity('vx', o.vx) : boundedNumber('vx', o.vx),
+    vy: o.vy === undefined ? 0 : type === TypeCode.static ? staticVelocity('vy', o.vy) : boundedNumber('vy', o.vy),
     angularVelocity:
-      o.angularVelocity === undefined ? 0 : type === TypeCode.static ? staticVelocity('angularVelocity', o.angularVelocity) : finiteNumber('angularVelocity', o.angularVelocity),
+      o.angularVelocity === undefined ? 0 : type === TypeCode.static ? staticVelocity('angularVelocity', o.angularVelocity) : boundedNumber('angularVelocity', o.angularVelocity),
     type,
     flags: (fixedRotation ? BodyFlag.fixedRotation : 0) | (bullet ? BodyFlag.bullet : 0),
-    gravityScale: o.gravityScale === undefined ? 1 : finiteNumber('gravityScale', o.gravityScale),
+    gravityScale: o.gravityScale === undefined ? 1 : boundedNumber('gravityScale', o.gravityScale),
     linearDamping: o.linearDamping === undefined ? 0 : nonNegativeNumber('linearDamping', o.linearDamping),
     angularDamping: o.angularDamping === undefined ? 0 : nonNegativeNumber('angularDamping', o.angularDamping),
   };
@@ -148,9 +148,9 @@ function staticVelocity(field: string, value: unknown): number {
 export function resolveMaterial(o: Record<string, unknown>, defaults: MaterialDefaults, geometry: Geometry): NewShape {
   return {
     geometry,
-    density: o.density === undefined ? 1 : nonNegativeNumber('density', o.density),
+    density: o.density === undefined ? 1 : boundedNonNegative('density', o.density),
     friction: o.friction === undefined ? defaults.friction : nonNegativeNumber('friction', o.friction),
-    restitution: o.restitution === undefined ? defaults.restitution : nonNegativeNumber('restitution', o.restitution),
+    restitution: o.restitution === undefined ? defaults.restitution : restitutionNumber('restitution', o.restitution),
     rollingResistance: o.rollingResistance === undefined ? 0 : nonNegativeNumber('rollingResistance', o.rollingResistance),
     category: o.category === undefined ? 1 : layerBits('category', o.category),
     mask: o.mask === undefined ? 0xffffffff : layerBits('mask', o.mask),
@@ -165,7 +165,7 @@ export function resolveMaterial(o: Record<string, unknown>, defaults: MaterialDe
 export function applyMassOption(o: Record<string, unknown>, shape: NewShape): void {
   if (o.mass === undefined) return;
   if (o.density !== undefined) throw new TypeError(`give mass or density, not both (mass ${describeValue(o.mass)}, density ${describeValue(o.density)})`);
-  const mass = positiveNumber('mass', o.mass);
+  const mass = boundedPositive('mass', o.mass);
   const area = areaProperties(shape.geometry, areaScratch).area;
   shape.density = mass / area;
   if (!(shape.density > 0) || !Number.isFinite(shape.density)) throw new RangeError(`mass ${mass} over the shape's area ${area} gives density ${shape.density}`);
@@ -177,21 +177,21 @@ const py = new Float64Array(MAX_POLYGON_VERTICES);
 
 /** The geometry of a shape described by `o` (`kind` read from it or given), in the body's frame. */
 export function resolveGeometry(kind: string, o: Record<string, unknown>, out: Geometry): Geometry {
-  const offsetX = o.offsetX === undefined ? 0 : finiteNumber('offsetX', o.offsetX);
-  const offsetY = o.offsetY === undefined ? 0 : finiteNumber('offsetY', o.offsetY);
+  const offsetX = o.offsetX === undefined ? 0 : boundedNumber('offsetX', o.offsetX);
+  const offsetY = o.offsetY === undefined ? 0 : boundedNumber('offsetY', o.offsetY);
   const offsetAngle = o.offsetAngle === undefined ? 0 : finiteNumber('offsetAngle', o.offsetAngle);
   if (kind === 'circle') {
-    const radius = positiveNumber('radius', o.radius);
+    const radius = boundedPositive('radius', o.radius);
     return out.setCircle(offsetX, offsetY, radius);
   }
   if (kind === 'capsule') {
-    const length = positiveNumber('length', o.length);
-    const radius = positiveNumber('radius', o.radius);
+    const length = boundedPositive('length', o.length);
+    const radius = boundedPositive('radius', o.radius);
     out.setCapsule(-length / 2, 0, length / 2, 0, radius);
   } else if (kind === 'box') {
-    const width = positiveNumber('width', o.width);
-    const height = positiveNumber('height', o.height);
-    const radius = o.radius === undefined ? 0 : nonNegativeNumber('radius', o.radius);
+    const width = boundedPositive('width', o.width);
+    const height = boundedPositive('height', o.height);
+    const radius = o.radius === undefined ? 0 : boundedNonNegative('radius', o.radius);
     if (!(2 * radius < Math.min(width, height))) {
       throw new RangeError(`radius must be less than half the smaller side of the box (${Math.min(width, height) / 2}), got ${radius}`);
     }
@@ -207,7 +207,7 @@ export function resolveGeometry(kind: string, o: Record<string, unknown>, out: G
     py[3] = hh;
     out.setPolygon(px, py, 4, radius);
   } else if (kind === 'polygon') {
-    const radius = o.radius === undefined ? 0 : nonNegativeNumber('radius', o.radius);
+    const radius = o.radius === undefined ? 0 : boundedNonNegative('radius', o.radius);
     polygonPoints(o.vertices);
     out.setPolygon(px, py, (o.vertices as unknown[]).length, radius);
   } else {
@@ -228,8 +228,8 @@ function polygonPoints(input: unknown): void {
   for (let i = 0; i < n; i++) {
     const p = plainObject(`vertices[${i}]`, input[i]);
     knownKeys(`vertices[${i}]`, p, ['x', 'y']);
-    px[i] = finiteNumber(`vertices[${i}].x`, p.x);
-    py[i] = finiteNumber(`vertices[${i}].y`, p.y);
+    px[i] = boundedNumber(`vertices[${i}].x`, p.x);
+    py[i] = boundedNumber(`vertices[${i}].y`, p.y);
   }
   const original = (k: number): string => `vertices[${k}] (${(input[k] as Vector).x}, ${(input[k] as Vector).y})`;
   const check = checkPolygon(px, py, n);

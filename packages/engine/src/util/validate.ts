@@ -21,6 +21,39 @@ export function finiteNumber(field: string, value: unknown): number {
   return value;
 }
 
+/**
+ * The largest magnitude a coordinate, size, speed, gravity or mass may have (and 1 / it the
+ * smallest mass): with every input within 1e100, with dt within MAX_DT and restitution within
+ * MAX_RESTITUTION, no product a step forms comes near the largest double, so no step can make an
+ * infinity or a NaN from finite input.
+ */
+export const MAX_MAGNITUDE = 1e100;
+/** The longest step: a million seconds. */
+export const MAX_DT = 1e6;
+/** The most a restitution may multiply an approach speed by. */
+export const MAX_RESTITUTION = 1000;
+
+/** A finite number within MAX_MAGNITUDE of 0: a TypeError when not a finite number, a RangeError beyond. */
+export function boundedNumber(field: string, value: unknown): number {
+  const n = finiteNumber(field, value);
+  if (!(Math.abs(n) <= MAX_MAGNITUDE)) throw new RangeError(`${field} must be within ±${MAX_MAGNITUDE} (so that no step can overflow), got ${show(value)}`);
+  return n;
+}
+
+/** A positive bounded number, at least 1 / MAX_MAGNITUDE. */
+export function boundedPositive(field: string, value: unknown): number {
+  const n = positiveNumber(field, value);
+  if (!(n <= MAX_MAGNITUDE && n >= 1 / MAX_MAGNITUDE)) throw new RangeError(`${field} must be within [${1 / MAX_MAGNITUDE}, ${MAX_MAGNITUDE}] (so that no step can overflow), got ${show(value)}`);
+  return n;
+}
+
+/** A non-negative bounded number. */
+export function boundedNonNegative(field: string, value: unknown): number {
+  const n = nonNegativeNumber(field, value);
+  if (!(n <= MAX_MAGNITUDE)) throw new RangeError(`${field} must be at most ${MAX_MAGNITUDE} (so that no step can overflow), got ${show(value)}`);
+  return n;
+}
+
 export function positiveNumber(field: string, value: unknown): number {
   const n = finiteNumber(field, value);
   if (!(n > 0)) throw new RangeError(`${field} must be > 0, got ${show(value)}`);

@@ -1,0 +1,40 @@
+import type { BodyStore } from '../store/body-store.js';
+import { TypeCode } from '../store/body-types.js';
+
+/**
+ * Caps every moving dynamic body's speed at `maxSpeed` (keeping its direction) and its spin at
+ * `maxSpin`, the last stage of every step. A world's inputs are bounded (util/validate.ts), so a
+ * step grows a speed by at most a bounded factor; capping what it leaves keeps every later step
+ * bounded too: a restitution above 1 saturates at the top speed instead of running to infinity,
+ * and no NaN follows. Returns how many bodies it slowed. Touches only what it slows.
+ */
+export function limitSpeeds(bodies: BodyStore, maxSpeed: number, maxSpin: number): number {
+  const { vx, vy, type, asleep, slotCount } = bodies;
+  const spin = bodies.rigid?.angularVelocity ?? null;
+  const maxSq = maxSpeed * maxSpeed;
+  let slowed = 0;
+  for (let i = 0; i < slotCount; i++) {
+    if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
+    let x = vx[i];
+    let y = vy[i];
+    if (x * x + y * y > maxSq || !(x * x + y * y <= maxSq)) {
+      // By the larger component first, so that a speed whose square would overflow scales too.
+      const m = Math.max(Math.abs(x), Math.abs(y));
+      x = (x / m) * maxSpeed;
+      y = (y / m) * maxSpeed;
+      const k = maxSpeed / Math.sqrt(x * x + y * y);
+      if (k < 1) {
+        x *= k;
+        y *= k;
+      }
+      vx[i] = x;
+      vy[i] = y;
+      slowed++;
+    }
+    if (spin !== null && Math.abs(spin[i]) > maxSpin) {
+      spin[i] = spin[i] > 0 ? maxSpin : -maxSpin;
+      slowed++;
+    }
+  }
+  return slowed;
+}

@@ -1,0 +1,159 @@
+import { describe, expect, it } from 'vitest';
+import fc from 'fast-check';
+import { World } from '../src/index.js';
+
+/**
+ * The public API, driven at random with numbers from ordinary to the largest a double holds:
+ * every call either succeeds or throws a TypeError or RangeError, and whatever succeeds, no body
+ * of the world ever holds a NaN or an infinity, and in a boxed world none ends a step outside
+ * the box. Restitution up to its limit makes speeds grow at every bounce: they saturate.
+ */
+
+/** Ordinary values and extremes, both signs. */
+const wide = fc.oneof(
+  fc.double({ min: -100, max: 100, noNaN: true }),
+  fc.constantFrom(0, 1e-300, 1e-100, 1e-50, 1e50, 1e99, 1e100, 1e101, 1e200, 1e308, Number.MAX_VALUE, -1e100, -1e308),
+);
+const positive = fc.oneof(fc.double({ min: 0.01, max: 20, noNaN: true }), fc.constantFrom(1e-100, 1e-101, 1e-50, 1e50, 1e100, 1e101, 1e300));
+const restitution = fc.oneof(fc.double({ min: 0, max: 3, noNaN: true }), fc.constantFrom(0, 1, 2, 10, 1000, 1001, 1e300));
+const dt = fc.constantFrom(1 / 60, 1e-9, 0.5, 10, 1e3, 1e6, 1e7, 1e307);
+
+type Op =
+  | { op: 'circle' | 'box' | 'capsule'; x: number; y: number; vx: number; vy: number; size: number; restitution: number; mass: number | null; spin: number; friction: number }
+  | { op: 'velocity' | 'force' | 'impulse' | 'position'; body: number; x: number; y: number }
+  | { op: 'spin' | 'torque' | 'angular'; body: number; value: number }
+  | { op: 'gravity'; x: number; y: number }
+  | { op: 'step'; dt: number };
+
+const opArbitrary: fc.Arbitrary<Op> = fc.oneof(
+  fc.record({
+    op: fc.constantFrom('circle' as const, 'box' as const, 'capsule' as const),
+    x: fc.oneof(fc.double({ min: 5, max: 95, noNaN: true }), wide),
+    y: fc.oneof(fc.double({ min: 5, max: 95, noNaN: true }), wide),
+    vx: wide,
+    vy: wide,
+    size: positive,
+    restitution,
+    mass: fc.option(positive, { nil: null }),
+    spin: wide,
+    friction: fc.constantFrom(0, 0.5),
+  }),
+  fc.record({ op: fc.constantFrom('velocity' as const, 'force' as const, 'impulse' as const, 'position' as const), body: fc.nat(20), x: wide, y: wide }),
+  fc.record({ op: fc.constantFrom('spin' as const, 'torque' as const, 'angular' as const), body: fc.nat(20), value: wide }),
+  fc.record({ op: fc.constant('gravity' as const), x: wide, y: wide }),
+  fc.record({ op: fc.constant('step' as const), dt }),
+);
+
+function apply(world: World, o: Op): void {
+  const handles = world.handles();
+  const pick = (k: number) => handles[k % Math.max(1, handles.length)];
+  try {
+    switch (o.op) {
+      case 'circle':
+        world.createCircle({ x: o.x, y: o.y, vx: o.vx, vy: o.vy, radius: o.size, restitution: o.restitution, ...(o.mass === null ? {} : { mass: o.mass }), friction: o.friction });
+        break;
+      case 'box':
+        world.createBox({ x: o.x, y: o.y, vx: o.vx, vy: o.vy, width: o.size, height: o.size / 2 + 0.01, restitution: o.restitution, angularVelocity: o.spin, friction: o.friction, ...(o.mass === null ? {} : { mass: o.mass }) });
+        break;
+      case 'capsule':
+        world.createCapsule({ x: o.x, y: o.y, vx: o.vx, vy: o.vy, length: o.size, radius: o.size / 3, restitution: o.restitution, angularVelocity: o.spin });
+        break;
+      case 'velocity':
+        if (handles.length) world.setVelocity(pick(o.body), o.x, o.y);
+        break;
+      case 'force':
+        if (handles.length) world.applyForce(pick(o.body), o.x, o.y);
+        break;
+      case 'impulse':
+        if (handles.length) world.applyImpulse(pick(o.body), o.x, o.y);
+        break;
+      case 'position':
+        if (handles.length) world.setPosition(pick(o.body), o.x, o.y);
+        break;
+      case 'spin':
+        if (handles.length) world.setAngularVelocity(pick(o.body), o.value);
+        break;
+      case 'torque':
+        if (handles.length) world.applyTorque(pick(o.body), o.value);
+        break;
+      case 'angular':
+        if (handles.length) world.applyAngularImpulse(pick(o.body), o.value);
+        break;
+      case 'gravity':
+        world.setGravity(o.x, o.y);
+        break;
+      case 'step':
+        world.step(o.dt);
+        break;
+    }
+  } catch (error) {
+    // Refusals are the contract's other half: a TypeError or RangeError, nothing else.
+    if (!(error instanceof TypeError || error instanceof RangeError)) throw error;
+  }
+}
+
+function assertFinite(world: World, box: { width: number; height: number } | null, after: Op): void {
+  const v = world.views();
+  for (let k = 0; k < v.slotCount; k++) {
+    if (v.type[k] === 0) continue;
+    const values = [v.x[k], v.y[k], v.vx[k], v.vy[k]];
+    if (v.c.length > 0) values.push(v.c[k], v.s[k], v.angularVelocity[k]);
+    if (!values.every(Number.isFinite)) throw new Error(`slot ${k} holds ${values.join(', ')} after ${JSON.stringify(after)}`);
+    if (box && after.op === 'step' && !(v.x[k] >= 0 && v.x[k] <= box.width && v.y[k] >= 0 && v.y[k] <= box.height)) {
+      throw new Error(`slot ${k} at (${v.x[k]}, ${v.y[k]}) is outside the ${box.width} x ${box.height} box after ${JSON.stringify(after)}`);
+    }
+  }
+}
+
+describe('no NaN or infinity from finite input', () => {
+  it('random calls with extreme numbers, in a box and in the open, circles and shapes, either solver', () => {
+    fc.assert(
+      fc.property(
+        fc.boolean(),
+        fc.constantFrom('auto' as const, 'elastic' as const, 'soft' as const),
+        fc.array(opArbitrary, { minLength: 5, maxLength: 60 }),
+        (boxed, solver, ops) => {
+          const box = boxed ? { width: 100, height: 100 } : null;
+          const world = new World({ bounds: box, solver, restitution: 1 });
+          for (const o of ops) {
+            apply(world, o);
+            assertFinite(world, box, o);
+          }
+          // And onwards: whatever the calls left, stepping keeps it so.
+          for (let s = 0; s < 60; s++) {
+            world.step(1 / 60);
+            assertFinite(world, box, { op: 'step', dt: 1 / 60 });
+          }
+        },
+      ),
+      { numRuns: 300, seed: 20261201 },
+    );
+  });
+
+  it("restitution above 1 saturates at the world's top speed rather than running to infinity", () => {
+    const cases = [
+      { options: {}, shapes: false, cap: 1e100 },
+      { options: { maxLinearSpeed: 5000 }, shapes: false, cap: 5000 },
+      // With shapes the default is Box2D's, 400 m/s at lengthUnit 1.
+      { options: { solver: 'elastic' }, shapes: true, cap: 400 },
+      { options: { solver: 'soft' }, shapes: true, cap: 400 },
+    ] as const;
+    for (const { options, shapes, cap } of cases) {
+      const world = new World({ bounds: { width: 100, height: 100 }, restitution: 2, ...options });
+      for (let i = 0; i < 50; i++) {
+        const o = { x: 10 + (i % 10) * 8, y: 10 + Math.floor(i / 10) * 15, vx: 30 * ((i * 7) % 5) - 60, vy: 40 };
+        if (shapes) world.createBox({ ...o, width: 3, height: 3 });
+        else world.createCircle({ ...o, radius: 2 });
+      }
+      let fastest = 0;
+      for (let s = 0; s < 2000; s++) {
+        world.step(1 / 60);
+        const v = world.views();
+        for (let k = 0; k < v.slotCount; k++) fastest = Math.max(fastest, Math.hypot(v.vx[k], v.vy[k]));
+        assertFinite(world, { width: 100, height: 100 }, { op: 'step', dt: 1 / 60 });
+      }
+      expect(fastest, JSON.stringify(options)).toBeGreaterThan(cap / 2);
+      expect(fastest, JSON.stringify(options)).toBeLessThanOrEqual(cap * (1 + 1e-12));
+    }
+  });
+});
