@@ -66,7 +66,7 @@ function say(message: string): void {
 
 function engineFor(s: Settings): Settings {
   const broadphase = usableBroadphase(s.broadphase, s.params.n);
-  if (broadphase !== s.broadphase) say(`The naive broad-phase is offered up to ${NAIVE_LIMIT.toLocaleString('en-US')} bodies; using maxgrid.`);
+  if (broadphase !== s.broadphase) say(`The naive broad-phase is offered up to ${NAIVE_LIMIT.toLocaleString('en-US')} bodies; using auto.`);
   else if (s.scene === 'mixed' && broadphase === 'maxgrid') {
     say('Max Grid sizes every cell by the largest circle, so here it tests many pairs; try hgrid or auto.');
   }

@@ -78,7 +78,7 @@ export function defaultSettings(scene: SceneChoice = 'seed-box'): Settings {
     scene,
     seed: defaultSeed(scene),
     params: defaultParams(scene),
-    broadphase: 'maxgrid',
+    broadphase: 'auto',
     integrator: 'semi-implicit-euler',
     renderer: 'canvas',
     grid: false,
@@ -103,7 +103,7 @@ export function clampSeed(value: number): number {
 
 /** A broad-phase that can run this many bodies without stalling the page. */
 export function usableBroadphase(name: BroadPhaseName, n: number): BroadPhaseName {
-  return name === 'naive' && n > NAIVE_LIMIT ? 'maxgrid' : name;
+  return name === 'naive' && n > NAIVE_LIMIT ? 'auto' : name;
 }
 
 function oneOf<T extends string>(names: readonly T[], value: string | null, fallback: T): T {

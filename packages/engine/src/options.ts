@@ -88,7 +88,7 @@ export interface WorldOptions {
    * v2's solver), which hold piles up; see docs/engine.md, "Piles". An integer in [1, 64].
    */
   solverIterations?: number;
-  /** Default 'maxgrid'. */
+  /** Default 'auto'. */
   broadphase?: BroadPhaseName;
   /** Default 'semi-implicit-euler'; 'explicit-euler' is the report's exact method. */
   integrator?: IntegratorName;
@@ -278,7 +278,7 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
     positionCorrection: options.positionCorrection === undefined ? 1 : fraction('positionCorrection', options.positionCorrection),
     contactSlop: options.contactSlop === undefined ? 0 : nonNegativeNumber('contactSlop', options.contactSlop),
     solverIterations: options.solverIterations === undefined ? 1 : iterationCount('solverIterations', options.solverIterations),
-    broadphase: options.broadphase === undefined ? 'maxgrid' : broadphaseName(options.broadphase),
+    broadphase: options.broadphase === undefined ? 'auto' : broadphaseName(options.broadphase),
     integrator: options.integrator === undefined ? 'semi-implicit-euler' : integratorName(options.integrator),
     sleeping: options.sleeping === undefined ? false : flag('sleeping', options.sleeping),
     sleepSpeed: options.sleepSpeed === undefined ? 1 : nonNegativeNumber('sleepSpeed', options.sleepSpeed),

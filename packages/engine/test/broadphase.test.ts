@@ -6,6 +6,8 @@ import { BROADPHASES, BROADPHASE_NAMES } from '../src/broadphase/registry.js';
 import { World } from '../src/index.js';
 import { storeOf } from './helpers.js';
 import { TypeCode } from '../src/store/body-types.js';
+import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
+import { radiusClass } from '../src/broadphase/hgrid.js';
 
 /** Collects every candidate pair as "lo,hi" strings: test code, so strings are fine here. */
 class Collector implements PairConsumer {
@@ -80,6 +82,52 @@ describe('broad-phase contract', () => {
     expect(found.has('3,4')).toBe(true);
   });
 
+  it.each([
+    ['maxgrid', true],
+    ['hgrid', true],
+    ['auto', true],
+    ['maxgrid', false],
+    ['hgrid', false],
+  ] as const)('%s (grid kernel %s) still finds every touching pair when its extent leaves far bodies out (they bin into the edge cells)', (name, kernel) => {
+    // A crowd dense enough that a grid over the far bodies' extent would exceed its cell budget,
+    // and far clusters of touching circles: some past each side and corner of the crowd.
+    const far = fc.record({
+      x: fc.double({ min: -1e7, max: 1e7, noNaN: true }),
+      y: fc.double({ min: -1e7, max: 1e7, noNaN: true }),
+      r: fc.double({ min: 0.1, max: 3, noNaN: true }),
+    });
+    fc.assert(
+      fc.property(fc.integer({ min: 600, max: 1500 }), fc.array(far, { minLength: 1, maxLength: 8 }), (n, clusters) => {
+        const list = Array.from({ length: n }, (_, k) => ({ x: (k % 40) * 2, y: Math.floor(k / 40) * 2, r: 0.5 + (k % 3) * 0.25 }));
+        // Each cluster two overlapping circles, of sizes hgrid puts on different levels: fewer than
+        // the extent's 1/256 tails (2 to 5 bodies), so left out of it.
+        for (const c of clusters) list.push({ x: c.x, y: c.y, r: c.r }, { x: c.x + 2 * c.r, y: c.y + 2 * c.r, r: 4 * c.r });
+        const store = storeOf(list);
+        setGridKernelEnabled(kernel);
+        let found: Set<string>;
+        try {
+          found = new Set(candidates(store, name));
+        } finally {
+          setGridKernelEnabled(true);
+        }
+        let touching = 0;
+        for (let i = 0; i < store.slotCount; i++) {
+          for (let j = i + 1; j < store.slotCount; j++) {
+            const dx = store.x[j] - store.x[i];
+            const dy = store.y[j] - store.y[i];
+            const reach = store.radius[i] + store.radius[j];
+            if (dx * dx + dy * dy <= reach * reach) {
+              touching++;
+              expect(found.has(`${i},${j}`), `${i},${j}`).toBe(true);
+            }
+          }
+        }
+        expect(touching).toBeGreaterThanOrEqual(clusters.length);
+      }),
+      { numRuns: 25, seed: 7 },
+    );
+  });
+
   it('naive reports n(n-1)/2 pairs', () => {
     const store = storeOf(Array.from({ length: 37 }, (_, k) => ({ x: k * 100, y: 0, r: 1 })));
     expect(candidates(store, 'naive').length).toBe((37 * 36) / 2);
@@ -126,8 +174,6 @@ describe('mixed sizes (report 3.2: Max Grid degrades when sizes differ by an ord
   it.each([
     // A few large circles among many small: pairs across levels are found from each large one, through the window of small cells it reaches.
     ['few large circles (windows from the coarse side)', { n: 3000, seed: 4, ratio: 100, largeFraction: 0.003, maxSpeed: 400 }],
-    // Many coarse circles: from each small one, through the 3x3 coarse cells around it.
-    ['many coarse circles (3x3 lookups from the fine side)', { n: 3000, seed: 4, ratio: 3, largeFraction: 0.3, maxSpeed: 400 }],
   ])('hgrid steps %s to the same state as maxgrid, with contacts across levels', async (_label, params) => {
     const { buildScene, buildWorld } = await import('@maxgrid/scenes');
     const scene = buildScene('mixed', params);
@@ -144,7 +190,95 @@ describe('mixed sizes (report 3.2: Max Grid degrades when sizes differ by an ord
       expect(hgrid.stats.contacts).toBe(grid.stats.contacts);
     }
     expect(across).toBeGreaterThan(10);
+    // Small and large circles on levels of their own, so those contacts came from lookups across levels.
+    expect((hgrid as unknown as { pipeline: { broadPhase: { levelCount: number } } }).pipeline.broadPhase.levelCount).toBeGreaterThan(1);
     expect(hgrid.stateHash()).toBe(grid.stateHash());
+  });
+
+  it('hgrid steps many coarse circles over a crowd of small ones (3x3 lookups from the fine side) to the same state as maxgrid', async () => {
+    const { World } = await import('../src/index.js');
+    // 3,000 circles of radius 1 packed in a patch, 400 of radius 20 on a lattice over it and around:
+    // a window of fine cells per large circle would cost more than three coarse rows per small one.
+    const build = (broadphase: 'hgrid' | 'maxgrid') => {
+      const world = new World({ broadphase, bounds: { width: 900, height: 900 } });
+      for (let k = 0; k < 400; k++) world.createCircle({ x: 30 + (k % 20) * 41, y: 30 + Math.floor(k / 20) * 41, radius: 20, vx: (k % 5) * 20 - 40 });
+      for (let k = 0; k < 3000; k++) world.createCircle({ x: 300 + (k % 55) * 2.5, y: 300 + Math.floor(k / 55) * 2.5, radius: 1, vy: (k % 3) * 30 - 30 });
+      return world;
+    };
+    const hgrid = build('hgrid');
+    const grid = build('maxgrid');
+    let across = 0;
+    for (let s = 0; s < 60; s++) {
+      hgrid.step(1 / 60);
+      grid.step(1 / 60);
+      const { lo, hi, count } = (hgrid as unknown as { pipeline: { contacts: { lo: Int32Array; hi: Int32Array; count: number } } }).pipeline.contacts;
+      for (let k = 0; k < count; k++) if (lo[k] < 400 && hi[k] >= 400) across++;
+      expect(hgrid.stats.contacts).toBe(grid.stats.contacts);
+    }
+    expect(across).toBeGreaterThan(100);
+    expect((hgrid as unknown as { pipeline: { broadPhase: { levelCount: number } } }).pipeline.broadPhase.levelCount).toBe(2);
+    expect(hgrid.stateHash()).toBe(grid.stateHash());
+  });
+
+  it('hgrid groups the twenty radius classes of log-uniform radii over six decades into a few levels, with the contacts of a sweep', async () => {
+    const { buildScene, buildWorld } = await import('@maxgrid/scenes');
+    const scene = buildScene('uniform', { n: 6000, seed: 3, logRadius: 1, minRadius: 0.01, maxRadius: 1e4 });
+    const hgrid = buildWorld(scene, { broadphase: 'hgrid' });
+    const sap = buildWorld(scene, { broadphase: 'sap' });
+    for (let s = 0; s < 5; s++) {
+      hgrid.step(1 / 60);
+      sap.step(1 / 60);
+      expect(hgrid.stats.contacts).toBe(sap.stats.contacts);
+    }
+    const broad = (hgrid as unknown as { pipeline: { broadPhase: { levelCount: number } } }).pipeline.broadPhase;
+    // One class per power of two would be 21 levels (each a lookup per finer body); the classes
+    // whose cells the budget enlarges anyway share the first.
+    expect(broad.levelCount).toBeGreaterThan(1);
+    expect(broad.levelCount).toBeLessThanOrEqual(6);
+    expect(hgrid.stats.contacts).toBeGreaterThan(20);
+    expect(hgrid.stats.pairTests).toBeLessThan(10 * 6000);
+  });
+
+  it("hgrid's radius class is the least c with r <= rmin 2^c, as exact doubling finds it", () => {
+    const doubling = (r: number, rmin: number) => {
+      let c = 0;
+      for (let limit = rmin; limit < r; limit *= 2) c++;
+      return c;
+    };
+    fc.assert(
+      fc.property(fc.double({ min: 1e-100, max: 1e100, noNaN: true }), fc.double({ min: 1, max: 1e30, noNaN: true }), (rmin, spread) => {
+        const r = Math.min(rmin * spread, 1e100);
+        expect(radiusClass(r, rmin)).toBe(doubling(r, rmin));
+        // Exactly at a power of two, and just above it.
+        const edge = rmin * 2 ** 7;
+        expect(radiusClass(edge, rmin)).toBe(7);
+        expect(radiusClass(edge * (1 + 2 ** -52), rmin)).toBe(8);
+      }),
+      { numRuns: 2000, seed: 11 },
+    );
+  });
+
+  it('hgrid gives every power of two in a radius spread of 2^40 a class (none folds into a top level), and groups classes only where a grid of their own would be no finer', async () => {
+    const { World } = await import('../src/index.js');
+    // 1,500 circles of radius 10 on a lattice, one of 2^-30 times that, and 50 of 640 far off: a
+    // level limit of 24 classes would put the radius-10 circles in the 640s' cells, 1,280 wide.
+    const build = (broadphase: 'hgrid' | 'sap') => {
+      const world = new World({ broadphase });
+      world.createCircle({ x: -50, y: -50, radius: 10 / 2 ** 30 });
+      for (let k = 0; k < 1500; k++) world.createCircle({ x: (k % 40) * 19, y: Math.floor(k / 40) * 19, radius: 10, vx: (k % 7) - 3 });
+      for (let k = 0; k < 50; k++) world.createCircle({ x: 5000 + (k % 10) * 1300, y: 5000 + Math.floor(k / 10) * 1300, radius: 640 });
+      return world;
+    };
+    const world = build('hgrid');
+    const reference = build('sap');
+    for (let s = 0; s < 3; s++) {
+      world.step(1 / 60);
+      reference.step(1 / 60);
+      expect(world.stats.pairTests).toBeLessThan(10 * world.bodyCount);
+      expect(world.stats.contacts).toBe(reference.stats.contacts);
+    }
+    expect(world.stats.contacts).toBeGreaterThan(1000);
+    expect(world.stateHash()).toBe(reference.stateHash());
   });
 
   it('hgrid re-buckets its levels when bodies come and go, and stays with maxgrid', async () => {
@@ -184,20 +318,27 @@ describe('mixed sizes (report 3.2: Max Grid degrades when sizes differ by an ord
   });
 });
 
-describe('auto, when the grid examines too much (cells made huge by far-away bodies)', () => {
+describe('auto, when the grid examines too much (two crowds far apart make its cells huge)', () => {
   it('turns to the persistent sweep, keeps the bits, and goes back to the grid once it pays again', () => {
+    // Two crowds of 1500, a million units apart: neither is an outlier the extent can leave out,
+    // so a grid of about one cell per body has cells far larger than either crowd.
     const build = (broadphase: 'auto' | 'maxgrid') => {
       const world = new World({ broadphase });
-      for (let k = 0; k < 3000; k++) world.createCircle({ x: (k % 60) * 9, y: Math.floor(k / 60) * 9, radius: 2, vx: (k % 7) - 3, vy: (k % 5) - 2 });
-      const far = [world.createCircle({ x: 1e6, y: 1e6, radius: 2 }), world.createCircle({ x: -1e6, y: 5e5, radius: 2 })];
+      const far: number[] = [];
+      for (let k = 0; k < 3000; k++) {
+        const off = k < 1500 ? 0 : 1e6;
+        const j = k % 1500;
+        const handle = world.createCircle({ x: off + (j % 50) * 9, y: off + Math.floor(j / 50) * 9, radius: 2, vx: (k % 7) - 3, vy: (k % 5) - 2 });
+        if (k >= 1500) far.push(handle);
+      }
       return { world, far };
     };
     const auto = build('auto');
     const grid = build('maxgrid');
     auto.world.step(1 / 60);
     grid.world.step(1 / 60);
-    // The grid over the outliers' extent examined every pair once: 3002 * 3001 / 2.
-    expect(auto.world.stats.pairTests).toBeGreaterThan(64 * 3002);
+    // The grid examined each crowd's pairs in a cell or two: about 2 * 1500 * 1499 / 2.
+    expect(auto.world.stats.pairTests).toBeGreaterThan(64 * 3000);
     for (let s = 0; s < 5; s++) {
       auto.world.step(1 / 60);
       grid.world.step(1 / 60);
@@ -205,11 +346,24 @@ describe('auto, when the grid examines too much (cells made huge by far-away bod
       expect(auto.world.stats.pairTests).toBeLessThan(grid.world.stats.pairTests / 50);
       expect(auto.world.stateHash()).toBe(grid.world.stateHash());
     }
-    // Without the outliers the grid is sparse again: after the wait, auto retries it and keeps it.
+    // With one crowd left the grid fits it again: after the wait, auto retries it and keeps it.
     for (const h of auto.far) auto.world.destroyBody(h);
     for (let s = 0; s < 70; s++) auto.world.step(1 / 60);
     expect(auto.world.gridGeometry()).not.toBeNull();
-    expect(auto.world.stats.pairTests).toBeLessThan(10 * 3000);
+    expect(auto.world.stats.pairTests).toBeLessThan(10 * 1500);
+  });
+
+  it('keeps the grid when a few bodies are far away: the extent leaves them out', () => {
+    const world = new World({ broadphase: 'auto' });
+    for (let k = 0; k < 3000; k++) world.createCircle({ x: (k % 60) * 9, y: Math.floor(k / 60) * 9, radius: 2, vx: (k % 7) - 3, vy: (k % 5) - 2 });
+    world.createCircle({ x: 1e6, y: 1e6, radius: 2 });
+    world.createCircle({ x: -1e6, y: 5e5, radius: 2 });
+    for (let s = 0; s < 5; s++) world.step(1 / 60);
+    const geometry = world.gridGeometry()!;
+    expect(geometry).not.toBeNull();
+    // Cells about the crowd's spacing, not the outliers' million units.
+    expect(geometry.cellSize).toBeLessThan(100);
+    expect(world.stats.pairTests).toBeLessThan(10 * 3000);
   });
 
   it('goes back to the grid when the sweep examines about as much (every body bursting from one spot)', () => {
@@ -227,6 +381,46 @@ describe('auto, when the grid examines too much (cells made huge by far-away bod
     // One step on the sweep, which examined nearly as many pairs as the grid, then the grid again.
     expect(used[0]).toBe('sap-persistent');
     expect(used.slice(2).every((name) => name !== 'sap-persistent')).toBe(true);
+  });
+});
+
+describe('the default broad-phase where a grid used to fall off a cliff', () => {
+  const crowd = (world: World, n: number, x0: number, y0: number) => {
+    for (let k = 0; k < n; k++) world.createCircle({ x: x0 + (k % 60) * 9, y: y0 + Math.floor(k / 60) * 9, radius: 2, vx: (k % 7) - 3, vy: (k % 5) - 2 });
+  };
+  it.each([
+    ['a few bodies a million units away', 10, () => {
+      const world = new World();
+      crowd(world, 3000, 0, 0);
+      for (let k = 0; k < 4; k++) world.createCircle({ x: 1e6 + 10 * k, y: -1e6, radius: 2 });
+      return world;
+    }],
+    ['a crowd in the corner of a huge box', 10, () => {
+      const world = new World({ bounds: { width: 1e5, height: 1e5 } });
+      crowd(world, 3000, 10, 10);
+      return world;
+    }],
+    // The grid's cells span both crowds: auto sweeps instead, examining about 25 pairs per body.
+    ['two crowds a million units apart', 64, () => {
+      const world = new World();
+      crowd(world, 1500, 0, 0);
+      crowd(world, 1500, 1e6, 1e6);
+      return world;
+    }],
+    ['radii log-uniform over six decades', 10, () => {
+      const world = new World({ bounds: { width: 2e5, height: 2e5 } });
+      let u = 1;
+      for (let k = 0; k < 3000; k++) {
+        u = (u * 16807) % 2147483647;
+        world.createCircle({ x: 1e4 + (k % 55) * 3300, y: 1e4 + Math.floor(k / 55) * 3300, radius: 0.01 * 1e6 ** (u / 2147483647) });
+      }
+      return world;
+    }],
+  ] as const)('examines few pairs per body with %s (at most %i)', (_label, perBody, build) => {
+    const world = build();
+    expect(world.broadphase).toBe('auto');
+    for (let s = 0; s < 4; s++) world.step(1 / 60);
+    expect(world.stats.pairTests).toBeLessThan(perBody * world.bodyCount);
   });
 });
 

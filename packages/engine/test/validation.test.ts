@@ -267,7 +267,7 @@ describe('bad World options', () => {
 
   it('sensible defaults', () => {
     const world = new World();
-    expect(world.broadphase).toBe('maxgrid');
+    expect(world.broadphase).toBe('auto');
     expect(world.integrator).toBe('semi-implicit-euler');
     expect(world.gravity).toEqual({ x: 0, y: 0 });
     expect(world.restitution).toBe(1);

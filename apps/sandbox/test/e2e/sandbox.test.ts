@@ -363,13 +363,13 @@ describe('2D sandbox', () => {
     expect(await labelText(page, 'Gravity')).toContain('2000');
     expect(await labelText(page, 'Size')).toMatch(/^Size\s+0\.5/);
     expect(await labelText(page, 'Elasticity')).toContain('1.00');
-    expect(await page.getByLabel('Broad-phase').inputValue()).toBe('maxgrid');
+    expect(await page.getByLabel('Broad-phase').inputValue()).toBe('auto');
     expect(await page.getByLabel('Renderer').inputValue()).toBe('canvas');
     expect(await page.getByLabel('Seed').inputValue()).toBe('0');
     // O(n²) naive on a large scene would stall the page: it is refused with a visible notice.
     await page.goto(page.url().replace(/n=\d+/, 'n=20000').replace(/broadphase=\w+/, 'broadphase=naive'));
     await stepsPass(page, 0, 2);
-    expect(await page.getByLabel('Broad-phase').inputValue()).toBe('maxgrid');
+    expect(await page.getByLabel('Broad-phase').inputValue()).toBe('auto');
     expect(await page.locator('#notice').innerText()).toMatch(/naive/);
     expect(errors).toEqual([]);
     await page.close();

@@ -9,19 +9,24 @@ import { LiveExtent } from './live-extent.js';
 /**
  * Above this many bodies per Max Grid cell, the hierarchical grid wins. Max Grid's cells are sized
  * by the largest circle, so what hurts it is not the radius spread as such but how many circles
- * crowd each cell: n (2 rmax)^2 / area. Measured on `mixed` (20,000 circles, 2026-11-22):
+ * crowd each cell: n (2 rmax)^2 / area. Whole steps of 20,000 circles, median of 21 (docs/engine.md
+ * has the times):
  *
- *   large share  ratio  bodies/cell  maxgrid / hgrid time
- *        5%       1:4       1.7           0.43  (maxgrid wins)
- *        5%       1:8       3.8           0.83
- *        5%       1:16      5.5           1.06
- *        5%       1:50      6.3           1.37  (hgrid wins)
- *      0.1%       1:8       8.8           1.33
- *      0.1%       1:12      19            2.7
- *      0.1%       1:50      (~100)        16.8
+ *   scene                          bodies/cell  maxgrid / hgrid time
+ *   mixed  5%    large, 1:4            1.7           1.03
+ *   mixed  5%    large, 1:8            3.8           0.93
+ *   mixed  5%    large, 1:16           5.4           1.15
+ *   mixed  5%    large, 1:50           6.3           1.26
+ *   mixed  0.1%  large, 1:4            2.2           1.29
+ *   mixed  0.1%  large, 1:8            8.5           1.97
+ *   mixed  0.1%  large, 1:50           165           25
+ *   uniform, log-uniform 1..100        3.0           0.51
+ *   uniform, log-uniform 0.01..100     5.9           1.14
+ *   uniform, log-uniform 0.01..10^4    9.0           1.58
  *
- * The radius spread alone would have chosen wrongly in both directions (a 4x spread threshold,
- * tried first, picked hgrid for the 5% rows where it is slower).
+ * so auto is within 1.3x of the faster grid on each. The radius spread alone would have chosen
+ * wrongly in both directions (log-uniform radii over four decades crowd less than 1:8 with a few
+ * large circles).
  */
 export const CROWDING_FOR_HGRID = 5;
 
@@ -30,11 +35,11 @@ const RECHOOSE_EVERY = 30;
 
 /**
  * Pairs a grid may examine per body before auto turns to the persistent sweep. A grid holds at
- * most 4n + 64 cells over the bodies' extent (or the box), so a few far-away bodies, or a box far
- * larger than where the bodies are, make its cells huge and its scan quadratic: 20,000 circles
- * with 4 at (1e6, 1e6) examined about 10,000 pairs per body, 311 ms a step on maxgrid and hgrid
- * against 25 ms on sap-persistent, whose sweep does not depend on the extent. Sparse scenes
- * examine about 2 pairs per body; crowded `mixed` on hgrid stays under 10.
+ * most 4n + 64 cells over its extent, which it fits to all but a few bodies (extent-fit.ts), so
+ * a few far-away bodies or a huge empty box cost nothing; but two crowds of 10,000 a million
+ * units apart still share cells a million units wide, and examined 5,000 pairs per body, 99 ms a
+ * step on maxgrid and hgrid against 9 ms on sap-persistent, whose sweep does not depend on the
+ * extent. Sparse scenes examine about 2 pairs per body; crowded `mixed` on hgrid stays under 10.
  */
 export const EXAMINED_PER_BODY_FOR_SWEEP = 64;
 
@@ -42,7 +47,7 @@ export const EXAMINED_PER_BODY_FOR_SWEEP = 64;
  * How many times fewer pairs the sweep must examine than the grid it replaced, or auto goes back to
  * the grid. A sweep pair costs about twice a grid pair (3,000 circles bursting from one spot, the
  * second step: 2.24 million pairs swept in 108 ms, 2.29 million on maxgrid in 55 ms), and the
- * margin leaves borderline cases on the grid. Far-away bodies give a factor of about 125.
+ * margin leaves borderline cases on the grid. Two crowds far apart give a factor of about 125.
  */
 const SWEEP_MARGIN = 8;
 

@@ -271,14 +271,14 @@ export class CellGrid {
    */
   scanAround(px: number, py: number, reach: number, slot: number, out: PairSink): number {
     const { columns, rows, cellStart } = this;
-    const column = this.columnOf(px);
-    const row = this.rowOf(py);
-    // A foreign body may lie outside this grid's extent: clamp the window, not the body.
+    // A foreign body outside this grid's extent is clamped into an edge cell, as the bin clamps
+    // this grid's own (cellIndex): then touching bodies are still at most one cell apart.
+    const column = Math.min(Math.max(this.columnOf(px), 0), columns - 1);
+    const row = Math.min(Math.max(this.rowOf(py), 0), rows - 1);
     const c0 = Math.max(column - 1, 0);
     const c1 = Math.min(column + 1, columns - 1);
     const r0 = Math.max(row - 1, 0);
     const r1 = Math.min(row + 1, rows - 1);
-    if (c0 > c1 || r0 > r1) return 0;
     let examined = 0;
     for (let r = r0; r <= r1; r++) {
       examined += pushOverlaps(this, cellStart[r * columns + c0], cellStart[r * columns + c1 + 1], px, py, reach, slot, out);
@@ -295,10 +295,12 @@ export class CellGrid {
    */
   scanWindow(px: number, py: number, reach: number, slot: number, halfWidth: number, out: PairSink): number {
     const { columns, rows, cellStart } = this;
-    const c0 = Math.max(this.columnOf(px - halfWidth), 0);
-    const c1 = Math.min(this.columnOf(px + halfWidth), columns - 1);
-    const r0 = Math.max(this.rowOf(py - halfWidth), 0);
-    const r1 = Math.min(this.rowOf(py + halfWidth), rows - 1);
+    // Both ends clamped into the grid, as its bodies' cells are (cellIndex): a window past the
+    // extent still covers the edge cells that hold the bodies beyond it.
+    const c0 = Math.min(Math.max(this.columnOf(px - halfWidth), 0), columns - 1);
+    const c1 = Math.min(Math.max(this.columnOf(px + halfWidth), 0), columns - 1);
+    const r0 = Math.min(Math.max(this.rowOf(py - halfWidth), 0), rows - 1);
+    const r1 = Math.min(Math.max(this.rowOf(py + halfWidth), 0), rows - 1);
     if (c0 > c1 || r0 > r1) return 0;
     const kernel = this.kernel;
     // A shared kernel's pair buffer cannot grow mid-step; such grids take the loop below.

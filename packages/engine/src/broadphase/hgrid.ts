@@ -4,10 +4,19 @@ import type { PairSink } from '../store/pair-sink.js';
 import { CellGrid } from './cell-grid.js';
 import { RADIUS_PAD } from './fat-bounds.js';
 import { LiveExtent } from './live-extent.js';
+import { ExtentFitter, type Extent } from './extent-fit.js';
 import { grownCapacity } from '../util/grow.js';
 
-/** Radius classes are powers of two; more than this many collapse into the top one. */
-const MAX_LEVELS = 24;
+/**
+ * A class joins the level below it while its cells would be at most this many times the cells the
+ * level's cell budget makes anyway (see groupClasses): about one body per cell. Log-uniform radii
+ * over six decades stepped a third faster than with 1 (fewer levels), and no scene measured in
+ * auto.ts slower.
+ */
+const JOIN_FACTOR = 2;
+
+/** classBox holds minX, minY, maxX, maxY and the largest radius per class. */
+const BOX_STRIDE = 5;
 
 /**
  * A hierarchical grid (Mirtich's hierarchical hash grid, without the hash): one Max Grid per
@@ -15,23 +24,38 @@ const MAX_LEVELS = 24;
  * answer to the report's own caveat (3.2) that Max Grid tends to O(n^2) when sizes differ by an
  * order of magnitude.
  *
- * Level L holds radii in (rmin 2^(L-1), rmin 2^L] and has cells of at least 2 rmin 2^L, its
- * largest diameter. Pairs within a level come from that level's scan, as in Max Grid. A pair across
+ * Class c holds radii in (rmin 2^(c-1), rmin 2^c]; a level holds one class or several neighbouring
+ * ones, and its cells are at least its largest diameter, over the box around its own bodies (see
+ * extent-fit.ts). Pairs within a level come from that level's scan, as in Max Grid. A pair across
  * levels is found once: from the finer body, by looking at the 3x3 cells around its centre in each
  * coarser level (the contact distance r_fine + r_coarse is at most that level's cell size), or
  * from the coarser body, through the window of finer cells it reaches, whichever costs less.
  *
- * Level assignment doubles rmin exactly instead of calling Math.log2, whose rounding is not
- * specified; either way the contact set, and so the result, is the same as every other
+ * Radius classes are the powers of two, as many as the radii span (no limit that folds large
+ * bodies into a top class). Neighbouring classes share a level where a level's own cells would
+ * be no finer anyway: a grid holds at most 4n + 64 cells, so over a wide extent a sparse class's
+ * cells are enlarged until they fit, and classes below that size gain nothing from a grid of
+ * their own but cost a lookup per body in every coarser level (log-uniform radii over six decades
+ * made twenty levels, twenty times the time of a single Max Grid).
+ *
+ * Whatever the levels, the contact set, and so the result, is the same as every other
  * broad-phase's.
  */
 export class HierarchicalGridBroadPhase implements BroadPhase {
   readonly name = 'hgrid';
   private readonly live = new LiveExtent();
   private readonly grids: CellGrid[] = [];
-  private levelOf = new Int8Array(0);
+  private levelOf = new Int32Array(0);
   private levelSlots = new Int32Array(0);
-  private readonly levelStart = new Int32Array(MAX_LEVELS + 1);
+  private levelStart = new Int32Array(2);
+  /** Each level's largest radius, which sizes its cells. */
+  private levelRadius = new Float64Array(1);
+  private classCount = new Int32Array(0);
+  private classLevel = new Int32Array(0);
+  /** Each class's box around its bodies' centres and largest radius (BOX_STRIDE apiece), for grouping. */
+  private classBox = new Float64Array(0);
+  private readonly fitter = new ExtentFitter();
+  private readonly levelBox: Extent = { minX: 0, minY: 0, maxX: 0, maxY: 0 };
   // What the buckets were made for (see assignLevels).
   private levelsFor: BodyStore | null = null;
   private levelsVersion = -1;
@@ -43,25 +67,20 @@ export class HierarchicalGridBroadPhase implements BroadPhase {
     const n = live.count;
     if (n < 2) return 0;
     const levels = this.assignLevels(bodies, n);
-    const base = live.cellSizeFor(live.minRadius);
-    const budget = 4 * n + 64;
+    const { x, y } = bodies;
+    const { fitter, levelSlots } = this;
+    const box = this.levelBox;
     for (let level = 0; level < levels; level++) {
       const from = this.levelStart[level];
       const count = this.levelStart[level + 1] - from;
-      // A level's cells must cover its largest diameter; the top level takes everything larger.
-      const cellSize = level === levels - 1 ? live.cellSizeFor(live.maxRadius) : base * 2 ** level;
-      this.grid(level).build(
-        bodies,
-        this.levelSlots,
-        from,
-        count,
-        live.minX,
-        live.minY,
-        live.maxX,
-        live.maxY,
-        cellSize,
-        Math.min(budget, 4 * count + 64),
-      );
+      // A level's cells must cover its largest diameter.
+      const cellSize = live.cellSizeFor(this.levelRadius[level]);
+      const budget = 4 * count + 64;
+      // Each level over its own bodies: small ones in one crowd, large ones spread wide, must not
+      // share the wide extent, whose cells the budget would make huge for the crowd.
+      fitter.measure(x, y, levelSlots, from, count, box);
+      fitter.fit(x, y, levelSlots, from, count, cellSize, budget, box);
+      this.grid(level).build(bodies, levelSlots, from, count, box.minX, box.minY, box.maxX, box.maxY, cellSize, budget);
     }
     let examined = 0;
     for (let level = 0; level < levels; level++) {
@@ -78,7 +97,7 @@ export class HierarchicalGridBroadPhase implements BroadPhase {
   }
 
   memoryBytes(): number {
-    let bytes = this.live.memoryBytes() + this.levelOf.byteLength + this.levelSlots.byteLength;
+    let bytes = this.live.memoryBytes() + this.levelOf.byteLength + this.levelSlots.byteLength + this.classCount.byteLength + this.classLevel.byteLength + this.classBox.byteLength;
     for (const grid of this.grids) bytes += grid.memoryBytes();
     return bytes;
   }
@@ -99,38 +118,147 @@ export class HierarchicalGridBroadPhase implements BroadPhase {
   private bucketLevels(bodies: BodyStore, n: number): number {
     if (this.levelOf.length < n) {
       const capacity = grownCapacity(this.levelOf.length, n);
-      this.levelOf = new Int8Array(capacity);
+      this.levelOf = new Int32Array(capacity);
       this.levelSlots = new Int32Array(capacity);
     }
     const { radius } = bodies;
     const { slots, minRadius, dense } = this.live;
-    const { levelOf, levelStart } = this;
-    levelStart.fill(0);
-    let levels = 1;
+    const levelOf = this.levelOf;
+    // Classes first (levelOf holds each body's class until the levels are known).
+    let classes = 1;
     for (let k = 0; k < n; k++) {
-      const r = radius[dense ? k : slots[k]];
-      let level = 0;
-      let limit = minRadius;
-      while (limit < r && level < MAX_LEVELS - 1) {
-        limit *= 2;
-        level++;
-      }
-      levelOf[k] = level;
-      levelStart[level + 1]++;
-      if (level + 1 > levels) levels = level + 1;
+      const c = radiusClass(radius[dense ? k : slots[k]], minRadius);
+      levelOf[k] = c;
+      if (c + 1 > classes) classes = c + 1;
     }
-    for (let level = 0; level < MAX_LEVELS; level++) levelStart[level + 1] += levelStart[level];
+    if (this.classCount.length < classes) {
+      this.classCount = new Int32Array(grownCapacity(this.classCount.length, classes));
+      this.classLevel = new Int32Array(this.classCount.length);
+      this.classBox = new Float64Array(BOX_STRIDE * this.classCount.length);
+    }
+    const { classCount, classLevel, classBox } = this;
+    const { x, y } = bodies;
+    classCount.fill(0, 0, classes);
+    for (let c = 0; c < classes; c++) {
+      const b = BOX_STRIDE * c;
+      classBox[b] = Infinity;
+      classBox[b + 1] = Infinity;
+      classBox[b + 2] = -Infinity;
+      classBox[b + 3] = -Infinity;
+      classBox[b + 4] = 0;
+    }
+    for (let k = 0; k < n; k++) {
+      const c = levelOf[k];
+      const i = dense ? k : slots[k];
+      classCount[c]++;
+      const b = BOX_STRIDE * c;
+      if (x[i] < classBox[b]) classBox[b] = x[i];
+      if (y[i] < classBox[b + 1]) classBox[b + 1] = y[i];
+      if (x[i] > classBox[b + 2]) classBox[b + 2] = x[i];
+      if (y[i] > classBox[b + 3]) classBox[b + 3] = y[i];
+      if (radius[i] > classBox[b + 4]) classBox[b + 4] = radius[i];
+    }
+    const levels = this.groupClasses(classes);
+    for (let k = 0; k < n; k++) levelOf[k] = classLevel[levelOf[k]];
+
+    if (this.levelStart.length < levels + 1) this.levelStart = new Int32Array(grownCapacity(this.levelStart.length, levels + 1));
+    const levelStart = this.levelStart;
+    levelStart.fill(0);
+    for (let k = 0; k < n; k++) levelStart[levelOf[k] + 1]++;
+    for (let level = 0; level < levels; level++) levelStart[level + 1] += levelStart[level];
     // Scatter from the back, decrementing each level's end: slots stay ascending within a level.
     for (let k = n - 1; k >= 0; k--) this.levelSlots[--levelStart[levelOf[k] + 1]] = dense ? k : slots[k];
-    for (let level = 0; level < MAX_LEVELS; level++) levelStart[level] = levelStart[level + 1];
-    levelStart[MAX_LEVELS] = n;
+    for (let level = 0; level < levels; level++) levelStart[level] = levelStart[level + 1];
+    levelStart[levels] = n;
     return levels;
+  }
+
+  /**
+   * Groups the classes below `classes` into levels (classLevel, levelRadius); returns the level
+   * count. Walking up from the finest, a class joins the current level when the cells its largest
+   * radius needs would be at most JOIN_FACTOR times the cells that the level's budget (4 n + 64
+   * over the box around the level's bodies, that class's included) enforces anyway: then about
+   * one body per cell or fewer, and one lookup fewer for every finer body. Empty classes join the
+   * current level. Positions only steer the cost: the contacts are the same whatever the levels.
+   */
+  private groupClasses(classes: number): number {
+    const { classCount, classLevel, classBox } = this;
+    const live = this.live;
+    if (this.levelRadius.length < classes) this.levelRadius = new Float64Array(grownCapacity(this.levelRadius.length, classes));
+    const levelRadius = this.levelRadius;
+    // Class 0 holds the smallest radius, so the first level is never empty.
+    let level = 0;
+    let inLevel = 0;
+    let minX = Infinity;
+    let minY = Infinity;
+    let maxX = -Infinity;
+    let maxY = -Infinity;
+    for (let c = 0; c < classes; c++) {
+      const count = classCount[c];
+      if (count === 0) {
+        classLevel[c] = level;
+        continue;
+      }
+      const b = BOX_STRIDE * c;
+      const joinedMinX = Math.min(minX, classBox[b]);
+      const joinedMinY = Math.min(minY, classBox[b + 1]);
+      const joinedMaxX = Math.max(maxX, classBox[b + 2]);
+      const joinedMaxY = Math.max(maxY, classBox[b + 3]);
+      const cell = live.cellSizeFor(classBox[b + 4]);
+      const area = Math.max((joinedMaxX - joinedMinX) * (joinedMaxY - joinedMinY), cell * cell);
+      if (inLevel > 0 && cell > JOIN_FACTOR * Math.sqrt(area / (4 * (inLevel + count) + 64))) {
+        level++;
+        inLevel = 0;
+        minX = classBox[b];
+        minY = classBox[b + 1];
+        maxX = classBox[b + 2];
+        maxY = classBox[b + 3];
+      } else {
+        minX = joinedMinX;
+        minY = joinedMinY;
+        maxX = joinedMaxX;
+        maxY = joinedMaxY;
+      }
+      classLevel[c] = level;
+      levelRadius[level] = classBox[b + 4];
+      inLevel += count;
+    }
+    return level + 1;
   }
 
   private grid(level: number): CellGrid {
     while (this.grids.length <= level) this.grids.push(new CellGrid());
     return this.grids[level];
   }
+}
+
+const bits = new Float64Array(1);
+const bitsWords = new Uint32Array(bits.buffer);
+/** The index of the word holding the sign and exponent: the second on little-endian machines. */
+const HIGH = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1 ? 1 : 0;
+
+/**
+ * The power-of-two class of a radius: the least c with r <= rmin 2^c. The binary exponent of
+ * r / rmin guesses it (not Math.log2, whose rounding each JavaScript engine chooses); exact
+ * doublings and halvings decide.
+ */
+export function radiusClass(r: number, rmin: number): number {
+  if (r <= rmin) return 0;
+  bits[0] = r / rmin;
+  // A ratio above 1 has a biased exponent of at least 1023, and at most 2046 (it is finite).
+  let c = ((bitsWords[HIGH] >>> 20) & 0x7ff) - 1023;
+  bitsWords[HIGH] = (c + 1023) << 20;
+  bitsWords[1 - HIGH] = 0;
+  let limit = rmin * bits[0];
+  while (limit < r) {
+    limit *= 2;
+    c++;
+  }
+  while (c > 0 && limit / 2 >= r) {
+    limit /= 2;
+    c--;
+  }
+  return c;
 }
 
 /**

@@ -1,12 +1,13 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { COORD_PAD, RADIUS_PAD } from './fat-bounds.js';
+import { ExtentFitter, cellsOver, type Extent } from './extent-fit.js';
 
 /**
  * The live bodies of a step: their slots in ascending order, the box around their centres and
  * their smallest and largest radius. Grids are laid over this extent, so they need no world box.
  */
-export class LiveExtent {
+export class LiveExtent implements Extent {
   /** Live slots in ascending order; filled only when the slots have holes (see `dense`). */
   slots = new Int32Array(0);
   count = 0;
@@ -21,6 +22,9 @@ export class LiveExtent {
 
   /** True when every slot below slotCount is live: then slot k is live body k, and `slots` is unused. */
   dense = false;
+  /** The extent is the world's box, not measured from the bodies (see measure). */
+  private boxExtent = false;
+  private readonly fitter = new ExtentFitter();
 
   /**
    * Call after the boundary stage, when a boxed world's bodies are all inside its box. Measures
@@ -41,6 +45,7 @@ export class LiveExtent {
     const measured = everyBody && bodies.staticsApart;
     this.dense = count === slotCount && !measured;
     const box = bodies.box;
+    this.boxExtent = this.dense && box !== null;
     if (this.dense && box) {
       minX = 0;
       minY = 0;
@@ -84,6 +89,22 @@ export class LiveExtent {
     this.minRadius = measured ? minRadius : bodies.minRadius();
     this.maxRadius = measured ? maxRadius : bodies.maxRadius();
     this.coordPad = Math.max(Math.abs(minX), Math.abs(maxX), Math.abs(minY), Math.abs(maxY)) * COORD_PAD;
+  }
+
+  /**
+   * Narrows the extent to where the bodies are when a grid of `cellSize` over it would need more
+   * than `budget` cells (see ExtentFitter): the bodies' own box rather than the world's (a crowd
+   * in a corner of a huge box), then all but 1/256 of them (a few far away). Call after measure;
+   * queries, which need every body in its cell, do not.
+   */
+  fit(bodies: BodyStore, cellSize: number, budget: number): void {
+    if (this.count < 2 || cellsOver(this.minX, this.minY, this.maxX, this.maxY, cellSize) <= budget) return;
+    const slots = this.dense ? null : this.slots;
+    if (this.boxExtent) {
+      this.fitter.measure(bodies.x, bodies.y, slots, 0, this.count, this);
+      this.boxExtent = false;
+    }
+    this.fitter.fit(bodies.x, bodies.y, slots, 0, this.count, cellSize, budget, this);
   }
 
   /**

@@ -38,6 +38,7 @@ export class MaxGridBroadPhase implements BroadPhase {
     live.measure(bodies);
     if (live.count < 2) return 0;
     const cellSize = live.cellSizeFor(live.maxRadius);
+    live.fit(bodies, cellSize, 4 * live.count + 64);
     this.grid.build(bodies, live.dense ? null : live.slots, 0, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
     return this.grid.scanSelf(out, live.coordPad);
   }
@@ -54,6 +55,7 @@ export class MaxGridBroadPhase implements BroadPhase {
     live.measure(bodies);
     if (live.count < 2 || !live.dense) return null;
     const cellSize = live.cellSizeFor(live.maxRadius);
+    live.fit(bodies, cellSize, 4 * live.count + 64);
     this.grid.layout(live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64, live.count);
     return this.grid;
   }

@@ -83,7 +83,7 @@ export function maxgridProvider(broadphase: BroadPhaseName, variant?: { id: stri
             integrator: 'semi-implicit-euler (engine default)',
             iterations: variant?.solver ?? 'one sequential impulse pass per contact in canonical order',
             restitution: 'scene restitution (1), walls included',
-            friction: 'none (the engine has no friction)',
+            friction: 'none (circle worlds have none; friction acts on the shape route)',
             sleeping: false,
             continuous: 'false (discrete, as the report configured Unity)',
             restitutionThreshold: 0,
