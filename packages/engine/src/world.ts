@@ -692,7 +692,7 @@ export class World {
       this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion, this.pipeline.events, this.pipeline.settings.solver.hitThreshold);
       limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);
     } else {
-      this.pipeline.run(dt);
+      this.pipeline.run(dt, this.staticVersion);
       if (this.turning) turnCircles(this.bodies, dt);
       limitSpeeds(this.bodies, this.resolved.maxLinearSpeed ?? MAX_MAGNITUDE, MAX_MAGNITUDE);
     }

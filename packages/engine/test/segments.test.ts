@@ -165,4 +165,111 @@ describe('continuous collision against static shapes (report 3.1.6)', () => {
       { numRuns: 100, seed: 11 },
     );
   });
+
+  // A lattice of static circles with segments across it: the sweep finds the statics it can meet
+  // through a static tree, so a path that grazes one (its box misses the centre's box by less
+  // than the radius) or crosses many in one step must still meet each of them. The balls do not
+  // collide with each other: pushing two overlapping balls apart can press one into a static,
+  // which is the discrete contacts' business, not the sweep's.
+  function field(continuous: boolean, seed: number) {
+    const world = new World({ continuous, restitution: 1 });
+    const statics: { x: number; y: number; r: number }[] = [];
+    for (let i = 0; i < 60; i++) {
+      for (let j = 0; j < 60; j++) {
+        const c = { x: 4 * i, y: 4 * j, r: 0.5 + 0.25 * ((i * 7 + j * 3) % 4) };
+        statics.push(c);
+        world.createCircle({ x: c.x, y: c.y, radius: c.r, type: 'static' });
+      }
+    }
+    for (let k = 1; k < 6; k++) world.createSegment({ x1: 40 * k + 2, y1: 0, x2: 40 * k + 2, y2: 236, thickness: 0.05 });
+    let state = seed;
+    const random = () => ((state = (state * 1103515245 + 12345) % 2147483648) / 2147483648);
+    const balls: number[] = [];
+    for (let b = 0; b < 100; b++) {
+      const a = 2 * Math.PI * random();
+      const speed = 20 + 3000 * random() ** 2;
+      balls.push(world.createCircle({ x: 4 * Math.floor(60 * random()) + 2, y: 4 * Math.floor(60 * random()) + 2, radius: 0.3, vx: speed * Math.cos(a), vy: speed * Math.sin(a), category: 2, mask: 1 }));
+    }
+    let inside = 0;
+    let crossed = 0;
+    for (let s = 0; s < 40; s++) {
+      const before = balls.map((h) => world.getCircle(h).x);
+      world.step(1 / 60);
+      balls.forEach((h, n) => {
+        const c = world.getCircle(h);
+        for (const o of statics) if (Math.hypot(c.x - o.x, c.y - o.y) < o.r + 0.3 - 1e-9) inside++;
+        for (let k = 1; k < 6; k++) if (Math.sign(before[n] - (40 * k + 2)) * Math.sign(c.x - (40 * k + 2)) < 0 && c.y > 0 && c.y < 236) crossed++;
+      });
+    }
+    return { inside, crossed, swept: world.stats.sweptBodies };
+  }
+
+  it('fast balls in a field of 3,600 static circles and five segments never end a step inside one or across a segment', () => {
+    expect(field(false, 1).inside + field(false, 1).crossed).toBeGreaterThan(0);
+    for (const seed of [1, 2, 3]) {
+      const { inside, crossed, swept } = field(true, seed);
+      expect(swept).toBeGreaterThan(50);
+      expect({ seed, inside }).toEqual({ seed, inside: 0 });
+      expect({ seed, crossed }).toEqual({ seed, crossed: 0 });
+    }
+  });
+
+  it('a fast ball whose line passes within reach of a static circle or a segment end is deflected, and one just beyond it is not', () => {
+    fc.assert(
+      fc.property(
+        fc.oneof(fc.constantFrom(0, 0.5 * Math.PI, Math.PI, 1.5 * Math.PI), fc.double({ min: 0, max: 2 * Math.PI, noNaN: true })),
+        fc.double({ min: 0.2, max: 3, noNaN: true }),
+        fc.double({ min: 0.1, max: 2, noNaN: true }),
+        fc.double({ min: 0, max: 0.998, noNaN: true }),
+        fc.boolean(),
+        fc.boolean(),
+        (angle, size, r, offset, segment, beyond) => {
+          const world = new World({ restitution: 1 });
+          const c = Math.cos(angle);
+          const s = Math.sin(angle);
+          // A static circle of radius `size` at the origin, or a segment of that thickness ending
+          // there and lying along the path's line, ahead of the ball.
+          if (segment) world.createSegment({ x1: 0, y1: 0, x2: -20 * c, y2: -20 * s, thickness: size });
+          else world.createCircle({ x: 0, y: 0, radius: size, type: 'static' });
+          const d = (size + r) * (beyond ? 1.002 : offset);
+          const ball = world.createCircle({ x: 30 * c - d * s, y: 30 * s + d * c, radius: r, vx: -3600 * c, vy: -3600 * s });
+          world.step(1 / 60);
+          const v = world.getCircle(ball);
+          const turned = Math.abs(v.vx + 3600 * c) + Math.abs(v.vy + 3600 * s) > 1e-6;
+          expect(turned).toBe(!beyond);
+        },
+      ),
+      { numRuns: 300, seed: 8 },
+    );
+  });
+
+  it('static shapes added, moved or removed between steps are swept against from the next step on', () => {
+    const world = new World({ restitution: 0 });
+    const ball = world.createCircle({ x: 0, y: 0, radius: 0.5, vx: 6000 });
+    const far = world.createCircle({ x: -500, y: 0, radius: 1, type: 'static' });
+    world.step(1 / 60);
+    expect(world.getCircle(ball).x).toBe(100);
+    // Moved into the path: the ball stops on it rather than passing.
+    world.setPosition(far, 150, 0);
+    world.step(1 / 60);
+    expect(world.getCircle(ball).x).toBeCloseTo(148.5, 6);
+    // Removed: it passes where the circle was.
+    world.destroyBody(far);
+    world.setVelocity(ball, 6000, 0);
+    world.step(1 / 60);
+    expect(world.getCircle(ball).x).toBeCloseTo(248.5, 6);
+    // A new segment ahead stops it; a static turned dynamic no longer counts as static.
+    world.createSegment({ x1: 300, y1: -5, x2: 300, y2: 5 });
+    world.setVelocity(ball, 6000, 0);
+    world.step(1 / 60);
+    expect(world.getCircle(ball).x).toBeLessThan(300);
+    expect(world.getCircle(ball).x).toBeGreaterThan(299);
+    const post = world.createCircle({ x: 200, y: 0, radius: 1, type: 'static' });
+    world.setPosition(ball, 120, 0);
+    world.setType(post, 'dynamic');
+    world.setPosition(post, 200, 30);
+    world.setVelocity(ball, 6000, 0);
+    world.step(1 / 60);
+    expect(world.getCircle(ball).x).toBe(220);
+  });
 });

@@ -7,10 +7,13 @@ import { rayCapsule } from '../query/ray-capsule.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
 import { mixRestitution } from './restitution.js';
 import { BoxWall } from './box-walls.js';
-import { grownCapacity, grow } from '../util/grow.js';
+import { StaticTree } from '../broadphase/static-tree.js';
+import { COORD_PAD, RADIUS_PAD, paddedRadius } from '../broadphase/fat-bounds.js';
 
 const MAX_BOUNCES = 4;
 const closest = { x: 0, y: 0 };
+/** Tree ids of segments: above every body slot, so a query lists static circles first, as slots ascend. */
+const SEGMENT_ID = 2 ** 30;
 
 /**
  * Time of impact with a circle of radius rr, for sweeping: unlike a ray query, a start on or
@@ -58,8 +61,11 @@ function wallOf(nx: number, ny: number): number {
  * MAX_BOUNCES times. Bodies slower than that are left to the discrete contacts, which cannot miss
  * them. As the report notes, moving-moving pairs are not swept: their order would matter.
  *
- * Static shapes are usually few, so each fast body tests them all; a scene with thousands of
- * static circles and many fast bodies would want a static grid here.
+ * The static circles and segments sit in a static tree (StaticTree), rebuilt when they change, so
+ * a fast body tests only those whose boxes meet its path's: thousands of static shapes cost a few
+ * tree queries per fast body, not a test each. The tree lists them in the order a loop over all
+ * of them would meet them (static slots ascending, then segments), and the first of equal times
+ * wins, so the result is the same bits as testing every one.
  */
 /**
  * The four box walls, four numbers each: axis (0 = x), and the centre's limit as
@@ -70,7 +76,8 @@ const WALLS = new Float64Array([0, 0, 1, 1, 0, 1, -1, -1, 1, 0, 1, 1, 1, 1, -1, 
 export class ContinuousCollision {
   private previousX = new Float64Array(0);
   private previousY = new Float64Array(0);
-  private statics = new Int32Array(0);
+  private readonly tree = new StaticTree();
+  private treeVersion = -1;
   /** Fast bodies swept in the last step. */
   swept = 0;
 
@@ -97,34 +104,50 @@ export class ContinuousCollision {
     restitutionThreshold: number,
     events: ContactEvents | null,
     hitThreshold: number,
+    staticVersion: number,
   ): void {
     const { x, y, radius, type, asleep, slotCount } = bodies;
     const { previousX, previousY } = this;
     this.swept = 0;
-    let staticsReady = false;
     for (let i = 0; i < slotCount; i++) {
       if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
       const dx = x[i] - previousX[i];
       const dy = y[i] - previousY[i];
       const r = radius[i];
       if (dx * dx + dy * dy <= r * r) continue;
-      if (!staticsReady) {
-        this.gatherStatics(bodies);
-        staticsReady = true;
-      }
+      if (staticVersion !== this.treeVersion) this.rebuildTree(bodies, segments, staticVersion);
       this.swept++;
       this.sweepBody(bodies, segments, box, wallRestitution, i, restitutionThreshold, events, hitThreshold);
     }
   }
 
   memoryBytes(): number {
-    return this.previousX.byteLength * 2 + this.statics.byteLength;
+    return this.previousX.byteLength * 2 + this.tree.memoryBytes();
   }
 
-  private gatherStatics(bodies: BodyStore): void {
-    if (this.statics.length < bodies.staticCount) this.statics = grow(this.statics, grownCapacity(this.statics.length, bodies.staticCount));
-    let n = 0;
-    for (let s = 0; s < bodies.slotCount; s++) if (bodies.type[s] === TypeCode.static) this.statics[n++] = s;
+  /** Static circles under their slots and segments' capsules under SEGMENT_ID + their slots. */
+  private rebuildTree(bodies: BodyStore, segments: SegmentStore, version: number): void {
+    this.treeVersion = version;
+    const { x, y, radius, type } = bodies;
+    const tree = this.tree;
+    tree.clear();
+    for (let s = 0; s < bodies.slotCount; s++) {
+      if (type[s] !== TypeCode.static) continue;
+      const pad = paddedRadius(radius[s], Math.abs(x[s]) + Math.abs(y[s]));
+      tree.add(s, x[s] - pad, y[s] - pad, x[s] + pad, y[s] + pad);
+    }
+    for (let g = 0; g < segments.slotCount; g++) {
+      if (!segments.live[g]) continue;
+      const t = paddedRadius(segments.thickness[g], Math.abs(segments.ax[g]) + Math.abs(segments.ay[g]) + Math.abs(segments.bx[g]) + Math.abs(segments.by[g]));
+      tree.add(
+        SEGMENT_ID + g,
+        Math.min(segments.ax[g], segments.bx[g]) - t,
+        Math.min(segments.ay[g], segments.by[g]) - t,
+        Math.max(segments.ax[g], segments.bx[g]) + t,
+        Math.max(segments.ay[g], segments.by[g]) + t,
+      );
+    }
+    tree.finish();
   }
 
   /**
@@ -171,8 +194,15 @@ export class ContinuousCollision {
           }
         }
       }
-      for (let k = 0; k < bodies.staticCount; k++) {
-        const s = this.statics[k];
+      // The path's box, grown by the radius; it and the tree's boxes padded (fat-bounds.ts) so that
+      // round-off in them never drops a shape the exact sweep below would hit: extra ones only miss.
+      const reach = r * (1 + RADIUS_PAD) + (Math.abs(fromX) + Math.abs(fromY) + Math.abs(pathX) + Math.abs(pathY) + r) * COORD_PAD;
+      const found = this.tree.query(Math.min(fromX, toX) - reach, Math.min(fromY, toY) - reach, Math.max(fromX, toX) + reach, Math.max(fromY, toY) + reach);
+      const ids = this.tree.found;
+      for (let k = 0; k < found; k++) {
+        const id = ids[k];
+        if (id >= SEGMENT_ID) continue;
+        const s = id;
         if ((category[i] & mask[s]) === 0 || (category[s] & mask[i]) === 0) continue;
         const t = sweepCircle(fromX, fromY, pathX, pathY, x[s], y[s], radius[s] + r);
         if (t >= 0 && t < best) {
@@ -182,8 +212,9 @@ export class ContinuousCollision {
           hitWallX = hitWallY = 0;
         }
       }
-      for (let s = 0; s < segments.slotCount; s++) {
-        if (!segments.live[s]) continue;
+      for (let k = 0; k < found; k++) {
+        if (ids[k] < SEGMENT_ID) continue;
+        const s = ids[k] - SEGMENT_ID;
         if ((category[i] & segments.mask[s]) === 0 || (segments.category[s] & mask[i]) === 0) continue;
         const t = sweepCapsule(fromX, fromY, pathX, pathY, segments.ax[s], segments.ay[s], segments.bx[s], segments.by[s], segments.thickness[s] + r);
         if (t >= 0 && t < best) {

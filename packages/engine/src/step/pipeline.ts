@@ -73,7 +73,8 @@ export class StepPipeline {
     this.pairs = new PairSink(this.narrowPhase, nowMs);
   }
 
-  run(dt: number): void {
+  /** One step of `dt` seconds; `staticVersion` changes whenever a static body or segment does. */
+  run(dt: number, staticVersion: number): void {
     const { bodies, settings, stats, contacts, pairs, events } = this;
     const parallel = this.parallel !== null && bodies.liveCount >= this.parallel.minBodies ? this.parallel : null;
     const box = settings.box;
@@ -99,7 +100,7 @@ export class StepPipeline {
     else INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
 
-    if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold, events, settings.solver.hitThreshold);
+    if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold, events, settings.solver.hitThreshold, staticVersion);
     if (box && events) noteWallContacts(bodies, box.width, box.height, events, settings.solver.hitThreshold);
     if (box && !bouncedInMotion && kernel === null) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
     const t2 = nowMs();
