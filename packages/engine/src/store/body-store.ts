@@ -96,6 +96,8 @@ export class BodyStore {
   box: { width: number; height: number } | null = null;
   /** Bumped whenever the set of live bodies changes, for structures that persist between steps. */
   membershipVersion = 0;
+  /** Bumped whenever a live body becomes static or stops being static (membershipVersion covers the rest). */
+  staticFlips = 0;
   /** Bumped whenever the columns are reallocated: worker threads then need the new buffers. */
   layoutVersion = 0;
   /** Columns live on SharedArrayBuffers (a parallel step is attached). */
@@ -287,6 +289,7 @@ export class BodyStore {
       rigid.invInertia[slot] = code === TypeCode.dynamic ? inverseInertia(rigid, slot) : 0;
       if (code === TypeCode.static) rigid.angularVelocity[slot] = 0;
     }
+    if (previous !== TypeCode.free && (previous === TypeCode.static) !== (code === TypeCode.static)) this.staticFlips++;
     if (this.staticsApart && previous !== TypeCode.free && (previous === TypeCode.static) !== (code === TypeCode.static)) {
       this.membershipVersion++;
       this.radiusRangeStale = true;
