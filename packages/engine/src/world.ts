@@ -134,6 +134,8 @@ export class World {
     this.resolved = resolved;
     this.bounds = resolved.bounds;
     this.bodies.box = resolved.bounds;
+    // Static bodies are paired with moving ones through the static index, never in the broad-phase.
+    this.bodies.setStaticsApart();
     this.defaultRestitution = resolved.restitution;
     this.defaultFriction = resolved.friction;
     const events = resolved.contactEvents || resolved.hitEventThreshold < Infinity ? new ContactEvents() : null;

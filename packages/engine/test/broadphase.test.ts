@@ -468,13 +468,38 @@ describe('static bodies in the sweeps', () => {
     );
   });
 
-  it.each(SWEEPS)('%s examines no static-static pair in a wall of 5,000 overlapping static circles', (broadphase) => {
+  it.each([...SWEEPS, 'maxgrid', 'hgrid', 'auto'] as const)('%s examines no static-static pair in a wall of 5,000 overlapping static circles', (broadphase) => {
     const world = new World({ broadphase, bounds: { width: 2000, height: 2000 } });
     for (let k = 0; k < 5000; k++) world.createCircle({ x: 1000, y: 10 + 0.39 * k, radius: 2, type: 'static' });
     for (let k = 0; k < 200; k++) world.createCircle({ x: 20 + 4.5 * k, y: 10 + 9 * k, radius: 2, vx: 300 });
     for (let s = 0; s < 3; s++) world.step(1 / 60);
     // Each static overlaps about ten others on either axis; only the moving bodies' pairs remain.
     expect(world.stats.pairTests).toBeLessThan(2 * world.bodyCount);
+    for (let s = 0; s < 40; s++) world.step(1 / 60);
+    const movers = world.handles().filter((h) => world.getCircle(h).type === 'dynamic').map((h) => world.getCircle(h));
+    expect(movers.every((c) => c.x < 1000)).toBe(true);
+    expect(movers.filter((c) => c.vx < 0).length).toBeGreaterThan(20);
+  });
+
+  it('a slow circle meets static circles added, moved or turned static between steps, and passes where one was removed', () => {
+    const run = (change: (world: World, post: number) => void) => {
+      const world = new World({ restitution: 1 });
+      const ball = world.createCircle({ x: 0, y: 0, radius: 1, vx: 30 });
+      const post = world.createCircle({ x: 50, y: 50, radius: 1, type: 'static' });
+      world.step(1 / 60);
+      change(world, post);
+      for (let s = 0; s < 60; s++) world.step(1 / 60);
+      return world.getCircle(ball).vx;
+    };
+    expect(run(() => {})).toBe(30);
+    expect(run((world, post) => world.setPosition(post, 5, 0))).toBe(-30);
+    expect(run((world) => world.createCircle({ x: 5, y: 0, radius: 1, type: 'static' }))).toBe(-30);
+    expect(run((world) => world.setType(world.createCircle({ x: 5, y: 0, radius: 1, type: 'kinematic' }), 'static'))).toBe(-30);
+    expect(run((world, post) => {
+      world.setPosition(post, 5, 0);
+      world.step(1 / 60);
+      world.destroyBody(post);
+    })).toBe(30);
   });
 
   it('sap-xy needs memory linear in the bodies when they all overlap on x, and sweeps y instead', () => {

@@ -4,7 +4,9 @@ import type { Engine } from '../src/engines/adapter.js';
 import { ENGINE_IDS } from '../src/engines/registry.js';
 import type { RunContext } from '../src/experiments/common.js';
 import { spread } from '../src/experiments/common.js';
-import { EXPERIMENTS, energy, falsePositives, piles, sapSleep, scale, stepTime, targets } from '../src/experiments/registry.js';
+import { EXPERIMENTS, cliffs, energy, falsePositives, piles, sapSleep, scale, stepTime, targets } from '../src/experiments/registry.js';
+import { cliffsVerdicts } from '../src/experiments/cliffs.js';
+import { CLIFF_SCENES } from '@maxgrid/scenes';
 import { cBaseline } from '../src/node/native.js';
 import { measureHostScaling } from '../src/node/host-scaling.js';
 import { renderSvg } from '../src/report/render.js';
@@ -169,6 +171,33 @@ describe('sap-sleep', () => {
     expect(result.rows.find((r) => r.case === 'field')!.asleepStart).toBeGreaterThan(0.5);
     expectPublishable('sap-sleep', result);
   });
+});
+
+describe('cliffs', () => {
+  it('steps every cliff scene with every broad-phase, the same contacts on each, and names the fastest', async () => {
+    const options = { ...cliffs.options('quick', {}), scale: 0.05, steps: 2, minSteps: 1 };
+    const ids = engines.map((e) => e.info.id).filter((id) => id.startsWith('maxgrid:'));
+    const result = await cliffs.run(options, ctx(ids));
+    expectValid(cliffs.schema, result);
+    expect(result.defaultBroadphase).toBe('maxgrid:auto');
+    expect(result.rows).toHaveLength(options.scenes.length * ids.length);
+    for (const scene of options.scenes) {
+      const rows = result.rows.filter((r) => r.scene === scene);
+      expect(rows.map((r) => r.engine).sort()).toEqual([...ids].sort());
+      // Same world, same steps: broad-phases differ in work, never in what touches.
+      for (const r of rows) expect(r.contactsPerBody).toBe(rows[0].contactsPerBody);
+      const naive = rows.find((r) => r.engine === 'maxgrid:naive')!;
+      for (const r of rows) expect(naive.pairTestsPerBody).toBeGreaterThanOrEqual(r.pairTestsPerBody);
+      // Without static circles, naive examines every pair (statics meet moving bodies through the static tree).
+      if (CLIFF_SCENES[scene].build({ n: 10 }).fixed === null) expect(naive.pairTestsPerBody).toBeCloseTo((naive.bodies - 1) / 2, 6);
+    }
+    for (const v of cliffsVerdicts(result)) {
+      expect(v.ratio).not.toBeNull();
+      expect(v.ratio!).toBeGreaterThanOrEqual(1);
+    }
+    expectPublishable('cliffs', result);
+    expect(cliffs.headline(result)[0]).toMatch(/within .*× of its fastest/);
+  }, 120_000);
 });
 
 describe('piles', () => {

@@ -14,6 +14,7 @@ import { uniformPolygons, uniformPolygonsParams } from './uniform-polygons.js';
 import { manyPyramids, manyPyramidsParams } from './many-pyramids.js';
 import { tumbler, tumblerParams } from './tumbler.js';
 import { polygonBox, polygonBoxParams } from './polygon-box.js';
+import { farBodies, farBodiesParams, sparseBox, sparseBoxParams, twoCrowds, twoCrowdsParams, segmentFloor, segmentFloorParams, staticWall, staticWallParams, logRadii, logRadiiParams } from './cliffs.js';
 
 export { Prng } from './prng.js';
 export { buildWorld, type Scene, type SceneSegment, type BuildOptions, type Layers } from './scene.js';
@@ -57,6 +58,22 @@ export const SCENES = {
     build: bouncingBall,
   },
 } satisfies Record<string, SceneDefinition>;
+
+/**
+ * Scenes where a broad-phase or the continuous sweep used to fall off a cliff (see cliffs.ts):
+ * the lab's `cliffs` experiment and the engine's tests use these. Two have no box (`open`).
+ */
+export const CLIFF_SCENES = {
+  'far-bodies': { description: '20,000 circles in a patch and 4 more a million units away, no box', params: farBodiesParams, build: farBodies },
+  'sparse-box': { description: '20,000 circles in a corner of a box 100,000 wide', params: sparseBoxParams, build: sparseBox },
+  'two-crowds': { description: 'Two crowds of 10,000 circles a million units apart along each axis, no box', params: twoCrowdsParams, build: twoCrowds },
+  'segment-floor': { description: '2,000 circles falling onto a floor of 2,000 segments (continuous collision sweeps them)', params: segmentFloorParams, build: segmentFloor },
+  'static-wall': { description: 'A wall of 10,000 overlapping static circles and 1,000 circles moving at it at 300 units/s', params: staticWallParams, build: staticWall },
+  'log-radii': { description: 'uniform with radii log-uniform from 0.01 to 10,000 (six decades)', params: logRadiiParams, build: logRadii },
+} satisfies Record<string, SceneDefinition>;
+
+export type CliffSceneName = keyof typeof CLIFF_SCENES;
+export const CLIFF_SCENE_NAMES = Object.keys(CLIFF_SCENES) as CliffSceneName[];
 
 export type SceneName = keyof typeof SCENES;
 export const SCENE_NAMES = Object.keys(SCENES) as SceneName[];

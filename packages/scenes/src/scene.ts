@@ -8,7 +8,10 @@ import { World, type WorldOptions } from '@maxgrid/engine';
 export interface Scene {
   name: string;
   params: Readonly<Record<string, number>>;
+  /** The world's box; with `open`, only the region the bodies start in (for framing a view). */
   bounds: { width: number; height: number };
+  /** True where the world has no box: bodies may go anywhere. */
+  open?: boolean;
   gravity: { x: number; y: number };
   /** Restitution of every circle and of the walls. */
   restitution: number;
@@ -75,7 +78,7 @@ export interface BuildOptions extends Omit<WorldOptions, 'bounds' | 'gravity' | 
 export function buildWorld(scene: Scene, options: BuildOptions = {}): World {
   const { layers, segmentLayers, ...worldOptions } = options;
   const world = new World({
-    bounds: scene.bounds,
+    bounds: scene.open ? null : scene.bounds,
     gravity: scene.gravity,
     restitution: scene.restitution,
     ...worldOptions,

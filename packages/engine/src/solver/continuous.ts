@@ -7,13 +7,12 @@ import { rayCapsule } from '../query/ray-capsule.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
 import { mixRestitution } from './restitution.js';
 import { BoxWall } from './box-walls.js';
-import { StaticTree } from '../broadphase/static-tree.js';
-import { COORD_PAD, RADIUS_PAD, paddedRadius } from '../broadphase/fat-bounds.js';
+import type { StaticTree } from '../broadphase/static-tree.js';
+import { COORD_PAD, RADIUS_PAD } from '../broadphase/fat-bounds.js';
+import { SEGMENT_ID, type StaticIndex } from '../broadphase/static-pairs.js';
 
 const MAX_BOUNCES = 4;
 const closest = { x: 0, y: 0 };
-/** Tree ids of segments: above every body slot, so a query lists static circles first, as slots ascend. */
-const SEGMENT_ID = 2 ** 30;
 
 /**
  * Time of impact with a circle of radius rr, for sweeping: unlike a ray query, a start on or
@@ -61,7 +60,7 @@ function wallOf(nx: number, ny: number): number {
  * MAX_BOUNCES times. Bodies slower than that are left to the discrete contacts, which cannot miss
  * them. As the report notes, moving-moving pairs are not swept: their order would matter.
  *
- * The static circles and segments sit in a static tree (StaticTree), rebuilt when they change, so
+ * The static circles and segments sit in the world's static index (StaticIndex), so
  * a fast body tests only those whose boxes meet its path's: thousands of static shapes cost a few
  * tree queries per fast body, not a test each. The tree lists them in the order a loop over all
  * of them would meet them (static slots ascending, then segments), and the first of equal times
@@ -76,8 +75,7 @@ const WALLS = new Float64Array([0, 0, 1, 1, 0, 1, -1, -1, 1, 0, 1, 1, 1, 1, -1, 
 export class ContinuousCollision {
   private previousX = new Float64Array(0);
   private previousY = new Float64Array(0);
-  private readonly tree = new StaticTree();
-  private treeVersion = -1;
+  private tree: StaticTree | null = null;
   /** Fast bodies swept in the last step. */
   swept = 0;
 
@@ -104,6 +102,7 @@ export class ContinuousCollision {
     restitutionThreshold: number,
     events: ContactEvents | null,
     hitThreshold: number,
+    index: StaticIndex,
     staticVersion: number,
   ): void {
     const { x, y, radius, type, asleep, slotCount } = bodies;
@@ -115,39 +114,14 @@ export class ContinuousCollision {
       const dy = y[i] - previousY[i];
       const r = radius[i];
       if (dx * dx + dy * dy <= r * r) continue;
-      if (staticVersion !== this.treeVersion) this.rebuildTree(bodies, segments, staticVersion);
+      this.tree = index.current(bodies, segments, staticVersion);
       this.swept++;
       this.sweepBody(bodies, segments, box, wallRestitution, i, restitutionThreshold, events, hitThreshold);
     }
   }
 
   memoryBytes(): number {
-    return this.previousX.byteLength * 2 + this.tree.memoryBytes();
-  }
-
-  /** Static circles under their slots and segments' capsules under SEGMENT_ID + their slots. */
-  private rebuildTree(bodies: BodyStore, segments: SegmentStore, version: number): void {
-    this.treeVersion = version;
-    const { x, y, radius, type } = bodies;
-    const tree = this.tree;
-    tree.clear();
-    for (let s = 0; s < bodies.slotCount; s++) {
-      if (type[s] !== TypeCode.static) continue;
-      const pad = paddedRadius(radius[s], Math.abs(x[s]) + Math.abs(y[s]));
-      tree.add(s, x[s] - pad, y[s] - pad, x[s] + pad, y[s] + pad);
-    }
-    for (let g = 0; g < segments.slotCount; g++) {
-      if (!segments.live[g]) continue;
-      const t = paddedRadius(segments.thickness[g], Math.abs(segments.ax[g]) + Math.abs(segments.ay[g]) + Math.abs(segments.bx[g]) + Math.abs(segments.by[g]));
-      tree.add(
-        SEGMENT_ID + g,
-        Math.min(segments.ax[g], segments.bx[g]) - t,
-        Math.min(segments.ay[g], segments.by[g]) - t,
-        Math.max(segments.ax[g], segments.bx[g]) + t,
-        Math.max(segments.ay[g], segments.by[g]) + t,
-      );
-    }
-    tree.finish();
+    return this.previousX.byteLength * 2;
   }
 
   /**
@@ -197,8 +171,9 @@ export class ContinuousCollision {
       // The path's box, grown by the radius; it and the tree's boxes padded (fat-bounds.ts) so that
       // round-off in them never drops a shape the exact sweep below would hit: extra ones only miss.
       const reach = r * (1 + RADIUS_PAD) + (Math.abs(fromX) + Math.abs(fromY) + Math.abs(pathX) + Math.abs(pathY) + r) * COORD_PAD;
-      const found = this.tree.query(Math.min(fromX, toX) - reach, Math.min(fromY, toY) - reach, Math.max(fromX, toX) + reach, Math.max(fromY, toY) + reach);
-      const ids = this.tree.found;
+      const tree = this.tree!;
+      const found = tree.query(Math.min(fromX, toX) - reach, Math.min(fromY, toY) - reach, Math.max(fromX, toX) + reach, Math.max(fromY, toY) + reach);
+      const ids = tree.found;
       for (let k = 0; k < found; k++) {
         const id = ids[k];
         if (id >= SEGMENT_ID) continue;

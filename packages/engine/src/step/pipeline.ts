@@ -12,6 +12,7 @@ import { solveContacts, type SolverSettings } from '../solver/contact-solver.js'
 import { IterativeSolver } from '../solver/iterative-solver.js';
 import { SleepStage } from '../solver/sleep.js';
 import { ContinuousCollision } from '../solver/continuous.js';
+import { StaticIndex, findStaticPairs } from '../broadphase/static-pairs.js';
 import { solveSegmentContacts } from '../solver/segment-contacts.js';
 import { SegmentGrid, type SegmentStore } from '../store/segment-store.js';
 import { emptyStats, type StepStats } from './stats.js';
@@ -56,6 +57,8 @@ export class StepPipeline {
   readonly pairs: PairSink;
   readonly stats: StepStats = emptyStats();
   readonly continuous = new ContinuousCollision();
+  /** Static circles and segments, for the static pairs and the continuous sweep. */
+  readonly statics = new StaticIndex();
   readonly iterative = new IterativeSolver();
   readonly sleep = new SleepStage();
   readonly segmentGrid = new SegmentGrid();
@@ -100,7 +103,7 @@ export class StepPipeline {
     else INTEGRATORS[this.integrator](bodies, settings.gravity.x, settings.gravity.y, dt);
     const t1 = nowMs();
 
-    if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold, events, settings.solver.hitThreshold, staticVersion);
+    if (sweep) this.continuous.sweep(bodies, this.segments, box, settings.wallRestitution, settings.solver.restitutionThreshold, events, settings.solver.hitThreshold, this.statics, staticVersion);
     if (box && events) noteWallContacts(bodies, box.width, box.height, events, settings.solver.hitThreshold);
     if (box && !bouncedInMotion && kernel === null) bounceOffBox(bodies, box.width, box.height, settings.wallRestitution, settings.solver.restitutionThreshold);
     const t2 = nowMs();
@@ -116,10 +119,11 @@ export class StepPipeline {
       pairTests = parallel!.findContacts(grid, (broad as MaxGridBroadPhase).coordPad, contacts, binned);
     } else {
       pairTests = broad.findPairs(bodies, pairs);
-      pairs.flush();
     }
     // With workers, `auto`'s choice ran here rather than inside auto: it hears what it examined.
     if (broad !== this.broadPhase && this.broadPhase instanceof AutoBroadPhase) this.broadPhase.noteExamined(broad, pairTests, bodies);
+    if (bodies.staticCount > 0) pairTests += findStaticPairs(bodies, this.statics.current(bodies, this.segments, staticVersion), pairs);
+    pairs.flush();
     const t3 = nowMs();
 
     contacts.sortCanonical(bodies.slotCount);
@@ -206,6 +210,7 @@ export class StepPipeline {
       this.contacts.memoryBytes() +
       this.pairs.memoryBytes() +
       this.continuous.memoryBytes() +
+      this.statics.memoryBytes() +
       this.iterative.memoryBytes() +
       this.sleep.memoryBytes() +
       (this.events?.memoryBytes() ?? 0)

@@ -58,6 +58,7 @@ import {
   type ShapeFalsePositiveResult,
 } from './shape-false-positives.js';
 import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
+import { cliffsCsv, cliffsDefaults, cliffsHeadline, cliffsSchema, cliffsTables, runCliffs, type CliffsOptions, type CliffsResult } from './cliffs.js';
 
 /** Command-line style overrides; each experiment takes the ones that mean something to it. */
 export interface Overrides {
@@ -73,7 +74,7 @@ export interface Experiment<O extends object, R> {
   description: string;
   schema: object;
   defaultEngines: string[];
-  /** Needs Node (a C compiler, a headless Chromium): the browser lab page leaves it out. */
+  /** Needs Node (a C compiler, a headless Chromium), or runs too long for the browser lab page, which leaves it out. */
   nodeOnly?: boolean;
   /** Measures its default engines whatever --engines says: the option is refused. */
   fixedEngines?: boolean;
@@ -377,6 +378,25 @@ export const shapeFalsePositives: Experiment<ShapeFalsePositiveOptions, ShapeFal
   headline: shapeFalsePositiveHeadline,
 };
 
+export const cliffs: Experiment<CliffsOptions, CliffsResult> = {
+  name: 'cliffs',
+  description: 'Scenes where a broad-phase or the continuous sweep used to fall off a cliff, with every broad-phase: ms per step, pairs per body, the default against the fastest (issue 22)',
+  schema: cliffsSchema,
+  defaultEngines: MAXGRID_IDS,
+  // A minute or more at the scenes' sizes: longer than the lab page's whole run.
+  nodeOnly: true,
+  options(profile, o) {
+    reject('cliffs', o, ['runs', 'dt']);
+    const d = cliffsDefaults(profile);
+    return { ...d, steps: o.runs ?? d.steps, dt: o.dt ?? d.dt };
+  },
+  run: runCliffs,
+  csv: cliffsCsv,
+  charts: () => [],
+  tables: cliffsTables,
+  headline: cliffsHeadline,
+};
+
 // The registry stores experiments of different option and result types side by side.
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 export type AnyExperiment = Experiment<any, any>;
@@ -387,6 +407,7 @@ export const EXPERIMENTS: Record<string, AnyExperiment> = {
   'false-positives': falsePositives,
   scale,
   'sap-sleep': sapSleep,
+  cliffs,
   'c-maxgrid': cMaxgrid,
   targets,
   'sandbox-render': sandboxRender,
