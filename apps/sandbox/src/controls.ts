@@ -1,6 +1,5 @@
-import { BROADPHASE_NAMES, INTEGRATOR_NAMES } from '@maxgrid/engine';
+import { BROADPHASE_NAMES, INTEGRATOR_NAMES, type BroadPhaseName } from '@maxgrid/engine';
 import {
-  NAIVE_LIMIT,
   SCENE_CHOICES,
   SEED_MAX,
   SPAWN_KINDS,
@@ -137,7 +136,8 @@ export class Controls {
     return copySettings(this.current);
   }
 
-  show(s: Settings): void {
+  /** Shows `s`; broad-phases in `refused` are disabled, their reason as the option's title. */
+  show(s: Settings, refused: Partial<Record<BroadPhaseName, string>> = {}): void {
     this.current = copySettings(s);
     if (this.slidersFor !== s.scene) this.makeSliders(s.scene);
     for (const { spec, input, output } of this.sliders) {
@@ -164,11 +164,10 @@ export class Controls {
     this.substeps.disabled = !isShapeScene(s.scene);
     this.substeps.title = this.substeps.disabled ? 'Sub-steps belong to the soft step of scenes with shapes' : "Box2D v3's soft step: sub-steps per step";
     for (const { key, input } of this.toggles) input.checked = s[key];
-    // Naive tests every pair: offered only while a step stays well under a second.
-    const naive = this.broadphase.querySelector<HTMLOptionElement>('option[value="naive"]');
-    if (naive) {
-      naive.disabled = s.params.n > NAIVE_LIMIT;
-      naive.title = naive.disabled ? `O(n²): only up to ${NAIVE_LIMIT.toLocaleString('en-US')} bodies` : '';
+    for (const option of this.broadphase.options) {
+      const why = refused[option.value as BroadPhaseName];
+      option.disabled = why !== undefined;
+      option.title = why ?? '';
     }
   }
 

@@ -1,3 +1,5 @@
+import type { BroadPhaseName } from '@maxgrid/engine';
+import { refusals } from './broadphase-budget.js';
 import { Controls, usableCores } from './controls.js';
 import { download, toCsv, toJson } from './data-export.js';
 import { FrameLog, type FrameSample } from './frame-log.js';
@@ -10,17 +12,16 @@ import type { Renderer, SceneShapes } from './render/renderer.js';
 import { WebGLRenderer } from './render/webgl.js';
 import { spawnRadius } from './scene-specs.js';
 import {
-  NAIVE_LIMIT,
   copySettings,
   defaultSettings,
   offeredThreads,
   parseSettings,
   serializeSettings,
-  usableBroadphase,
   type RendererName,
   type Settings,
 } from './settings.js';
-import { DT, Simulation } from './simulation.js';
+import { DT, STEP_BUDGET_MS, Simulation } from './simulation.js';
+import { Pace } from './pace.js';
 import { ViewTransform } from './view.js';
 
 function byId<T extends HTMLElement>(id: string): T {
@@ -34,6 +35,8 @@ const canvas2d = byId<HTMLCanvasElement>('canvas-2d');
 const canvasGl = byId<HTMLCanvasElement>('canvas-webgl');
 const overlay = new Overlay(byId<HTMLCanvasElement>('overlay'));
 const notice = byId<HTMLParagraphElement>('notice');
+const paceLine = byId<HTMLParagraphElement>('pace');
+const pace = new Pace();
 const pauseButton = byId<HTMLButtonElement>('pause');
 
 const sim = new Simulation();
@@ -64,13 +67,20 @@ function say(message: string): void {
   notice.textContent = message;
 }
 
-function engineFor(s: Settings): Settings {
-  const broadphase = usableBroadphase(s.broadphase, s.params.n);
-  if (broadphase !== s.broadphase) say(`The naive broad-phase is offered up to ${NAIVE_LIMIT.toLocaleString('en-US')} bodies; using auto.`);
-  else if (s.scene === 'mixed' && broadphase === 'maxgrid') {
-    say('Max Grid sizes every cell by the largest circle, so here it tests many pairs; try hgrid or auto.');
+/** Broad-phases the current world would make too slow, with why (broadphase-budget.ts). */
+let refused: Partial<Record<BroadPhaseName, string>> = {};
+
+/** Keeps the page responsive: a broad-phase over the pair budget in the world now shown gives way to auto. */
+function withinBudget(s: Settings): Settings {
+  refused = refusals(sim.world.views());
+  const why = refused[s.broadphase];
+  if (why !== undefined) {
+    say(`${why}; using auto.`);
+    sim.setBroadphase('auto');
+    return { ...s, broadphase: 'auto' };
   }
-  return { ...copySettings(s), broadphase };
+  if (s.scene === 'mixed' && s.broadphase === 'maxgrid') say('Max Grid sizes every cell by the largest circle, so here it tests many pairs; try hgrid or auto.');
+  return s;
 }
 
 /**
@@ -80,7 +90,7 @@ function engineFor(s: Settings): Settings {
  */
 function rebuild(next: Settings): void {
   say('');
-  let wanted = engineFor(next);
+  let wanted = copySettings(next);
   try {
     sim.rebuild(wanted);
   } catch (error) {
@@ -90,12 +100,14 @@ function rebuild(next: Settings): void {
     wanted = fallback;
     sim.rebuild(wanted);
   }
-  settings = wanted;
+  settings = withinBudget(wanted);
   frameLog.clear();
+  pace.reset();
+  paceLine.textContent = '';
   sim.setThreads(settings.threads, threadsFailed);
   query.clear();
   query.setTool(settings.tool);
-  controls.show(settings);
+  controls.show(settings, refused);
   saveUrl();
   forceStats = true;
 }
@@ -112,8 +124,9 @@ function threadsFailed(message: string): void {
 
 function applyLive(next: Settings): void {
   say('');
-  settings = engineFor({ ...next, params: settings.params });
+  settings = copySettings({ ...next, params: settings.params });
   sim.setBroadphase(settings.broadphase);
+  settings = withinBudget(settings);
   sim.setIntegrator(settings.integrator);
   sim.setThreads(settings.threads, threadsFailed);
   settings.renderer = selectRenderer(settings.renderer);
@@ -122,7 +135,7 @@ function applyLive(next: Settings): void {
     query.setTool(settings.tool);
     query.update(sim.world);
   }
-  controls.show(settings);
+  controls.show(settings, refused);
   saveUrl();
 }
 
@@ -192,7 +205,7 @@ const overlayOptions: OverlayOptions = { grid: false, aabb: false, contacts: fal
 
 rebuild(settings);
 settings.renderer = selectRenderer(settings.renderer);
-controls.show(settings);
+controls.show(settings, refused);
 saveUrl();
 
 declare global {
@@ -246,6 +259,10 @@ function frame(now: number): void {
   const stepStart = performance.now();
   const steps = sim.advance(elapsed);
   const drawStart = performance.now();
+  if (sim.paused) pace.reset();
+  else pace.note(Math.max(0, frameSeconds), steps, DT, drawStart - stepStart);
+  const paceText = pace.message(STEP_BUDGET_MS);
+  if (paceLine.textContent !== paceText) paceLine.textContent = paceText;
   resize();
   shapes.segments = overlayOptions.segments = sim.segments;
   shapes.staticCircles = sim.staticCircles;

@@ -70,9 +70,6 @@ export type WorldToggle = (typeof WORLD_TOGGLES)[number];
 
 export const SEED_MAX = seedBoxParams.seed.max;
 
-/** Naive is O(n²) per step: above this many bodies one step would freeze the page for seconds. */
-export const NAIVE_LIMIT = 5000;
-
 export function defaultSettings(scene: SceneChoice = 'seed-box'): Settings {
   return {
     scene,
@@ -101,11 +98,6 @@ export function clampSeed(value: number): number {
   return Number.isFinite(value) ? Math.min(SEED_MAX, Math.max(0, Math.trunc(value))) : seedBoxParams.seed.default;
 }
 
-/** A broad-phase that can run this many bodies without stalling the page. */
-export function usableBroadphase(name: BroadPhaseName, n: number): BroadPhaseName {
-  return name === 'naive' && n > NAIVE_LIMIT ? 'auto' : name;
-}
-
 function oneOf<T extends string>(names: readonly T[], value: string | null, fallback: T): T {
   return value !== null && (names as readonly string[]).includes(value) ? (value as T) : fallback;
 }
@@ -125,7 +117,7 @@ export function parseSettings(search: string): Settings {
   }
   const seed = q.get('seed');
   if (seed !== null && seed.trim() !== '') s.seed = clampSeed(Number(seed));
-  // Too many bodies for naive is resolved when the world is built, where the page can say so.
+  // A broad-phase too slow for the world is refused once it is built (broadphase-budget.ts), where the page can say so.
   s.broadphase = oneOf(BROADPHASE_NAMES, q.get('broadphase'), s.broadphase);
   s.integrator = oneOf(INTEGRATOR_NAMES, q.get('integrator'), s.integrator);
   s.renderer = oneOf(RENDERER_NAMES, q.get('renderer'), s.renderer);

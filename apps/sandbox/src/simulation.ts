@@ -17,7 +17,7 @@ export const DT = 1 / 60;
 /** At most this many steps per frame, so one slow frame cannot make the next one slower still. */
 const MAX_STEPS_PER_FRAME = 4;
 /** ...and no more catching up once a frame has spent this long stepping. */
-const STEP_BUDGET_MS = 40;
+export const STEP_BUDGET_MS = 40;
 
 /**
  * The world plus everything that runs it: the fixed-step accumulator, the recorded series and the

@@ -404,4 +404,43 @@ describe('2D sandbox: engine features', () => {
     expect(errors).toEqual([]);
     await page.close();
   });
+
+  it('never freezes: a broad-phase over the pair budget is refused with its reason, and a slow one says it falls behind', async () => {
+    // 50,000 circles of the seed box: sap-xy would examine about 19 million pairs a step (4-5 s a step before it swept one axis).
+    const { page, errors } = await openPage(browser, '/?n=50000&broadphase=sap-xy');
+    await stepsPass(page, 2);
+    expect(await page.getByLabel('Broad-phase').inputValue()).toBe('auto');
+    expect(await page.locator('#notice').innerText()).toMatch(/sap-xy would examine [\d.]+ million pairs a step/);
+    const option = page.locator('#broadphase option[value="sap-xy"]');
+    expect(await option.isDisabled()).toBe(true);
+    expect(await option.getAttribute('title')).toMatch(/over the page's budget/);
+    // The grids are linear whatever the count: always offered.
+    for (const name of ['maxgrid', 'hgrid', 'auto']) expect(await page.locator(`#broadphase option[value="${name}"]`).isDisabled()).toBe(false);
+    // Fewer bodies: sap-xy is offered again.
+    await page.goto(page.url().replace(/n=\d+/, 'n=2000'));
+    await stepsPass(page, 2);
+    expect(await page.locator('#broadphase option[value="sap-xy"]').isDisabled()).toBe(false);
+
+    // Naive at 3,000 bodies is within the budget (4.5 million pairs) but steps far slower than
+    // the frames: the page runs slow, says so, and keeps drawing frames.
+    await page.goto(page.url().replace(/\?.*/, '?n=3000&broadphase=naive'));
+    await stepsPass(page, 2);
+    expect(await page.getByLabel('Broad-phase').inputValue()).toBe('naive');
+    await expect.poll(() => page.locator('#pace').innerText(), POLL).toMatch(/Falling behind real time: 0\.\d\d×/);
+    const gaps = await page.evaluate(async () => {
+      const seen: number[] = [];
+      await new Promise<void>((done) => {
+        const tick = (t: number) => {
+          seen.push(t);
+          if (seen.length < 15) requestAnimationFrame(tick);
+          else done();
+        };
+        requestAnimationFrame(tick);
+      });
+      return seen.slice(1).map((t, i) => t - seen[i]);
+    });
+    expect(Math.max(...gaps)).toBeLessThan(1000);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
 });
