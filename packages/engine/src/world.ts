@@ -655,11 +655,18 @@ export class World {
    * parallel. The result is the same bits for any worker count, and as without workers.
    * A world with shapes steps on this thread alone (same bits); the workers serve circle worlds.
    * `views()` must be taken again afterwards: the columns move to shared memory.
+   *
+   * Options: `minBodies` (below it a step runs on this thread alone), and `adaptive` (default
+   * true): each step is timed, and now and then one runs the other way, on this thread alone or
+   * on the threads, so that a machine whose cores are busy with other work steps on one thread
+   * rather than wait for workers the scheduler does not run (`stats.threads` says which ran).
+   * `adaptive: false` always uses the threads, for measuring them.
    */
-  async startWorkers(workerCount: number, options: { minBodies?: number } = {}): Promise<void> {
+  async startWorkers(workerCount: number, options: { minBodies?: number; adaptive?: boolean } = {}): Promise<void> {
     checkWorkerCount(workerCount);
-    knownKeys('startWorkers options', plainObject('startWorkers options', options), ['minBodies']);
+    knownKeys('startWorkers options', plainObject('startWorkers options', options), ['minBodies', 'adaptive']);
     const minBodies = options.minBodies === undefined ? DEFAULT_MIN_BODIES : nonNegativeInteger('minBodies', options.minBodies);
+    if (options.adaptive !== undefined && typeof options.adaptive !== 'boolean') throw new TypeError(`startWorkers option adaptive must be a boolean, got ${String(options.adaptive)}`);
     this.stopWorkers();
     const started = this.workerStarts;
     const parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts);
@@ -669,6 +676,7 @@ export class World {
       return;
     }
     parallel.minBodies = minBodies;
+    if (options.adaptive === false) parallel.governor = null;
     this.pipeline.parallel = parallel;
   }
 

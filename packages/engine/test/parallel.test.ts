@@ -6,6 +6,7 @@ import type { BodyStore } from '../src/store/body-store.js';
 import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
 import { bandedBin, setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import { spinBudget, spinWhileEqual } from '../src/parallel/host.js';
+import { ThreadGovernor } from '../src/parallel/governor.js';
 
 // Worker threads load the compiled engine (dist/), which `npm test` builds first.
 
@@ -15,7 +16,7 @@ type Build = () => World;
 async function hashWith(build: Build, workers: number, steps: number, during?: (world: World, step: number) => void): Promise<string> {
   const world = build();
   // minBodies 0: these worlds are small, and the parallel path is what is under test.
-  if (workers > 0) await world.startWorkers(workers, { minBodies: 0 });
+  if (workers > 0) await world.startWorkers(workers, { minBodies: 0, adaptive: false });
   try {
     for (let s = 0; s < steps; s++) {
       during?.(world, s);
@@ -100,7 +101,7 @@ describe('parallel step', () => {
   it('runs the body kernel on shared columns, in every thread, and matches a serial world without any kernel', async () => {
     const build = uniform(4000, { gravity: { x: 0, y: -60 } });
     const world = build();
-    await world.startWorkers(2, { minBodies: 0 });
+    await world.startWorkers(2, { minBodies: 0, adaptive: false });
     try {
       const kernel = (world as unknown as { bodies: BodyStore }).bodies.kernel;
       expect(kernel?.sharedMemory).toBeTruthy();
@@ -120,7 +121,7 @@ describe('parallel step', () => {
       // Without the body kernel the grid kernel keeps a memory of its own, and the threads copy
       // positions and radii into it.
       const copying = build();
-      await copying.startWorkers(2, { minBodies: 0 });
+      await copying.startWorkers(2, { minBodies: 0, adaptive: false });
       try {
         for (let s = 0; s < 60; s++) copying.step(1 / 60);
         const grid = (copying as unknown as { pipeline: { broadPhase: { grid: CellGrid } } }).pipeline.broadPhase.grid;
@@ -140,7 +141,7 @@ describe('parallel step', () => {
     setGridKernelEnabled(false);
     try {
       const world = build();
-      await world.startWorkers(2, { minBodies: 0 });
+      await world.startWorkers(2, { minBodies: 0, adaptive: false });
       try {
         world.step(1 / 60);
         const grid = (world as unknown as { pipeline: { broadPhase: { grid: CellGrid } } }).pipeline.broadPhase.grid;
@@ -159,7 +160,7 @@ describe('parallel step', () => {
   it('matches the golden seed-box hash with gravity and walls, on the default broad-phase', async () => {
     const build = () => buildWorld(buildScene('seed-box', { n: 800, seed: 42 }), { integrator: 'explicit-euler' });
     const world = build();
-    await world.startWorkers(2, { minBodies: 0 });
+    await world.startWorkers(2, { minBodies: 0, adaptive: false });
     expect(world.workerCount).toBe(2);
     for (let s = 0; s < 600; s++) world.step(1 / 60);
     world.stopWorkers();
@@ -247,7 +248,7 @@ describe('parallel step', () => {
     };
     await expectSameBits(outliers, 8);
     const world = outliers();
-    await world.startWorkers(2, { minBodies: 0 });
+    await world.startWorkers(2, { minBodies: 0, adaptive: false });
     try {
       for (let s = 0; s < 3; s++) world.step(1 / 60);
       expect(world.gridGeometry()).toBeNull();
@@ -299,12 +300,12 @@ describe('parallel step', () => {
   it('steps on after stopWorkers, and restarting gives the same bits', async () => {
     const serial = await hashWith(uniform(3000), 0, 40);
     const world = uniform(3000)();
-    await world.startWorkers(2, { minBodies: 0 });
+    await world.startWorkers(2, { minBodies: 0, adaptive: false });
     for (let s = 0; s < 15; s++) world.step(1 / 60);
     world.stopWorkers();
     expect(world.workerCount).toBe(1);
     for (let s = 0; s < 10; s++) world.step(1 / 60);
-    await world.startWorkers(3, { minBodies: 0 });
+    await world.startWorkers(3, { minBodies: 0, adaptive: false });
     for (let s = 0; s < 15; s++) world.step(1 / 60);
     world.stopWorkers();
     expect(world.stateHash()).toBe(serial);
@@ -343,6 +344,7 @@ describe('parallel step', () => {
       [{ minBodies: Number.POSITIVE_INFINITY }, 'minBodies must be a finite number, got Infinity'],
       [{ minBodies: '5' }, 'minBodies must be a finite number, got "5"'],
       [{ minBodes: 1 }, "startWorkers options has unknown option 'minBodes'"],
+      [{ adaptive: 1 }, 'startWorkers option adaptive must be a boolean, got 1'],
       [null, 'startWorkers options must be an object, got null'],
     ] as const) {
       await expect(world.startWorkers(2, options as never)).rejects.toBeInstanceOf(TypeError);
@@ -364,5 +366,80 @@ describe('parallel step', () => {
     flag[0] = 1;
     expect(spinWhileEqual(flag, 0, 0, 2000)).toBe(true);
     expect(spinWhileEqual(flag, 0, 1, 0)).toBe(false);
+  });
+});
+
+describe('thread governor (a machine whose cores are busy elsewhere)', () => {
+  /** Runs `steps` steps where the threads cost `threaded(step)` ms and one thread `serial(step)`; returns the steps on threads per window. */
+  function drive(steps: number, threaded: (s: number) => number, serial: (s: number) => number, window = steps) {
+    const governor = new ThreadGovernor();
+    const onThreads: number[] = [];
+    let total = 0;
+    for (let s = 0; s < steps; s++) {
+      const threads = governor.useThreads();
+      const ms = threads ? threaded(s) : serial(s);
+      total += ms;
+      governor.note(threads, ms);
+      if (s % window === 0) onThreads.push(0);
+      if (threads) onThreads[onThreads.length - 1]++;
+    }
+    return { onThreads, total };
+  }
+
+  it('leaves threads ten times slower than one within a few steps, and tries them again ever more rarely', () => {
+    const { onThreads, total } = drive(4000, () => 20, () => 2, 1000);
+    // The first try of one thread comes at step 16; afterwards a try of two steps after 8, 32, 128, 512, then every 1,024 steps.
+    expect(onThreads[0]).toBeLessThan(30);
+    expect(onThreads[3]).toBeLessThanOrEqual(2);
+    // Within 1.1x of stepping on one thread throughout.
+    expect(total).toBeLessThan(1.1 * 4000 * 2);
+  });
+
+  it('keeps threads that are faster, trying one thread ever more rarely', () => {
+    const { onThreads, total } = drive(4000, () => 1, () => 1.6, 1000);
+    expect(onThreads[0]).toBeGreaterThan(985);
+    expect(onThreads[3]).toBeGreaterThanOrEqual(998);
+    expect(total).toBeLessThan(1.01 * 4000);
+  });
+
+  it('goes back to the threads once the load is gone, and leaves them when it returns', () => {
+    // Busy for 500 steps, idle for 1,500, busy again.
+    const busy = (s: number) => s < 500 || s >= 2000;
+    const { onThreads } = drive(3000, (s) => (busy(s) ? 20 : 1), () => 1.6, 100);
+    expect(onThreads[4]).toBeLessThanOrEqual(2);
+    // Idle from step 500: the next try (at most 1,024 steps later, sooner this early) wins.
+    expect(onThreads[15]).toBeGreaterThanOrEqual(98);
+    expect(onThreads[19]).toBeGreaterThanOrEqual(98);
+    expect(onThreads[25]).toBeLessThanOrEqual(2);
+  });
+
+  it('noisy timings do not keep it switching: the mode in use is compared by the lower quartile of its recent steps', () => {
+    let state = 7;
+    const noise = () => ((state = (Math.imul(state, 1103515245) + 12345) >>> 0) / 2 ** 32);
+    // Threads 1 ms with spikes to 10 one step in ten; one thread 1.6 ms.
+    const { onThreads } = drive(3000, () => (noise() < 0.1 ? 10 : 1), () => 1.6, 1000);
+    expect(onThreads[2]).toBeGreaterThan(950);
+  });
+
+  it('switching between the threads and one thread, step by step, keeps the serial bits', async () => {
+    const build = uniform(3000, {}, { seed: 9 });
+    const serial = await hashWith(build, 0, 30);
+    const world = build();
+    await world.startWorkers(2, { minBodies: 0 });
+    const parallel = (world as unknown as { pipeline: { parallel: { governor: unknown } } }).pipeline.parallel;
+    let step = 0;
+    const used: number[] = [];
+    parallel.governor = { useThreads: () => step++ % 3 !== 1, note: () => {} };
+    try {
+      for (let s = 0; s < 30; s++) {
+        world.step(1 / 60);
+        used.push(world.stats.threads);
+      }
+      expect(world.stateHash()).toBe(serial);
+      expect(used.filter((t) => t === 1)).toHaveLength(10);
+      expect(used.filter((t) => t === 2)).toHaveLength(20);
+    } finally {
+      world.stopWorkers();
+    }
   });
 });

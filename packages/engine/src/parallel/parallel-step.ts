@@ -20,6 +20,7 @@ import {
   type BufferMessage,
 } from './control.js';
 import { ThreadKernels } from './kernels.js';
+import { ThreadGovernor } from './governor.js';
 import { hardwareThreads, spinBudget, startWorker, threadsUnavailable, type WorkerHandle } from './host.js';
 import { awaitWorkers, publishCommand } from './handoff.js';
 import { finiteNumber } from '../util/validate.js';
@@ -73,6 +74,8 @@ export class ParallelStep {
   readonly threads: number;
   /** Steps of worlds with fewer live bodies than this run on the calling thread alone. */
   minBodies = DEFAULT_MIN_BODIES;
+  /** Chooses between the threads and the calling thread alone step by step; null: always the threads. */
+  governor: ThreadGovernor | null = new ThreadGovernor();
   private readonly control: Int32Array;
   private readonly params: Float64Array;
   private readonly results: Float64Array;

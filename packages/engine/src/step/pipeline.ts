@@ -79,7 +79,8 @@ export class StepPipeline {
   /** One step of `dt` seconds; `staticVersion` changes whenever a static body or segment does. */
   run(dt: number, staticVersion: number): void {
     const { bodies, settings, stats, contacts, pairs, events } = this;
-    const parallel = this.parallel !== null && bodies.liveCount >= this.parallel.minBodies ? this.parallel : null;
+    const eligible = this.parallel !== null && bodies.liveCount >= this.parallel.minBodies ? this.parallel : null;
+    const parallel = eligible !== null && (eligible.governor === null || eligible.governor.useThreads()) ? eligible : null;
     const box = settings.box;
     const t0 = nowMs();
     // Cleared first: the sweep records its hits (on static circles and segments) before the solvers record theirs.
@@ -170,6 +171,8 @@ export class StepPipeline {
     stats.correctMs = t5 - t4;
     stats.reportMs = t6 - t5;
     stats.totalMs = t6 - t0;
+    stats.threads = parallel ? parallel.threads : 1;
+    eligible?.governor?.note(parallel !== null, t6 - t0);
   }
 
   private moveInBox(kernel: BodyKernel, box: { width: number; height: number }, dt: number): void {

@@ -47,6 +47,11 @@ export interface StepStats {
   /** Contact events, clearing forces, and sleep timers. */
   reportMs: number;
   totalMs: number;
+  /**
+   * Threads that ran the last step: 1 without workers, below their minBodies, on the shape route,
+   * or where the world's thread governor found one thread faster (see startWorkers).
+   */
+  threads: number;
 }
 
 export function emptyStats(): StepStats {
@@ -68,5 +73,6 @@ export function emptyStats(): StepStats {
     correctMs: 0,
     reportMs: 0,
     totalMs: 0,
+    threads: 1,
   };
 }

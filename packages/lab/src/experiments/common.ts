@@ -118,6 +118,8 @@ export interface Host {
   sandbox(): Promise<SandboxHost | string>;
   /** Node's host-scaling probe (node/host-scaling.ts), for T4's context; absent where not run. */
   hostScaling?(): Promise<HostScaling>;
+  /** Starts `count` processes that keep a core busy each; resolves to what stops them. Node only. */
+  busyProcesses?(count: number): Promise<() => void>;
 }
 
 /** Twice the work on 2 threads against once on 1, by time: 2 is perfect, 1 no gain. */

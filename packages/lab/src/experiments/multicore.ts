@@ -42,7 +42,7 @@ export async function multiCore(o: MultiCoreOptions, ctx: RunContext): Promise<M
   const serial = buildWorld(scene, { broadphase: 'maxgrid' });
   const parallel = buildWorld(scene, { broadphase: 'maxgrid' });
   // minBodies 0: the lab's small test sizes measure the parallel path too.
-  await parallel.startWorkers(o.threads, { minBodies: 0 });
+  await parallel.startWorkers(o.threads, { minBodies: 0, adaptive: false });
   const serialTimes: number[] = [];
   const parallelTimes: number[] = [];
   let hashesMatch: boolean;

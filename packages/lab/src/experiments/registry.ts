@@ -58,6 +58,7 @@ import {
   type ShapeFalsePositiveResult,
 } from './shape-false-positives.js';
 import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
+import { runThreadsLoad, threadsLoadCsv, threadsLoadDefaults, threadsLoadHeadline, threadsLoadSchema, threadsLoadTables, type ThreadsLoadOptions, type ThreadsLoadResult } from './threads-load.js';
 import { cliffsCsv, cliffsDefaults, cliffsHeadline, cliffsSchema, cliffsTables, runCliffs, type CliffsOptions, type CliffsResult } from './cliffs.js';
 
 /** Command-line style overrides; each experiment takes the ones that mean something to it. */
@@ -397,6 +398,26 @@ export const cliffs: Experiment<CliffsOptions, CliffsResult> = {
   headline: cliffsHeadline,
 };
 
+export const threadsLoad: Experiment<ThreadsLoadOptions, ThreadsLoadResult> = {
+  name: 'threads-load',
+  description: 'The parallel step (40,000 circles unless --n says otherwise) against one thread with background processes spinning on the cores, the thread governor on and off (issue 22)',
+  schema: threadsLoadSchema,
+  defaultEngines: ['maxgrid:maxgrid'],
+  nodeOnly: true,
+  fixedEngines: true,
+  options(profile, o) {
+    reject('threads-load', o, ['ns', 'runs', 'dt']);
+    if (o.ns && o.ns.length !== 1) throw new RangeError(`option --n takes one value for experiment 'threads-load', got ${o.ns.join(',')}`);
+    const d = threadsLoadDefaults(profile);
+    return { ...d, n: o.ns?.[0] ?? d.n, steps: o.runs ?? d.steps, dt: o.dt ?? d.dt };
+  },
+  run: runThreadsLoad,
+  csv: threadsLoadCsv,
+  charts: () => [],
+  tables: threadsLoadTables,
+  headline: threadsLoadHeadline,
+};
+
 // The registry stores experiments of different option and result types side by side.
 // eslint-disable-next-line @typescript-eslint/no-explicit-any
 export type AnyExperiment = Experiment<any, any>;
@@ -412,6 +433,7 @@ export const EXPERIMENTS: Record<string, AnyExperiment> = {
   targets,
   'sandbox-render': sandboxRender,
   threads,
+  'threads-load': threadsLoad,
   piles,
   'shape-step-time': shapeStepTime,
   stability,

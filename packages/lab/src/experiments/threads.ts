@@ -56,8 +56,8 @@ export async function runThreads(o: ThreadsOptions, ctx: RunContext): Promise<Th
   const scene = buildScene('uniform', { n: o.n, seed: 1 });
   const worlds = counts.map(() => buildWorld(scene, { broadphase: 'maxgrid' }));
   try {
-    // minBodies 0: small test sizes measure the parallel path too.
-    for (const [i, threads] of counts.entries()) if (threads > 1) await worlds[i].startWorkers(threads, { minBodies: 0 });
+    // minBodies 0: small test sizes measure the parallel path too; adaptive off: the threads themselves are measured (threads-load measures the governor).
+    for (const [i, threads] of counts.entries()) if (threads > 1) await worlds[i].startWorkers(threads, { minBodies: 0, adaptive: false });
     for (let s = 0; s < o.warmupSteps; s++) for (const w of worlds) w.step(o.dt);
     const times = worlds.map((): number[] => []);
     for (let s = 0; s < o.steps; s++) {

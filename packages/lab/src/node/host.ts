@@ -14,6 +14,10 @@ export function nodeHost(): Host {
       const { sandboxHost } = await import('./chromium.js');
       return sandboxHost();
     },
+    async busyProcesses(count: number) {
+      const { startBusyProcesses } = await import('./busy.js');
+      return startBusyProcesses(count);
+    },
     async hostScaling() {
       const { measureHostScaling } = await import('./host-scaling.js');
       return measureHostScaling();

@@ -1,0 +1,112 @@
+/** Steps on the threads before the first try of the calling thread alone: the threaded path compiles and warms up over its first dozen steps (30 ms, then 10, 4, 1.3 at 40,000 circles). */
+const FIRST_TRY = 16;
+/** Steps between tries of the mode not in use, after a switch; four times as many after each try that loses. */
+const MIN_INTERVAL = 8;
+const MAX_INTERVAL = 1024;
+/** Recent steps of the mode in use that a try is compared with (their lower quartile). */
+const RECENT = 8;
+/**
+ * Steps in a try, judged by the quickest: the first step after a switch pays for it (workers woken
+ * from their sleep, caches refilled), and a busy machine preempts single steps at random.
+ */
+const TRIAL = 2;
+/** A try's step this many times the recent quartile ends the try at once, lost. */
+const CLEAR_LOSS = 4;
+/** When the recent quartile grows this much past what it was at the last try, the other mode is tried at once: load came back. */
+const DRIFT = 1.5;
+
+/**
+ * Whether a world with worker threads steps on them or on the calling thread alone, chosen step by
+ * step from what the steps cost. On a machine whose cores are busy with other work, a parallel
+ * step waits at each of its stages for a worker the scheduler has not run yet (40,000 circles on
+ * 2 threads of a 2-core machine under 4 busy processes: 21 ms a step, against 2.2 on one thread);
+ * spinning cannot help a thread that is not running. So the governor times every step and, now
+ * and then, runs two steps the other way: when the quicker of them beats the lower quartile of the
+ * recent steps, it switches. A try that loses makes the interval to the next four times longer (8, 32,
+ * 128, 512, then 1,024 steps), so a mode ten times slower costs about 2% of the steps' time once
+ * settled; and when the steps in use grow half as slow again as they were at the last try (load
+ * came back), the other mode is tried at once. Both ways give the same bits (the parallel step's
+ * guarantee), so switching never changes a result.
+ */
+export class ThreadGovernor {
+  /** Steps taken on the calling thread alone, and on the threads. */
+  serialSteps = 0;
+  threadedSteps = 0;
+  private onThreads = true;
+  private trying = false;
+  private trialLeft = 0;
+  private trialBest = Infinity;
+  private untilTry = FIRST_TRY;
+  private interval = MIN_INTERVAL;
+  private readonly recent = new Float64Array(RECENT);
+  private readonly sorted = new Float64Array(RECENT);
+  private recentCount = 0;
+  private recentNext = 0;
+  /** The recent quartile at the last try (or, after a switch, of the first full window); Infinity until known. */
+  private reference = Infinity;
+
+  /** Whether the next step runs on the threads. */
+  useThreads(): boolean {
+    if (!this.trying && --this.untilTry <= 0) {
+      this.trying = true;
+      this.trialLeft = TRIAL;
+      this.trialBest = Infinity;
+    }
+    return this.trying ? !this.onThreads : this.onThreads;
+  }
+
+  /** The step just taken: whether on the threads, and its time in ms. */
+  note(threaded: boolean, ms: number): void {
+    if (threaded) this.threadedSteps++;
+    else this.serialSteps++;
+    if (!this.trying) {
+      this.recent[this.recentNext] = ms;
+      this.recentNext = (this.recentNext + 1) % RECENT;
+      if (this.recentCount < RECENT) {
+        // A new mode's reference is its first full window's quartile, not one step.
+        if (++this.recentCount === RECENT && this.reference === Infinity) this.reference = this.recentQuartile();
+      } else if (this.untilTry > 1 && this.recentQuartile() > DRIFT * this.reference) this.untilTry = 1;
+      return;
+    }
+    this.trialBest = Math.min(this.trialBest, ms);
+    // A first step far slower than the recent ones is a clear loss: no second one.
+    if (--this.trialLeft > 0 && !(this.recentCount > 0 && ms > CLEAR_LOSS * this.recentQuartile())) return;
+    this.trying = false;
+    const best = this.trialBest;
+    const quartile = this.recentCount > 0 ? this.recentQuartile() : Infinity;
+    if (best < quartile) {
+      this.onThreads = threaded;
+      this.interval = MIN_INTERVAL;
+      this.recentCount = 0;
+      this.recentNext = 0;
+      this.recent[this.recentNext++] = best;
+      this.recentCount = 1;
+      this.reference = Infinity;
+    } else {
+      this.interval = Math.min(MAX_INTERVAL, 4 * this.interval);
+      // Only up while tries keep losing: steps that swing between fast and preempted (a busy
+      // machine) would otherwise move the quartile past DRIFT and bring on try after try.
+      this.reference = this.reference === Infinity ? quartile : Math.max(this.reference, quartile);
+    }
+    this.untilTry = this.interval;
+  }
+
+  /**
+   * The lower quartile of the recent steps: what a step costs when it is not preempted. On a busy
+   * machine steps swing between that and several times it, and a median jumps between the two.
+   */
+  private recentQuartile(): number {
+    const n = this.recentCount;
+    const s = this.sorted;
+    for (let k = 0; k < n; k++) {
+      const v = this.recent[k];
+      let j = k - 1;
+      while (j >= 0 && s[j] > v) {
+        s[j + 1] = s[j];
+        j--;
+      }
+      s[j + 1] = v;
+    }
+    return s[(n - 1) >> 2];
+  }
+}
