@@ -22,6 +22,8 @@ const OUTLIER_SHARE = 256;
  */
 export class ExtentFitter {
   private readonly histogramX = new Int32Array(HISTOGRAM_BINS);
+  /** keptRange's results, x then y: a returned pair would be an array allocated per call. */
+  private readonly kept = new Int32Array(4);
   private readonly histogramY = new Int32Array(HISTOGRAM_BINS);
 
   /** The box around the bodies' centres, into `out`. */
@@ -57,8 +59,13 @@ export class ExtentFitter {
       const { minX, minY, maxX, maxY } = out;
       if (count < 2 || cellsOver(minX, minY, maxX, maxY, cellSize) <= budget) return;
       this.histograms(x, y, slots, from, count, out);
-      const [x0, x1] = keptRange(this.histogramX, outliers);
-      const [y0, y1] = keptRange(this.histogramY, outliers);
+      const kept = this.kept;
+      keptRange(this.histogramX, outliers, kept, 0);
+      keptRange(this.histogramY, outliers, kept, 2);
+      const x0 = kept[0];
+      const x1 = kept[1];
+      const y0 = kept[2];
+      const y1 = kept[3];
       const wx = (maxX - minX) / HISTOGRAM_BINS;
       const wy = (maxY - minY) / HISTOGRAM_BINS;
       const nextMinX = x0 === 0 ? minX : minX + x0 * wx;
@@ -96,8 +103,8 @@ export function cellsOver(minX: number, minY: number, maxX: number, maxY: number
   return (Math.floor((maxX - minX) / cellSize) + 1) * (Math.floor((maxY - minY) / cellSize) + 1);
 }
 
-/** The first and last histogram columns once `outliers` bodies are left out from each end. */
-function keptRange(histogram: Int32Array, outliers: number): [number, number] {
+/** The first and last histogram columns once `outliers` bodies are left out from each end, into out[at], out[at + 1]. */
+function keptRange(histogram: Int32Array, outliers: number, out: Int32Array, at: number): void {
   let low = 0;
   for (let seen = 0; low < histogram.length - 1; low++) {
     seen += histogram[low];
@@ -108,5 +115,6 @@ function keptRange(histogram: Int32Array, outliers: number): [number, number] {
     seen += histogram[high];
     if (seen > outliers) break;
   }
-  return [low, high];
+  out[at] = low;
+  out[at + 1] = high;
 }

@@ -68,7 +68,12 @@ export function findStaticPairs(bodies: BodyStore, tree: StaticTree, out: PairSi
   for (let i = 0; i < slotCount; i++) {
     if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
     const pad = paddedRadius(radius[i], Math.abs(x[i]) + Math.abs(y[i]));
-    const found = tree.query(x[i] - pad, y[i] - pad, x[i] + pad, y[i] + pad);
+    const box = tree.box;
+    box[0] = x[i] - pad;
+    box[1] = y[i] - pad;
+    box[2] = x[i] + pad;
+    box[3] = y[i] + pad;
+    const found = tree.queryBox();
     const ids = tree.found;
     for (let k = 0; k < found; k++) {
       const s = ids[k];

@@ -22,7 +22,16 @@ export const WORLD = -1;
  * Keys: body slots, and shape handles (ShapeStore's, with generation; for a world shape its
  * segment handle or wall code), so that a reused slot never passes its impulses to a newcomer.
  */
+/**
+ * Where the narrow-phase leaves a pair's poses and material for `add`, `rewrite` and `cache`
+ * (ContactList.pose): in a typed array rather than as arguments, since V8 boxes each number passed
+ * to a call it does not inline, an allocation apiece, per pair and step.
+ */
+export const Pose = { ax: 0, ay: 1, ac: 2, as: 3, bx: 4, by: 5, bc: 6, bs: 7, friction: 8, restitution: 9, rolling: 10 } as const;
+
 export class ContactList {
+  /** The pair's poses, A's then B's (x, y, cosine, sine), and its friction, restitution and rolling resistance: see Pose. */
+  readonly pose = new Float64Array(11);
   /** Contacts this step: order[0, count). */
   count = 0;
   /** This step's contact slots, in canonical order. */
@@ -112,7 +121,7 @@ export class ContactList {
 
   /**
    * A new contact with its manifold, listed next; points get their anchors from the two centres
-   * of mass (ax, ay) and (bx, by), and start with no impulse. Returns its slot.
+   * of mass in `pose`, with its material, and start with no impulse. Returns its slot.
    */
   add(
     bodyA: number,
@@ -122,14 +131,8 @@ export class ContactList {
     keyA: number,
     keyB: number,
     m: Manifold,
-    ax: number,
-    ay: number,
-    bx: number,
-    by: number,
-    friction: number,
-    restitution: number,
-    rollingResistance: number,
   ): number {
+    const pose = this.pose;
     let k: number;
     if (this.freeCount > 0) k = this.freeSlots[--this.freeCount];
     else {
@@ -142,11 +145,11 @@ export class ContactList {
     this.shapeB[k] = shapeB;
     this.keyA[k] = keyA;
     this.keyB[k] = keyB;
-    this.friction[k] = friction;
-    this.restitution[k] = restitution;
-    this.rollingResistance[k] = rollingResistance;
+    this.friction[k] = pose[Pose.friction];
+    this.restitution[k] = pose[Pose.restitution];
+    this.rollingResistance[k] = pose[Pose.rolling];
     this.rollingImpulse[k] = 0;
-    this.write(k, m, ax, ay, bx, by);
+    this.write(k, m);
     for (let p = 0; p < m.pointCount; p++) {
       this.normalImpulse[2 * k + p] = 0;
       this.tangentImpulse[2 * k + p] = 0;
@@ -160,7 +163,7 @@ export class ContactList {
    * the impulses of the old point with the same feature id, others start from none; so does the
    * rolling impulse.
    */
-  rewrite(k: number, m: Manifold, ax: number, ay: number, bx: number, by: number): void {
+  rewrite(k: number, m: Manifold): void {
     const oldCount = this.pointCount[k];
     const id0 = this.id[2 * k];
     const id1 = this.id[2 * k + 1];
@@ -168,7 +171,7 @@ export class ContactList {
     const normal1 = this.normalImpulse[2 * k + 1];
     const tangent0 = this.tangentImpulse[2 * k];
     const tangent1 = this.tangentImpulse[2 * k + 1];
-    this.write(k, m, ax, ay, bx, by);
+    this.write(k, m);
     for (let p = 0; p < m.pointCount; p++) {
       const at = 2 * k + p;
       const id = m.id[p];
@@ -190,9 +193,19 @@ export class ContactList {
    * Contact k, listed last step, keeping its manifold (recycled), listed next: same normal,
    * points, ids, impulses and anchors, with separations brought up to date from how the anchors
    * moved apart along the normal since the manifold was computed, as the soft step's sub-steps
-   * do: each body turned by (dac, das) and (dbc, dbs) since, now centred at (ax, ay), (bx, by).
+   * do: each body turned by (dac, das) and (dbc, dbs) since, now centred at (ax, ay), (bx, by),
+   * all in `pose` (its cosine and sine slots holding the turns).
    */
-  refresh(k: number, ax: number, ay: number, dac: number, das: number, bx: number, by: number, dbc: number, dbs: number): void {
+  refresh(k: number): void {
+    const pose = this.pose;
+    const ax = pose[Pose.ax];
+    const ay = pose[Pose.ay];
+    const dac = pose[Pose.ac];
+    const das = pose[Pose.as];
+    const bx = pose[Pose.bx];
+    const by = pose[Pose.by];
+    const dbc = pose[Pose.bc];
+    const dbs = pose[Pose.bs];
     const n = this.pointCount[k];
     const nx = this.normalX[k];
     const ny = this.normalY[k];
@@ -224,7 +237,12 @@ export class ContactList {
   }
 
   /** Slot k's manifold: normal, points, anchors from the centres (ax, ay), (bx, by), separations, ids. */
-  private write(k: number, m: Manifold, ax: number, ay: number, bx: number, by: number): void {
+  private write(k: number, m: Manifold): void {
+    const pose = this.pose;
+    const ax = pose[Pose.ax];
+    const ay = pose[Pose.ay];
+    const bx = pose[Pose.bx];
+    const by = pose[Pose.by];
     const n = m.pointCount;
     this.pointCount[k] = n;
     this.normalX[k] = m.normalX;
@@ -247,8 +265,17 @@ export class ContactList {
     }
   }
 
-  /** Notes the poses the manifold of contact k was computed at (centres and rotations of A and B). */
-  cache(k: number, ax: number, ay: number, ac: number, as: number, bx: number, by: number, bc: number, bs: number): void {
+  /** Notes the poses the manifold of contact k was computed at (centres and rotations of A and B, in `pose`). */
+  cache(k: number): void {
+    const pose = this.pose;
+    const ax = pose[Pose.ax];
+    const ay = pose[Pose.ay];
+    const ac = pose[Pose.ac];
+    const as = pose[Pose.as];
+    const bx = pose[Pose.bx];
+    const by = pose[Pose.by];
+    const bc = pose[Pose.bc];
+    const bs = pose[Pose.bs];
     this.cacheAC[k] = ac;
     this.cacheAS[k] = as;
     this.cacheBC[k] = bc;

@@ -7,7 +7,7 @@ import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import { grownCapacity, grow } from '../util/grow.js';
 import type { StaticTree } from '../broadphase/static-tree.js';
-import { ContactList, WORLD } from './contact-list.js';
+import { ContactList, Pose, WORLD } from './contact-list.js';
 import { Manifold } from './manifold.js';
 import { WorldShape } from './world-shape.js';
 import { collide } from './dispatch.js';
@@ -150,7 +150,15 @@ export class ShapeNarrowPhase implements PairConsumer {
       const px = x[i];
       const py = y[i];
       const r = radius[i];
-      const found = searchTree ? tree.query(px - r, py - r, px + r, py + r) : 0;
+      let found = 0;
+      if (searchTree) {
+        const box = tree.box;
+        box[0] = px - r;
+        box[1] = py - r;
+        box[2] = px + r;
+        box[3] = py + r;
+        found = tree.queryBox();
+      }
       if (found > 0) {
         const stamp = ++this.epoch;
         for (let f = 0; f < found; f++) {
@@ -299,8 +307,17 @@ export class ShapeNarrowPhase implements PairConsumer {
           continue;
         }
         this.shapePairs++;
-        const a = this.shapeA.fromStore(shapes, sa, x[i], y[i], c[i], s[i]);
-        const b = this.shapeB.fromStore(shapes, sb, x[j], y[j], c[j], s[j]);
+        const pose = list.pose;
+        pose[Pose.ax] = x[i];
+        pose[Pose.ay] = y[i];
+        pose[Pose.ac] = c[i];
+        pose[Pose.as] = s[i];
+        pose[Pose.bx] = x[j];
+        pose[Pose.by] = y[j];
+        pose[Pose.bc] = c[j];
+        pose[Pose.bs] = s[j];
+        const a = this.shapeA.fromPose(shapes, sa, pose, Pose.ax);
+        const b = this.shapeB.fromPose(shapes, sb, pose, Pose.bx);
         const m = this.manifold;
         if (sensing) {
           // A sensor reports overlap (any point closer than 0) and takes no contact.
@@ -319,9 +336,12 @@ export class ShapeNarrowPhase implements PairConsumer {
         // Box2D's rule: the larger coefficient times the larger radius, a lever arm for the torque.
         const rolling = Math.max(shapes.rollingResistance[sa], shapes.rollingResistance[sb]) * Math.max(shapes.radius[sa], shapes.radius[sb]);
         let k = q;
-        if (q >= 0) list.rewrite(q, m, x[i], y[i], x[j], y[j]);
-        else k = list.add(i, j, sa, sb, keyA, keyB, m, x[i], y[i], x[j], y[j], friction, restitution, rolling);
-        list.cache(k, x[i], y[i], c[i], s[i], x[j], y[j], c[j], s[j]);
+        pose[Pose.friction] = friction;
+        pose[Pose.restitution] = restitution;
+        pose[Pose.rolling] = rolling;
+        if (q >= 0) list.rewrite(q, m);
+        else k = list.add(i, j, sa, sb, keyA, keyB, m);
+        list.cache(k);
       }
     }
     if (touching) {
@@ -360,7 +380,16 @@ export class ShapeNarrowPhase implements PairConsumer {
         continue;
       }
       this.shapePairs++;
-      const a = this.shapeA.fromStore(shapes, sa, x[i], y[i], c[i], s[i]);
+      const pose = list.pose;
+      pose[Pose.ax] = x[i];
+      pose[Pose.ay] = y[i];
+      pose[Pose.ac] = c[i];
+      pose[Pose.as] = s[i];
+      pose[Pose.bx] = 0;
+      pose[Pose.by] = 0;
+      pose[Pose.bc] = 1;
+      pose[Pose.bs] = 0;
+      const a = this.shapeA.fromPose(shapes, sa, pose, Pose.ax);
       const m = this.manifold;
       collide(a, b, margin, slop, m);
       if (m.pointCount === 0) continue;
@@ -368,9 +397,12 @@ export class ShapeNarrowPhase implements PairConsumer {
       const restitution = Math.max(shapes.restitution[sa], otherRestitution);
       const rolling = shapes.rollingResistance[sa] * Math.max(shapes.radius[sa], b.radius);
       let k = q;
-      if (q >= 0) list.rewrite(q, m, x[i], y[i], 0, 0);
-      else k = list.add(i, WORLD, sa, entry, keyA, keyB, m, x[i], y[i], 0, 0, friction, restitution, rolling);
-      list.cache(k, x[i], y[i], c[i], s[i], 0, 0, 1, 0);
+      pose[Pose.friction] = friction;
+      pose[Pose.restitution] = restitution;
+      pose[Pose.rolling] = rolling;
+      if (q >= 0) list.rewrite(q, m);
+      else k = list.add(i, WORLD, sa, entry, keyA, keyB, m);
+      list.cache(k);
     }
     return p;
   }
@@ -475,7 +507,16 @@ export class ShapeNarrowPhase implements PairConsumer {
     const das = as * list.cacheAC[q] - ac * list.cacheAS[q];
     const dbc = bc * list.cacheBC[q] + bs * list.cacheBS[q];
     const dbs = bs * list.cacheBC[q] - bc * list.cacheBS[q];
-    list.refresh(q, bodies.x[i], bodies.y[i], dac, das, j === WORLD ? 0 : bodies.x[j], j === WORLD ? 0 : bodies.y[j], dbc, dbs);
+    const pose = list.pose;
+    pose[Pose.ax] = bodies.x[i];
+    pose[Pose.ay] = bodies.y[i];
+    pose[Pose.ac] = dac;
+    pose[Pose.as] = das;
+    pose[Pose.bx] = j === WORLD ? 0 : bodies.x[j];
+    pose[Pose.by] = j === WORLD ? 0 : bodies.y[j];
+    pose[Pose.bc] = dbc;
+    pose[Pose.bs] = dbs;
+    list.refresh(q);
     this.recycled++;
   }
 }

@@ -9,6 +9,8 @@ import { SHAPE_STRIDE, SHAPE_VERTICES, ShapeField, VERTEX } from '../store/shape
  * stores the shape: a body's shape, a static segment, or a wall of the world's box.
  * Two of these are reused by the narrow-phase: filling one allocates nothing.
  */
+const POSE = new Float64Array(4);
+
 export class WorldShape {
   kind: ShapeKindCode = ShapeKind.circle;
   count = 0;
@@ -20,6 +22,22 @@ export class WorldShape {
 
   /** Shape `slot` of a body whose centre of mass is at (px, py), turned by (c, s). */
   fromStore(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number): this {
+    POSE[0] = px;
+    POSE[1] = py;
+    POSE[2] = c;
+    POSE[3] = s;
+    return this.fromPose(shapes, slot, POSE, 0);
+  }
+
+  /**
+   * `fromStore` with the pose read from pose[at..at+3] (x, y, cosine, sine): for the narrow-phase's
+   * loop, since V8 boxes each number passed to a call it does not inline, an allocation apiece.
+   */
+  fromPose(shapes: ShapeStore, slot: number, pose: Float64Array, at: number): this {
+    const px = pose[at];
+    const py = pose[at + 1];
+    const c = pose[at + 2];
+    const s = pose[at + 3];
     const g = shapes.record;
     const base = slot * SHAPE_STRIDE;
     const n = g[base + ShapeField.count];

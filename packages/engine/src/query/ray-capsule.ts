@@ -1,7 +1,7 @@
 import { rayCircle } from './ray-circle.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
 
-const closest = { x: 0, y: 0 };
+const closest = new Float64Array(2);
 
 /**
  * Where the segment p(t) = (x1, y1) + t (dx, dy), t in [0, 1], first enters the capsule of radius
@@ -20,7 +20,7 @@ export function rayCapsule(
   r: number,
 ): number {
   closestOnSegment(x1, y1, ax, ay, bx, by, closest);
-  if ((x1 - closest.x) ** 2 + (y1 - closest.y) ** 2 <= r * r) return -1;
+  if ((x1 - closest[0]) ** 2 + (y1 - closest[1]) ** 2 <= r * r) return -1;
   let best = Infinity;
   const ta = rayCircle(x1, y1, dx, dy, ax, ay, r);
   if (ta >= 0) best = ta;

@@ -123,7 +123,12 @@ export class ContinuousShapes {
         const maxY = Math.max(sweep.y0, sweep.y1) + reach;
         let best = 1;
         this.hitShape = -1;
-        const found = tree.query(minX, minY, maxX, maxY);
+        const box = tree.box;
+        box[0] = minX;
+        box[1] = minY;
+        box[2] = maxX;
+        box[3] = maxY;
+        const found = tree.queryBox();
         for (let f = 0; f < found; f++) {
           const entry = tree.found[f];
           let restitution: number;

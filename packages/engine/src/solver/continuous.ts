@@ -12,7 +12,7 @@ import { COORD_PAD, RADIUS_PAD } from '../broadphase/fat-bounds.js';
 import { SEGMENT_ID, type StaticIndex } from '../broadphase/static-pairs.js';
 
 const MAX_BOUNCES = 4;
-const closest = { x: 0, y: 0 };
+const closest = new Float64Array(2);
 
 /**
  * Time of impact with a circle of radius rr, for sweeping: unlike a ray query, a start on or
@@ -28,8 +28,8 @@ function sweepCircle(fromX: number, fromY: number, pathX: number, pathY: number,
 
 function sweepCapsule(fromX: number, fromY: number, pathX: number, pathY: number, ax: number, ay: number, bx: number, by: number, rr: number): number {
   closestOnSegment(fromX, fromY, ax, ay, bx, by, closest);
-  const fx = fromX - closest.x;
-  const fy = fromY - closest.y;
+  const fx = fromX - closest[0];
+  const fy = fromY - closest[1];
   if (fx * fx + fy * fy <= rr * rr) return fx * pathX + fy * pathY < 0 ? 0 : -1;
   return rayCapsule(fromX, fromY, pathX, pathY, ax, ay, bx, by, rr);
 }
@@ -172,7 +172,12 @@ export class ContinuousCollision {
       // round-off in them never drops a shape the exact sweep below would hit: extra ones only miss.
       const reach = r * (1 + RADIUS_PAD) + (Math.abs(fromX) + Math.abs(fromY) + Math.abs(pathX) + Math.abs(pathY) + r) * COORD_PAD;
       const tree = this.tree!;
-      const found = tree.query(Math.min(fromX, toX) - reach, Math.min(fromY, toY) - reach, Math.max(fromX, toX) + reach, Math.max(fromY, toY) + reach);
+      const query = tree.box;
+      query[0] = Math.min(fromX, toX) - reach;
+      query[1] = Math.min(fromY, toY) - reach;
+      query[2] = Math.max(fromX, toX) + reach;
+      query[3] = Math.max(fromY, toY) + reach;
+      const found = tree.queryBox();
       const ids = tree.found;
       for (let k = 0; k < found; k++) {
         const id = ids[k];
@@ -221,8 +226,8 @@ export class ContinuousCollision {
         e = mixRestitution(restitution[i], restitution[hitStatic]);
       } else {
         closestOnSegment(hitX, hitY, segments.ax[hitSegment], segments.ay[hitSegment], segments.bx[hitSegment], segments.by[hitSegment], closest);
-        nx = hitX - closest.x;
-        ny = hitY - closest.y;
+        nx = hitX - closest[0];
+        ny = hitY - closest[1];
         e = mixRestitution(restitution[i], segments.restitution[hitSegment]);
       }
       const length = Math.sqrt(nx * nx + ny * ny);

@@ -12,9 +12,9 @@ import { touchSleeper } from './sleep.js';
 /** Static contacts are keyed by body, then by this: a box wall's side (0-3), or FIRST_SEGMENT + the segment's slot. */
 const FIRST_SEGMENT = 4;
 
-const closest = { x: 0, y: 0 };
+const closest = new Float64Array(2);
 /** The unit normal from a segment's closest point towards a body (segmentNormal's result). */
-const normal = { x: 0, y: 0 };
+const normal = new Float64Array(2);
 
 /**
  * The solve for `solverIterations` above 1: sequential impulses as in Box2D v2, for piles and
@@ -150,13 +150,18 @@ export class IterativeSolver {
         else if (py >= box.height - r - slop) this.addStatic(i, 3, 0, -1, 0);
       }
       if (!withSegments) continue;
-      const found = grid.query(segments, px - r, py - r, px + r, py + r);
+      const near = grid.box;
+      near[0] = px - r;
+      near[1] = py - r;
+      near[2] = px + r;
+      near[3] = py + r;
+      const found = grid.queryBox(segments);
       for (let k = 0; k < found; k++) {
         const s = grid.found[k];
         if ((category[i] & segments.mask[s]) === 0 || (segments.category[s] & mask[i]) === 0) continue;
         closestOnSegment(px, py, segments.ax[s], segments.ay[s], segments.bx[s], segments.by[s], closest);
-        const dx = px - closest.x;
-        const dy = py - closest.y;
+        const dx = px - closest[0];
+        const dy = py - closest[1];
         const touch = r + segments.thickness[s];
         const distSq = dx * dx + dy * dy;
         if (distSq >= touch * touch) continue;
@@ -164,10 +169,10 @@ export class IterativeSolver {
         events?.noteSegmentTouch(i, s);
         const dist = Math.sqrt(distSq);
         segmentNormal(dx, dy, dist, segments.ax[s], segments.ay[s], segments.bx[s], segments.by[s], normal);
-        const vn = vx[i] * normal.x + vy[i] * normal.y;
+        const vn = vx[i] * normal[0] + vy[i] * normal[1];
         if (vn < 0 && -vn >= settings.hitThreshold && events) events.recordSegmentHit(bodies, i, segments, s, -vn);
         const bounce = vn < 0 && -vn >= settings.restitutionThreshold ? -mixRestitution(restitution[i], segments.restitution[s]) * vn : 0;
-        this.addStatic(i, FIRST_SEGMENT + s, normal.x, normal.y, bounce);
+        this.addStatic(i, FIRST_SEGMENT + s, normal[0], normal[1], bounce);
       }
     }
     return segmentContacts;
@@ -317,14 +322,14 @@ export class IterativeSolver {
       }
       const s = key - FIRST_SEGMENT;
       closestOnSegment(x[i], y[i], segments.ax[s], segments.ay[s], segments.bx[s], segments.by[s], closest);
-      const dx = x[i] - closest.x;
-      const dy = y[i] - closest.y;
+      const dx = x[i] - closest[0];
+      const dy = y[i] - closest[1];
       const dist = Math.sqrt(dx * dx + dy * dy);
       const excess = r + segments.thickness[s] - dist - contactSlop;
       if (!(excess > 0)) continue;
       segmentNormal(dx, dy, dist, segments.ax[s], segments.ay[s], segments.bx[s], segments.by[s], normal);
-      x[i] += excess * positionCorrection * normal.x;
-      y[i] += excess * positionCorrection * normal.y;
+      x[i] += excess * positionCorrection * normal[0];
+      y[i] += excess * positionCorrection * normal[1];
     }
   }
 

@@ -6,8 +6,8 @@ import { closestOnSegment, segmentNormal } from '../narrowphase/circle-segment.j
 import { mixRestitution } from './restitution.js';
 import type { SolverSettings } from './contact-solver.js';
 
-const closest = { x: 0, y: 0 };
-const normal = { x: 0, y: 0 };
+const closest = new Float64Array(2);
+const normal = new Float64Array(2);
 
 /**
  * Dynamic circles against static segments, after the circle-circle contacts. Bodies in slot order,
@@ -34,7 +34,13 @@ export function solveSegmentContacts(
   for (let i = 0; i < slotCount; i++) {
     if (type[i] !== TypeCode.dynamic || asleep[i]) continue;
     const r = radius[i];
-    const found = grid.query(segments, x[i] - r, y[i] - r, x[i] + r, y[i] + r);
+    // The box in the grid's typed array: see SegmentGrid.queryBox.
+    const box = grid.box;
+    box[0] = x[i] - r;
+    box[1] = y[i] - r;
+    box[2] = x[i] + r;
+    box[3] = y[i] + r;
+    const found = grid.queryBox(segments);
     for (let k = 0; k < found; k++) {
       const s = grid.found[k];
       if ((category[i] & segments.mask[s]) === 0 || (segments.category[s] & mask[i]) === 0) continue;
@@ -43,8 +49,8 @@ export function solveSegmentContacts(
       const bx = segments.bx[s];
       const by = segments.by[s];
       closestOnSegment(x[i], y[i], ax, ay, bx, by, closest);
-      const dx = x[i] - closest.x;
-      const dy = y[i] - closest.y;
+      const dx = x[i] - closest[0];
+      const dy = y[i] - closest[1];
       const reach = r + segments.thickness[s];
       const distSq = dx * dx + dy * dy;
       if (distSq >= reach * reach) continue;
@@ -52,8 +58,8 @@ export function solveSegmentContacts(
       events?.noteSegmentTouch(i, s);
       const dist = Math.sqrt(distSq);
       segmentNormal(dx, dy, dist, ax, ay, bx, by, normal);
-      const nx = normal.x;
-      const ny = normal.y;
+      const nx = normal[0];
+      const ny = normal[1];
       const vn = vx[i] * nx + vy[i] * ny;
       if (vn < 0) {
         if (events !== null && -vn >= hitThreshold) events.recordSegmentHit(bodies, i, segments, s, -vn);
