@@ -7,6 +7,7 @@ export type { ContactEventsView } from './store/contact-events.js';
 export { BoxWall } from './solver/box-walls.js';
 export type { WorldOptions, CircleOptions, SegmentOptions, Vector } from './options.js';
 export type { StepStats } from './step/stats.js';
+export type { WorldBackend, KernelUse } from './backend.js';
 export type { BodyType } from './store/body-types.js';
 export { BODY_TYPES, TypeCode as BodyTypeCode } from './store/body-types.js';
 export type { BroadPhaseName } from './broadphase/registry.js';

@@ -6,6 +6,10 @@ import type { BroadPhaseName } from './broadphase/registry.js';
 import { BROADPHASES } from './broadphase/registry.js';
 import { MaxGridBroadPhase, type GridGeometry } from './broadphase/maxgrid.js';
 import { AutoBroadPhase } from './broadphase/auto.js';
+import { HierarchicalGridBroadPhase } from './broadphase/hgrid.js';
+import { PersistentSapBroadPhase } from './broadphase/sap-persistent.js';
+import { webAssembly } from './util/wasm.js';
+import { gridKernelUse, bodyKernelUse, softStepKernelUse, type WorldBackend } from './backend.js';
 import { ContactEvents, type ContactEventsView } from './store/contact-events.js';
 import { Queries, type RayHit } from './query/queries.js';
 import { Disturbances } from './solver/disturbances.js';
@@ -159,6 +163,27 @@ export class World {
   get route(): { route: 'circles' | 'shapes'; solver: 'elastic' | 'soft' } {
     if (!this.shapes.engaged) return { route: 'circles', solver: 'elastic' };
     return { route: 'shapes', solver: this.shapeRoute!.settings.solver };
+  }
+
+  /**
+   * What steps this world: its route, its threads, and whether each WebAssembly kernel runs, with
+   * why or why not (no WebAssembly in the runtime, a kernel switched off, a broad-phase without a
+   * grid). The kernels change speed only, never a result: the TypeScript loops give the same bits.
+   */
+  get backend(): WorldBackend {
+    const route = this.route;
+    const broad = this.pipeline.broadPhase;
+    const grid = broad instanceof AutoBroadPhase ? !(broad.current instanceof PersistentSapBroadPhase) : broad instanceof MaxGridBroadPhase || broad instanceof HierarchicalGridBroadPhase;
+    const name = broad instanceof AutoBroadPhase ? `auto (now ${broad.current.name})` : broad.name;
+    return {
+      route: route.route,
+      threads: this.workerCount,
+      lastStepThreads: this.pipeline.stats.threads,
+      webAssembly: webAssembly() !== null,
+      gridKernel: gridKernelUse(name, grid),
+      bodyKernel: bodyKernelUse(this.bodies.kernel !== null),
+      softStepKernel: softStepKernelUse(route.route, route.solver, route.route === 'shapes' && route.solver === 'soft' && this.shapeRoute!.soft.usesKernel),
+    };
   }
 
   get gravity(): Vector {

@@ -34,6 +34,10 @@ export function setSoftStepKernelEnabled(on: boolean): void {
   enabled = on;
 }
 
+export function softStepKernelEnabled(): boolean {
+  return enabled;
+}
+
 export class SoftStepKernel {
   states: Float64Array<ArrayBuffer>;
   constraints: Float64Array<ArrayBuffer>;

@@ -134,6 +134,11 @@ const MAX_ROTATION = 0.25 * Math.PI;
  */
 export class SoftStep {
   private readonly kernel = SoftStepKernel.create();
+
+  /** Whether the sub-steps run in the WebAssembly kernel. */
+  get usesKernel(): boolean {
+    return this.kernel !== null;
+  }
   /** Solver index per body slot (1..n), 0 for bodies that do not move in the solve. */
   private index = new Int32Array(0);
   private awake = new Int32Array(0);
