@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { execFileSync } from 'node:child_process';
-import { existsSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
+import { posix } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 const root = fileURLToPath(new URL('../../../', import.meta.url));
@@ -18,5 +19,25 @@ describe('package exports', () => {
     const out = execFileSync(process.execPath, ['--input-type=module', '-e', script], { cwd: root }).toString();
     expect(JSON.parse(out)).toEqual({ names: ['naive', 'sap', 'sap-xy', 'sap-persistent', 'maxgrid', 'hgrid', 'auto'], bodies: 50, isWorld: true });
     expect(existsSync(`${root}packages/engine/dist/index.d.ts`)).toBe(true);
+  });
+
+  it('npm pack ships the built JavaScript, its types, a README and a LICENSE, and nothing else', () => {
+    const engine = `${root}packages/engine`;
+    const [pack] = JSON.parse(execFileSync('npm', ['pack', '--dry-run', '--json', '--ignore-scripts'], { cwd: engine, stdio: ['ignore', 'pipe', 'ignore'] }).toString()) as [{ files: { path: string }[]; size: number }];
+    const paths = pack.files.map((f) => f.path);
+    for (const needed of ['README.md', 'LICENSE', 'package.json', 'dist/index.js', 'dist/index.d.ts', 'dist/parallel/worker-entry.js']) expect(paths).toContain(needed);
+    expect(paths.filter((p) => !/^dist\/.*\.(js|d\.ts)$/.test(p) && !['README.md', 'LICENSE', 'package.json'].includes(p))).toEqual([]);
+    // Every module the built entry reaches is shipped: relative imports of each shipped file resolve inside the pack.
+    const shipped = new Set(paths);
+    for (const file of paths.filter((p) => p.endsWith('.js'))) {
+      const text = readFileSync(`${engine}/${file}`, 'utf8');
+      for (const [, spec] of text.matchAll(/(?:from|import)\s*\(?\s*['"](\.[^'"]+)['"]/g)) {
+        expect(shipped.has(posix.normalize(posix.join(posix.dirname(file), spec))), `${file} imports ${spec}`).toBe(true);
+      }
+    }
+    const manifest = JSON.parse(readFileSync(`${engine}/package.json`, 'utf8')) as { exports: Record<string, Record<string, string>>; engines: { node: string }; type: string };
+    expect(Object.keys(manifest.exports['.'])[0]).toBe('types');
+    expect(manifest.type).toBe('module');
+    expect(manifest.engines.node).toMatch(/>=20\.19/);
   });
 });
