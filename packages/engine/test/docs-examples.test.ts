@@ -25,7 +25,7 @@ function examples(file: string): { names: string[]; body: string; blocks: number
 const AsyncFunction = Object.getPrototypeOf(async () => {}).constructor as new (...args: string[]) => (...values: unknown[]) => Promise<void>;
 
 describe('the examples in the docs run against the engine as written', () => {
-  it.each(['README.md', 'docs/engine.md'])('%s', async (file) => {
+  it.each(['README.md', 'docs/engine.md', 'packages/engine/README.md'])('%s', async (file) => {
     const { names, body, blocks } = examples(file);
     expect(blocks).toBeGreaterThan(0);
     expect(body).not.toMatch(/^import /m);
