@@ -388,7 +388,7 @@ describe('thread governor (a machine whose cores are busy elsewhere)', () => {
 
   it('leaves threads ten times slower than one within a few steps, and tries them again ever more rarely', () => {
     const { onThreads, total } = drive(4000, () => 20, () => 2, 1000);
-    // The first try of one thread comes at step 16; afterwards a try of two steps after 8, 32, 128, 512, then every 1,024 steps.
+    // The first try of one thread comes at step 16; afterwards a try (its first step a clear loss here) after 8, 128, then every 1,024 steps.
     expect(onThreads[0]).toBeLessThan(30);
     expect(onThreads[3]).toBeLessThanOrEqual(2);
     // Within 1.1x of stepping on one thread throughout.
@@ -398,7 +398,7 @@ describe('thread governor (a machine whose cores are busy elsewhere)', () => {
   it('keeps threads that are faster, trying one thread ever more rarely', () => {
     const { onThreads, total } = drive(4000, () => 1, () => 1.6, 1000);
     expect(onThreads[0]).toBeGreaterThan(985);
-    expect(onThreads[3]).toBeGreaterThanOrEqual(998);
+    expect(onThreads[3]).toBeGreaterThanOrEqual(997);
     expect(total).toBeLessThan(1.01 * 4000);
   });
 

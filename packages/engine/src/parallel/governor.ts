@@ -6,10 +6,11 @@ const MAX_INTERVAL = 1024;
 /** Recent steps of the mode in use that a try is compared with (their lower quartile). */
 const RECENT = 8;
 /**
- * Steps in a try, judged by the quickest: the first step after a switch pays for it (workers woken
- * from their sleep, caches refilled), and a busy machine preempts single steps at random.
+ * Steps in a try. The first pays for the switch (workers woken from their sleep, caches refilled)
+ * and only ends the try if it is a clear loss; the others are judged by the slower of them, so
+ * that one lucky step on a busy machine (threads that happened to run together) does not switch.
  */
-const TRIAL = 2;
+const TRIAL = 3;
 /** A try's step this many times the recent quartile ends the try at once, lost. */
 const CLEAR_LOSS = 4;
 /** When the recent quartile grows this much past what it was at the last try, the other mode is tried at once: load came back. */
@@ -21,12 +22,13 @@ const DRIFT = 1.5;
  * step waits at each of its stages for a worker the scheduler has not run yet (40,000 circles on
  * 2 threads of a 2-core machine under 4 busy processes: 21 ms a step, against 2.2 on one thread);
  * spinning cannot help a thread that is not running. So the governor times every step and, now
- * and then, runs two steps the other way: when the quicker of them beats the lower quartile of the
- * recent steps, it switches. A try that loses makes the interval to the next four times longer (8, 32,
- * 128, 512, then 1,024 steps), so a mode ten times slower costs about 2% of the steps' time once
- * settled; and when the steps in use grow half as slow again as they were at the last try (load
- * came back), the other mode is tried at once. Both ways give the same bits (the parallel step's
- * guarantee), so switching never changes a result.
+ * and then, runs three steps the other way: when the slower of the last two beats the lower
+ * quartile of the recent steps, it switches. A try that loses makes the interval to the next four
+ * times longer (8, 32, 128, 512, then 1,024 steps), sixteen times after a clear loss (a first
+ * step more than four times the recent ones, which ends the try), so a mode ten times slower
+ * costs about 1% of the steps' time once settled; and when the steps in use grow half as slow
+ * again as they were at the last try (load came back), the other mode is tried at once. Both ways
+ * give the same bits (the parallel step's guarantee), so switching never changes a result.
  */
 export class ThreadGovernor {
   /** Steps taken on the calling thread alone, and on the threads. */
@@ -35,7 +37,8 @@ export class ThreadGovernor {
   private onThreads = true;
   private trying = false;
   private trialLeft = 0;
-  private trialBest = Infinity;
+  /** The slowest of the try's steps after its first. */
+  private trialWorst = 0;
   private untilTry = FIRST_TRY;
   private interval = MIN_INTERVAL;
   private readonly recent = new Float64Array(RECENT);
@@ -50,7 +53,7 @@ export class ThreadGovernor {
     if (!this.trying && --this.untilTry <= 0) {
       this.trying = true;
       this.trialLeft = TRIAL;
-      this.trialBest = Infinity;
+      this.trialWorst = 0;
     }
     return this.trying ? !this.onThreads : this.onThreads;
   }
@@ -68,11 +71,13 @@ export class ThreadGovernor {
       } else if (this.untilTry > 1 && this.recentQuartile() > DRIFT * this.reference) this.untilTry = 1;
       return;
     }
-    this.trialBest = Math.min(this.trialBest, ms);
-    // A first step far slower than the recent ones is a clear loss: no second one.
-    if (--this.trialLeft > 0 && !(this.recentCount > 0 && ms > CLEAR_LOSS * this.recentQuartile())) return;
+    const first = this.trialLeft === TRIAL;
+    if (!first) this.trialWorst = Math.max(this.trialWorst, ms);
+    // A first step far slower than the recent ones is a clear loss: no more of the try.
+    const clear = first && this.recentCount > 0 && ms > CLEAR_LOSS * this.recentQuartile();
+    if (--this.trialLeft > 0 && !clear) return;
     this.trying = false;
-    const best = this.trialBest;
+    const best = clear ? Infinity : this.trialWorst;
     const quartile = this.recentCount > 0 ? this.recentQuartile() : Infinity;
     if (best < quartile) {
       this.onThreads = threaded;
@@ -83,7 +88,8 @@ export class ThreadGovernor {
       this.recentCount = 1;
       this.reference = Infinity;
     } else {
-      this.interval = Math.min(MAX_INTERVAL, 4 * this.interval);
+      // A clear loss (threads preempted on a busy machine cost tens of times a step) waits longer.
+      this.interval = Math.min(MAX_INTERVAL, (clear ? 16 : 4) * this.interval);
       // Only up while tries keep losing: steps that swing between fast and preempted (a busy
       // machine) would otherwise move the quartile past DRIFT and bring on try after try.
       this.reference = this.reference === Infinity ? quartile : Math.max(this.reference, quartile);
