@@ -38,17 +38,7 @@ export class StaticIndex {
       const pad = paddedRadius(radius[s], Math.abs(x[s]) + Math.abs(y[s]));
       tree.add(s, x[s] - pad, y[s] - pad, x[s] + pad, y[s] + pad);
     }
-    for (let g = 0; g < segments.slotCount; g++) {
-      if (!segments.live[g]) continue;
-      const t = paddedRadius(segments.thickness[g], Math.abs(segments.ax[g]) + Math.abs(segments.ay[g]) + Math.abs(segments.bx[g]) + Math.abs(segments.by[g]));
-      tree.add(
-        SEGMENT_ID + g,
-        Math.min(segments.ax[g], segments.bx[g]) - t,
-        Math.min(segments.ay[g], segments.by[g]) - t,
-        Math.max(segments.ax[g], segments.bx[g]) + t,
-        Math.max(segments.ay[g], segments.by[g]) + t,
-      );
-    }
+    tree.addSegments(segments, SEGMENT_ID, true);
     tree.finish();
   }
 }

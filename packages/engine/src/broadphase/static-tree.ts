@@ -1,4 +1,6 @@
 import { grownCapacity, grow } from '../util/grow.js';
+import type { SegmentStore } from '../store/segment-store.js';
+import { paddedRadius } from './fat-bounds.js';
 
 /** Children per node of the tree. */
 const NODE_SIZE = 8;
@@ -49,6 +51,20 @@ export class StaticTree {
     this.boxes[4 * k + 1] = minY;
     this.boxes[4 * k + 2] = maxX;
     this.boxes[4 * k + 3] = maxY;
+  }
+
+  /**
+   * Adds each live segment's capsule box under `firstId` + its slot; `padded` grows the thickness
+   * as the broad-phases pad a circle (fat-bounds.ts paddedRadius), for the circle route, whose
+   * contacts must be found by every broad-phase alike.
+   */
+  addSegments(segments: SegmentStore, firstId: number, padded: boolean): void {
+    const { ax, ay, bx, by, thickness, live } = segments;
+    for (let g = 0; g < segments.slotCount; g++) {
+      if (!live[g]) continue;
+      const t = padded ? paddedRadius(thickness[g], Math.abs(ax[g]) + Math.abs(ay[g]) + Math.abs(bx[g]) + Math.abs(by[g])) : thickness[g];
+      this.add(firstId + g, Math.min(ax[g], bx[g]) - t, Math.min(ay[g], by[g]) - t, Math.max(ax[g], bx[g]) + t, Math.max(ay[g], by[g]) + t);
+    }
   }
 
   /** Packs the entries added since `clear` into the tree. */

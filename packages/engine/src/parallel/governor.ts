@@ -25,10 +25,11 @@ const DRIFT = 1.5;
  * and then, runs three steps the other way: when the slower of the last two beats the lower
  * quartile of the recent steps, it switches. A try that loses makes the interval to the next four
  * times longer (8, 32, 128, 512, then 1,024 steps), sixteen times after a clear loss (a first
- * step more than four times the recent ones, which ends the try), so a mode ten times slower
- * costs about 1% of the steps' time once settled; and when the steps in use grow half as slow
- * again as they were at the last try (load came back), the other mode is tried at once. Both ways
- * give the same bits (the parallel step's guarantee), so switching never changes a result.
+ * step more than four times the recent ones, which ends the try); by that schedule a mode ten
+ * times slower, settled, costs one step in 1,024 at ten times: about 1% of the steps' time. When
+ * the steps in use grow half as slow again as they were at the last try (load came back), the
+ * other mode is tried at once. Both ways give the same bits (the parallel step's guarantee), so
+ * switching never changes a result.
  */
 export class ThreadGovernor {
   /** Steps taken on the calling thread alone, and on the threads. */

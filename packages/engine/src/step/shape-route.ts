@@ -168,17 +168,7 @@ export class ShapeRoute {
         tree.add(s, bounds[0], bounds[1], bounds[2], bounds[3]);
       }
     }
-    for (let g = 0; g < segments.slotCount; g++) {
-      if (!segments.live[g]) continue;
-      const t = segments.thickness[g];
-      tree.add(
-        SEGMENT_ENTRY + g,
-        Math.min(segments.ax[g], segments.bx[g]) - t,
-        Math.min(segments.ay[g], segments.by[g]) - t,
-        Math.max(segments.ax[g], segments.bx[g]) + t,
-        Math.max(segments.ay[g], segments.by[g]) + t,
-      );
-    }
+    tree.addSegments(segments, SEGMENT_ENTRY, false);
     tree.finish();
   }
 
