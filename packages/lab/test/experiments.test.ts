@@ -192,8 +192,10 @@ describe('cliffs', () => {
       if (CLIFF_SCENES[scene].build({ n: 10 }).fixed === null) expect(naive.pairTestsPerBody).toBeCloseTo((naive.bodies - 1) / 2, 6);
     }
     for (const v of cliffsVerdicts(result)) {
-      expect(v.ratio).not.toBeNull();
-      expect(v.ratio!).toBeGreaterThanOrEqual(1);
+      const rows = result.rows.filter((r) => r.scene === v.scene);
+      const fastest = Math.min(...rows.map((r) => r.ms.median));
+      expect(v.best.ms.median).toBe(fastest);
+      expect(v.ratio).toBe(rows.find((r) => r.engine === 'maxgrid:auto')!.ms.median / fastest);
     }
     expectPublishable('cliffs', result);
     expect(cliffs.headline(result)[0]).toMatch(/within .*× of its fastest/);

@@ -44,3 +44,35 @@ export async function openPage(browser: Browser, path = '/'): Promise<{ page: Pa
   await page.goto(sandboxUrl(path), { waitUntil: 'load' });
   return { page, errors };
 }
+
+/** A number the monitor shows, by its element id (`#stat-<id>`), digits only. */
+export async function stat(page: Page, id: string): Promise<number> {
+  const text = await page.locator(`#stat-${id}`).innerText();
+  return Number(text.replace(/[^\d.-]/g, ''));
+}
+
+/** Pixels of the stage's screenshot that are clearly coloured (bodies), not grey or black. */
+export async function colourfulPixels(page: Page): Promise<number> {
+  const png = await page.locator('#stage').screenshot();
+  return page.evaluate(async (b64) => {
+    const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+    const ctx = canvas.getContext('2d') as OffscreenCanvasRenderingContext2D;
+    ctx.drawImage(bitmap, 0, 0);
+    const d = ctx.getImageData(0, 0, bitmap.width, bitmap.height).data;
+    let count = 0;
+    for (let i = 0; i < d.length; i += 4) if (Math.max(d[i], d[i + 1], d[i + 2]) - Math.min(d[i], d[i + 1], d[i + 2]) > 60) count++;
+    return count;
+  }, png.toString('base64'));
+}
+
+/** Painted pixels on the overlay canvas (grid lines, AABBs, contact points); it is transparent elsewhere. */
+export async function overlayPixels(page: Page): Promise<number> {
+  return page.evaluate(() => {
+    const c = document.getElementById('overlay') as HTMLCanvasElement;
+    const d = (c.getContext('2d', { willReadFrequently: true }) as CanvasRenderingContext2D).getImageData(0, 0, c.width, c.height).data;
+    let count = 0;
+    for (let i = 3; i < d.length; i += 4) if (d[i] > 0) count++;
+    return count;
+  });
+}

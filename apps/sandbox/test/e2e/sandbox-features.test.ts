@@ -1,7 +1,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
 import { join } from 'node:path';
-import { ARTIFACTS, launchBrowser, openPage } from './browser.js';
+import { ARTIFACTS, launchBrowser, openPage, stat } from './browser.js';
 
 // The engine's features in the 2D sandbox (issue 6): scenes with static shapes, the world-option
 // toggles, the query tools. Read like a user reads the page: labels, shown counts and pixels.
@@ -30,10 +30,6 @@ afterAll(async () => {
   await browser?.close();
 });
 
-async function stat(page: Page, id: string): Promise<number> {
-  const text = await page.locator(`#stat-${id}`).innerText();
-  return Number(text.replace(/[^\d.-]/g, ''));
-}
 
 async function stepsPass(page: Page, more: number): Promise<void> {
   await page.waitForFunction(

@@ -1,7 +1,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
 import { join } from 'node:path';
-import { ARTIFACTS, launchBrowser, openPage } from './browser.js';
+import { ARTIFACTS, colourfulPixels, launchBrowser, openPage, overlayPixels, stat } from './browser.js';
 
 // The sandbox with shapes: every scene draws without console errors in both renderers, shapes are
 // drawn turned, the drag spring pulls a box out of a stack, clicks add shapes, and the contact
@@ -35,39 +35,12 @@ afterAll(async () => {
   await browser?.close();
 });
 
-async function stat(page: Page, id: string): Promise<number> {
-  const text = await page.locator(`#stat-${id}`).innerText();
-  return Number(text.replace(/[^\d.-]/g, ''));
-}
 
 async function stepsPass(page: Page, target: number): Promise<void> {
   await page.waitForFunction((t) => Number(document.getElementById('stat-steps')?.textContent?.replace(/\D/g, '')) >= t, target, { timeout: 30_000 });
 }
 
-/** Pixels of the stage screenshot whose colour is neither the page's nor the box's grey: drawn bodies. */
-async function colourfulPixels(page: Page): Promise<number> {
-  const png = await page.locator('#stage').screenshot();
-  return page.evaluate(async (b64) => {
-    const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
-    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-    const ctx = canvas.getContext('2d') as OffscreenCanvasRenderingContext2D;
-    ctx.drawImage(bitmap, 0, 0);
-    const d = ctx.getImageData(0, 0, bitmap.width, bitmap.height).data;
-    let count = 0;
-    for (let i = 0; i < d.length; i += 4) if (Math.max(d[i], d[i + 1], d[i + 2]) - Math.min(d[i], d[i + 1], d[i + 2]) > 60) count++;
-    return count;
-  }, png.toString('base64'));
-}
 
-async function overlayPixels(page: Page): Promise<number> {
-  return page.evaluate(() => {
-    const c = document.getElementById('overlay') as HTMLCanvasElement;
-    const d = (c.getContext('2d', { willReadFrequently: true }) as CanvasRenderingContext2D).getImageData(0, 0, c.width, c.height).data;
-    let count = 0;
-    for (let i = 3; i < d.length; i += 4) if (d[i] > 0) count++;
-    return count;
-  });
-}
 
 describe('sandbox with shapes', () => {
   it('every scene, circles and shapes, steps and draws in canvas 2D and WebGL without console errors', async () => {

@@ -2,7 +2,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { ARTIFACTS, launchBrowser, openPage } from './browser.js';
+import { ARTIFACTS, colourfulPixels, launchBrowser, openPage, overlayPixels, stat } from './browser.js';
 
 // The 2D sandbox, driven like a user would: through labelled controls, the visible statistics and
 // the pixels on screen. Small scenes keep each test quick on a two-core machine.
@@ -37,10 +37,6 @@ async function labelText(page: Page, name: string): Promise<string> {
   return page.locator(`label[for="${id}"]`).innerText();
 }
 
-async function stat(page: Page, id: string): Promise<number> {
-  const text = await page.locator(`#stat-${id}`).innerText();
-  return Number(text.replace(/[^\d.-]/g, ''));
-}
 
 /** Waits until the visible step counter passes `after` + `more`: the simulation is running. */
 async function stepsPass(page: Page, after: number, more = 3): Promise<void> {
@@ -66,34 +62,7 @@ async function stepsContinue(page: Page, from: number, more = 3): Promise<void> 
   }
 }
 
-/** Saturated pixels in a screenshot of the stage: circles are coloured, the box and page are grey. */
-async function colourfulPixels(page: Page): Promise<number> {
-  const png = await page.locator('#stage').screenshot();
-  return page.evaluate(async (b64) => {
-    const blob = await (await fetch(`data:image/png;base64,${b64}`)).blob();
-    const bitmap = await createImageBitmap(blob);
-    const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
-    const ctx = canvas.getContext('2d') as OffscreenCanvasRenderingContext2D;
-    ctx.drawImage(bitmap, 0, 0);
-    const d = ctx.getImageData(0, 0, bitmap.width, bitmap.height).data;
-    let count = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      if (Math.max(d[i], d[i + 1], d[i + 2]) - Math.min(d[i], d[i + 1], d[i + 2]) > 60) count++;
-    }
-    return count;
-  }, png.toString('base64'));
-}
 
-/** Painted pixels on the overlay canvas (grid lines, AABBs); it is transparent elsewhere. */
-async function overlayPixels(page: Page): Promise<number> {
-  return page.evaluate(() => {
-    const c = document.getElementById('overlay') as HTMLCanvasElement;
-    const d = (c.getContext('2d', { willReadFrequently: true }) as CanvasRenderingContext2D).getImageData(0, 0, c.width, c.height).data;
-    let count = 0;
-    for (let i = 3; i < d.length; i += 4) if (d[i] > 0) count++;
-    return count;
-  });
-}
 
 describe('2D sandbox', () => {
   it('loads without console errors and draws circles', async () => {
