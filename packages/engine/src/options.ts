@@ -62,6 +62,13 @@ export interface WorldOptions {
   contactHertz?: number;
   /** Damping ratio of the soft step's contacts. Default 10 (Box2D). */
   contactDampingRatio?: number;
+  /**
+   * How hard a rigid joint pulls back to its constraint in the soft step, as a frequency in hertz
+   * (at most twice the contacts'), and its damping ratio. Defaults 60 and 2 (Box2D v3's jointHertz
+   * and jointDampingRatio).
+   */
+  jointHertz?: number;
+  jointDampingRatio?: number;
   /** The fastest a dynamic body moves, length units per second: the last stage of every step caps speeds at it. Default: with shapes 400 x lengthUnit (Box2D's maximumLinearSpeed); the circle engine 1e100, which only keeps numbers finite. At most 1e100. */
   maxLinearSpeed?: number;
   /**
@@ -170,6 +177,8 @@ export interface ResolvedWorldOptions {
   lengthUnit: number;
   contactHertz: number;
   contactDampingRatio: number;
+  jointHertz: number;
+  jointDampingRatio: number;
   maxLinearSpeed: number | null;
   /** null: the route's default. */
   restitutionThresholdGiven: number | null;
@@ -213,6 +222,8 @@ const WORLD_KEYS = [
   'lengthUnit',
   'contactHertz',
   'contactDampingRatio',
+  'jointHertz',
+  'jointDampingRatio',
   'maxLinearSpeed',
   'restitutionThreshold',
   'positionCorrection',
@@ -270,6 +281,8 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
     lengthUnit: options.lengthUnit === undefined ? 1 : positiveNumber('lengthUnit', options.lengthUnit),
     contactHertz: options.contactHertz === undefined ? 30 : positiveNumber('contactHertz', options.contactHertz),
     contactDampingRatio: options.contactDampingRatio === undefined ? 10 : nonNegativeNumber('contactDampingRatio', options.contactDampingRatio),
+    jointHertz: options.jointHertz === undefined ? 60 : boundedPositive('jointHertz', options.jointHertz),
+    jointDampingRatio: options.jointDampingRatio === undefined ? 2 : boundedNonNegative('jointDampingRatio', options.jointDampingRatio),
     maxLinearSpeed: options.maxLinearSpeed === undefined ? null : boundedPositive('maxLinearSpeed', options.maxLinearSpeed),
     restitutionThresholdGiven: options.restitutionThreshold === undefined ? null : nonNegativeNumber('restitutionThreshold', options.restitutionThreshold),
     sleepSpeedGiven: options.sleepSpeed === undefined ? null : nonNegativeNumber('sleepSpeed', options.sleepSpeed),

@@ -130,3 +130,50 @@ export interface ContactPointViews {
   readonly ny: Readonly<Float64Array>;
   readonly separation: Readonly<Float64Array>;
 }
+
+/** A joint as it stands after the last step (see World.getJoint). */
+export interface JointState {
+  kind: 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'target';
+  /** The bodies' handles; a target joint's bodyA is null (the world). */
+  bodyA: number | null;
+  bodyB: number;
+  /** The anchors in the world (a target joint's A: its target). */
+  anchorA: { x: number; y: number };
+  anchorB: { x: number; y: number };
+  /** The force and torque the joint put on body B in the last step (A took the opposite); 0 for a joint that did not act. */
+  force: { x: number; y: number };
+  torque: number;
+  /** The anchors' distance apart. */
+  length: number;
+  /** B's angle less A's, less the reference angle, in [-pi, pi]. */
+  angle: number;
+  /** B's anchor's distance from A's along the axis (prismatic, wheel), or 0. */
+  translation: number;
+  collideConnected: boolean;
+}
+
+/** Every joint's anchors in the world, for drawing (see World.jointViews); reused by every call. */
+export interface JointViews {
+  count: number;
+  /** Joint handles, and the kind of each (JOINT_KIND_NAMES index). */
+  handle: Float64Array;
+  kind: Uint8Array;
+  anchorAX: Float64Array;
+  anchorAY: Float64Array;
+  anchorBX: Float64Array;
+  anchorBY: Float64Array;
+}
+
+/**
+ * Joints that went in the last step (see World.jointEvents): broken ones (their force or torque
+ * passed breakForce or breakTorque), and those destroyed with a body since the step before.
+ */
+export interface JointEventsView {
+  count: number;
+  /** The joints' handles, now stale. */
+  joint: number[];
+  reason: ('broken' | 'bodyDestroyed')[];
+  /** Their bodies' handles (null for a target joint's world), which may be stale for 'bodyDestroyed'. */
+  bodyA: (number | null)[];
+  bodyB: number[];
+}

@@ -41,6 +41,11 @@ import {
   type ShapeOptions,
 } from './shapes/shape-options.js';
 import * as analytics from './analytics.js';
+import { JointStore } from './joints/joint-store.js';
+import { J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind } from './joints/joint-layout.js';
+import { resolveJoint, type JointOptions, type JointWorld } from './joints/joint-options.js';
+import { JointSolver } from './solver/joint-solver.js';
+import type { JointEventsView, JointState, JointViews } from './world-types.js';
 import { StepPipeline } from './step/pipeline.js';
 import { checkWorkerCount, DEFAULT_MIN_BODIES, ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
@@ -88,6 +93,20 @@ export class World {
   private readonly disturbances = new Disturbances();
   private readonly shapes = new BodyShapes(this.bodies);
   private shapeRoute: ShapeRoute | null = null;
+  /** The joints and their solver, made with the first joint. */
+  private joints: JointSolver | null = null;
+  /** Joints destroyed with a body since the last step began: reported with the next step's events. */
+  private pendingJointEvents: { joint: number; reason: 'broken' | 'bodyDestroyed'; bodyA: number | null; bodyB: number }[] = [];
+  private readonly jointEventsRecord: JointEventsView = { count: 0, joint: [], reason: [], bodyA: [], bodyB: [] };
+  private readonly jointViewsRecord: JointViews = {
+    count: 0,
+    handle: new Float64Array(0),
+    kind: new Uint8Array(0),
+    anchorAX: new Float64Array(0),
+    anchorAY: new Float64Array(0),
+    anchorBX: new Float64Array(0),
+    anchorBY: new Float64Array(0),
+  };
   /** Bumped whenever static bodies, their shapes or the segments change, so the static tree rebuilds. */
   private staticVersion = 0;
   /** Some body was given a spin or torque: the circle route then advances rotations. */
@@ -332,8 +351,13 @@ export class World {
     };
   }
 
+  /**
+   * Destroys a body with its shapes and its joints; each joint goes with a 'bodyDestroyed' event,
+   * reported in jointEvents() after the next step.
+   */
   destroyBody(handle: number): void {
     const s = this.slot(handle);
+    if (this.joints !== null) this.destroyJointsOf(s);
     this.disturbances.note(this.bodies, s);
     if (this.bodies.type[s] === TypeCode.static) this.staticVersion++;
     if (this.shapeRoute && this.bodies.rigid!.flags[s] & BodyFlag.bullet) this.shapeRoute.bullets--;
@@ -724,14 +748,200 @@ export class World {
     if (dt > MAX_DT) throw new RangeError(`dt must be at most ${MAX_DT} s (so that a step cannot overflow), got ${dt}`);
     this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
     if (this.shapeRoute) {
+      if (this.joints !== null) this.beginJointEvents();
       this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion, this.pipeline.events, this.pipeline.settings.solver.hitThreshold);
       limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);
+      if (this.joints !== null && this.joints.count > 0 && dt > 0) this.breakJoints();
     } else {
       this.pipeline.run(dt, this.staticVersion);
       if (this.turning) turnCircles(this.bodies, dt);
       limitSpeeds(this.bodies, this.resolved.maxLinearSpeed ?? MAX_MAGNITUDE, MAX_MAGNITUDE);
     }
     this.geometryVersion++;
+  }
+
+
+  /**
+   * Joins two bodies (see JointOptions for each kind: 'distance', 'revolute', 'prismatic', 'weld',
+   * 'wheel', 'target'); returns the joint's handle. Anchors are in each body's own frame, from its
+   * origin, as shapes are. The world moves to the soft step (joints need it: a world made with
+   * solver 'elastic' refuses them). Both bodies wake. Joined bodies do not collide unless
+   * collideConnected is set; they sleep and wake as one island.
+   */
+  createJoint(options: JointOptions): number {
+    if (this.resolved.solver === 'elastic') throw new RangeError("joints need the soft step: this world was made with solver 'elastic'; use 'auto' or 'soft'");
+    const resolved = resolveJoint(options, this.jointWorld);
+    const store = this.joints?.store;
+    if (store !== undefined && !store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} joints at once`);
+    this.engage();
+    const joints = this.useJoints();
+    const slot = joints.store.add(resolved.kind, resolved.bodyA, resolved.bodyB, resolved.collide, resolved.definition);
+    if (resolved.bodyA >= 0) this.bodies.wake(resolved.bodyA);
+    this.bodies.wake(resolved.bodyB);
+    return joints.store.handleOf(slot);
+  }
+
+  /** Destroys a joint; its bodies wake. */
+  destroyJoint(handle: number): void {
+    const j = this.jointSlot(handle);
+    const store = this.joints!.store;
+    if (store.bodyA[j] >= 0) this.bodies.wake(store.bodyA[j]);
+    this.bodies.wake(store.bodyB[j]);
+    store.remove(j);
+  }
+
+  hasJoint(handle: number): boolean {
+    return this.joints !== null && this.joints.store.slotOf(handle) >= 0;
+  }
+
+  get jointCount(): number {
+    return this.joints?.store.count ?? 0;
+  }
+
+  /** Handles of the live joints, in slot order (the order they are solved in). Allocates. */
+  jointHandles(): number[] {
+    const out: number[] = [];
+    const store = this.joints?.store;
+    if (store) for (let j = 0; j < store.slotCount; j++) if (store.live[j] === 1) out.push(store.handleOf(j));
+    return out;
+  }
+
+  /** Handles of the joints on a body. Allocates. */
+  jointsOf(handle: number): number[] {
+    const s = this.slot(handle);
+    const out: number[] = [];
+    const store = this.joints?.store;
+    if (!store || s >= store.firstEdge.length) return out;
+    for (let e = store.firstEdge[s]; e >= 0; e = store.edgeNext[e]) out.push(store.handleOf(e >> 1));
+    return out.sort((a, b) => a - b);
+  }
+
+  /** A joint's kind, bodies, anchors in the world, and the force and torque it put on body B in the last step. */
+  getJoint(handle: number): JointState {
+    const j = this.jointSlot(handle);
+    const store = this.joints!.store;
+    const r = store.record;
+    const o = j * JOINT_STRIDE;
+    const a = store.bodyA[j];
+    const b = store.bodyB[j];
+    const pa = new Float64Array(2);
+    const pb = new Float64Array(2);
+    if (a >= 0) this.jointWorld.worldPoint(a, r[o + J.anchorAX], r[o + J.anchorAY], pa);
+    else {
+      pa[0] = r[o + J.targetX];
+      pa[1] = r[o + J.targetY];
+    }
+    this.jointWorld.worldPoint(b, r[o + J.anchorBX], r[o + J.anchorBY], pb);
+    const rigid = this.bodies.rigid!;
+    const ca = a >= 0 ? rigid.c[a] : 1;
+    const sa = a >= 0 ? rigid.s[a] : 0;
+    const cb = rigid.c[b];
+    const sb = rigid.s[b];
+    let angle = atan2(sb * ca - cb * sa, cb * ca + sb * sa) - r[o + J.referenceAngle];
+    if (angle > Math.PI) angle -= 2 * Math.PI;
+    else if (angle < -Math.PI) angle += 2 * Math.PI;
+    const kind = store.kind[j];
+    const dx = pb[0] - pa[0];
+    const dy = pb[1] - pa[1];
+    const slides = kind === JointKind.prismatic || kind === JointKind.wheel;
+    const axisX = ca * r[o + J.axisX] - sa * r[o + J.axisY];
+    const axisY = sa * r[o + J.axisX] + ca * r[o + J.axisY];
+    return {
+      kind: JOINT_KIND_NAMES[kind],
+      bodyA: a >= 0 ? this.bodies.handleOf(a) : null,
+      bodyB: this.bodies.handleOf(b),
+      anchorA: { x: pa[0], y: pa[1] },
+      anchorB: { x: pb[0], y: pb[1] },
+      force: { x: r[o + J.forceX], y: r[o + J.forceY] },
+      torque: r[o + J.torque],
+      length: Math.sqrt(dx * dx + dy * dy),
+      angle: kind === JointKind.target || kind === JointKind.distance ? 0 : angle,
+      translation: slides ? dx * axisX + dy * axisY : 0,
+      collideConnected: store.collide[j] === 1,
+    };
+  }
+
+  /** Moves a target joint's target; its body wakes. */
+  setJointTarget(handle: number, x: number, y: number): void {
+    const j = this.jointSlot(handle);
+    const store = this.joints!.store;
+    if (store.kind[j] !== JointKind.target) throw new RangeError(`joint ${handle} is a ${JOINT_KIND_NAMES[store.kind[j]]} joint: only target joints have a target`);
+    boundedNumber('x', x);
+    boundedNumber('y', y);
+    store.record[j * JOINT_STRIDE + J.targetX] = x;
+    store.record[j * JOINT_STRIDE + J.targetY] = y;
+    this.bodies.wake(store.bodyB[j]);
+  }
+
+  /**
+   * Sets the motor of a revolute, prismatic or wheel joint: its speed, and its largest torque (a
+   * force for a prismatic joint), 0 switching it off. Its bodies wake.
+   */
+  setJointMotor(handle: number, speed: number, maxForceOrTorque: number): void {
+    const j = this.jointSlot(handle);
+    const store = this.joints!.store;
+    const kind = store.kind[j];
+    if (kind !== JointKind.revolute && kind !== JointKind.prismatic && kind !== JointKind.wheel) {
+      throw new RangeError(`joint ${handle} is a ${JOINT_KIND_NAMES[kind]} joint: only revolute, prismatic and wheel joints have a motor`);
+    }
+    boundedNumber('speed', speed);
+    const most = nonNegativeNumber('maxForceOrTorque', maxForceOrTorque);
+    if (!(most <= MAX_MAGNITUDE)) throw new RangeError(`maxForceOrTorque must be at most ${MAX_MAGNITUDE}, got ${most}`);
+    const o = j * JOINT_STRIDE;
+    store.record[o + J.motorSpeed] = speed;
+    store.record[o + J.maxMotor] = most;
+    store.record[o + J.enableMotor] = most > 0 ? 1 : 0;
+    if (most === 0) store.record[o + J.motorImpulse] = 0;
+    if (store.bodyA[j] >= 0) this.bodies.wake(store.bodyA[j]);
+    this.bodies.wake(store.bodyB[j]);
+  }
+
+  /**
+   * Joints that went in the last step: those that broke in it, and those destroyed with a body
+   * since the step before it. The object and its arrays are reused by every step.
+   */
+  jointEvents(): JointEventsView {
+    return this.jointEventsRecord;
+  }
+
+  /** Every live joint's anchors in the world, in slot order, for drawing. The object and its arrays are reused. */
+  jointViews(): JointViews {
+    const v = this.jointViewsRecord;
+    const store = this.joints?.store;
+    v.count = 0;
+    if (!store) return v;
+    if (v.handle.length < store.count) {
+      const capacity = grownCapacity(v.handle.length, store.count);
+      v.handle = new Float64Array(capacity);
+      v.kind = new Uint8Array(capacity);
+      v.anchorAX = new Float64Array(capacity);
+      v.anchorAY = new Float64Array(capacity);
+      v.anchorBX = new Float64Array(capacity);
+      v.anchorBY = new Float64Array(capacity);
+    }
+    const r = store.record;
+    let n = 0;
+    for (let j = 0; j < store.slotCount; j++) {
+      if (store.live[j] === 0) continue;
+      const o = j * JOINT_STRIDE;
+      const a = store.bodyA[j];
+      if (a >= 0) {
+        this.jointWorld.worldPoint(a, r[o + J.anchorAX], r[o + J.anchorAY], rotation);
+        v.anchorAX[n] = rotation[0];
+        v.anchorAY[n] = rotation[1];
+      } else {
+        v.anchorAX[n] = r[o + J.targetX];
+        v.anchorAY[n] = r[o + J.targetY];
+      }
+      this.jointWorld.worldPoint(store.bodyB[j], r[o + J.anchorBX], r[o + J.anchorBY], rotation);
+      v.anchorBX[n] = rotation[0];
+      v.anchorBY[n] = rotation[1];
+      v.handle[n] = store.handleOf(j);
+      v.kind[n] = store.kind[j];
+      n++;
+    }
+    v.count = n;
+    return v;
   }
 
   /** Linear plus rotational kinetic energy of the dynamic bodies. */
@@ -925,6 +1135,117 @@ export class World {
       broadphaseBytes: this.pipeline.broadPhase.memoryBytes(),
       shapeRouteBytes: this.shapeRoute?.memoryBytes() ?? 0,
     };
+  }
+
+
+  /** What resolveJoint reads of the bodies. */
+  private readonly jointWorld: JointWorld = {
+    bodySlot: (field, handle) => {
+      if (typeof handle !== 'number' || !Number.isFinite(handle)) throw new TypeError(`${field} must be a body handle, got ${describeValue(handle)}`);
+      const s = this.bodies.slotOf(handle);
+      if (s < 0) throw new RangeError(`${field} ${describeValue(handle)} ${this.bodies.describeMissing(handle)}`);
+      return s;
+    },
+    localCenter: (slot, out) => {
+      const rigid = this.bodies.rigid;
+      out[0] = rigid ? rigid.localCenterX[slot] : 0;
+      out[1] = rigid ? rigid.localCenterY[slot] : 0;
+    },
+    worldPoint: (slot, px, py, out) => {
+      const b = this.bodies;
+      const rigid = b.rigid;
+      const c = rigid ? rigid.c[slot] : 1;
+      const sn = rigid ? rigid.s[slot] : 0;
+      const lx = px - (rigid ? rigid.localCenterX[slot] : 0);
+      const ly = py - (rigid ? rigid.localCenterY[slot] : 0);
+      out[0] = b.x[slot] + c * lx - sn * ly;
+      out[1] = b.y[slot] + sn * lx + c * ly;
+    },
+    angle: (slot) => {
+      const rigid = this.bodies.rigid;
+      return rigid ? atan2(rigid.s[slot], rigid.c[slot]) : 0;
+    },
+    isDynamic: (slot) => this.bodies.type[slot] === TypeCode.dynamic,
+    mass: (slot) => this.bodies.mass[slot],
+    gravity: () => {
+      const g = this.pipeline.settings.gravity;
+      return Math.sqrt(g.x * g.x + g.y * g.y);
+    },
+  };
+
+  private useJoints(): JointSolver {
+    if (this.joints) return this.joints;
+    const store = new JointStore();
+    this.joints = new JointSolver(store, { hertz: this.resolved.jointHertz, dampingRatio: this.resolved.jointDampingRatio });
+    this.shapeRoute!.joints = this.joints;
+    this.shapeRoute!.narrow.joints = store;
+    return this.joints;
+  }
+
+  private jointSlot(handle: number): number {
+    finiteNumber('joint handle', handle);
+    const store = this.joints?.store;
+    const j = store ? store.slotOf(handle) : -1;
+    if (j < 0) throw new RangeError(`joint handle ${describeValue(handle)} ${store ? store.describeMissing(handle) : 'is unknown to this world (it has no joints)'}`);
+    return j;
+  }
+
+  /** Body `slot`'s joints go with it, each noted for the next step's joint events; their other bodies wake. */
+  private destroyJointsOf(slot: number): void {
+    const store = this.joints!.store;
+    if (slot >= store.firstEdge.length) return;
+    while (store.firstEdge[slot] >= 0) {
+      const j = store.firstEdge[slot] >> 1;
+      const a = store.bodyA[j];
+      const b = store.bodyB[j];
+      this.pendingJointEvents.push({ joint: store.handleOf(j), reason: 'bodyDestroyed', bodyA: a >= 0 ? this.bodies.handleOf(a) : null, bodyB: this.bodies.handleOf(b) });
+      if (a >= 0 && a !== slot) this.bodies.wake(a);
+      if (b !== slot) this.bodies.wake(b);
+      store.remove(j);
+    }
+  }
+
+  /** The step's joint events start with the joints destroyed with bodies since the last one. */
+  private beginJointEvents(): void {
+    const v = this.jointEventsRecord;
+    v.count = 0;
+    v.joint.length = 0;
+    v.reason.length = 0;
+    v.bodyA.length = 0;
+    v.bodyB.length = 0;
+    for (const e of this.pendingJointEvents) this.noteJointEvent(e.joint, e.reason, e.bodyA, e.bodyB);
+    this.pendingJointEvents.length = 0;
+  }
+
+  private noteJointEvent(joint: number, reason: 'broken' | 'bodyDestroyed', bodyA: number | null, bodyB: number): void {
+    const v = this.jointEventsRecord;
+    v.joint.push(joint);
+    v.reason.push(reason);
+    v.bodyA.push(bodyA);
+    v.bodyB.push(bodyB);
+    v.count++;
+  }
+
+  /** Joints whose force or torque passed their threshold in this step break, in slot order. */
+  private breakJoints(): void {
+    const store = this.joints!.store;
+    const r = store.record;
+    for (let j = 0; j < store.slotCount; j++) {
+      if (store.live[j] === 0) continue;
+      const o = j * JOINT_STRIDE;
+      if (r[o + J.active] === 0) continue;
+      const fx = r[o + J.forceX];
+      const fy = r[o + J.forceY];
+      const force = r[o + J.breakForce];
+      const torque = r[o + J.breakTorque];
+      if (!(fx * fx + fy * fy > force * force || Math.abs(r[o + J.torque]) > torque)) continue;
+      const a = store.bodyA[j];
+      const b = store.bodyB[j];
+      this.noteJointEvent(store.handleOf(j), 'broken', a >= 0 ? this.bodies.handleOf(a) : null, this.bodies.handleOf(b));
+      if (a >= 0) this.bodies.wake(a);
+      this.bodies.wake(b);
+      store.remove(j);
+    }
   }
 
   /** Lists every body's shapes and moves the world to the shape route (see BodyShapes.engage). */

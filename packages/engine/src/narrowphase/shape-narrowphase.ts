@@ -11,6 +11,7 @@ import { ContactList, Pose, WORLD } from './contact-list.js';
 import { Manifold } from './manifold.js';
 import { WorldShape } from './world-shape.js';
 import { collide } from './dispatch.js';
+import type { JointStore } from '../joints/joint-store.js';
 
 /** Kept manifolds: each body turned less than acos(0.98), about 11 degrees, since (Box2D's B2_CONTACT_RECYCLE_COS_ANGLE). */
 const RECYCLE_COS = 0.98;
@@ -72,6 +73,8 @@ export class ShapeNarrowPhase implements PairConsumer {
   sensorSlots = new Int32Array(16);
   visitorSlots = new Int32Array(16);
   sensorCount = 0;
+  /** The world's joints, once it has any: bodies a joint holds apart make no pair (see JointStore.joined). */
+  joints: JointStore | null = null;
   /** Sleepers an awake body touched this step: their islands wake at its end. */
   wake = new Int32Array(16);
   wakeCount = 0;
@@ -123,6 +126,11 @@ export class ShapeNarrowPhase implements PairConsumer {
       this.filtered++;
       return;
     }
+    const joints = this.joints;
+    if (joints !== null && joints.nonColliding > 0 && joints.joined(i, j)) {
+      this.filtered++;
+      return;
+    }
     const dx = x[j] - x[i];
     const dy = y[j] - y[i];
     const reach = radius[i] + radius[j];
@@ -168,6 +176,11 @@ export class ShapeNarrowPhase implements PairConsumer {
             if (this.stamp[s] === stamp) continue;
             this.stamp[s] = stamp;
             if ((category[i] & mask[s]) === 0 || (category[s] & mask[i]) === 0) {
+              this.filtered++;
+              continue;
+            }
+            const joints = this.joints;
+            if (joints !== null && joints.nonColliding > 0 && joints.joined(i, s)) {
               this.filtered++;
               continue;
             }

@@ -2,10 +2,11 @@ import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { ContactList, WORLD } from '../narrowphase/contact-list.js';
 import { grownCapacity } from '../util/grow.js';
+import type { JointStore } from '../joints/joint-store.js';
 
 /**
  * Island sleeping for worlds with shapes (Box2D v3's islands, computed afresh each step): the
- * awake dynamic bodies joined by touching contacts form islands (union-find over this step's
+ * awake dynamic bodies linked by touching contacts or by joints form islands (union-find over this step's
  * contact list); an island whose every body has been slower than the sleep speed for the sleep
  * time falls asleep at once, its bodies linked in a ring (RigidColumns.islandNext), so that
  * waking any one of them wakes all of it (BodyStore.wake). A body's speed counts its rim:
@@ -23,7 +24,7 @@ export class IslandSleep {
   private blocked = new Uint8Array(0);
   private ringHead = new Int32Array(0);
 
-  update(bodies: BodyStore, contacts: ContactList, dt: number, speed: number, time: number): void {
+  update(bodies: BodyStore, contacts: ContactList, joints: JointStore | null, dt: number, speed: number, time: number): void {
     const { vx, vy, type, asleep, sleepTime, radius, slotCount } = bodies;
     const rigid = bodies.rigid!;
     const w = rigid.angularVelocity;
@@ -56,6 +57,24 @@ export class IslandSleep {
       if (awakeA && awakeB) this.union(a, b);
       else if (awakeA && ta !== tb && tb === TypeCode.kinematic && isMoving(bodies, b)) blocked[a] = 1;
       else if (awakeB && ta === TypeCode.kinematic && isMoving(bodies, a)) blocked[b] = 1;
+    }
+    // Joined bodies share an island, touching or not; a joint to a moving kinematic body keeps it awake.
+    if (joints !== null) {
+      for (let j = 0; j < joints.slotCount; j++) {
+        if (joints.live[j] === 0) continue;
+        const a = joints.bodyA[j];
+        const b = joints.bodyB[j];
+        const awakeB = type[b] === TypeCode.dynamic && asleep[b] === 0;
+        if (a < 0) {
+          // A target joint pulls its body somewhere: it stays awake while it has one.
+          if (awakeB) blocked[b] = 1;
+          continue;
+        }
+        const awakeA = type[a] === TypeCode.dynamic && asleep[a] === 0;
+        if (awakeA && awakeB) this.union(a, b);
+        else if (awakeA && type[b] === TypeCode.kinematic && isMoving(bodies, b)) blocked[a] = 1;
+        else if (awakeB && type[a] === TypeCode.kinematic && isMoving(bodies, a)) blocked[b] = 1;
+      }
     }
     // Each island's shortest still time, and whether anything blocks it.
     for (let i = 0; i < slotCount; i++) {

@@ -4,6 +4,8 @@ import { BodyFlag } from '../store/rigid-columns.js';
 import { ContactList, WORLD } from '../narrowphase/contact-list.js';
 import { grownCapacity } from '../util/grow.js';
 import { SoftStepKernel } from './soft-step-kernel.js';
+import type { JointSolver } from './joint-solver.js';
+import { BODY, DPX, DPY, DQC, DQS, DYNAMIC, VX, VY, W, makeSoft } from './solver-body.js';
 
 /** The soft step's tuning, in the world's length units (see WorldOptions.lengthUnit). */
 export interface SoftSettings {
@@ -20,17 +22,6 @@ export interface SoftSettings {
   /** Bodies never move faster than this; Box2D's maximumLinearSpeed. */
   maxLinearSpeed: number;
 }
-
-/** A body's state through the sub-steps: velocity, and its motion since the step began. */
-const VX = 0;
-const VY = 1;
-const W = 2;
-const DPX = 3;
-const DPY = 4;
-const DQC = 5;
-const DQS = 6;
-const DYNAMIC = 7;
-const BODY = 8;
 
 // A contact constraint's fields, then two points of POINT fields each. Constraints are stored in
 // pairs, field by field, the two of a pair side by side (lane 0, lane 1), so that a SIMD kernel
@@ -71,20 +62,6 @@ const POINT = 24;
 /** Doubles per pair of constraints. */
 export const PAIR = P + 2 * POINT;
 
-/**
- * Box2D's b2MakeSoft: the bias rate, mass scale and impulse scale of a spring of `hertz` with
- * damping ratio `zeta` over a sub-step h, into out[0..2].
- */
-function makeSoft(hertz: number, zeta: number, h: number, out: Float64Array): void {
-  const omega = 2 * Math.PI * hertz;
-  const a1 = 2 * zeta + h * omega;
-  const a2 = h * omega * a1;
-  const a3 = 1 / (1 + a2);
-  out[0] = omega / a1;
-  out[1] = a2 * a3;
-  out[2] = a3;
-}
-
 /** Where constraint i's fields start (add a field offset). */
 function at(i: number): number {
   return (i >> 1) * PAIR + (i & 1);
@@ -107,10 +84,12 @@ const MAX_ROTATION = 0.25 * Math.PI;
 /**
  * Box2D v3's soft step (Catto, "Solver2D", 2024), the solver that holds stacks and piles:
  *
- *   prepare contacts once per step, from the manifolds found at the step's start; then per sub-step
+ *   prepare contacts once per step, from the manifolds found at the step's start, and joints; then
+ *   per sub-step
  *     integrate velocities (gravity, forces, damping)
- *     warm start (apply last sub-step's impulses)
- *     solve, with a soft bias that pushes overlap out as a damped spring would
+ *     warm start (apply last sub-step's impulses), joints first
+ *     solve, with a soft bias that pushes overlap out as a damped spring would; joints first, so
+ *       that contacts have the last word (JointSolver)
  *     integrate positions
  *     relax: solve again without the bias, removing the velocity the push-out added; friction and
  *       rolling resistance act here only, which stacks better (Box2D; Rapier's
@@ -165,31 +144,36 @@ export class SoftStep {
     return this.awake[k];
   }
 
-  solve(bodies: BodyStore, contacts: ContactList, gx: number, gy: number, dt: number, settings: SoftSettings): void {
+  solve(bodies: BodyStore, contacts: ContactList, gx: number, gy: number, dt: number, settings: SoftSettings, joints: JointSolver | null): void {
     if (dt === 0) return;
     this.gatherBodies(bodies);
     const substeps = settings.substeps;
     const h = dt / substeps;
     const inverseH = 1 / h;
     this.prepare(bodies, contacts, h, settings);
-    const { kernel, laneCount, awakeCount } = this;
+    joints?.prepare(bodies, this.index, h, Math.min(settings.contactHertz, 0.25 / h));
+    const { kernel, laneCount, awakeCount, states } = this;
     // Velocity plus gravity alone, the kernel's case: the general loop's terms are then 0 and its factors 1.
     const plain = kernel !== null && bodies.customMotionCount === 0 && !bodies.forcesPending;
     const maxAngular = MAX_ROTATION / dt;
     for (let i = 0; i < substeps; i++) {
       if (plain) kernel.integrateVelocities(awakeCount, h * (0 + gx), h * (0 + gy));
       else this.integrateVelocities(bodies, gx, gy, h);
+      joints?.warmStart(states);
       if (kernel !== null) kernel.warmStart(laneCount);
       else this.warmStart();
+      joints?.solve(states, true);
       if (kernel !== null) kernel.solve(laneCount, inverseH, settings.contactPushSpeed);
       else this.solveContacts(inverseH, settings.contactPushSpeed);
       if (kernel !== null) kernel.integratePositions(awakeCount, h, settings.maxLinearSpeed, maxAngular);
       else this.integratePositions(h, settings.maxLinearSpeed, maxAngular);
+      joints?.solve(states, false);
       if (kernel !== null) kernel.relax(laneCount, inverseH);
       else this.relaxContacts(inverseH);
     }
     this.applyRestitution(settings.restitutionThreshold);
     this.store(contacts);
+    joints?.finish();
     this.finish(bodies);
   }
 

@@ -7,6 +7,7 @@ import { PairSink } from '../store/pair-sink.js';
 import { StaticTree } from '../broadphase/static-tree.js';
 import { ShapeNarrowPhase, SEGMENT_ENTRY, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
 import { SoftStep, type SoftSettings } from '../solver/soft-step.js';
+import type { JointSolver } from '../solver/joint-solver.js';
 import { ElasticPass, type ElasticSettings } from '../solver/elastic-pass.js';
 import { integrateRigid } from '../integrate/rigid-motion.js';
 import { IslandSleep } from '../solver/island-sleep.js';
@@ -46,7 +47,7 @@ const bounds = new Float64Array(4);
 /**
  * The step of a world with shapes, as a list of stages over the stores:
  *
- *   soft:    broad-phase -> narrow-phase -> solve (sub-steps) -> contain -> report
+ *   soft:    broad-phase -> narrow-phase -> solve (sub-steps, contacts and joints) -> contain -> report
  *   elastic: integrate -> broad-phase -> narrow-phase -> solve (one pass) -> contain -> report
  *
  * The soft step collides first, from where the bodies stand, and moves them inside its solve with
@@ -84,6 +85,8 @@ export class ShapeRoute {
     events?.clear();
     const elastic = settings.solver === 'elastic';
     if (staticVersion !== this.treeVersion) this.rebuildTree(staticVersion);
+    const joints = this.joints !== null && this.joints.count > 0 ? this.joints : null;
+    if (joints) joints.wakeJoined(bodies);
     const sweep = settings.continuous && (this.tree.count > 0 || this.bullets > 0);
     if (sweep) this.continuous.remember(bodies);
     if (elastic) {
@@ -104,14 +107,14 @@ export class ShapeRoute {
     const contacts = narrow.current;
     if (elastic) this.elastic.solve(bodies, contacts, settings.elastic);
     else {
-      this.soft.solve(bodies, contacts, settings.gravity.x, settings.gravity.y, dt, settings.soft);
+      this.soft.solve(bodies, contacts, settings.gravity.x, settings.gravity.y, dt, settings.soft, joints);
       if (sweep) this.sweep(queries, -1 - queryVersion, false);
     }
     const t4 = nowMs();
     if (settings.box) this.contain(settings.box);
     const t5 = nowMs();
     const sleeping = settings.sleeping;
-    if (sleeping.enabled) this.islands.update(bodies, contacts, dt, sleeping.speed, sleeping.time);
+    if (sleeping.enabled) this.islands.update(bodies, contacts, joints?.store ?? null, dt, sleeping.speed, sleeping.time);
     for (let k = 0; k < narrow.wakeCount; k++) bodies.wake(narrow.wake[k]);
     events?.updateShapes(bodies, this.shapes, this.segments, contacts, hitThreshold, narrow.sensorSlots, narrow.visitorSlots, narrow.sensorCount);
     clearForces(bodies);
@@ -139,6 +142,8 @@ export class ShapeRoute {
 
   /** Bullets in the world: the continuous stage runs for them even with nothing static. */
   bullets = 0;
+  /** The world's joints, once it has any; solved inside the soft step. */
+  joints: JointSolver | null = null;
 
   /** `queryVersion`: one no later query shares, since bodies move again after the sweep. */
   private sweep(queries: Queries, queryVersion: number, bounce: boolean): void {

@@ -1,7 +1,7 @@
 import { TypeCode, ShapeCode } from './body-types.js';
 import { grownCapacity, grow, type Column } from '../util/grow.js';
 import { BodyKernel } from './body-kernel.js';
-import { MAX_GENERATION, SEGMENT_HANDLES, SHAPE_HANDLES, SLOT_SPACE } from './handles.js';
+import { JOINT_HANDLES, MAX_GENERATION, SEGMENT_HANDLES, SHAPE_HANDLES, SLOT_SPACE } from './handles.js';
 import { BodyFlag, RigidColumns } from './rigid-columns.js';
 
 export { SLOT_SPACE, MAX_GENERATION, SEGMENT_HANDLES } from './handles.js';
@@ -146,6 +146,7 @@ export class BodyStore {
   /** Explains why `slotOf` refused a handle, for error messages. */
   describeMissing(handle: number): string {
     if (!Number.isSafeInteger(handle) || handle < 0) return 'is not a body handle';
+    if (handle >= JOINT_HANDLES) return 'is a joint handle, not a body handle';
     if (handle >= SHAPE_HANDLES) return 'is a shape handle, not a body handle';
     if (handle >= SEGMENT_HANDLES) return 'is a segment handle, not a body handle';
     const slot = handle % SLOT_SPACE;

@@ -1,6 +1,6 @@
 import { MAX_POLYGON_VERTICES, type Geometry, type ShapeKindCode } from '../shapes/geometry.js';
 import { grownCapacity, grow } from '../util/grow.js';
-import { SHAPE_HANDLES, SHAPE_MAX_GENERATION, SLOT_SPACE } from './handles.js';
+import { JOINT_HANDLES, SHAPE_HANDLES, SHAPE_MAX_GENERATION, SLOT_SPACE } from './handles.js';
 
 /** What a new shape is made of, validated: geometry in its body's frame, and material and filter. */
 export interface NewShape {
@@ -170,7 +170,7 @@ export class ShapeStore {
 
   /** The slot of a live shape's handle, or -1. */
   slotOf(handle: number): number {
-    if (!Number.isSafeInteger(handle) || handle < SHAPE_HANDLES) return -1;
+    if (!Number.isSafeInteger(handle) || handle < SHAPE_HANDLES || handle >= JOINT_HANDLES) return -1;
     const slot = (handle - SHAPE_HANDLES) % SLOT_SPACE;
     const gen = (handle - SHAPE_HANDLES - slot) / SLOT_SPACE;
     return slot < this.slotCount && this.live[slot] === 1 && this.generation[slot] === gen ? slot : -1;
@@ -179,6 +179,7 @@ export class ShapeStore {
   describeMissing(handle: number): string {
     if (!Number.isSafeInteger(handle) || handle < 0) return 'is not a shape handle';
     if (handle < SHAPE_HANDLES) return 'is a body or segment handle, not a shape handle';
+    if (handle >= JOINT_HANDLES) return 'is a joint handle, not a shape handle';
     const slot = (handle - SHAPE_HANDLES) % SLOT_SPACE;
     const gen = (handle - SHAPE_HANDLES - slot) / SLOT_SPACE;
     if (slot >= this.slotCount || gen > this.generation[slot]) return 'is unknown to this world';

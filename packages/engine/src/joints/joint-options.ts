@@ -1,0 +1,285 @@
+import type { Vector } from '../options.js';
+import { flag, vector } from '../options.js';
+import { MAX_MAGNITUDE, boundedNonNegative, boundedNumber, describeValue, finiteNumber, knownKeys, plainObject } from '../util/validate.js';
+import { J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind, type JointKindName } from './joint-layout.js';
+
+/** What every joint between two bodies takes. Anchors are in each body's own frame, from its origin. */
+export interface JointBaseOptions {
+  bodyA: number;
+  bodyB: number;
+  /** Where the joint holds body A, in A's frame. Default: A's centre of mass. */
+  anchorA?: Vector | undefined;
+  /** Where it holds body B, in B's frame. Default: B's centre of mass. */
+  anchorB?: Vector | undefined;
+  /** Whether the two bodies still collide with each other. Default false (Box2D's collideConnected). */
+  collideConnected?: boolean | undefined;
+  /** The joint breaks (is destroyed, with a joint event) once its force exceeds this. Default Infinity: never. */
+  breakForce?: number | undefined;
+  /** Likewise for its torque. Default Infinity. */
+  breakTorque?: number | undefined;
+}
+
+/**
+ * Keeps the anchors `length` apart: rigidly, unless a range is given (minLength < maxLength), in
+ * which the anchors move freely (a rope), or `hertz` > 0, which makes it a spring towards
+ * `length` (free of limits unless a range is also given).
+ */
+export interface DistanceJointOptions extends JointBaseOptions {
+  kind: 'distance';
+  /** Default: the anchors' distance when the joint is made; must be > 0. */
+  length?: number | undefined;
+  minLength?: number | undefined;
+  maxLength?: number | undefined;
+  /** Spring frequency in hertz; 0 (the default) for none. */
+  hertz?: number | undefined;
+  /** The spring's damping ratio (1 critical). Default 0. */
+  dampingRatio?: number | undefined;
+}
+
+/** A pin: the anchors kept together, the bodies free to turn about them. */
+export interface RevoluteJointOptions extends JointBaseOptions {
+  kind: 'revolute';
+  /** B's angle less A's at which the joint angle is 0. Default: as the bodies stand when it is made. */
+  referenceAngle?: number | undefined;
+  /** Angle limits (radians, within [-pi, pi]); giving either turns limits on, the other then unbounded. */
+  lowerAngle?: number | undefined;
+  upperAngle?: number | undefined;
+  /** Target relative spin of B against A, radians per second, for a motor of maxMotorTorque. Default 0. */
+  motorSpeed?: number | undefined;
+  /** The motor's largest torque; the motor is on when this is given and > 0. */
+  maxMotorTorque?: number | undefined;
+  /** An angular spring towards the reference angle; 0 (the default) for none. */
+  hertz?: number | undefined;
+  dampingRatio?: number | undefined;
+}
+
+/** A slider: B keeps A's angle and moves only along `axis`, fixed in A. */
+export interface PrismaticJointOptions extends JointBaseOptions {
+  kind: 'prismatic';
+  /** The axis in A's frame (any length but 0). Default (1, 0). */
+  axis?: Vector | undefined;
+  referenceAngle?: number | undefined;
+  /**
+   * Limits on the translation, B's anchor's distance from A's along the axis (anchors made apart
+   * across the axis are drawn onto it); either turns limits on.
+   */
+  lowerTranslation?: number | undefined;
+  upperTranslation?: number | undefined;
+  motorSpeed?: number | undefined;
+  /** The motor's largest force; the motor is on when this is given and > 0. */
+  maxMotorForce?: number | undefined;
+  /** A spring along the axis towards translation 0; 0 (the default) for none. */
+  hertz?: number | undefined;
+  dampingRatio?: number | undefined;
+}
+
+/** Glues B to A in its pose when made. Rigid by default; either frequency makes that part a spring. */
+export interface WeldJointOptions extends JointBaseOptions {
+  kind: 'weld';
+  referenceAngle?: number | undefined;
+  linearHertz?: number | undefined;
+  angularHertz?: number | undefined;
+  dampingRatio?: number | undefined;
+}
+
+/** A wheel on a suspension: B's anchor slides along `axis` in A on a spring, B turns freely or by its motor. */
+export interface WheelJointOptions extends JointBaseOptions {
+  kind: 'wheel';
+  /** The suspension's axis in A's frame. Default (0, 1): up and down on the engine's y-down screens. */
+  axis?: Vector | undefined;
+  /** The suspension spring's frequency. Default 1 Hz (0: rigid along the axis but for limits). */
+  hertz?: number | undefined;
+  /** Default 0.7. */
+  dampingRatio?: number | undefined;
+  lowerTranslation?: number | undefined;
+  upperTranslation?: number | undefined;
+  motorSpeed?: number | undefined;
+  maxMotorTorque?: number | undefined;
+}
+
+/** Pulls one body's anchor towards a point in the world (dragging with the pointer): Box2D's mouse joint. */
+export interface TargetJointOptions {
+  kind: 'target';
+  body: number;
+  /** The point, in world coordinates; move it with setJointTarget. */
+  target: Vector;
+  /** In the body's frame. Default: its centre of mass. */
+  anchor?: Vector | undefined;
+  /** Default 5. */
+  hertz?: number | undefined;
+  /** Default 0.7. */
+  dampingRatio?: number | undefined;
+  /** The largest pull. Default 1000 times the body's weight under the world's gravity (or its mass, without gravity). */
+  maxForce?: number | undefined;
+  breakForce?: number | undefined;
+  breakTorque?: number | undefined;
+}
+
+export type JointOptions = DistanceJointOptions | RevoluteJointOptions | PrismaticJointOptions | WeldJointOptions | WheelJointOptions | TargetJointOptions;
+
+const BASE_KEYS = ['kind', 'bodyA', 'bodyB', 'anchorA', 'anchorB', 'collideConnected', 'breakForce', 'breakTorque'];
+const SPRING_KEYS = ['hertz', 'dampingRatio'];
+const KEYS: Record<JointKindName, string[]> = {
+  distance: [...BASE_KEYS, 'length', 'minLength', 'maxLength', ...SPRING_KEYS],
+  revolute: [...BASE_KEYS, 'referenceAngle', 'lowerAngle', 'upperAngle', 'motorSpeed', 'maxMotorTorque', ...SPRING_KEYS],
+  prismatic: [...BASE_KEYS, 'axis', 'referenceAngle', 'lowerTranslation', 'upperTranslation', 'motorSpeed', 'maxMotorForce', ...SPRING_KEYS],
+  weld: [...BASE_KEYS, 'referenceAngle', 'linearHertz', 'angularHertz', 'dampingRatio'],
+  wheel: [...BASE_KEYS, 'axis', 'lowerTranslation', 'upperTranslation', 'motorSpeed', 'maxMotorTorque', ...SPRING_KEYS],
+  target: ['kind', 'body', 'target', 'anchor', 'hertz', 'dampingRatio', 'maxForce', 'breakForce', 'breakTorque'],
+};
+
+/** What resolveJoint needs of the world: body slots from handles, and the bodies' poses. */
+export interface JointWorld {
+  /** The slot of a live body, or a RangeError naming `field`. */
+  bodySlot(field: string, handle: unknown): number;
+  /** Body `slot`'s centre of mass in its own frame. */
+  localCenter(slot: number, out: Float64Array): void;
+  /** A point given in body `slot`'s frame, in the world. */
+  worldPoint(slot: number, x: number, y: number, out: Float64Array): void;
+  /** Body `slot`'s angle (its rotation's, by the engine's own atan2). */
+  angle(slot: number): number;
+  isDynamic(slot: number): boolean;
+  mass(slot: number): number;
+  gravity(): number;
+}
+
+/** A validated joint: its kind, body slots (A -1 for the world), whether they collide, and its record's definition. */
+export interface ResolvedJoint {
+  kind: number;
+  bodyA: number;
+  bodyB: number;
+  collide: boolean;
+  definition: Float64Array;
+}
+
+const point = new Float64Array(2);
+const pointB = new Float64Array(2);
+
+function optionalNumber(field: string, value: unknown, fallback: number): number {
+  return value === undefined ? fallback : boundedNumber(field, value);
+}
+
+function optionalNonNegative(field: string, value: unknown, fallback: number): number {
+  return value === undefined ? fallback : boundedNonNegative(field, value);
+}
+
+/** A threshold: a positive number, or Infinity (never). */
+function threshold(field: string, value: unknown): number {
+  if (value === undefined || value === Infinity) return Infinity;
+  const n = finiteNumber(field, value);
+  if (!(n > 0)) throw new RangeError(`${field} must be > 0 (or Infinity: never), got ${describeValue(value)}`);
+  return n;
+}
+
+/** A unit axis from a non-zero vector. */
+function unitAxis(field: string, value: unknown, fallback: Vector): Vector {
+  const v = value === undefined ? fallback : vector(field, value);
+  const length = Math.sqrt(v.x * v.x + v.y * v.y);
+  if (!(length > 0) || !Number.isFinite(length)) throw new RangeError(`${field} must be a non-zero vector, got ${describeValue(value)}`);
+  return { x: v.x / length, y: v.y / length };
+}
+
+/** A range's ends, either given turning it on: [lower, upper], unbounded sides at ±MAX_MAGNITUDE. */
+function range(lowerField: string, upperField: string, lower: unknown, upper: unknown, r: Float64Array): void {
+  if (lower === undefined && upper === undefined) return;
+  const lo = lower === undefined ? -MAX_MAGNITUDE : boundedNumber(lowerField, lower);
+  const hi = upper === undefined ? MAX_MAGNITUDE : boundedNumber(upperField, upper);
+  if (lo > hi) throw new RangeError(`${lowerField} (${lo}) must not exceed ${upperField} (${hi})`);
+  r[J.lower] = lo;
+  r[J.upper] = hi;
+  r[J.enableLimit] = 1;
+}
+
+/** Validates joint options whole (a TypeError or RangeError naming the field, nothing changed) into a record definition. */
+export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint {
+  const o = plainObject('joint options', options);
+  const kindName = o.kind;
+  if (typeof kindName !== 'string' || !(JOINT_KIND_NAMES as string[]).includes(kindName)) {
+    throw new RangeError(`kind must be one of ${JOINT_KIND_NAMES.map((k) => `'${k}'`).join(', ')}, got ${describeValue(kindName)}`);
+  }
+  const kind = kindName as JointKindName;
+  knownKeys(`${kind} joint options`, o, KEYS[kind]);
+  const r = new Float64Array(JOINT_STRIDE);
+  r[J.breakForce] = threshold('breakForce', o.breakForce);
+  r[J.breakTorque] = threshold('breakTorque', o.breakTorque);
+  r[J.axisX] = 1;
+  if (kind === 'target') {
+    const b = world.bodySlot('body', o.body);
+    if (!world.isDynamic(b)) throw new RangeError(`body ${describeValue(o.body)} must be dynamic for a target joint to pull it`);
+    const target = vector('target', o.target);
+    world.localCenter(b, point);
+    const anchor = o.anchor === undefined ? { x: point[0], y: point[1] } : vector('anchor', o.anchor);
+    r[J.anchorBX] = anchor.x;
+    r[J.anchorBY] = anchor.y;
+    r[J.targetX] = target.x;
+    r[J.targetY] = target.y;
+    r[J.hertz] = optionalNonNegative('hertz', o.hertz, 5);
+    if (!(r[J.hertz] > 0)) throw new RangeError(`hertz must be > 0 for a target joint, got ${describeValue(o.hertz)}`);
+    r[J.dampingRatio] = optionalNonNegative('dampingRatio', o.dampingRatio, 0.7);
+    r[J.maxForce] = o.maxForce === undefined ? 1000 * world.mass(b) * Math.max(world.gravity(), 1) : boundedNonNegative('maxForce', o.maxForce);
+    return { kind: JointKind.target, bodyA: -1, bodyB: b, collide: true, definition: r };
+  }
+  const a = world.bodySlot('bodyA', o.bodyA);
+  const b = world.bodySlot('bodyB', o.bodyB);
+  if (a === b) throw new RangeError(`bodyA and bodyB are the same body (${describeValue(o.bodyA)}): a joint needs two`);
+  if (!world.isDynamic(a) && !world.isDynamic(b)) throw new RangeError(`bodyA ${describeValue(o.bodyA)} and bodyB ${describeValue(o.bodyB)} are both static or kinematic: a joint needs a dynamic body to act on`);
+  const collide = o.collideConnected === undefined ? false : flag('collideConnected', o.collideConnected);
+  world.localCenter(a, point);
+  const anchorA = o.anchorA === undefined ? { x: point[0], y: point[1] } : vector('anchorA', o.anchorA);
+  world.localCenter(b, point);
+  const anchorB = o.anchorB === undefined ? { x: point[0], y: point[1] } : vector('anchorB', o.anchorB);
+  r[J.anchorAX] = anchorA.x;
+  r[J.anchorAY] = anchorA.y;
+  r[J.anchorBX] = anchorB.x;
+  r[J.anchorBY] = anchorB.y;
+  const relative = world.angle(b) - world.angle(a);
+  if (kind === 'distance') {
+    world.worldPoint(a, anchorA.x, anchorA.y, point);
+    world.worldPoint(b, anchorB.x, anchorB.y, pointB);
+    const dx = pointB[0] - point[0];
+    const dy = pointB[1] - point[1];
+    const apart = Math.sqrt(dx * dx + dy * dy);
+    const length = o.length === undefined ? apart : boundedNumber('length', o.length);
+    if (!(length > 0)) {
+      throw new RangeError(o.length === undefined ? `the anchors coincide (distance ${apart}): give a length > 0, or use a revolute joint` : `length must be > 0, got ${describeValue(o.length)}`);
+    }
+    const hertz = optionalNonNegative('hertz', o.hertz, 0);
+    r[J.length] = length;
+    r[J.hertz] = hertz;
+    r[J.dampingRatio] = optionalNonNegative('dampingRatio', o.dampingRatio, 0);
+    const ranged = o.minLength !== undefined || o.maxLength !== undefined;
+    const min = optionalNonNegative('minLength', o.minLength, ranged || hertz > 0 ? 0 : length);
+    const max = o.maxLength === undefined ? (ranged || hertz > 0 ? Infinity : length) : boundedNonNegative('maxLength', o.maxLength);
+    if (min > max) throw new RangeError(`minLength (${min}) must not exceed maxLength (${max})`);
+    r[J.minLength] = min;
+    r[J.maxLength] = max;
+    r[J.enableLimit] = hertz > 0 || min < max ? 1 : 0;
+    return { kind: JointKind.distance, bodyA: a, bodyB: b, collide, definition: r };
+  }
+  r[J.referenceAngle] = o.referenceAngle === undefined ? relative : finiteNumber('referenceAngle', o.referenceAngle);
+  if (kind === 'weld') {
+    r[J.linearHertz] = optionalNonNegative('linearHertz', o.linearHertz, 0);
+    r[J.angularHertz] = optionalNonNegative('angularHertz', o.angularHertz, 0);
+    r[J.dampingRatio] = optionalNonNegative('dampingRatio', o.dampingRatio, 0);
+    return { kind: JointKind.weld, bodyA: a, bodyB: b, collide, definition: r };
+  }
+  const wheel = kind === 'wheel';
+  r[J.hertz] = optionalNonNegative('hertz', o.hertz, wheel ? 1 : 0);
+  r[J.dampingRatio] = optionalNonNegative('dampingRatio', o.dampingRatio, wheel ? 0.7 : 0);
+  r[J.motorSpeed] = optionalNumber('motorSpeed', o.motorSpeed, 0);
+  const motorField = kind === 'prismatic' ? 'maxMotorForce' : 'maxMotorTorque';
+  const maxMotor = optionalNonNegative(motorField, o[motorField], 0);
+  r[J.maxMotor] = maxMotor;
+  r[J.enableMotor] = maxMotor > 0 ? 1 : 0;
+  if (kind === 'revolute') {
+    if (o.lowerAngle !== undefined && !(Math.abs(finiteNumber('lowerAngle', o.lowerAngle)) <= Math.PI)) throw new RangeError(`lowerAngle must be within [-pi, pi], got ${describeValue(o.lowerAngle)}`);
+    if (o.upperAngle !== undefined && !(Math.abs(finiteNumber('upperAngle', o.upperAngle)) <= Math.PI)) throw new RangeError(`upperAngle must be within [-pi, pi], got ${describeValue(o.upperAngle)}`);
+    range('lowerAngle', 'upperAngle', o.lowerAngle, o.upperAngle, r);
+    return { kind: JointKind.revolute, bodyA: a, bodyB: b, collide, definition: r };
+  }
+  const axis = unitAxis('axis', o.axis, wheel ? { x: 0, y: 1 } : { x: 1, y: 0 });
+  r[J.axisX] = axis.x;
+  r[J.axisY] = axis.y;
+  range('lowerTranslation', 'upperTranslation', o.lowerTranslation, o.upperTranslation, r);
+  return { kind: wheel ? JointKind.wheel : JointKind.prismatic, bodyA: a, bodyB: b, collide, definition: r };
+}

@@ -1,0 +1,158 @@
+import type { BodyStore } from '../store/body-store.js';
+import { TypeCode } from '../store/body-types.js';
+import { J, JOINT_KIND_NAMES, JOINT_STRIDE, type JointKindName } from '../joints/joint-layout.js';
+import type { JointStore } from '../joints/joint-store.js';
+import { BODY, makeSoft } from './solver-body.js';
+import { unwind, type JointKernel, type JointStepContext } from './joints/joint-kernel.js';
+import { distanceJoint } from './joints/distance-joint.js';
+import { revoluteJoint } from './joints/revolute-joint.js';
+import { prismaticJoint } from './joints/prismatic-joint.js';
+import { weldJoint } from './joints/weld-joint.js';
+import { wheelJoint } from './joints/wheel-joint.js';
+import { targetJoint } from './joints/target-joint.js';
+import { atan2 } from '../math/trig.js';
+
+/** Each kind's solver: one line per kind. */
+const KERNEL_OF: Record<JointKindName, JointKernel> = {
+  distance: distanceJoint,
+  revolute: revoluteJoint,
+  prismatic: prismaticJoint,
+  weld: weldJoint,
+  wheel: wheelJoint,
+  target: targetJoint,
+};
+/** The same, indexed by JointKind. */
+const JOINT_KERNELS: readonly JointKernel[] = JOINT_KIND_NAMES.map((name) => KERNEL_OF[name]);
+
+/** How stiff and damped a rigid joint's push back is: Box2D v3's joint softness (jointHertz, jointDampingRatio). */
+export interface JointSettings {
+  hertz: number;
+  dampingRatio: number;
+}
+
+/**
+ * The joints' part of the soft step (SoftStep calls each stage where Box2D v3 does: joints before
+ * contacts in the warm start, the solve and the relax pass, so that contacts have the last word).
+ * Joints are solved one after another in slot order, which depends on the calls that made them
+ * alone: the same bits with every broad-phase and thread count. A joint whose bodies both stand
+ * still this step (static or asleep) is skipped and keeps its impulses.
+ */
+export class JointSolver {
+  private readonly step: JointStepContext = { h: 0, inverseH: 0, soft: new Float64Array(3) };
+  /** Live joints some body of which moves this step, in slot order. */
+  private active = new Int32Array(0);
+  private activeCount = 0;
+
+  constructor(readonly store: JointStore, readonly settings: JointSettings) {}
+
+  /** Wakes each sleeping body joined to a moving one, so that no joint pulls on a body the solve holds fixed. */
+  wakeJoined(bodies: BodyStore): void {
+    const { store } = this;
+    const { type, asleep } = bodies;
+    for (let j = 0; j < store.slotCount; j++) {
+      if (store.live[j] === 0) continue;
+      const a = store.bodyA[j];
+      const b = store.bodyB[j];
+      if (a < 0) continue;
+      const movingA = type[a] === TypeCode.kinematic || (type[a] === TypeCode.dynamic && asleep[a] === 0);
+      const movingB = type[b] === TypeCode.kinematic || (type[b] === TypeCode.dynamic && asleep[b] === 0);
+      if (movingA && asleep[b] === 1) bodies.wake(b);
+      else if (movingB && asleep[a] === 1) bodies.wake(a);
+    }
+  }
+
+  /**
+   * Once per step, after the bodies are gathered: `index` maps a body slot to its solver state (0:
+   * fixed); `contactHertz` is the contacts' stiffness this step, which a rigid joint's is twice at most.
+   */
+  prepare(bodies: BodyStore, index: Int32Array, h: number, contactHertz: number): void {
+    const { store, step } = this;
+    step.h = h;
+    step.inverseH = 1 / h;
+    makeSoft(Math.min(this.settings.hertz, 2 * contactHertz), this.settings.dampingRatio, h, step.soft);
+    if (this.active.length < store.slotCount) this.active = new Int32Array(Math.max(store.slotCount, 2 * this.active.length));
+    const { invMass, x, y } = bodies;
+    const rigid = bodies.rigid!;
+    const { c, s, invInertia, localCenterX, localCenterY } = rigid;
+    const r = store.record;
+    let n = 0;
+    for (let j = 0; j < store.slotCount; j++) {
+      if (store.live[j] === 0) continue;
+      const o = j * JOINT_STRIDE;
+      const a = store.bodyA[j];
+      const b = store.bodyB[j];
+      const ia = a < 0 ? 0 : index[a];
+      const ib = index[b];
+      r[o + J.forceX] = 0;
+      r[o + J.forceY] = 0;
+      r[o + J.torque] = 0;
+      if (ia === 0 && ib === 0) {
+        r[o + J.active] = 0;
+        continue;
+      }
+      r[o + J.active] = 1;
+      this.active[n++] = j;
+      r[o + J.stateA] = ia * BODY;
+      r[o + J.stateB] = ib * BODY;
+      r[o + J.invMassA] = ia === 0 ? 0 : invMass[a];
+      r[o + J.invInertiaA] = ia === 0 ? 0 : invInertia[a];
+      r[o + J.invMassB] = ib === 0 ? 0 : invMass[b];
+      r[o + J.invInertiaB] = ib === 0 ? 0 : invInertia[b];
+      const ca = a < 0 ? 1 : c[a];
+      const sa = a < 0 ? 0 : s[a];
+      const cb = c[b];
+      const sb = s[b];
+      const lax = a < 0 ? 0 : r[o + J.anchorAX] - localCenterX[a];
+      const lay = a < 0 ? 0 : r[o + J.anchorAY] - localCenterY[a];
+      const lbx = r[o + J.anchorBX] - localCenterX[b];
+      const lby = r[o + J.anchorBY] - localCenterY[b];
+      r[o + J.rAX] = ca * lax - sa * lay;
+      r[o + J.rAY] = sa * lax + ca * lay;
+      r[o + J.rBX] = cb * lbx - sb * lby;
+      r[o + J.rBY] = sb * lbx + cb * lby;
+      r[o + J.deltaCenterX] = x[b] - (a < 0 ? r[o + J.targetX] : x[a]);
+      r[o + J.deltaCenterY] = y[b] - (a < 0 ? r[o + J.targetY] : y[a]);
+      r[o + J.worldAxisX] = ca * r[o + J.axisX] - sa * r[o + J.axisY];
+      r[o + J.worldAxisY] = sa * r[o + J.axisX] + ca * r[o + J.axisY];
+      r[o + J.deltaAngle] = unwind(atan2(sb * ca - cb * sa, cb * ca + sb * sa) - r[o + J.referenceAngle]);
+      JOINT_KERNELS[store.kind[j]].prepare(r, o, h);
+    }
+    this.activeCount = n;
+  }
+
+  warmStart(states: Float64Array): void {
+    const { store, active, activeCount } = this;
+    const r = store.record;
+    for (let k = 0; k < activeCount; k++) {
+      const j = active[k];
+      JOINT_KERNELS[store.kind[j]].warmStart(r, j * JOINT_STRIDE, states);
+    }
+  }
+
+  solve(states: Float64Array, useBias: boolean): void {
+    const { store, active, activeCount, step } = this;
+    const r = store.record;
+    for (let k = 0; k < activeCount; k++) {
+      const j = active[k];
+      JOINT_KERNELS[store.kind[j]].solve(r, j * JOINT_STRIDE, states, step, useBias);
+    }
+  }
+
+  /** After the sub-steps: each joint's force and torque on body B over the last sub-step. */
+  finish(): void {
+    const { store, active, activeCount, step } = this;
+    const r = store.record;
+    for (let k = 0; k < activeCount; k++) {
+      const j = active[k];
+      JOINT_KERNELS[store.kind[j]].reaction(r, j * JOINT_STRIDE, step.inverseH);
+    }
+  }
+
+  get count(): number {
+    return this.store.count;
+  }
+
+  memoryBytes(): number {
+    return this.active.byteLength;
+  }
+}

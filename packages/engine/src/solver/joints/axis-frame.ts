@@ -1,0 +1,81 @@
+import { J } from '../../joints/joint-layout.js';
+import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
+
+/**
+ * The frame of a joint that slides along an axis fixed in body A (prismatic, wheel), now: the
+ * axis and its normal in the world, the translation of B's anchor along the axis from A's, and
+ * the lever arms of an impulse along each (a1, a2 along the axis, s1, s2 across it). One record,
+ * reused by every joint.
+ */
+export const axisFrame = { ax: 1, ay: 0, rAx: 0, rAy: 0, rBx: 0, rBy: 0, dx: 0, dy: 0, translation: 0, a1: 0, a2: 0, s1: 0, s2: 0 };
+export type AxisFrame = typeof axisFrame;
+
+export function currentAxisFrame(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number): AxisFrame {
+  const f = axisFrame;
+  const qAc = states[sa + DQC];
+  const qAs = states[sa + DQS];
+  const qBc = states[sb + DQC];
+  const qBs = states[sb + DQS];
+  f.rAx = qAc * r[o + J.rAX] - qAs * r[o + J.rAY];
+  f.rAy = qAs * r[o + J.rAX] + qAc * r[o + J.rAY];
+  f.rBx = qBc * r[o + J.rBX] - qBs * r[o + J.rBY];
+  f.rBy = qBs * r[o + J.rBX] + qBc * r[o + J.rBY];
+  f.ax = qAc * r[o + J.worldAxisX] - qAs * r[o + J.worldAxisY];
+  f.ay = qAs * r[o + J.worldAxisX] + qAc * r[o + J.worldAxisY];
+  f.dx = states[sb + DPX] - states[sa + DPX] + r[o + J.deltaCenterX] + f.rBx - f.rAx;
+  f.dy = states[sb + DPY] - states[sa + DPY] + r[o + J.deltaCenterY] + f.rBy - f.rAy;
+  fillArms(f);
+  return f;
+}
+
+/** The frame at the step's start, from the prepared fields alone. */
+export function startAxisFrame(r: Float64Array, o: number): AxisFrame {
+  const f = axisFrame;
+  f.rAx = r[o + J.rAX];
+  f.rAy = r[o + J.rAY];
+  f.rBx = r[o + J.rBX];
+  f.rBy = r[o + J.rBY];
+  f.ax = r[o + J.worldAxisX];
+  f.ay = r[o + J.worldAxisY];
+  f.dx = r[o + J.deltaCenterX] + f.rBx - f.rAx;
+  f.dy = r[o + J.deltaCenterY] + f.rBy - f.rAy;
+  fillArms(f);
+  return f;
+}
+
+function fillArms(f: AxisFrame): void {
+  const { ax, ay } = f;
+  f.translation = ax * f.dx + ay * f.dy;
+  // Lever arms: A's from its centre to B's anchor (d + rA), B's from its centre (rB).
+  const ux = f.dx + f.rAx;
+  const uy = f.dy + f.rAy;
+  f.a1 = ux * ay - uy * ax;
+  f.a2 = f.rBx * ay - f.rBy * ax;
+  // Across the axis, n = (-ay, ax).
+  f.s1 = ux * ax + uy * ay;
+  f.s2 = f.rBx * ax + f.rBy * ay;
+}
+
+/** Relative speed along the axis. */
+export function axialSpeed(states: Float64Array, sa: number, sb: number, f: AxisFrame): number {
+  return f.ax * (states[sb + VX] - states[sa + VX]) + f.ay * (states[sb + VY] - states[sa + VY]) + f.a2 * states[sb + W] - f.a1 * states[sa + W];
+}
+
+/** Relative speed across the axis. */
+export function normalSpeed(states: Float64Array, sa: number, sb: number, f: AxisFrame): number {
+  return -f.ay * (states[sb + VX] - states[sa + VX]) + f.ax * (states[sb + VY] - states[sa + VY]) + f.s2 * states[sb + W] - f.s1 * states[sa + W];
+}
+
+/** An impulse of `along` on the axis and `across` it, and an angular impulse `angular`, on B (A takes the opposite). */
+export function applyAxisImpulse(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: AxisFrame, along: number, across: number, angular: number): void {
+  const px = along * f.ax - across * f.ay;
+  const py = along * f.ay + across * f.ax;
+  const mA = r[o + J.invMassA];
+  const mB = r[o + J.invMassB];
+  states[sa + VX] -= mA * px;
+  states[sa + VY] -= mA * py;
+  states[sa + W] -= r[o + J.invInertiaA] * (along * f.a1 + across * f.s1 + angular);
+  states[sb + VX] += mB * px;
+  states[sb + VY] += mB * py;
+  states[sb + W] += r[o + J.invInertiaB] * (along * f.a2 + across * f.s2 + angular);
+}

@@ -1,0 +1,30 @@
+/**
+ * A body's state through the soft step's sub-steps, BODY doubles per moving body (state 0 is the
+ * fixed dummy that static and sleeping bodies share): velocity, and its motion since the step
+ * began, as a delta position and a delta rotation (cos, sin). Contacts and joints read and write
+ * these rows; positions are applied to the bodies once, after the sub-steps.
+ */
+export const VX = 0;
+export const VY = 1;
+export const W = 2;
+export const DPX = 3;
+export const DPY = 4;
+export const DQC = 5;
+export const DQS = 6;
+/** 1 for a dynamic body; 0 for a kinematic one and the dummy, whose velocity no impulse changes. */
+export const DYNAMIC = 7;
+export const BODY = 8;
+
+/**
+ * Box2D's b2MakeSoft: the bias rate, mass scale and impulse scale of a spring of `hertz` with
+ * damping ratio `zeta` over a sub-step h, into out[at..at + 2].
+ */
+export function makeSoft(hertz: number, zeta: number, h: number, out: Float64Array, at = 0): void {
+  const omega = 2 * Math.PI * hertz;
+  const a1 = 2 * zeta + h * omega;
+  const a2 = h * omega * a1;
+  const a3 = 1 / (1 + a2);
+  out[at] = omega / a1;
+  out[at + 1] = a2 * a3;
+  out[at + 2] = a3;
+}

@@ -1,0 +1,411 @@
+import { describe, expect, it } from 'vitest';
+import { BROADPHASE_NAMES, World, type JointOptions } from '../src/index.js';
+import { buildShapeScene, buildShapeWorld } from '@maxgrid/scenes';
+
+const DT = 1 / 60;
+
+function run(world: World, steps: number): void {
+  for (let s = 0; s < steps; s++) world.step(DT);
+}
+
+/** Times at which `value` crosses 0 going down, interpolated within the step. */
+function downCrossings(world: World, steps: number, value: () => number): number[] {
+  const out: number[] = [];
+  let previous = value();
+  for (let s = 1; s <= steps; s++) {
+    world.step(DT);
+    const v = value();
+    if (previous > 0 && v <= 0) out.push((s - v / (v - previous)) * DT);
+    previous = v;
+  }
+  return out;
+}
+
+function meanPeriod(crossings: number[]): number {
+  return (crossings[crossings.length - 1] - crossings[0]) / (crossings.length - 1);
+}
+
+/** A bob of `mass` hanging `length` below a static pivot at the origin, swung out by `theta` (gravity g along +y). */
+function pendulum(g: number, length: number, theta: number, kind: 'revolute' | 'distance') {
+  const world = new World({ gravity: { x: 0, y: g } });
+  const pivot = world.createBody({ x: 0, y: 0, type: 'static' });
+  // The bob's start, rotated by theta from straight down, by the small-angle series: no Math.sin in the test's state.
+  const sin = theta - theta ** 3 / 6 + theta ** 5 / 120;
+  const cos = 1 - theta ** 2 / 2 + theta ** 4 / 24 - theta ** 6 / 720;
+  const bob = world.createCircle({ x: length * sin, y: length * cos, radius: 0.05, mass: 1 });
+  const joint = world.createJoint(
+    kind === 'revolute' ? { kind, bodyA: pivot, bodyB: bob, anchorA: { x: 0, y: 0 }, anchorB: { x: -length * sin, y: -length * cos } } : { kind, bodyA: pivot, bodyB: bob },
+  );
+  return { world, bob, joint };
+}
+
+describe('joints', () => {
+  it('a pendulum on a revolute joint swings with the small-angle period 2 pi sqrt(L / g) within 0.5 %', () => {
+    for (const [g, length] of [
+      [10, 2],
+      [9.81, 0.5],
+      [30, 5],
+    ]) {
+      const { world, bob } = pendulum(g, length, 0.05, 'revolute');
+      const crossings = downCrossings(world, 60 * 20, () => world.getBody(bob).x);
+      const theory = 2 * Math.PI * Math.sqrt(length / g);
+      expect(crossings.length).toBeGreaterThan(3);
+      // Measured: within 0.03 % (the 0.05 rad swing itself lengthens the period 0.016 %).
+      expect(Math.abs(meanPeriod(crossings) / theory - 1)).toBeLessThan(0.005);
+      // The rod keeps its length.
+      const b = world.getBody(bob);
+      expect(Math.abs(Math.hypot(b.x, b.y) / length - 1)).toBeLessThan(0.002);
+    }
+  });
+
+  it('a rigid distance joint is a pendulum too, and holds its length', () => {
+    const { world, bob } = pendulum(10, 1, 0.1, 'distance');
+    const crossings = downCrossings(world, 60 * 20, () => world.getBody(bob).x);
+    // Large-amplitude correction at 0.1 rad: T = T0 (1 + theta^2 / 16).
+    const theory = 2 * Math.PI * Math.sqrt(1 / 10) * (1 + 0.01 / 16);
+    expect(Math.abs(meanPeriod(crossings) / theory - 1)).toBeLessThan(0.005);
+    const b = world.getBody(bob);
+    expect(Math.abs(Math.hypot(b.x, b.y) - 1)).toBeLessThan(0.002);
+  });
+
+  it('a distance spring oscillates at its frequency in hertz within 1 % (light load, no damping)', () => {
+    for (const hertz of [0.5, 2, 4]) {
+      const world = new World();
+      const anchor = world.createBody({ x: 0, y: 0, type: 'static' });
+      const body = world.createCircle({ x: 1.2, y: 0, radius: 0.05, mass: 0.1 });
+      world.createJoint({ kind: 'distance', bodyA: anchor, bodyB: body, length: 1, hertz, dampingRatio: 0 });
+      const crossings = downCrossings(world, Math.round((60 * 8) / hertz), () => world.getBody(body).x - 1);
+      const frequency = 1 / meanPeriod(crossings);
+      expect(Math.abs(frequency / hertz - 1)).toBeLessThan(0.01);
+    }
+  });
+
+  it('a spring with a damping ratio of 1 does not overshoot', () => {
+    const world = new World();
+    const anchor = world.createBody({ x: 0, y: 0, type: 'static' });
+    const body = world.createCircle({ x: 1.5, y: 0, radius: 0.05, mass: 1 });
+    world.createJoint({ kind: 'distance', bodyA: anchor, bodyB: body, length: 1, hertz: 2, dampingRatio: 1 });
+    let least = Infinity;
+    for (let s = 0; s < 300; s++) {
+      world.step(DT);
+      least = Math.min(least, world.getBody(body).x);
+    }
+    expect(least).toBeGreaterThan(0.999);
+    expect(Math.abs(world.getBody(body).x - 1)).toBeLessThan(1e-3);
+  });
+
+  it('a 100-link chain hanging under gravity settles within 1 % of its rest length', () => {
+    const world = buildShapeWorld(buildShapeScene('chain', { links: 100 }));
+    const links = world.handles().slice(1);
+    expect(world.jointCount).toBe(100);
+    run(world, 60 * 40);
+    // Measured: 0.71 % longer, kinetic energy 0.03 J from about 600 J at its first bounce.
+    const last = world.getJoint(world.jointHandles()[99]).anchorB;
+    const end = world.getBody(links[99]);
+    const tip = { x: 2 * end.centerX - last.x, y: 2 * end.centerY - last.y };
+    const length = Math.hypot(tip.x, tip.y);
+    expect(length / 100 - 1).toBeLessThan(0.01);
+    expect(length / 100 - 1).toBeGreaterThan(-0.001);
+    expect(world.kineticEnergy()).toBeLessThan(1);
+    // Every pin holds its two links together.
+    for (const h of world.jointHandles()) {
+      const j = world.getJoint(h);
+      expect(Math.hypot(j.anchorA.x - j.anchorB.x, j.anchorA.y - j.anchorB.y)).toBeLessThan(0.05);
+    }
+  }, 60_000);
+
+  it('a revolute motor reaches its speed, and a weak one accelerates at torque / inertia', () => {
+    const world = new World();
+    const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+    const wheel = world.createCircle({ x: 0, y: 0, radius: 1, mass: 2 });
+    const strong = world.createJoint({ kind: 'revolute', bodyA: ground, bodyB: wheel, motorSpeed: 5, maxMotorTorque: 1000 });
+    run(world, 30);
+    expect(world.getBody(wheel).angularVelocity).toBeCloseTo(5, 9);
+    expect(world.getJoint(strong).torque).toBeCloseTo(0, 6);
+
+    const slow = new World();
+    const g2 = slow.createBody({ x: 0, y: 0, type: 'static' });
+    const w2 = slow.createCircle({ x: 0, y: 0, radius: 1, mass: 2 });
+    slow.createJoint({ kind: 'revolute', bodyA: g2, bodyB: w2, motorSpeed: 100, maxMotorTorque: 0.5 });
+    run(slow, 60);
+    // I = m r^2 / 2 = 1: one second of 0.5 N m.
+    expect(slow.getBody(w2).angularVelocity).toBeCloseTo(0.5, 9);
+  });
+
+  it('revolute limits stop the swing at the limit angle', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+    // A horizontal bar pinned at its left end: it would swing down by a quarter turn.
+    const bar = world.createBox({ x: 1, y: 0, width: 2, height: 0.1, density: 1 });
+    const joint = world.createJoint({ kind: 'revolute', bodyA: ground, bodyB: bar, anchorA: { x: 0, y: 0 }, anchorB: { x: -1, y: 0 }, lowerAngle: -0.5, upperAngle: 0.5 });
+    run(world, 240);
+    // Gravity along +y turns +x towards +y: the positive sense.
+    expect(world.getJoint(joint).angle).toBeGreaterThan(0.49);
+    expect(world.getJoint(joint).angle).toBeLessThan(0.52);
+    expect(Math.abs(world.getBody(bar).angularVelocity)).toBeLessThan(0.01);
+  });
+
+  it('a prismatic joint at its limit holds a body against gravity, and its motor drives it', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+    const slider = world.createBox({ x: 0, y: 0, width: 1, height: 1, density: 3 });
+    const joint = world.createJoint({ kind: 'prismatic', bodyA: ground, bodyB: slider, axis: { x: 0, y: 1 }, lowerTranslation: -1, upperTranslation: 2 });
+    run(world, 180);
+    const j = world.getJoint(joint);
+    expect(Math.abs(j.translation - 2)).toBeLessThan(0.01);
+    expect(Math.abs(world.getBody(slider).vy)).toBeLessThan(1e-3);
+    // The limit carries the weight: 3 kg x 10, upwards on the body.
+    expect(j.force.y).toBeCloseTo(-30, 1);
+    expect(Math.abs(world.getBody(slider).x)).toBeLessThan(1e-9);
+    expect(Math.abs(world.getBody(slider).angle)).toBeLessThan(1e-9);
+    world.setJointMotor(joint, -1, 1000);
+    run(world, 30);
+    expect(world.getBody(slider).vy).toBeCloseTo(-1, 6);
+    run(world, 200);
+    expect(world.getJoint(joint).translation).toBeGreaterThan(-1.01);
+    expect(world.getJoint(joint).translation).toBeLessThan(-0.98);
+  });
+
+  it('a hanging pendulum at rest: the joint force carries the weight', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const pivot = world.createBody({ x: 0, y: 0, type: 'static' });
+    const bob = world.createCircle({ x: 0, y: 2, radius: 0.1, mass: 3 });
+    const joint = world.createJoint({ kind: 'revolute', bodyA: pivot, bodyB: bob, anchorA: { x: 0, y: 0 }, anchorB: { x: 0, y: -2 } });
+    run(world, 120);
+    const j = world.getJoint(joint);
+    expect(j.force.x).toBeCloseTo(0, 9);
+    expect(j.force.y).toBeCloseTo(-30, 6);
+  });
+
+  it('a weld joint holds a cantilever; a soft weld bends and springs back', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const wall = world.createBox({ x: 0, y: 0, width: 1, height: 1, type: 'static' });
+    const beam = world.createBox({ x: 1.5, y: 0, width: 2, height: 0.2, density: 1 });
+    world.createJoint({ kind: 'weld', bodyA: wall, bodyB: beam, anchorA: { x: 0.5, y: 0 }, anchorB: { x: -1, y: 0 } });
+    run(world, 120);
+    expect(Math.abs(world.getBody(beam).angle)).toBeLessThan(0.01);
+    expect(Math.abs(world.getBody(beam).y)).toBeLessThan(0.01);
+    const soft = new World({ gravity: { x: 0, y: 10 } });
+    const wall2 = soft.createBox({ x: 0, y: 0, width: 1, height: 1, type: 'static' });
+    const beam2 = soft.createBox({ x: 1.5, y: 0, width: 2, height: 0.2, density: 1 });
+    soft.createJoint({ kind: 'weld', bodyA: wall2, bodyB: beam2, anchorA: { x: 0.5, y: 0 }, anchorB: { x: -1, y: 0 }, angularHertz: 1, dampingRatio: 1 });
+    run(soft, 300);
+    // It sags to where the spring balances the weight, and stays.
+    const sag = soft.getBody(beam2).angle;
+    expect(sag).toBeGreaterThan(0.05);
+    run(soft, 60);
+    expect(Math.abs(soft.getBody(beam2).angle - sag)).toBeLessThan(1e-3);
+  });
+
+  it('a target joint pulls its body to the target and holds it there', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const box = world.createBox({ x: 0, y: 0, width: 1, height: 1, density: 1 });
+    const joint = world.createJoint({ kind: 'target', body: box, target: { x: 3, y: -2 } });
+    run(world, 180);
+    const b = world.getBody(box);
+    // A spring against gravity sags by g / omega^2 = 10 / (2 pi 5)^2 = 1 cm.
+    expect(Math.hypot(b.x - 3, b.y + 2)).toBeLessThan(0.02);
+    world.setJointTarget(joint, -4, 1);
+    run(world, 240);
+    expect(Math.hypot(world.getBody(box).x + 4, world.getBody(box).y - 1)).toBeLessThan(0.02);
+  });
+
+  it('a wheel joint: the car drives right on its motors, its suspension springs', () => {
+    const world = buildShapeWorld(buildShapeScene('car', { bumps: 5 }));
+    run(world, 300);
+    const chassis = world.getBody(0);
+    expect(chassis.x).toBeGreaterThan(10);
+    expect(Math.abs(chassis.angle)).toBeLessThan(0.6);
+    // Each wheel stays on its axis, within its travel.
+    for (const h of world.jointHandles()) {
+      const j = world.getJoint(h);
+      expect(j.kind).toBe('wheel');
+      expect(Math.abs(j.translation)).toBeLessThan(0.27);
+    }
+  });
+
+  it('joined bodies do not collide unless collideConnected', () => {
+    for (const collideConnected of [false, true]) {
+      const world = new World();
+      const a = world.createBox({ x: 0, y: 0, width: 1, height: 1, density: 1 });
+      const b = world.createBox({ x: 0.5, y: 0, width: 1, height: 1, density: 1 });
+      world.createJoint({ kind: 'distance', bodyA: a, bodyB: b, minLength: 0, maxLength: 5, collideConnected });
+      run(world, 60);
+      const apart = world.getBody(b).x - world.getBody(a).x;
+      if (collideConnected) expect(apart).toBeGreaterThan(0.99);
+      else expect(apart).toBeCloseTo(0.5, 9);
+    }
+  });
+
+  it('a rope (distance joint with a range) is slack within it and taut at its end', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const pivot = world.createBody({ x: 0, y: 0, type: 'static' });
+    const bob = world.createCircle({ x: 0, y: 1, radius: 0.1, mass: 1 });
+    world.createJoint({ kind: 'distance', bodyA: pivot, bodyB: bob, minLength: 0, maxLength: 3 });
+    run(world, 20);
+    // Free fall while slack: y = 1 + g t^2 / 2, within the step's rounding.
+    expect(world.getBody(bob).y).toBeGreaterThan(1.5);
+    run(world, 120);
+    expect(Math.abs(world.getBody(bob).y - 3)).toBeLessThan(0.02);
+  });
+
+  it('a joint breaks above its break force, with an event', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const pivot = world.createBody({ x: 0, y: 0, type: 'static' });
+    const light = world.createCircle({ x: 0, y: 1, radius: 0.1, mass: 1 });
+    const heavy = world.createCircle({ x: 1, y: 1, radius: 0.1, mass: 10 });
+    const holds = world.createJoint({ kind: 'revolute', bodyA: pivot, bodyB: light, anchorA: { x: 0, y: 0 }, anchorB: { x: 0, y: -1 }, breakForce: 50 });
+    const snaps = world.createJoint({ kind: 'revolute', bodyA: pivot, bodyB: heavy, anchorA: { x: 1, y: 0 }, anchorB: { x: 0, y: -1 }, breakForce: 50 });
+    let broke = -1;
+    for (let s = 0; s < 60 && broke < 0; s++) {
+      world.step(DT);
+      if (world.jointEvents().count > 0) broke = s;
+    }
+    expect(broke).toBeGreaterThanOrEqual(0);
+    const events = world.jointEvents();
+    expect(events.joint).toEqual([snaps]);
+    expect(events.reason).toEqual(['broken']);
+    expect(events.bodyB).toEqual([heavy]);
+    expect(world.hasJoint(snaps)).toBe(false);
+    expect(world.hasJoint(holds)).toBe(true);
+    expect(() => world.getJoint(snaps)).toThrow(/stale/);
+    world.step(DT);
+    expect(world.jointEvents().count).toBe(0);
+    run(world, 60);
+    expect(world.getBody(heavy).y).toBeGreaterThan(3);
+    expect(world.getBody(light).y).toBeCloseTo(1, 2);
+  });
+
+  it('destroying a body destroys its joints, reported with the next step', () => {
+    const world = buildShapeWorld(buildShapeScene('chain', { links: 5 }));
+    const links = world.handles().slice(1);
+    const joints = world.jointHandles();
+    expect(world.jointsOf(links[2])).toEqual([joints[2], joints[3]]);
+    world.destroyBody(links[2]);
+    expect(world.jointCount).toBe(3);
+    expect(world.hasJoint(joints[2])).toBe(false);
+    expect(world.hasJoint(joints[3])).toBe(false);
+    world.step(DT);
+    const events = world.jointEvents();
+    expect([...events.joint].sort((a, b) => a - b)).toEqual([joints[2], joints[3]]);
+    expect(events.reason).toEqual(['bodyDestroyed', 'bodyDestroyed']);
+    // The links below fall free.
+    run(world, 60);
+    expect(world.getBody(links[4]).y).toBeGreaterThan(8);
+    expect(world.getBody(links[1]).y).toBeLessThan(2);
+  });
+
+  it('a chain sleeps as one island and wakes whole', () => {
+    const world = buildShapeWorld(buildShapeScene('chain', { links: 10 }), { sleeping: true });
+    let asleep = -1;
+    for (let s = 0; s < 60 * 20 && asleep < 0; s++) {
+      world.step(DT);
+      if (world.stats.sleepingBodies > 0) asleep = s;
+    }
+    expect(asleep).toBeGreaterThan(0);
+    expect(world.stats.sleepingBodies).toBe(10);
+    const links = world.handles().slice(1);
+    world.applyImpulse(links[9], 5, 0);
+    world.step(DT);
+    expect(links.every((h) => world.isAwake(h))).toBe(true);
+  });
+
+  it('joint scenes give the same bits with every broad-phase', () => {
+    for (const name of ['ragdolls', 'bridge', 'jellies']) {
+      const params = name === 'ragdolls' ? { count: 6, columns: 3 } : name === 'jellies' ? { count: 4, side: 4 } : { planks: 12, load: 4 };
+      const hashes = new Set<string>();
+      for (const broadphase of BROADPHASE_NAMES) {
+        const world = buildShapeWorld(buildShapeScene(name, params), { broadphase });
+        run(world, 120);
+        hashes.add(world.stateHash());
+      }
+      expect(hashes.size).toBe(1);
+    }
+  });
+
+  it('joints take part in the same bits with workers started', async () => {
+    const serial = buildShapeWorld(buildShapeScene('ragdolls', { count: 4, columns: 2 }));
+    const threaded = buildShapeWorld(buildShapeScene('ragdolls', { count: 4, columns: 2 }));
+    await threaded.startWorkers(2, { adaptive: false });
+    try {
+      run(serial, 90);
+      run(threaded, 90);
+      expect(threaded.stateHash()).toBe(serial.stateHash());
+    } finally {
+      threaded.stopWorkers();
+    }
+  });
+
+  it('refuses bad joints by name, leaving the world unchanged', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+    const a = world.createCircle({ x: 0, y: 1, radius: 0.1, mass: 1 });
+    const b = world.createCircle({ x: 1, y: 1, radius: 0.1, mass: 1 });
+    const gone = world.createCircle({ x: 2, y: 1, radius: 0.1, mass: 1 });
+    world.destroyBody(gone);
+    const post = world.createBody({ x: 5, y: 5, type: 'static' });
+    const ok = world.createJoint({ kind: 'revolute', bodyA: a, bodyB: b });
+    const before = world.stateHash();
+    const bad: [unknown, RegExp, typeof TypeError | typeof RangeError][] = [
+      [{ kind: 'revolute', bodyA: a, bodyB: a }, /same body/, RangeError],
+      [{ kind: 'revolute', bodyA: a, bodyB: gone }, /bodyB .*stale/, RangeError],
+      [{ kind: 'revolute', bodyA: a, bodyB: 'b' }, /bodyB must be a body handle/, TypeError],
+      [{ kind: 'revolute', bodyA: a, bodyB: b, anchorA: { x: NaN, y: 0 } }, /anchorA\.x must be a finite number/, TypeError],
+      [{ kind: 'distance', bodyA: a, bodyB: b, length: -1 }, /length must be > 0, got -1/, RangeError],
+      [{ kind: 'distance', bodyA: a, bodyB: b, hertz: -2 }, /hertz must be >= 0/, RangeError],
+      [{ kind: 'distance', bodyA: a, bodyB: b, minLength: 3, maxLength: 2 }, /minLength \(3\) must not exceed maxLength \(2\)/, RangeError],
+      [{ kind: 'distance', bodyA: a, bodyB: b, anchorA: { x: 1, y: 0 } }, /anchors coincide/, RangeError],
+      [{ kind: 'revolute', bodyA: a, bodyB: b, lowerAngle: 1, upperAngle: 0 }, /lowerAngle \(1\) must not exceed upperAngle \(0\)/, RangeError],
+      [{ kind: 'revolute', bodyA: a, bodyB: b, upperAngle: 4 }, /upperAngle must be within \[-pi, pi\]/, RangeError],
+      [{ kind: 'prismatic', bodyA: a, bodyB: b, axis: { x: 0, y: 0 } }, /axis must be a non-zero vector/, RangeError],
+      [{ kind: 'weld', bodyA: ground, bodyB: ground }, /same body/, RangeError],
+      [{ kind: 'revolute', bodyA: ground, bodyB: post }, /both static or kinematic/, RangeError],
+      [{ kind: 'spring', bodyA: a, bodyB: b }, /kind must be one of 'distance', 'revolute'/, RangeError],
+      [{ kind: 'revolute', bodyA: a, bodyB: b, stiffness: 1 }, /stiffness/, TypeError],
+      [{ kind: 'target', body: ground, target: { x: 0, y: 0 } }, /must be dynamic/, RangeError],
+      [{ kind: 'target', body: a, target: { x: 0, y: Infinity } }, /target\.y must be a finite number/, TypeError],
+      [{ kind: 'revolute', bodyA: a, bodyB: b, breakForce: 0 }, /breakForce must be > 0/, RangeError],
+      [null, /joint options/, TypeError],
+    ];
+    const jointsBefore = world.jointCount;
+    for (const [options, message, type] of bad) {
+      let error: unknown = null;
+      try {
+        world.createJoint(options as JointOptions);
+      } catch (e) {
+        error = e;
+      }
+      expect(error, JSON.stringify(options)).toBeInstanceOf(type);
+      expect((error as Error).message).toMatch(message);
+    }
+    expect(world.jointCount).toBe(jointsBefore);
+    expect(world.stateHash()).toBe(before);
+    expect(() => world.getJoint(a)).toThrow(/is a body, segment or shape handle, not a joint handle/);
+    expect(() => world.setJointTarget(ok, 0, 0)).toThrow(/only target joints have a target/);
+    expect(() => world.setJointMotor(ok, NaN, 1)).toThrow(TypeError);
+    expect(() => world.getBody(ok)).toThrow(/is a joint handle, not a body handle/);
+    world.destroyJoint(ok);
+    expect(() => world.destroyJoint(ok)).toThrow(/stale/);
+    const elastic = new World({ solver: 'elastic' });
+    const c = elastic.createCircle({ x: 0, y: 0, radius: 1 });
+    const d = elastic.createCircle({ x: 3, y: 0, radius: 1 });
+    expect(() => elastic.createJoint({ kind: 'distance', bodyA: c, bodyB: d })).toThrow(/joints need the soft step/);
+  });
+
+  it('no NaN or infinity from stiff springs on light bodies at 60 Hz', () => {
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+    let previous = ground;
+    for (let k = 0; k < 20; k++) {
+      const body = world.createCircle({ x: k + 1, y: 0, radius: 0.2, mass: 1e-3 * (k + 1) });
+      world.createJoint({ kind: 'distance', bodyA: previous, bodyB: body, hertz: 1e6, dampingRatio: 0 });
+      previous = body;
+    }
+    run(world, 600);
+    const v = world.views();
+    for (let s = 0; s < v.slotCount; s++) {
+      expect(Number.isFinite(v.x[s]) && Number.isFinite(v.vx[s])).toBe(true);
+      expect(Math.abs(v.vx[s])).toBeLessThan(100);
+    }
+  });
+});
