@@ -14,6 +14,12 @@ import { uniformPolygons, uniformPolygonsParams } from './uniform-polygons.js';
 import { manyPyramids, manyPyramidsParams } from './many-pyramids.js';
 import { tumbler, tumblerParams } from './tumbler.js';
 import { polygonBox, polygonBoxParams } from './polygon-box.js';
+import { chain, chainParams } from './chain.js';
+import { bridge, bridgeParams } from './bridge.js';
+import { jointGrid, jointGridParams } from './joint-grid.js';
+import { ragdolls, ragdollsParams } from './ragdolls.js';
+import { car, carParams } from './car.js';
+import { jellies, jelliesParams } from './soft-bodies.js';
 import { farBodies, farBodiesParams, sparseBox, sparseBoxParams, twoCrowds, twoCrowdsParams, segmentFloor, segmentFloorParams, staticWall, staticWallParams, logRadii, logRadiiParams } from './cliffs.js';
 
 export { Prng } from './prng.js';
@@ -21,6 +27,7 @@ export { buildWorld, type Scene, type SceneSegment, type BuildOptions, type Laye
 export { buildShapeWorld, boxBody, type ShapeScene, type SceneBody, type SceneShape, type ShapeBuildOptions } from './shape-scene.js';
 export { pyramid, pyramidParams, verticalStack, verticalStackParams, cardHouse, cardHouseParams, ramp, rampParams, uniformPolygons, uniformPolygonsParams };
 export { manyPyramids, manyPyramidsParams, tumbler, tumblerParams, polygonBox, polygonBoxParams };
+export { chain, chainParams, bridge, bridgeParams, jointGrid, jointGridParams, ragdolls, ragdollsParams, car, carParams, jellies, jelliesParams };
 export { resolveParams, type ParamSpec, type ParamSpecs } from './params.js';
 export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams, funnel, funnelParams };
 
@@ -132,6 +139,36 @@ export const SHAPE_SCENES = {
     description: "Box2D v3's tumbler: 2,025 small boxes in a hollow square drum turned kinematically",
     params: tumblerParams,
     build: tumbler,
+  },
+  chain: {
+    description: 'A 100-link chain of capsules on revolute joints, hanging from a pin (horizontal: 1 lets it swing down)',
+    params: chainParams,
+    build: chain,
+  },
+  bridge: {
+    description: 'A bridge of 30 planks on revolute joints between two posts, with boxes dropped on it',
+    params: bridgeParams,
+    build: bridge,
+  },
+  'joint-grid': {
+    description: "Box2D v3's joint_grid: 100 x 100 circles pinned to their neighbours by revolute joints, hanging",
+    params: jointGridParams,
+    build: jointGrid,
+  },
+  ragdolls: {
+    description: 'A rain of ragdolls (ten capsules and a head on revolute joints with limits) onto the ground',
+    params: ragdollsParams,
+    build: ragdolls,
+  },
+  car: {
+    description: 'A car on two sprung wheel joints with motors, driving over a bumpy road of segments',
+    params: carParams,
+    build: car,
+  },
+  jellies: {
+    description: 'Soft bodies: lattice jellies of circles on distance springs (shear springs included) falling into a funnel',
+    params: jelliesParams,
+    build: jellies,
   },
 } satisfies Record<string, ShapeSceneDefinition>;
 

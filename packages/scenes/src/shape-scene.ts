@@ -1,4 +1,4 @@
-import { World, type ShapeOptions, type WorldOptions } from '@maxgrid/engine';
+import { World, type JointOptions, type ShapeOptions, type WorldOptions } from '@maxgrid/engine';
 
 /** One shape of a scene body: the engine's ShapeOptions, as plain data. */
 export type SceneShape = ShapeOptions;
@@ -34,6 +34,11 @@ export interface ShapeScene {
   bodies: SceneBody[];
   /** Static walls besides the bodies, as for createSegment. */
   segments: { x1: number; y1: number; x2: number; y2: number; thickness: number }[];
+  /**
+   * Joints, as for createJoint, with bodies named by their index in `bodies` (bodyA, bodyB, or a
+   * target joint's body). Absent for scenes without joints.
+   */
+  joints?: JointOptions[];
   /** Where to look: the region the interesting bodies occupy, for renderers. */
   view: { minX: number; minY: number; maxX: number; maxY: number };
 }
@@ -58,6 +63,8 @@ export function buildShapeWorld(scene: ShapeScene, options: ShapeBuildOptions = 
     for (const shape of body.shapes) world.addShape(handle, shape);
   }
   for (const s of scene.segments) world.createSegment(s);
+  // Body k has handle k in a fresh world, so the scene's indices are the handles.
+  for (const joint of scene.joints ?? []) world.createJoint(joint);
   return world;
 }
 

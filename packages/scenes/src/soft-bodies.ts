@@ -1,0 +1,69 @@
+import type { JointOptions } from '@maxgrid/engine';
+import { resolveParams, type ParamSpecs } from './params.js';
+import type { SceneBody, ShapeScene } from './shape-scene.js';
+
+export const jelliesParams = {
+  count: { default: 20, min: 1, max: 10000, integer: true, description: 'jellies' },
+  side: { default: 6, min: 2, max: 100, integer: true, description: 'particles along each side of a jelly' },
+  hertz: { default: 15, min: 0.1, max: 1000, description: 'spring frequency of the lattice' },
+  dampingRatio: { default: 0.5, min: 0, max: 100, description: 'damping ratio of the springs' },
+  funnel: { default: 1, min: 0, max: 1, integer: true, description: '1: they fall into a funnel of segments' },
+} satisfies ParamSpecs;
+
+/**
+ * Lattice jellies (soft bodies from the engine's own parts): each a side x side grid of small
+ * circles joined by distance springs along the rows and columns and across each cell's two
+ * diagonals (shear), so that it keeps its shape but wobbles; they fall into a funnel of segments,
+ * colliding with it and with each other through the ordinary broad-phase. Meters, gravity 10,
+ * y down, the funnel's outlet at y = 0.
+ */
+export function jellies(given?: Partial<Record<keyof typeof jelliesParams, number>>): ShapeScene {
+  const p = resolveParams('jellies', jelliesParams, given);
+  const spacing = 0.3;
+  const radius = 0.14;
+  const size = (p.side - 1) * spacing;
+  const columns = Math.max(1, Math.round(Math.sqrt(p.count)));
+  const bodies: SceneBody[] = [];
+  const joints: JointOptions[] = [];
+  const spring = (a: number, b: number): JointOptions => ({ kind: 'distance', bodyA: a, bodyB: b, hertz: p.hertz, dampingRatio: p.dampingRatio, collideConnected: false });
+  for (let k = 0; k < p.count; k++) {
+    const ox = (k % columns - (columns - 1) / 2) * (size + 1);
+    const oy = -6 - Math.floor(k / columns) * (size + 1) - size;
+    const first = bodies.length;
+    for (let i = 0; i < p.side; i++) {
+      for (let j = 0; j < p.side; j++) {
+        bodies.push({ x: ox + j * spacing, y: oy + i * spacing, shapes: [{ kind: 'circle', radius, density: 1, friction: 0.4 }] });
+        const at = first + i * p.side + j;
+        if (j > 0) joints.push(spring(at - 1, at));
+        if (i > 0) joints.push(spring(at - p.side, at));
+        if (i > 0 && j > 0) {
+          joints.push(spring(at - p.side - 1, at));
+          joints.push(spring(at - p.side, at - 1));
+        }
+      }
+    }
+  }
+  const width = columns * (size + 1) + 4;
+  const segments: ShapeScene['segments'] = [];
+  if (p.funnel === 1) {
+    segments.push({ x1: -width / 2, y1: -width / 2, x2: -1.5, y2: 0, thickness: 0.1 });
+    segments.push({ x1: width / 2, y1: -width / 2, x2: 1.5, y2: 0, thickness: 0.1 });
+  }
+  // A floor with walls: circles roll, so a jelly on a bare floor rolls away like a wheel.
+  segments.push({ x1: -width, y1: 8, x2: width, y2: 8, thickness: 0.1 });
+  segments.push({ x1: -width, y1: 8, x2: -width, y2: -4, thickness: 0.1 });
+  segments.push({ x1: width, y1: 8, x2: width, y2: -4, thickness: 0.1 });
+  const rows = Math.ceil(p.count / columns);
+  return {
+    name: 'jellies',
+    kind: 'shapes',
+    params: Object.freeze({ ...p }),
+    bounds: null,
+    gravity: { x: 0, y: 10 },
+    world: { friction: 0.4, restitution: 0, lengthUnit: 1, solver: 'soft' },
+    bodies,
+    segments,
+    joints,
+    view: { minX: -width, minY: -8 - rows * (size + 1), maxX: width, maxY: 9 },
+  };
+}
