@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
-import { makeSoft, W } from '../solver-body.js';
-import { jointAngle, limitTotal, type JointKernel } from './joint-kernel.js';
+import { W } from '../solver-body.js';
+import { jointAngle, limitTotal, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
 import { applyAxisImpulse, axialSpeed, currentAxisFrame, normalSpeed, startAxisFrame } from './axis-frame.js';
 
 /**
@@ -18,13 +18,7 @@ export const prismaticJoint: JointKernel = {
     const iB = r[o + J.invInertiaB];
     const k = mA + mB + iA * f.a1 * f.a1 + iB * f.a2 * f.a2;
     r[o + J.axialMass] = k > 0 ? 1 / k : 0;
-    if (r[o + J.hertz] > 0) makeSoft(r[o + J.hertz], r[o + J.dampingRatio], h, r, o + J.springBias);
-    else r[o + J.springImpulseSum] = 0;
-    if (r[o + J.enableLimit] === 0) {
-      r[o + J.lowerImpulse] = 0;
-      r[o + J.upperImpulse] = 0;
-    }
-    if (r[o + J.enableMotor] === 0) r[o + J.motorImpulse] = 0;
+    prepareSpringLimitMotor(r, o, h);
   },
 
   warmStart(r, o, states) {

@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
-import { makeSoft, DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
-import { jointAngle, limitTotal, type JointKernel } from './joint-kernel.js';
+import { W } from '../solver-body.js';
+import { jointAngle, limitTotal, prepareSpringLimitMotor, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
 
 /**
  * A revolute joint (a pin): the two anchors kept together by a 2x2 point constraint, with an
@@ -12,49 +12,19 @@ export const revoluteJoint: JointKernel = {
   prepare(r, o, h) {
     const k = r[o + J.invInertiaA] + r[o + J.invInertiaB];
     r[o + J.axialMass] = k > 0 ? 1 / k : 0;
-    if (r[o + J.hertz] > 0) makeSoft(r[o + J.hertz], r[o + J.dampingRatio], h, r, o + J.springBias);
-    else r[o + J.springImpulseSum] = 0;
-    if (r[o + J.enableLimit] === 0) {
-      r[o + J.lowerImpulse] = 0;
-      r[o + J.upperImpulse] = 0;
-    }
-    if (r[o + J.enableMotor] === 0) r[o + J.motorImpulse] = 0;
+    prepareSpringLimitMotor(r, o, h);
   },
 
   warmStart(r, o, states) {
-    const sa = r[o + J.stateA];
-    const sb = r[o + J.stateB];
-    const mA = r[o + J.invMassA];
-    const mB = r[o + J.invMassB];
-    const iA = r[o + J.invInertiaA];
-    const iB = r[o + J.invInertiaB];
-    const rAx = states[sa + DQC] * r[o + J.rAX] - states[sa + DQS] * r[o + J.rAY];
-    const rAy = states[sa + DQS] * r[o + J.rAX] + states[sa + DQC] * r[o + J.rAY];
-    const rBx = states[sb + DQC] * r[o + J.rBX] - states[sb + DQS] * r[o + J.rBY];
-    const rBy = states[sb + DQS] * r[o + J.rBX] + states[sb + DQC] * r[o + J.rBY];
-    const axial = r[o + J.springImpulseSum] + r[o + J.motorImpulse] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
-    const px = r[o + J.linearImpulseX];
-    const py = r[o + J.linearImpulseY];
-    states[sa + VX] -= mA * px;
-    states[sa + VY] -= mA * py;
-    states[sa + W] -= iA * (rAx * py - rAy * px + axial);
-    states[sb + VX] += mB * px;
-    states[sb + VY] += mB * py;
-    states[sb + W] += iB * (rBx * py - rBy * px + axial);
+    warmStartPoint(r, o, states, r[o + J.springImpulseSum] + r[o + J.motorImpulse] + r[o + J.lowerImpulse] - r[o + J.upperImpulse]);
   },
 
   solve(r, o, states, step, useBias) {
     const sa = r[o + J.stateA];
     const sb = r[o + J.stateB];
-    const mA = r[o + J.invMassA];
-    const mB = r[o + J.invMassB];
     const iA = r[o + J.invInertiaA];
     const iB = r[o + J.invInertiaB];
-    let vAx = states[sa + VX];
-    let vAy = states[sa + VY];
     let wA = states[sa + W];
-    let vBx = states[sb + VX];
-    let vBy = states[sb + VY];
     let wB = states[sb + W];
     const turns = iA + iB > 0;
     const axialMass = r[o + J.axialMass];
@@ -88,48 +58,10 @@ export const revoluteJoint: JointKernel = {
       wA += iA * (total - accumulated);
       wB -= iB * (total - accumulated);
     }
-    const qAc = states[sa + DQC];
-    const qAs = states[sa + DQS];
-    const qBc = states[sb + DQC];
-    const qBs = states[sb + DQS];
-    const rAx = qAc * r[o + J.rAX] - qAs * r[o + J.rAY];
-    const rAy = qAs * r[o + J.rAX] + qAc * r[o + J.rAY];
-    const rBx = qBc * r[o + J.rBX] - qBs * r[o + J.rBY];
-    const rBy = qBs * r[o + J.rBX] + qBc * r[o + J.rBY];
-    let cx = vBx - wB * rBy - (vAx - wA * rAy);
-    let cy = vBy + wB * rBx - (vAy + wA * rAx);
-    let massScale = 1;
-    let impulseScale = 0;
-    if (useBias) {
-      const bias = step.soft[0];
-      cx += bias * (states[sb + DPX] - states[sa + DPX] + r[o + J.deltaCenterX] + rBx - rAx);
-      cy += bias * (states[sb + DPY] - states[sa + DPY] + r[o + J.deltaCenterY] + rBy - rAy);
-      massScale = step.soft[1];
-      impulseScale = step.soft[2];
-    }
-    const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
-    const k12 = -rAy * rAx * iA - rBy * rBx * iB;
-    const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
-    let det = k11 * k22 - k12 * k12;
-    det = det !== 0 ? 1 / det : 0;
-    const bx = det * (k22 * cx - k12 * cy);
-    const by = det * (k11 * cy - k12 * cx);
-    const px = -massScale * bx - impulseScale * r[o + J.linearImpulseX];
-    const py = -massScale * by - impulseScale * r[o + J.linearImpulseY];
-    r[o + J.linearImpulseX] += px;
-    r[o + J.linearImpulseY] += py;
-    vAx -= mA * px;
-    vAy -= mA * py;
-    wA -= iA * (rAx * py - rAy * px);
-    vBx += mB * px;
-    vBy += mB * py;
-    wB += iB * (rBx * py - rBy * px);
-    states[sa + VX] = vAx;
-    states[sa + VY] = vAy;
     states[sa + W] = wA;
-    states[sb + VX] = vBx;
-    states[sb + VY] = vBy;
     states[sb + W] = wB;
+    if (useBias) solvePoint(r, o, states, step.soft[0], step.soft[1], step.soft[2]);
+    else solvePoint(r, o, states, 0, 1, 0);
   },
 
   reaction(r, o, inverseH) {

@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
-import { makeSoft, W } from '../solver-body.js';
-import { limitTotal, type JointKernel } from './joint-kernel.js';
+import { W } from '../solver-body.js';
+import { limitTotal, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
 import { applyAxisImpulse, axialSpeed, currentAxisFrame, normalSpeed, startAxisFrame } from './axis-frame.js';
 
 /**
@@ -21,13 +21,7 @@ export const wheelJoint: JointKernel = {
     const kp = mA + mB + iA * f.s1 * f.s1 + iB * f.s2 * f.s2;
     r[o + J.perpMass] = kp > 0 ? 1 / kp : 0;
     r[o + J.motorMass] = iA + iB > 0 ? 1 / (iA + iB) : 0;
-    if (r[o + J.hertz] > 0) makeSoft(r[o + J.hertz], r[o + J.dampingRatio], h, r, o + J.springBias);
-    else r[o + J.springImpulseSum] = 0;
-    if (r[o + J.enableLimit] === 0) {
-      r[o + J.lowerImpulse] = 0;
-      r[o + J.upperImpulse] = 0;
-    }
-    if (r[o + J.enableMotor] === 0) r[o + J.motorImpulse] = 0;
+    prepareSpringLimitMotor(r, o, h);
   },
 
   warmStart(r, o, states) {
