@@ -97,7 +97,10 @@ export interface WorldOptions {
   solverIterations?: number;
   /** Default 'auto'. */
   broadphase?: BroadPhaseName;
-  /** Default 'semi-implicit-euler'; 'explicit-euler' is the report's exact method. */
+  /**
+   * Default 'semi-implicit-euler'; 'explicit-euler' is the report's exact method; 'rk4' (classical
+   * Runge-Kutta) integrates force-driven springs and takes the shape route (docs/engine.md, Integrators).
+   */
   integrator?: IntegratorName;
   /**
    * Let dynamic bodies that stay slower than `sleepSpeed` for `sleepTime` seconds fall asleep.
@@ -438,7 +441,7 @@ export function shapeRouteSettings(resolved: ResolvedWorldOptions, gravity: Vect
     gravity,
     box: resolved.bounds,
     solver: resolved.solver === 'elastic' ? 'elastic' : 'soft',
-    explicitEuler: resolved.integrator === 'explicit-euler',
+    integrator: resolved.integrator,
     soft: {
       substeps: resolved.substeps,
       contactHertz: resolved.contactHertz,

@@ -133,7 +133,7 @@ export interface ContactPointViews {
 
 /** A joint as it stands after the last step (see World.getJoint). */
 export interface JointState {
-  kind: 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'target';
+  kind: 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'target' | 'spring';
   /** The bodies' handles; a target joint's bodyA is null (the world). */
   bodyA: number | null;
   bodyB: number;

@@ -49,7 +49,7 @@ import type { JointEventsView, JointState, JointViews } from './world-types.js';
 import { StepPipeline } from './step/pipeline.js';
 import { checkWorkerCount, DEFAULT_MIN_BODIES, ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
-import type { IntegratorName } from './integrate/integrator.js';
+import type { CircleIntegratorName, IntegratorName } from './integrate/integrator.js';
 import { MAX_DT, MAX_MAGNITUDE, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
 import { flag } from './options.js';
 import {
@@ -71,6 +71,11 @@ import {
 } from './options.js';
 
 const rotation = new Float64Array(2);
+
+/** The circle route's integrator for a world's choice ('rk4' worlds take the shape route, so any serves). */
+function circleIntegrator(name: IntegratorName): CircleIntegratorName {
+  return name === 'rk4' ? 'semi-implicit-euler' : name;
+}
 const box4 = new Float64Array(4);
 const scratchGeometry = new Geometry();
 const EMPTY = new Float64Array(0);
@@ -93,6 +98,8 @@ export class World {
   private readonly disturbances = new Disturbances();
   private readonly shapes = new BodyShapes(this.bodies);
   private shapeRoute: ShapeRoute | null = null;
+  /** The integrator asked for; the circle route, which has no 'rk4', never runs once it is. */
+  private integratorChoice: IntegratorName;
   /** The joints and their solver, made with the first joint. */
   private joints: JointSolver | null = null;
   /** Joints destroyed with a body since the last step began: reported with the next step's events. */
@@ -162,8 +169,9 @@ export class World {
     this.defaultRestitution = resolved.restitution;
     this.defaultFriction = resolved.friction;
     const events = resolved.contactEvents || resolved.hitEventThreshold < Infinity ? new ContactEvents() : null;
-    this.pipeline = new StepPipeline(this.bodies, this.segments, BROADPHASES[resolved.broadphase](), resolved.integrator, stepSettings(resolved), events);
-    if (resolved.solver === 'soft' || resolved.friction > 0) this.engage();
+    this.integratorChoice = resolved.integrator;
+    this.pipeline = new StepPipeline(this.bodies, this.segments, BROADPHASES[resolved.broadphase](), circleIntegrator(resolved.integrator), stepSettings(resolved), events);
+    if (resolved.solver === 'soft' || resolved.friction > 0 || resolved.integrator === 'rk4') this.engage();
   }
 
   get bodyCount(): number {
@@ -175,7 +183,7 @@ export class World {
   }
 
   get integrator(): IntegratorName {
-    return this.pipeline.integrator;
+    return this.integratorChoice;
   }
 
   /** The route the next step takes: 'circles' (the report's engine) or 'shapes', and with it the solver. */
@@ -678,9 +686,14 @@ export class World {
     if (checked !== this.pipeline.broadPhase.name) this.pipeline.broadPhase = BROADPHASES[checked]();
   }
 
+  /** Switches the integrator; 'rk4' moves the world to the shape route (see IntegratorName). */
   setIntegrator(name: IntegratorName): void {
-    this.pipeline.integrator = integratorName(name);
-    if (this.shapeRoute) this.shapeRoute.settings.explicitEuler = this.pipeline.integrator === 'explicit-euler';
+    const checked = integratorName(name);
+    this.integratorChoice = checked;
+    this.pipeline.integrator = circleIntegrator(checked);
+    if (checked === 'rk4') this.engage();
+    if (this.shapeRoute) this.shapeRoute.settings.integrator = checked;
+    if (this.joints) this.joints.integrator = checked;
   }
 
   setGravity(x: number, y: number): void {
@@ -855,7 +868,7 @@ export class World {
       force: { x: r[o + J.forceX], y: r[o + J.forceY] },
       torque: r[o + J.torque],
       length: Math.sqrt(dx * dx + dy * dy),
-      angle: kind === JointKind.target || kind === JointKind.distance ? 0 : angle,
+      angle: kind === JointKind.target || kind === JointKind.distance || kind === JointKind.spring ? 0 : angle,
       translation: slides ? dx * axisX + dy * axisY : 0,
       collideConnected: store.collide[j] === 1,
     };
@@ -949,9 +962,26 @@ export class World {
     return analytics.kineticEnergy(this.bodies);
   }
 
+  /** Gravity's potential energy of the dynamic bodies, plus the elastic energy of force-driven springs (kind 'spring'). */
   potentialEnergy(): number {
     const g = this.pipeline.settings.gravity;
-    return analytics.potentialEnergy(this.bodies, g.x, g.y);
+    let energy = analytics.potentialEnergy(this.bodies, g.x, g.y);
+    const store = this.joints?.store;
+    if (!store) return energy;
+    const r = store.record;
+    for (let j = 0; j < store.slotCount; j++) {
+      if (store.live[j] === 0 || store.kind[j] !== JointKind.spring) continue;
+      const o = j * JOINT_STRIDE;
+      this.jointWorld.worldPoint(store.bodyA[j], r[o + J.anchorAX], r[o + J.anchorAY], rotation);
+      const ax = rotation[0];
+      const ay = rotation[1];
+      this.jointWorld.worldPoint(store.bodyB[j], r[o + J.anchorBX], r[o + J.anchorBY], rotation);
+      const dx = rotation[0] - ax;
+      const dy = rotation[1] - ay;
+      const stretch = Math.sqrt(dx * dx + dy * dy) - r[o + J.length];
+      energy += 0.5 * r[o + J.stiffness] * stretch * stretch;
+    }
+    return energy;
   }
 
   momentum(): Vector {
@@ -1177,6 +1207,7 @@ export class World {
     if (this.joints) return this.joints;
     const store = new JointStore();
     this.joints = new JointSolver(store, { hertz: this.resolved.jointHertz, dampingRatio: this.resolved.jointDampingRatio });
+    this.joints.integrator = this.integratorChoice;
     this.shapeRoute!.joints = this.joints;
     this.shapeRoute!.narrow.joints = store;
     return this.joints;
@@ -1252,7 +1283,7 @@ export class World {
   private engage(): void {
     if (this.shapeRoute) return;
     const settings = shapeRouteSettings(this.resolved, this.pipeline.settings.gravity);
-    settings.explicitEuler = this.pipeline.integrator === 'explicit-euler';
+    settings.integrator = this.integratorChoice;
     this.shapes.engage(settings.margin);
     this.queries.shapes = this.shapes.store;
     this.shapeRoute = new ShapeRoute(this.bodies, this.shapes.store, this.segments, settings);

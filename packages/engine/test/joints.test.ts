@@ -360,7 +360,7 @@ describe('joints', () => {
       [{ kind: 'prismatic', bodyA: a, bodyB: b, axis: { x: 0, y: 0 } }, /axis must be a non-zero vector/, RangeError],
       [{ kind: 'weld', bodyA: ground, bodyB: ground }, /same body/, RangeError],
       [{ kind: 'revolute', bodyA: ground, bodyB: post }, /both static or kinematic/, RangeError],
-      [{ kind: 'spring', bodyA: a, bodyB: b }, /kind must be one of 'distance', 'revolute'/, RangeError],
+      [{ kind: 'rope', bodyA: a, bodyB: b }, /kind must be one of 'distance', 'revolute'/, RangeError],
       [{ kind: 'revolute', bodyA: a, bodyB: b, stiffness: 1 }, /stiffness/, TypeError],
       [{ kind: 'target', body: ground, target: { x: 0, y: 0 } }, /must be dynamic/, RangeError],
       [{ kind: 'target', body: a, target: { x: 0, y: Infinity } }, /target\.y must be a finite number/, TypeError],
@@ -407,5 +407,87 @@ describe('joints', () => {
       expect(Number.isFinite(v.x[s]) && Number.isFinite(v.vx[s])).toBe(true);
       expect(Math.abs(v.vx[s])).toBeLessThan(100);
     }
+  });
+});
+
+describe('force-driven springs and the integrators (report 7.4)', () => {
+  /** Two 1 kg bodies on an undamped spring of stiffness k, stretched 20 %, no gravity: its worst relative energy error over 10 s. */
+  function springPair(integrator: 'explicit-euler' | 'semi-implicit-euler' | 'rk4', k: number, steps = 600) {
+    const world = new World({ integrator });
+    const a = world.createCircle({ x: 0, y: 0, radius: 0.1, mass: 1 });
+    const b = world.createCircle({ x: 1.2, y: 0, radius: 0.1, mass: 1 });
+    world.createJoint({ kind: 'spring', bodyA: a, bodyB: b, length: 1, stiffness: k });
+    const start = world.kineticEnergy() + world.potentialEnergy();
+    let worst = 0;
+    const crossings: number[] = [];
+    let previous = 0.2;
+    for (let s = 1; s <= steps; s++) {
+      world.step(DT);
+      const energy = world.kineticEnergy() + world.potentialEnergy();
+      worst = Math.max(worst, Math.abs(energy / start - 1));
+      const stretch = world.getBody(b).x - world.getBody(a).x - 1;
+      if (previous > 0 && stretch <= 0) crossings.push((s - stretch / (stretch - previous)) * DT);
+      previous = stretch;
+    }
+    return { worst, crossings, world };
+  }
+
+  it('an undamped spring drifts less in energy with rk4 than with semi-implicit Euler; explicit Euler gains energy', () => {
+    for (const k of [100, 1000]) {
+      const rk4 = springPair('rk4', k);
+      const semi = springPair('semi-implicit-euler', k);
+      const explicit = springPair('explicit-euler', k);
+      // Measured at k = 100 (omega h = 0.06 per sub-step): rk4 1.4e-6, semi-implicit 3.0e-2,
+      // explicit a 1,700-fold gain; at k = 1000: 1.4e-3, 0.10, 12,000-fold.
+      expect(rk4.worst).toBeLessThan(semi.worst / 10);
+      expect(semi.worst).toBeLessThan(0.2);
+      const e = explicit.world.kineticEnergy() + explicit.world.potentialEnergy();
+      expect(e / (0.5 * k * 0.04)).toBeGreaterThan(10);
+    }
+  });
+
+  it('rk4 keeps the spring pair at its frequency sqrt(2 k / m) / 2 pi within 0.1 %', () => {
+    const k = 400;
+    const { crossings } = springPair('rk4', k, 300);
+    const theory = (2 * Math.PI) / Math.sqrt(2 * k);
+    expect(Math.abs(meanPeriod(crossings) / theory - 1)).toBeLessThan(0.001);
+  });
+
+  it('a damped spring loses energy with every integrator, and a light one hangs at its static stretch', () => {
+    for (const integrator of ['semi-implicit-euler', 'rk4'] as const) {
+      const world = new World({ integrator, gravity: { x: 0, y: 10 } });
+      const ceiling = world.createBody({ x: 0, y: 0, type: 'static' });
+      const bob = world.createCircle({ x: 0, y: 1, radius: 0.1, mass: 2 });
+      world.createJoint({ kind: 'spring', bodyA: ceiling, bodyB: bob, length: 1, stiffness: 200, damping: 10 });
+      run(world, 600);
+      // m g / k = 0.1 below the rest length.
+      expect(world.getBody(bob).y).toBeCloseTo(1.1, 4);
+      expect(world.getJoint(world.jointHandles()[0]).force.y).toBeCloseTo(-20, 3);
+    }
+  });
+
+  it('rk4 moves a body in free flight along the exact parabola', () => {
+    const world = new World({ integrator: 'rk4', solver: 'elastic', gravity: { x: 0, y: 10 } });
+    const ball = world.createCircle({ x: 0, y: 0, vx: 3, radius: 0.5 });
+    expect(world.route.route).toBe('shapes');
+    run(world, 60);
+    expect(world.getBody(ball).y).toBeCloseTo(5, 10);
+    expect(world.getBody(ball).x).toBeCloseTo(3, 10);
+    const circles = new World({ gravity: { x: 0, y: 10 } });
+    circles.createCircle({ x: 0, y: 0, radius: 0.5 });
+    expect(circles.route.route).toBe('circles');
+    circles.setIntegrator('rk4');
+    expect(circles.integrator).toBe('rk4');
+    expect(circles.route.route).toBe('shapes');
+  });
+
+  it('refuses a spring without stiffness or with negative damping, by name', () => {
+    const world = new World();
+    const a = world.createCircle({ x: 0, y: 0, radius: 0.1 });
+    const b = world.createCircle({ x: 1, y: 0, radius: 0.1 });
+    expect(() => world.createJoint({ kind: 'spring', bodyA: a, bodyB: b } as never)).toThrow(/stiffness must be a finite number/);
+    expect(() => world.createJoint({ kind: 'spring', bodyA: a, bodyB: b, stiffness: 10, damping: -1 })).toThrow(/damping must be >= 0/);
+    expect(() => world.createJoint({ kind: 'spring', bodyA: a, bodyB: b, stiffness: 10, anchorA: { x: 0, y: 0 } } as never)).toThrow(/anchorA/);
+    expect(world.jointCount).toBe(0);
   });
 });

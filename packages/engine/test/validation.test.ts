@@ -96,7 +96,7 @@ describe('bad input is rejected with a named error and leaves the world unchange
   });
 
   it('unknown integrator name', () => {
-    rejects((w) => w.setIntegrator('rk4' as never), RangeError, 'integrator', 'rk4');
+    rejects((w) => w.setIntegrator('verlet' as never), RangeError, 'integrator', 'verlet');
   });
 
   it('unknown type in setType', () => {

@@ -14,6 +14,14 @@ export const INTEGRATORS = {
   'semi-implicit-euler': integrateSemiImplicitEuler,
 } satisfies Record<string, Integrator>;
 
-export type IntegratorName = keyof typeof INTEGRATORS;
+/** The circle route's integrators. */
+export type CircleIntegratorName = keyof typeof INTEGRATORS;
 
-export const INTEGRATOR_NAMES = Object.keys(INTEGRATORS) as IntegratorName[];
+/**
+ * Every integrator a world can be given. 'rk4' (classical Runge-Kutta) is for force-driven
+ * springs (joints of kind 'spring'): it moves the world to the shape route, where the soft step
+ * integrates each sub-step's spring forces with it (solver/force-springs.ts).
+ */
+export type IntegratorName = CircleIntegratorName | 'rk4';
+
+export const INTEGRATOR_NAMES: readonly IntegratorName[] = ['explicit-euler', 'semi-implicit-euler', 'rk4'];

@@ -3,18 +3,23 @@ import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import { turn } from '../math/trig.js';
 import { needsGeneralMotion } from './motion.js';
+import type { IntegratorName } from './integrator.js';
 
 /**
  * Integration of bodies that turn, for the shape route's elastic pass (the soft step integrates
  * within its sub-steps): positions and velocities as the world's integrator says (the report's
- * explicit Euler, or semi-implicit), with forces, damping and gravity scale, and the rotation
+ * explicit Euler, semi-implicit, or Runge-Kutta's exact parabola), with forces, damping and gravity scale, and the rotation
  * turned by its angular velocity times dt exactly (trig.ts `turn`): free flight keeps its angular
  * velocity, where the first-order step the soft solver takes per small sub-step would lag by
  * atan(w dt) against w dt.
  * Kinematic bodies move and turn as they were told; sleepers and static bodies stay.
  */
-export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: number, explicit: boolean): void {
-  if (!needsGeneralMotion(bodies)) return integratePlain(bodies, gx, gy, dt, explicit);
+export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: number, integrator: IntegratorName): void {
+  const explicit = integrator === 'explicit-euler';
+  // Under forces constant over the step Runge-Kutta's four stages agree: the exact parabola,
+  // x + (v + a dt / 2) dt, which is the mean of the two Euler methods' positions.
+  const rk4 = integrator === 'rk4';
+  if (!needsGeneralMotion(bodies)) return integratePlain(bodies, gx, gy, dt, explicit, rk4);
   const { x, y, vx, vy, type, asleep, invMass, gravityScale, linearDamping, forceX, forceY, slotCount } = bodies;
   const rigid = bodies.rigid!;
   const { c, s, angularVelocity, invInertia, torque, angularDamping, flags } = rigid;
@@ -32,12 +37,15 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
       const ay = gy * gravityScale[i] + forceY[i] * invMass[i];
       const alpha = invInertia[i] * torque[i];
       const spin = 1 / (1 + dt * angularDamping[i]);
-      if (explicit) {
-        x[i] += vx[i] * dt;
-        y[i] += vy[i] * dt;
+      if (explicit || rk4) {
+        x[i] += rk4 ? (vx[i] + 0.5 * ax * dt) * dt : vx[i] * dt;
+        y[i] += rk4 ? (vy[i] + 0.5 * ay * dt) * dt : vy[i] * dt;
         vx[i] = (vx[i] + ax * dt) * damping;
         vy[i] = (vy[i] + ay * dt) * damping;
-        angularVelocity[i] = (flags[i] & BodyFlag.fixedRotation) !== 0 ? 0 : (w + alpha * dt) * spin;
+        const fixed = (flags[i] & BodyFlag.fixedRotation) !== 0;
+        angularVelocity[i] = fixed ? 0 : (w + alpha * dt) * spin;
+        // Explicit Euler turns by the spin it had; Runge-Kutta by the mean over the step.
+        if (rk4) w = fixed ? 0 : w + 0.5 * alpha * dt;
       } else {
         vx[i] = (vx[i] + ax * dt) * damping;
         vy[i] = (vy[i] + ay * dt) * damping;
@@ -56,7 +64,7 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
  * arithmetic less the factors that are 1 and the terms that are 0, from half the columns (at
  * 64,000 bodies the loop is bound by memory: it reads each column once).
  */
-function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, explicit: boolean): void {
+function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, explicit: boolean, rk4: boolean): void {
   const { x, y, vx, vy, type, slotCount } = bodies;
   const rigid = bodies.rigid!;
   const { c, s, angularVelocity, flags } = rigid;
@@ -65,7 +73,12 @@ function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, e
   for (let i = 0; i < slotCount; i++) {
     const t = type[i];
     if (t === TypeCode.dynamic) {
-      if (explicit) {
+      if (rk4) {
+        x[i] += (vx[i] + 0.5 * dvx) * dt;
+        y[i] += (vy[i] + 0.5 * dvy) * dt;
+        vx[i] += dvx;
+        vy[i] += dvy;
+      } else if (explicit) {
         x[i] += vx[i] * dt;
         y[i] += vy[i] * dt;
         vx[i] += dvx;

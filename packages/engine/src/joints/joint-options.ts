@@ -115,7 +115,27 @@ export interface TargetJointOptions {
   breakTorque?: number | undefined;
 }
 
-export type JointOptions = DistanceJointOptions | RevoluteJointOptions | PrismaticJointOptions | WeldJointOptions | WheelJointOptions | TargetJointOptions;
+/**
+ * A force-driven spring between the two bodies' centres of mass: Hooke's law with damping,
+ * F = stiffness (length - rest) + damping (speed apart), integrated by the world's integrator
+ * ('explicit-euler', 'semi-implicit-euler' or 'rk4'), where a distance joint's `hertz` is a soft
+ * constraint of the solver. For particle systems and the report's integrator comparison.
+ */
+export interface SpringJointOptions {
+  kind: 'spring';
+  bodyA: number;
+  bodyB: number;
+  /** The rest length. Default: the centres' distance when the spring is made. */
+  length?: number | undefined;
+  /** Force per unit of stretch. */
+  stiffness: number;
+  /** Force per unit of speed apart. Default 0. */
+  damping?: number | undefined;
+  collideConnected?: boolean | undefined;
+  breakForce?: number | undefined;
+}
+
+export type JointOptions = SpringJointOptions | DistanceJointOptions | RevoluteJointOptions | PrismaticJointOptions | WeldJointOptions | WheelJointOptions | TargetJointOptions;
 
 const BASE_KEYS = ['kind', 'bodyA', 'bodyB', 'anchorA', 'anchorB', 'collideConnected', 'breakForce', 'breakTorque'];
 const SPRING_KEYS = ['hertz', 'dampingRatio'];
@@ -126,6 +146,7 @@ const KEYS: Record<JointKindName, string[]> = {
   weld: [...BASE_KEYS, 'referenceAngle', 'linearHertz', 'angularHertz', 'dampingRatio'],
   wheel: [...BASE_KEYS, 'axis', 'lowerTranslation', 'upperTranslation', 'motorSpeed', 'maxMotorTorque', ...SPRING_KEYS],
   target: ['kind', 'body', 'target', 'anchor', 'hertz', 'dampingRatio', 'maxForce', 'breakForce', 'breakTorque'],
+  spring: ['kind', 'bodyA', 'bodyB', 'length', 'stiffness', 'damping', 'collideConnected', 'breakForce'],
 };
 
 /** What resolveJoint needs of the world: body slots from handles, and the bodies' poses. */
@@ -224,6 +245,24 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
   if (a === b) throw new RangeError(`bodyA and bodyB are the same body (${describeValue(o.bodyA)}): a joint needs two`);
   if (!world.isDynamic(a) && !world.isDynamic(b)) throw new RangeError(`bodyA ${describeValue(o.bodyA)} and bodyB ${describeValue(o.bodyB)} are both static or kinematic: a joint needs a dynamic body to act on`);
   const collide = o.collideConnected === undefined ? false : flag('collideConnected', o.collideConnected);
+  if (kind === 'spring') {
+    // Between the centres: the anchors are the centres of mass, in each body's frame.
+    world.localCenter(a, point);
+    r[J.anchorAX] = point[0];
+    r[J.anchorAY] = point[1];
+    world.localCenter(b, point);
+    r[J.anchorBX] = point[0];
+    r[J.anchorBY] = point[1];
+    world.worldPoint(a, r[J.anchorAX], r[J.anchorAY], point);
+    world.worldPoint(b, r[J.anchorBX], r[J.anchorBY], pointB);
+    const dx = pointB[0] - point[0];
+    const dy = pointB[1] - point[1];
+    r[J.length] = o.length === undefined ? Math.sqrt(dx * dx + dy * dy) : boundedNonNegative('length', o.length);
+    if (o.stiffness === undefined) throw new TypeError('stiffness must be a finite number, got undefined (a spring needs one)');
+    r[J.stiffness] = boundedNonNegative('stiffness', o.stiffness);
+    r[J.damping] = optionalNonNegative('damping', o.damping, 0);
+    return { kind: JointKind.spring, bodyA: a, bodyB: b, collide, definition: r };
+  }
   world.localCenter(a, point);
   const anchorA = o.anchorA === undefined ? { x: point[0], y: point[1] } : vector('anchorA', o.anchorA);
   world.localCenter(b, point);

@@ -5,7 +5,7 @@ import type { GridKernel } from '../broadphase/grid-kernel.js';
 import { grownCapacity, type Column } from '../util/grow.js';
 import { EscapeLog, resolveContact, type SolverSettings } from '../solver/contact-solver.js';
 import { clampBodies } from '../solver/box-walls.js';
-import type { IntegratorName } from '../integrate/integrator.js';
+import type { CircleIntegratorName as IntegratorName } from '../integrate/integrator.js';
 import {
   BODY_COLUMNS,
   Command,

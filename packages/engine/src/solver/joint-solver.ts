@@ -1,6 +1,8 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
-import { J, JOINT_KIND_NAMES, JOINT_STRIDE, type JointKindName } from '../joints/joint-layout.js';
+import { J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind, type JointKindName } from '../joints/joint-layout.js';
+import { ForceSprings } from './force-springs.js';
+import type { IntegratorName } from '../integrate/integrator.js';
 import type { JointStore } from '../joints/joint-store.js';
 import { BODY, makeSoft } from './solver-body.js';
 import { unwind, type JointKernel, type JointStepContext } from './joints/joint-kernel.js';
@@ -12,8 +14,8 @@ import { wheelJoint } from './joints/wheel-joint.js';
 import { targetJoint } from './joints/target-joint.js';
 import { atan2 } from '../math/trig.js';
 
-/** Each kind's solver: one line per kind. */
-const KERNEL_OF: Record<JointKindName, JointKernel> = {
+/** Each constraint kind's solver: one line per kind. Springs are forces, integrated apart (ForceSprings). */
+const KERNEL_OF: Record<Exclude<JointKindName, 'spring'>, JointKernel> = {
   distance: distanceJoint,
   revolute: revoluteJoint,
   prismatic: prismaticJoint,
@@ -22,7 +24,7 @@ const KERNEL_OF: Record<JointKindName, JointKernel> = {
   target: targetJoint,
 };
 /** The same, indexed by JointKind. */
-const JOINT_KERNELS: readonly JointKernel[] = JOINT_KIND_NAMES.map((name) => KERNEL_OF[name]);
+const JOINT_KERNELS: readonly JointKernel[] = JOINT_KIND_NAMES.map((name) => (name === 'spring' ? null! : KERNEL_OF[name]));
 
 /** How stiff and damped a rigid joint's push back is: Box2D v3's joint softness (jointHertz, jointDampingRatio). */
 export interface JointSettings {
@@ -42,6 +44,11 @@ export class JointSolver {
   /** Live joints some body of which moves this step, in slot order. */
   private active = new Int32Array(0);
   private activeCount = 0;
+  /** Live force-driven springs some body of which moves, in slot order. */
+  private springSlots = new Int32Array(0);
+  private readonly springs = new ForceSprings();
+  /** How the springs are integrated: the world's integrator. */
+  integrator: IntegratorName = 'semi-implicit-euler';
 
   constructor(readonly store: JointStore, readonly settings: JointSettings) {}
 
@@ -65,12 +72,16 @@ export class JointSolver {
    * Once per step, after the bodies are gathered: `index` maps a body slot to its solver state (0:
    * fixed); `contactHertz` is the contacts' stiffness this step, which a rigid joint's is twice at most.
    */
-  prepare(bodies: BodyStore, index: Int32Array, h: number, contactHertz: number): void {
+  prepare(bodies: BodyStore, index: Int32Array, slotOfState: Int32Array, stateCount: number, h: number, contactHertz: number, gx: number, gy: number): void {
     const { store, step } = this;
     step.h = h;
     step.inverseH = 1 / h;
     makeSoft(Math.min(this.settings.hertz, 2 * contactHertz), this.settings.dampingRatio, h, step.soft);
-    if (this.active.length < store.slotCount) this.active = new Int32Array(Math.max(store.slotCount, 2 * this.active.length));
+    if (this.active.length < store.slotCount) {
+      this.active = new Int32Array(Math.max(store.slotCount, 2 * this.active.length));
+      this.springSlots = new Int32Array(this.active.length);
+    }
+    let springCount = 0;
     const { invMass, x, y } = bodies;
     const rigid = bodies.rigid!;
     const { c, s, invInertia, localCenterX, localCenterY } = rigid;
@@ -91,7 +102,8 @@ export class JointSolver {
         continue;
       }
       r[o + J.active] = 1;
-      this.active[n++] = j;
+      if (store.kind[j] === JointKind.spring) this.springSlots[springCount++] = j;
+      else this.active[n++] = j;
       r[o + J.stateA] = ia * BODY;
       r[o + J.stateB] = ib * BODY;
       r[o + J.invMassA] = ia === 0 ? 0 : invMass[a];
@@ -115,9 +127,20 @@ export class JointSolver {
       r[o + J.worldAxisX] = ca * r[o + J.axisX] - sa * r[o + J.axisY];
       r[o + J.worldAxisY] = sa * r[o + J.axisX] + ca * r[o + J.axisY];
       r[o + J.deltaAngle] = unwind(atan2(sb * ca - cb * sa, cb * ca + sb * sa) - r[o + J.referenceAngle]);
-      JOINT_KERNELS[store.kind[j]].prepare(r, o, h);
+      if (store.kind[j] !== JointKind.spring) JOINT_KERNELS[store.kind[j]].prepare(r, o, h);
     }
     this.activeCount = n;
+    this.springs.prepare(store, this.springSlots, springCount, stateCount, bodies, slotOfState, gx, gy);
+  }
+
+  /** Each sub-step, before its velocity update: the springs' forces, as the integrator says. */
+  springsBefore(states: Float64Array): void {
+    this.springs.before(this.store.record, states, this.step.h, this.integrator);
+  }
+
+  /** Each sub-step, once the bodies moved. */
+  springsAfter(states: Float64Array): void {
+    this.springs.after(states, this.integrator);
   }
 
   warmStart(states: Float64Array): void {
@@ -139,9 +162,10 @@ export class JointSolver {
   }
 
   /** After the sub-steps: each joint's force and torque on body B over the last sub-step. */
-  finish(): void {
+  finish(states: Float64Array): void {
     const { store, active, activeCount, step } = this;
     const r = store.record;
+    this.springs.finish(r, states);
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
       JOINT_KERNELS[store.kind[j]].reaction(r, j * JOINT_STRIDE, step.inverseH);
@@ -153,6 +177,6 @@ export class JointSolver {
   }
 
   memoryBytes(): number {
-    return this.active.byteLength;
+    return this.active.byteLength + this.springSlots.byteLength + this.springs.memoryBytes();
   }
 }

@@ -151,12 +151,13 @@ export class SoftStep {
     const h = dt / substeps;
     const inverseH = 1 / h;
     this.prepare(bodies, contacts, h, settings);
-    joints?.prepare(bodies, this.index, h, Math.min(settings.contactHertz, 0.25 / h));
+    joints?.prepare(bodies, this.index, this.awake, this.awakeCount + 1, h, Math.min(settings.contactHertz, 0.25 / h), gx, gy);
     const { kernel, laneCount, awakeCount, states } = this;
     // Velocity plus gravity alone, the kernel's case: the general loop's terms are then 0 and its factors 1.
     const plain = kernel !== null && bodies.customMotionCount === 0 && !bodies.forcesPending;
     const maxAngular = MAX_ROTATION / dt;
     for (let i = 0; i < substeps; i++) {
+      joints?.springsBefore(states);
       if (plain) kernel.integrateVelocities(awakeCount, h * (0 + gx), h * (0 + gy));
       else this.integrateVelocities(bodies, gx, gy, h);
       joints?.warmStart(states);
@@ -167,13 +168,14 @@ export class SoftStep {
       else this.solveContacts(inverseH, settings.contactPushSpeed);
       if (kernel !== null) kernel.integratePositions(awakeCount, h, settings.maxLinearSpeed, maxAngular);
       else this.integratePositions(h, settings.maxLinearSpeed, maxAngular);
+      joints?.springsAfter(states);
       joints?.solve(states, false);
       if (kernel !== null) kernel.relax(laneCount, inverseH);
       else this.relaxContacts(inverseH);
     }
     this.applyRestitution(settings.restitutionThreshold);
     this.store(contacts);
-    joints?.finish();
+    joints?.finish(states);
     this.finish(bodies);
   }
 

@@ -4,7 +4,7 @@ import { PairSink } from '../store/pair-sink.js';
 import type { ContactEvents } from '../store/contact-events.js';
 import type { BroadPhase } from '../broadphase/broadphase.js';
 import { NarrowPhase } from '../narrowphase/narrowphase.js';
-import { INTEGRATORS, type IntegratorName } from '../integrate/integrator.js';
+import { INTEGRATORS, type CircleIntegratorName as IntegratorName } from '../integrate/integrator.js';
 import { clearForces, needsGeneralMotion } from '../integrate/motion.js';
 import type { BodyKernel } from '../store/body-kernel.js';
 import { bounceOffBox, clampBodies, clampIntoBox, noteWallContacts } from '../solver/box-walls.js';

@@ -8,6 +8,7 @@ import { StaticTree } from '../broadphase/static-tree.js';
 import { ShapeNarrowPhase, SEGMENT_ENTRY, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
 import { SoftStep, type SoftSettings } from '../solver/soft-step.js';
 import type { JointSolver } from '../solver/joint-solver.js';
+import type { IntegratorName } from '../integrate/integrator.js';
 import { ElasticPass, type ElasticSettings } from '../solver/elastic-pass.js';
 import { integrateRigid } from '../integrate/rigid-motion.js';
 import { IslandSleep } from '../solver/island-sleep.js';
@@ -28,7 +29,8 @@ export interface ShapeRouteSettings {
   box: { width: number; height: number } | null;
   /** 'soft': Box2D v3's soft step; 'elastic': the report's single pass. */
   solver: 'soft' | 'elastic';
-  explicitEuler: boolean;
+  /** How the elastic pass moves bodies, and how the soft step integrates force-driven springs. */
+  integrator: IntegratorName;
   soft: SoftSettings;
   elastic: ElasticSettings;
   /** Speculative distance: contact points are kept up to this far apart. */
@@ -90,7 +92,7 @@ export class ShapeRoute {
     const sweep = settings.continuous && (this.tree.count > 0 || this.bullets > 0);
     if (sweep) this.continuous.remember(bodies);
     if (elastic) {
-      integrateRigid(bodies, settings.gravity.x, settings.gravity.y, dt, settings.explicitEuler);
+      integrateRigid(bodies, settings.gravity.x, settings.gravity.y, dt, settings.integrator);
       if (sweep) this.sweep(queries, -1 - queryVersion, true);
     }
     const t1 = nowMs();

@@ -1,0 +1,293 @@
+import type { BodyStore } from '../store/body-store.js';
+import { J, JOINT_STRIDE } from '../joints/joint-layout.js';
+import type { IntegratorName } from '../integrate/integrator.js';
+import { BODY, DPX, DPY, DYNAMIC, VX, VY } from './solver-body.js';
+import { grownCapacity } from '../util/grow.js';
+import { TypeCode } from '../store/body-types.js';
+
+/**
+ * Force-driven springs (joints of kind 'spring'): Hooke's law between two bodies' centres,
+ * F = k (length - rest) + c (speed apart), integrated in each sub-step of the soft step by the
+ * world's integrator, as the report's section 7.4 proposes for soft bodies:
+ *
+ *   semi-implicit Euler  before the sub-step's velocity update: v += h F(x, v) / m, then the
+ *                        solver moves the bodies with the new velocity
+ *   explicit Euler       the same impulse, applied after the bodies moved with the old velocity
+ *   rk4                  classical Runge-Kutta over the sub-step, of the bodies on springs under
+ *                        their springs and gravity alone: their velocity takes its increment
+ *                        (less gravity's, which the sub-step adds as for every body), and their
+ *                        motion its position increment (as a correction after the solver moved
+ *                        them with their velocity)
+ *
+ * Contacts and joints act on top within the same sub-step, as impulses after the springs
+ * (operator splitting): Runge-Kutta's order holds for the springs between collisions, and a
+ * contact changes a velocity at once whatever the integrator.
+ */
+export class ForceSprings {
+  private joints = new Int32Array(0);
+  private count = 0;
+  /** Per solver state: its member index, or -1; members are the moving bodies on springs. */
+  private memberOf = new Int32Array(0);
+  private members = new Int32Array(0);
+  private memberCount = 0;
+  /** Per member: gravity (0 but for dynamic bodies), inverse mass, and the Runge-Kutta buffers. */
+  private buffers = new Float64Array(0);
+
+  /** Once per step: the live spring joints (slots), whose common fields JointSolver.prepare set. */
+  prepare(store: { record: Float64Array }, joints: Int32Array, count: number, stateCount: number, bodies: BodyStore, slotOfState: Int32Array, gx: number, gy: number): void {
+    if (this.joints.length < count) this.joints = new Int32Array(grownCapacity(this.joints.length, count));
+    this.joints.set(joints.subarray(0, count));
+    this.count = count;
+    if (this.memberOf.length < stateCount) {
+      const capacity = grownCapacity(this.memberOf.length, stateCount);
+      this.memberOf = new Int32Array(capacity);
+      this.members = new Int32Array(capacity);
+    }
+    this.memberOf.fill(-1, 0, stateCount);
+    let n = 0;
+    const r = store.record;
+    for (let k = 0; k < count; k++) {
+      const o = joints[k] * JOINT_STRIDE;
+      n = this.join(r[o + J.stateA] / BODY, n);
+      n = this.join(r[o + J.stateB] / BODY, n);
+    }
+    this.memberCount = n;
+    if (this.buffers.length < n * MEMBER) this.buffers = new Float64Array(grownCapacity(this.buffers.length / MEMBER, n) * MEMBER);
+    const b = this.buffers;
+    for (let m = 0; m < n; m++) {
+      const slot = slotOfState[this.members[m] - 1];
+      const gravity = bodies.type[slot] === TypeCode.dynamic ? bodies.gravityScale[slot] : 0;
+      b[m * MEMBER + INV_MASS] = bodies.invMass[slot];
+      b[m * MEMBER + GX] = gx * gravity;
+      b[m * MEMBER + GY] = gy * gravity;
+    }
+  }
+
+  /** Makes solver state `state` a member (the fixed dummy, 0, never is); returns the member count. */
+  private join(state: number, n: number): number {
+    if (state === 0 || this.memberOf[state] >= 0) return n;
+    this.memberOf[state] = n;
+    this.members[n] = state;
+    return n + 1;
+  }
+
+  /** Before the sub-step's velocity update. */
+  before(r: Float64Array, states: Float64Array, h: number, integrator: IntegratorName): void {
+    if (this.count === 0) return;
+    if (integrator === 'rk4') this.rungeKutta(r, states, h);
+    else this.euler(r, states, h, integrator === 'explicit-euler');
+  }
+
+  /** After the solver moved the bodies: explicit Euler's impulse, Runge-Kutta's position correction. */
+  after(states: Float64Array, integrator: IntegratorName): void {
+    if (this.count === 0 || integrator === 'semi-implicit-euler') return;
+    const b = this.buffers;
+    for (let m = 0; m < this.memberCount; m++) {
+      const s = this.members[m] * BODY;
+      const at = m * MEMBER;
+      if (integrator === 'rk4') {
+        states[s + DPX] += b[at + CORRECT_X];
+        states[s + DPY] += b[at + CORRECT_Y];
+      } else if (states[s + DYNAMIC] === 1) {
+        states[s + VX] += b[at + AX];
+        states[s + VY] += b[at + AY];
+      }
+    }
+  }
+
+  /**
+   * After the step: each spring's force on B (A takes the opposite), from where the bodies are
+   * at its end, for getJoint and breaking.
+   */
+  finish(r: Float64Array, states: Float64Array): void {
+    for (let k = 0; k < this.count; k++) {
+      const o = this.joints[k] * JOINT_STRIDE;
+      const sa = r[o + J.stateA];
+      const sb = r[o + J.stateB];
+      const f = tension(r, o, states[sb + DPX] - states[sa + DPX], states[sb + DPY] - states[sa + DPY], states[sb + VX] - states[sa + VX], states[sb + VY] - states[sa + VY]);
+      r[o + J.forceX] = -f * unit[0];
+      r[o + J.forceY] = -f * unit[1];
+      r[o + J.torque] = 0;
+    }
+  }
+
+  memoryBytes(): number {
+    return this.joints.byteLength + this.memberOf.byteLength * 2 + this.buffers.byteLength;
+  }
+
+  /** One evaluation at the sub-step's start: semi-implicit applies it now, explicit after the move. */
+  private euler(r: Float64Array, states: Float64Array, h: number, explicit: boolean): void {
+    const b = this.buffers;
+    const n = this.memberCount;
+    for (let m = 0; m < n; m++) {
+      const s = this.members[m] * BODY;
+      const at = m * MEMBER;
+      b[at + PX] = states[s + DPX];
+      b[at + PY] = states[s + DPY];
+      b[at + SVX] = states[s + VX];
+      b[at + SVY] = states[s + VY];
+    }
+    this.accelerations(r, false);
+    for (let m = 0; m < n; m++) {
+      const s = this.members[m] * BODY;
+      const at = m * MEMBER;
+      const dvx = h * b[at + AX];
+      const dvy = h * b[at + AY];
+      if (explicit) {
+        b[at + AX] = dvx;
+        b[at + AY] = dvy;
+      } else if (states[s + DYNAMIC] === 1) {
+        states[s + VX] += dvx;
+        states[s + VY] += dvy;
+      }
+    }
+  }
+
+  private rungeKutta(r: Float64Array, states: Float64Array, h: number): void {
+    const b = this.buffers;
+    const n = this.memberCount;
+    for (let m = 0; m < n; m++) {
+      const s = this.members[m] * BODY;
+      const at = m * MEMBER;
+      b[at + X0] = states[s + DPX];
+      b[at + Y0] = states[s + DPY];
+      b[at + VX0] = states[s + VX];
+      b[at + VY0] = states[s + VY];
+      b[at + SUM_X] = 0;
+      b[at + SUM_Y] = 0;
+      b[at + SUM_VX] = 0;
+      b[at + SUM_VY] = 0;
+      b[at + PX] = b[at + X0];
+      b[at + PY] = b[at + Y0];
+      b[at + SVX] = b[at + VX0];
+      b[at + SVY] = b[at + VY0];
+    }
+    // Stages 1 to 4: k = f(state), weighted 1, 2, 2, 1; the next stage's state is the start plus
+    // h/2, h/2 and h times this k.
+    for (let stage = 0; stage < 4; stage++) {
+      this.accelerations(r, true);
+      const weight = stage === 0 || stage === 3 ? 1 : 2;
+      const ahead = stage < 2 ? 0.5 * h : h;
+      for (let m = 0; m < n; m++) {
+        const at = m * MEMBER;
+        const kx = b[at + SVX];
+        const ky = b[at + SVY];
+        const kvx = b[at + AX];
+        const kvy = b[at + AY];
+        b[at + SUM_X] += weight * kx;
+        b[at + SUM_Y] += weight * ky;
+        b[at + SUM_VX] += weight * kvx;
+        b[at + SUM_VY] += weight * kvy;
+        if (stage < 3) {
+          b[at + PX] = b[at + X0] + ahead * kx;
+          b[at + PY] = b[at + Y0] + ahead * ky;
+          b[at + SVX] = b[at + VX0] + ahead * kvx;
+          b[at + SVY] = b[at + VY0] + ahead * kvy;
+        }
+      }
+    }
+    const sixth = h / 6;
+    for (let m = 0; m < n; m++) {
+      const s = this.members[m] * BODY;
+      const at = m * MEMBER;
+      const dx = sixth * b[at + SUM_X];
+      const dy = sixth * b[at + SUM_Y];
+      let vx = b[at + VX0];
+      let vy = b[at + VY0];
+      if (states[s + DYNAMIC] === 1) {
+        // The sub-step adds gravity's h g itself, as for every body.
+        vx += sixth * b[at + SUM_VX] - h * b[at + GX];
+        vy += sixth * b[at + SUM_VY] - h * b[at + GY];
+        states[s + VX] = vx;
+        states[s + VY] = vy;
+        vx += h * b[at + GX];
+        vy += h * b[at + GY];
+      }
+      // The solver will move the body by h v; the rest of Runge-Kutta's increment comes after.
+      b[at + CORRECT_X] = dx - h * vx;
+      b[at + CORRECT_Y] = dy - h * vy;
+    }
+  }
+
+  /** Each member's acceleration at the stage state (PX, PY, SVX, SVY) into AX, AY; with gravity for Runge-Kutta's stages. */
+  private accelerations(r: Float64Array, gravity: boolean): void {
+    const b = this.buffers;
+    const { memberOf } = this;
+    const n = this.memberCount;
+    for (let m = 0; m < n; m++) {
+      const at = m * MEMBER;
+      b[at + AX] = gravity ? b[at + GX] : 0;
+      b[at + AY] = gravity ? b[at + GY] : 0;
+    }
+    for (let k = 0; k < this.count; k++) {
+      const o = this.joints[k] * JOINT_STRIDE;
+      const ma = memberOf[r[o + J.stateA] / BODY];
+      const mb = memberOf[r[o + J.stateB] / BODY];
+      const a = ma * MEMBER;
+      const c = mb * MEMBER;
+      const pax = ma < 0 ? 0 : b[a + PX];
+      const pay = ma < 0 ? 0 : b[a + PY];
+      const vax = ma < 0 ? 0 : b[a + SVX];
+      const vay = ma < 0 ? 0 : b[a + SVY];
+      const pbx = mb < 0 ? 0 : b[c + PX];
+      const pby = mb < 0 ? 0 : b[c + PY];
+      const vbx = mb < 0 ? 0 : b[c + SVX];
+      const vby = mb < 0 ? 0 : b[c + SVY];
+      const f = tension(r, o, pbx - pax, pby - pay, vbx - vax, vby - vay);
+      const fx = f * unit[0];
+      const fy = f * unit[1];
+      if (ma >= 0) {
+        b[a + AX] += fx * b[a + INV_MASS];
+        b[a + AY] += fy * b[a + INV_MASS];
+      }
+      if (mb >= 0) {
+        b[c + AX] -= fx * b[c + INV_MASS];
+        b[c + AY] -= fy * b[c + INV_MASS];
+      }
+    }
+  }
+}
+
+/** The unit vector from A's centre to B's of the last `tension` call. */
+const unit = new Float64Array(2);
+
+/**
+ * A spring's pull (positive: B drawn towards A) with B's centre `dx, dy` further from A's than at
+ * the step's start and moving apart at `dvx, dvy`; leaves the direction in `unit`.
+ */
+function tension(r: Float64Array, o: number, dx: number, dy: number, dvx: number, dvy: number): number {
+  const x = r[o + J.deltaCenterX] + dx;
+  const y = r[o + J.deltaCenterY] + dy;
+  const length = Math.sqrt(x * x + y * y);
+  if (!(length > 0)) {
+    unit[0] = 0;
+    unit[1] = 0;
+    return 0;
+  }
+  unit[0] = x / length;
+  unit[1] = y / length;
+  return r[o + J.stiffness] * (length - r[o + J.length]) + r[o + J.damping] * (dvx * unit[0] + dvy * unit[1]);
+}
+
+/** Doubles per member in `buffers`. */
+const INV_MASS = 0;
+const GX = 1;
+const GY = 2;
+const X0 = 3;
+const Y0 = 4;
+const VX0 = 5;
+const VY0 = 6;
+/** The stage's state, and its acceleration. */
+const PX = 7;
+const PY = 8;
+const SVX = 9;
+const SVY = 10;
+const AX = 11;
+const AY = 12;
+const SUM_X = 13;
+const SUM_Y = 14;
+const SUM_VX = 15;
+const SUM_VY = 16;
+const CORRECT_X = 17;
+const CORRECT_Y = 18;
+const MEMBER = 19;
