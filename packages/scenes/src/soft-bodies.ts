@@ -8,12 +8,17 @@ export const jelliesParams = {
   hertz: { default: 15, min: 0.1, max: 1000, description: 'spring frequency of the lattice' },
   dampingRatio: { default: 0.5, min: 0, max: 100, description: 'damping ratio of the springs' },
   funnel: { default: 1, min: 0, max: 1, integer: true, description: '1: they fall into a funnel of segments' },
+  stiffness: { default: 0, min: 0, max: 1e9, description: 'above 0: force-driven springs of this stiffness (integrated by the world\'s integrator) instead of soft-constraint distance joints' },
+  stretch: { default: 1, min: 0.5, max: 2, description: 'the jellies start stretched along x by this factor (their springs at rest at 1)' },
+  gravity: { default: 10, min: 0, max: 100, description: 'gravity, m/s^2' },
+  floor: { default: 1, min: 0, max: 1, integer: true, description: '1: a floor with walls below the funnel' },
 } satisfies ParamSpecs;
 
 /**
  * Lattice jellies (soft bodies from the engine's own parts): each a side x side grid of small
- * circles joined by distance springs along the rows and columns and across each cell's two
- * diagonals (shear), so that it keeps its shape but wobbles; they fall into a funnel of segments,
+ * circles joined by springs along the rows and columns and across each cell's two diagonals
+ * (shear), so that it keeps its shape but wobbles: distance joints with `hertz` (the solver's soft
+ * constraints), or with `stiffness` force-driven springs, which the world's integrator integrates; they fall into a funnel of segments,
  * colliding with it and with each other through the ordinary broad-phase. Meters, gravity 10,
  * y down, the funnel's outlet at y = 0.
  */
@@ -25,20 +30,25 @@ export function jellies(given?: Partial<Record<keyof typeof jelliesParams, numbe
   const columns = Math.max(1, Math.round(Math.sqrt(p.count)));
   const bodies: SceneBody[] = [];
   const joints: JointOptions[] = [];
-  const spring = (a: number, b: number): JointOptions => ({ kind: 'distance', bodyA: a, bodyB: b, hertz: p.hertz, dampingRatio: p.dampingRatio, collideConnected: false });
+  // Rest lengths from the unstretched lattice, so that a stretched jelly starts with its springs drawn out.
+  const spring = (a: number, b: number, rest: number): JointOptions =>
+    p.stiffness > 0
+      ? { kind: 'spring', bodyA: a, bodyB: b, length: rest, stiffness: p.stiffness, damping: 0 }
+      : { kind: 'distance', bodyA: a, bodyB: b, length: rest, hertz: p.hertz, dampingRatio: p.dampingRatio };
+  const diagonal = spacing * Math.SQRT2;
   for (let k = 0; k < p.count; k++) {
     const ox = (k % columns - (columns - 1) / 2) * (size + 1);
     const oy = -6 - Math.floor(k / columns) * (size + 1) - size;
     const first = bodies.length;
     for (let i = 0; i < p.side; i++) {
       for (let j = 0; j < p.side; j++) {
-        bodies.push({ x: ox + j * spacing, y: oy + i * spacing, shapes: [{ kind: 'circle', radius, density: 1, friction: 0.4 }] });
+        bodies.push({ x: ox + j * spacing * p.stretch, y: oy + i * spacing, shapes: [{ kind: 'circle', radius, density: 1, friction: 0.4 }] });
         const at = first + i * p.side + j;
-        if (j > 0) joints.push(spring(at - 1, at));
-        if (i > 0) joints.push(spring(at - p.side, at));
+        if (j > 0) joints.push(spring(at - 1, at, spacing));
+        if (i > 0) joints.push(spring(at - p.side, at, spacing));
         if (i > 0 && j > 0) {
-          joints.push(spring(at - p.side - 1, at));
-          joints.push(spring(at - p.side, at - 1));
+          joints.push(spring(at - p.side - 1, at, diagonal));
+          joints.push(spring(at - p.side, at - 1, diagonal));
         }
       }
     }
@@ -50,16 +60,18 @@ export function jellies(given?: Partial<Record<keyof typeof jelliesParams, numbe
     segments.push({ x1: width / 2, y1: -width / 2, x2: 1.5, y2: 0, thickness: 0.1 });
   }
   // A floor with walls: circles roll, so a jelly on a bare floor rolls away like a wheel.
-  segments.push({ x1: -width, y1: 8, x2: width, y2: 8, thickness: 0.1 });
-  segments.push({ x1: -width, y1: 8, x2: -width, y2: -4, thickness: 0.1 });
-  segments.push({ x1: width, y1: 8, x2: width, y2: -4, thickness: 0.1 });
+  if (p.floor === 1) {
+    segments.push({ x1: -width, y1: 8, x2: width, y2: 8, thickness: 0.1 });
+    segments.push({ x1: -width, y1: 8, x2: -width, y2: -4, thickness: 0.1 });
+    segments.push({ x1: width, y1: 8, x2: width, y2: -4, thickness: 0.1 });
+  }
   const rows = Math.ceil(p.count / columns);
   return {
     name: 'jellies',
     kind: 'shapes',
     params: Object.freeze({ ...p }),
     bounds: null,
-    gravity: { x: 0, y: 10 },
+    gravity: { x: 0, y: p.gravity },
     world: { friction: 0.4, restitution: 0, lengthUnit: 1, solver: 'soft' },
     bodies,
     segments,
