@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { Session } from 'node:inspector/promises';
 import { buildScene, buildShapeScene, buildShapeWorld, buildWorld, CLIFF_SCENES } from '@maxgrid/scenes';
-import type { World } from '../src/index.js';
+import { World } from '../src/index.js';
 
 /**
  * Bytes allocated per step by the engine's own code once warmed up, from V8's sampling heap
@@ -37,6 +37,19 @@ async function engineBytesPerStep(world: World, steps: number): Promise<{ bytes:
   }
 }
 
+/** Pairs of boxes on prismatic joints (limit, motor, spring) and wheel joints, no segments. */
+function sliders(n: number): World {
+  const world = new World({ gravity: { x: 0, y: 10 } });
+  const ground = world.createBox({ x: 0, y: 2, width: 4 * n + 10, height: 1, type: 'static' });
+  for (let k = 0; k < n; k++) {
+    const base = world.createBox({ x: 4 * k, y: 0, width: 1, height: 1 });
+    world.createJoint({ kind: 'prismatic', bodyA: ground, bodyB: base, axis: { x: 0, y: 1 }, lowerTranslation: -3, upperTranslation: -1, maxMotorForce: 5, motorSpeed: 1, hertz: 2 });
+    const wheel = world.createCircle({ x: 4 * k + 1.5, y: 0, radius: 0.4, friction: 0.5 });
+    world.createJoint({ kind: 'wheel', bodyA: base, bodyB: wheel, anchorA: { x: 1.5, y: 0 }, maxMotorTorque: 2, motorSpeed: 3, lowerTranslation: -0.2, upperTranslation: 0.2 });
+  }
+  return world;
+}
+
 describe('a warmed-up step allocates nothing per body or pair', () => {
   // Each world at two sizes: what a step allocates must not grow with its bodies. A few boxed
   // numbers per step (arguments of once-a-step calls) are no matter; one per body or pair is.
@@ -48,6 +61,9 @@ describe('a warmed-up step allocates nothing per body or pair', () => {
     ['polygons, capsules and circles under gravity', (k: number) => buildShapeWorld(buildShapeScene('polygon-box', { n: 250 * k }))],
     ['ragdolls on revolute joints with limits and motors', (k: number) => buildShapeWorld(buildShapeScene('ragdolls', { count: 10 * k }))],
     ['a loaded bridge on revolute joints with friction motors', (k: number) => buildShapeWorld(buildShapeScene('bridge', { planks: 30 * k, load: 5 * k }))],
+    ['jellies on distance springs, falling free', (k: number) => buildShapeWorld(buildShapeScene('jellies', { count: 2 * k, side: 4, funnel: 0, floor: 0 }))],
+    ['jellies on force springs integrated by rk4', (k: number) => buildShapeWorld(buildShapeScene('jellies', { count: 2 * k, side: 4, funnel: 0, floor: 0, stiffness: 500 }), { integrator: 'rk4' })],
+    ['sliders and wheels on prismatic and wheel joints with limits, motors and springs', (k: number) => sliders(20 * k)],
   ] as const)('%s', async (_name, build) => {
     const small = await engineBytesPerStep(build(1), 40);
     const large = await engineBytesPerStep(build(4), 40);

@@ -97,6 +97,8 @@ export const J = {
   active: 59,
   perpMass: 60,
   motorMass: 61,
+  /** The joint angle now, within a sub-step (measureAngle). */
+  angle: 63,
 } as const;
 
 export const JOINT_STRIDE = 64;

@@ -128,6 +128,37 @@ export function atan2(y: number, x: number): number {
   return y < 0 || 1 / y < 0 ? -a : a;
 }
 
+/**
+ * atan2(io[at], io[at + 1]), that is of y then x, into io[at + 2]: atan2's arithmetic, the same
+ * bits, written out in one function, for the step, which calls it without number arguments (V8
+ * boxes the numbers a call passes or returns where it does not inline it).
+ */
+export function atan2Into(io: Float64Array, at: number): void {
+  const y = io[at];
+  const x = io[at + 1];
+  if (y === 0 && x === 0) {
+    io[at + 2] = 1 / x < 0 ? (1 / y < 0 ? -PI : PI) : y;
+    return;
+  }
+  const ax = Math.abs(x);
+  const ay = Math.abs(y);
+  const under = ay <= ax;
+  let t = under ? ay / ax : ax / ay;
+  let base = 0;
+  if (t > TAN_EIGHTH_PI) {
+    base = QUARTER_PI;
+    t = (t - 1) / (t + 1);
+  }
+  const half = t / (1 + Math.sqrt(1 + t * t));
+  const z = half * half;
+  let sum = 0;
+  for (let n = 25; n >= 3; n -= 2) sum = (n % 4 === 1 ? 1 : -1) / n + z * sum;
+  const unit = base + 2 * (half + half * z * sum);
+  let a = under ? unit : HALF_PI - unit;
+  if (x < 0) a = PI - a;
+  io[at + 2] = y < 0 || 1 / y < 0 ? -a : a;
+}
+
 /** Below this, `turn` sums the short series; its first omitted terms are below 1e-20 of the result. */
 const SMALL_TURN = 0.125;
 

@@ -71,11 +71,11 @@ export class ForceSprings {
     return n + 1;
   }
 
-  /** Before the sub-step's velocity update. */
-  before(r: Float64Array, states: Float64Array, h: number, integrator: IntegratorName): void {
+  /** Before the sub-step's velocity update; limits[0] is the soft step's speed limit. */
+  before(r: Float64Array, states: Float64Array, step: { h: number }, integrator: IntegratorName, limits: Float64Array): void {
     if (this.count === 0) return;
-    if (integrator === 'rk4') this.rungeKutta(r, states, h);
-    else this.euler(r, states, h, integrator === 'explicit-euler');
+    if (integrator === 'rk4') this.rungeKutta(r, states, step, limits);
+    else this.euler(r, states, step, integrator === 'explicit-euler');
   }
 
   /** After the solver moved the bodies: explicit Euler's impulse, Runge-Kutta's position correction. */
@@ -104,9 +104,13 @@ export class ForceSprings {
       const o = this.joints[k] * JOINT_STRIDE;
       const sa = r[o + J.stateA];
       const sb = r[o + J.stateB];
-      const f = tension(r, o, states[sb + DPX] - states[sa + DPX], states[sb + DPY] - states[sa + DPY], states[sb + VX] - states[sa + VX], states[sb + VY] - states[sa + VY]);
-      r[o + J.forceX] = -f * unit[0];
-      r[o + J.forceY] = -f * unit[1];
+      io[DX] = states[sb + DPX] - states[sa + DPX];
+      io[DY] = states[sb + DPY] - states[sa + DPY];
+      io[DVX] = states[sb + VX] - states[sa + VX];
+      io[DVY] = states[sb + VY] - states[sa + VY];
+      tension(r, o);
+      r[o + J.forceX] = -io[PULL] * io[UNIT_X];
+      r[o + J.forceY] = -io[PULL] * io[UNIT_Y];
       r[o + J.torque] = 0;
     }
   }
@@ -116,7 +120,8 @@ export class ForceSprings {
   }
 
   /** One evaluation at the sub-step's start: semi-implicit applies it now, explicit after the move. */
-  private euler(r: Float64Array, states: Float64Array, h: number, explicit: boolean): void {
+  private euler(r: Float64Array, states: Float64Array, step: { h: number }, explicit: boolean): void {
+    const h = step.h;
     const b = this.buffers;
     const n = this.memberCount;
     for (let m = 0; m < n; m++) {
@@ -143,7 +148,15 @@ export class ForceSprings {
     }
   }
 
-  private rungeKutta(r: Float64Array, states: Float64Array, h: number): void {
+  /**
+   * Past its stability limit (omega h about 2.8) Runge-Kutta's stages grow without bound; the
+   * stages' velocities are held to the speed limit and the position correction to a sub-step's
+   * travel at it, so that a spring too stiff for the step blows up within the speed limit, as
+   * every other body does, never to infinity.
+   */
+  private rungeKutta(r: Float64Array, states: Float64Array, step: { h: number }, limits: Float64Array): void {
+    const h = step.h;
+    const maxSpeed = limits[0];
     const b = this.buffers;
     const n = this.memberCount;
     for (let m = 0; m < n; m++) {
@@ -181,8 +194,10 @@ export class ForceSprings {
         if (stage < 3) {
           b[at + PX] = b[at + X0] + ahead * kx;
           b[at + PY] = b[at + Y0] + ahead * ky;
-          b[at + SVX] = b[at + VX0] + ahead * kvx;
-          b[at + SVY] = b[at + VY0] + ahead * kvy;
+          const svx = b[at + VX0] + ahead * kvx;
+          const svy = b[at + VY0] + ahead * kvy;
+          b[at + SVX] = svx > maxSpeed ? maxSpeed : svx < -maxSpeed ? -maxSpeed : svx;
+          b[at + SVY] = svy > maxSpeed ? maxSpeed : svy < -maxSpeed ? -maxSpeed : svy;
         }
       }
     }
@@ -204,8 +219,11 @@ export class ForceSprings {
         vy += h * b[at + GY];
       }
       // The solver will move the body by h v; the rest of Runge-Kutta's increment comes after.
-      b[at + CORRECT_X] = dx - h * vx;
-      b[at + CORRECT_Y] = dy - h * vy;
+      const most = h * maxSpeed;
+      const cx = dx - h * vx;
+      const cy = dy - h * vy;
+      b[at + CORRECT_X] = cx > most ? most : cx < -most ? -most : cx;
+      b[at + CORRECT_Y] = cy > most ? most : cy < -most ? -most : cy;
     }
   }
 
@@ -233,9 +251,13 @@ export class ForceSprings {
       const pby = mb < 0 ? 0 : b[c + PY];
       const vbx = mb < 0 ? 0 : b[c + SVX];
       const vby = mb < 0 ? 0 : b[c + SVY];
-      const f = tension(r, o, pbx - pax, pby - pay, vbx - vax, vby - vay);
-      const fx = f * unit[0];
-      const fy = f * unit[1];
+      io[DX] = pbx - pax;
+      io[DY] = pby - pay;
+      io[DVX] = vbx - vax;
+      io[DVY] = vby - vay;
+      tension(r, o);
+      const fx = io[PULL] * io[UNIT_X];
+      const fy = io[PULL] * io[UNIT_Y];
       if (ma >= 0) {
         b[a + AX] += fx * b[a + INV_MASS];
         b[a + AY] += fy * b[a + INV_MASS];
@@ -248,25 +270,34 @@ export class ForceSprings {
   }
 }
 
-/** The unit vector from A's centre to B's of the last `tension` call. */
-const unit = new Float64Array(2);
-
 /**
- * A spring's pull (positive: B drawn towards A) with B's centre `dx, dy` further from A's than at
- * the step's start and moving apart at `dvx, dvy`; leaves the direction in `unit`.
+ * tension's input, B's centre's move from A's since the step's start and its speed away (DX, DY,
+ * DVX, DVY), and its output, the pull (positive: B drawn towards A) and the unit vector from A's
+ * centre to B's: numbers pass through this array, which V8 would box as arguments and results of
+ * a call it does not inline.
  */
-function tension(r: Float64Array, o: number, dx: number, dy: number, dvx: number, dvy: number): number {
-  const x = r[o + J.deltaCenterX] + dx;
-  const y = r[o + J.deltaCenterY] + dy;
+const io = new Float64Array(7);
+const DX = 0;
+const DY = 1;
+const DVX = 2;
+const DVY = 3;
+const PULL = 4;
+const UNIT_X = 5;
+const UNIT_Y = 6;
+
+function tension(r: Float64Array, o: number): void {
+  const x = r[o + J.deltaCenterX] + io[DX];
+  const y = r[o + J.deltaCenterY] + io[DY];
   const length = Math.sqrt(x * x + y * y);
   if (!(length > 0)) {
-    unit[0] = 0;
-    unit[1] = 0;
-    return 0;
+    io[UNIT_X] = 0;
+    io[UNIT_Y] = 0;
+    io[PULL] = 0;
+    return;
   }
-  unit[0] = x / length;
-  unit[1] = y / length;
-  return r[o + J.stiffness] * (length - r[o + J.length]) + r[o + J.damping] * (dvx * unit[0] + dvy * unit[1]);
+  io[UNIT_X] = x / length;
+  io[UNIT_Y] = y / length;
+  io[PULL] = r[o + J.stiffness] * (length - r[o + J.length]) + r[o + J.damping] * (io[DVX] * io[UNIT_X] + io[DVY] * io[UNIT_Y]);
 }
 
 /** Doubles per member in `buffers`. */

@@ -5,14 +5,16 @@ import { ForceSprings } from './force-springs.js';
 import type { IntegratorName } from '../integrate/integrator.js';
 import type { JointStore } from '../joints/joint-store.js';
 import { BODY, makeSoft } from './solver-body.js';
-import { unwind, type JointKernel, type JointStepContext } from './joints/joint-kernel.js';
+import type { JointKernel, JointStepContext } from './joints/joint-kernel.js';
 import { distanceJoint } from './joints/distance-joint.js';
 import { revoluteJoint } from './joints/revolute-joint.js';
 import { prismaticJoint } from './joints/prismatic-joint.js';
 import { weldJoint } from './joints/weld-joint.js';
 import { wheelJoint } from './joints/wheel-joint.js';
-import { targetJoint } from './joints/target-joint.js';
-import { atan2 } from '../math/trig.js';
+import { SPIN_DAMPING, SPIN_HERTZ, targetJoint } from './joints/target-joint.js';
+import { atan2Into } from '../math/trig.js';
+
+const angleIO = new Float64Array(3);
 
 /** Each constraint kind's solver: one line per kind. Springs are forces, integrated apart (ForceSprings). */
 const KERNEL_OF: Record<Exclude<JointKindName, 'spring'>, JointKernel> = {
@@ -25,6 +27,40 @@ const KERNEL_OF: Record<Exclude<JointKindName, 'spring'>, JointKernel> = {
 };
 /** The same, indexed by JointKind. */
 const JOINT_KERNELS: readonly JointKernel[] = JOINT_KIND_NAMES.map((name) => (name === 'spring' ? null! : KERNEL_OF[name]));
+
+/** The accumulated impulses of a joint, and whether each is angular (a torque's) rather than linear. */
+const IMPULSES = [J.linearImpulseX, J.linearImpulseY, J.angularImpulse, J.springImpulseSum, J.motorImpulse, J.lowerImpulse, J.upperImpulse, J.axialImpulse];
+const ANGULAR: Record<number, readonly number[]> = {
+  [JointKind.distance]: [],
+  [JointKind.revolute]: [J.springImpulseSum, J.motorImpulse, J.lowerImpulse, J.upperImpulse],
+  [JointKind.prismatic]: [J.angularImpulse],
+  [JointKind.weld]: [J.angularImpulse],
+  [JointKind.wheel]: [J.motorImpulse],
+  [JointKind.target]: [J.angularImpulse],
+};
+
+/**
+ * Keeps a joint's kept impulses within what could change its bodies' relative speed by twice the
+ * speed limits in one sub-step. A joint that cannot be met (made far from its constraint, or
+ * against another joint) takes more impulse every sub-step; warm-started from it, the next
+ * sub-step's velocities would grow without bound, to infinity and NaN. Met joints never come near.
+ */
+function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64Array): void {
+  const maxSpeed = limits[0];
+  const maxAngular = limits[1];
+  const inverseMass = r[o + J.invMassA] + r[o + J.invMassB];
+  const inverseInertia = r[o + J.invInertiaA] + r[o + J.invInertiaB];
+  const linear = inverseMass > 0 ? (2 * maxSpeed) / inverseMass : 0;
+  const angular = inverseInertia > 0 ? (2 * maxAngular) / inverseInertia : 0;
+  const angularFields = ANGULAR[kind];
+  for (let k = 0; k < IMPULSES.length; k++) {
+    const field = IMPULSES[k];
+    const most = angularFields.includes(field) ? angular : linear;
+    const value = r[o + field];
+    if (value > most) r[o + field] = most;
+    else if (value < -most) r[o + field] = -most;
+  }
+}
 
 /** How stiff and damped a rigid joint's push back is: Box2D v3's joint softness (jointHertz, jointDampingRatio). */
 export interface JointSettings {
@@ -40,13 +76,15 @@ export interface JointSettings {
  * still this step (static or asleep) is skipped and keeps its impulses.
  */
 export class JointSolver {
-  private readonly step: JointStepContext = { h: 0, inverseH: 0, soft: new Float64Array(3) };
+  private readonly step: JointStepContext = { h: 0, inverseH: 0, soft: new Float64Array(3), spinSoft: new Float64Array(3) };
   /** Live joints some body of which moves this step, in slot order. */
   private active = new Int32Array(0);
   private activeCount = 0;
   /** Live force-driven springs some body of which moves, in slot order. */
   private springSlots = new Int32Array(0);
   private readonly springs = new ForceSprings();
+  /** The speed limits, linear and angular, for boundImpulses. */
+  private readonly limits = new Float64Array(2);
   /** How the springs are integrated: the world's integrator. */
   integrator: IntegratorName = 'semi-implicit-euler';
 
@@ -72,15 +110,18 @@ export class JointSolver {
    * Once per step, after the bodies are gathered: `index` maps a body slot to its solver state (0:
    * fixed); `contactHertz` is the contacts' stiffness this step, which a rigid joint's is twice at most.
    */
-  prepare(bodies: BodyStore, index: Int32Array, slotOfState: Int32Array, stateCount: number, h: number, contactHertz: number, gx: number, gy: number): void {
+  prepare(bodies: BodyStore, index: Int32Array, slotOfState: Int32Array, stateCount: number, h: number, contactHertz: number, gx: number, gy: number, maxSpeed: number, maxAngular: number): void {
     const { store, step } = this;
     step.h = h;
     step.inverseH = 1 / h;
     makeSoft(Math.min(this.settings.hertz, 2 * contactHertz), this.settings.dampingRatio, h, step.soft);
+    makeSoft(SPIN_HERTZ, SPIN_DAMPING, h, step.spinSoft);
     if (this.active.length < store.slotCount) {
       this.active = new Int32Array(Math.max(store.slotCount, 2 * this.active.length));
       this.springSlots = new Int32Array(this.active.length);
     }
+    this.limits[0] = maxSpeed;
+    this.limits[1] = maxAngular;
     let springCount = 0;
     const { invMass, x, y } = bodies;
     const rigid = bodies.rigid!;
@@ -126,8 +167,17 @@ export class JointSolver {
       r[o + J.deltaCenterY] = y[b] - (a < 0 ? r[o + J.targetY] : y[a]);
       r[o + J.worldAxisX] = ca * r[o + J.axisX] - sa * r[o + J.axisY];
       r[o + J.worldAxisY] = sa * r[o + J.axisX] + ca * r[o + J.axisY];
-      r[o + J.deltaAngle] = unwind(atan2(sb * ca - cb * sa, cb * ca + sb * sa) - r[o + J.referenceAngle]);
-      if (store.kind[j] !== JointKind.spring) JOINT_KERNELS[store.kind[j]].prepare(r, o, h);
+      angleIO[0] = sb * ca - cb * sa;
+      angleIO[1] = cb * ca + sb * sa;
+      atan2Into(angleIO, 0);
+      let angle = angleIO[2] - r[o + J.referenceAngle];
+      if (angle > Math.PI) angle -= 2 * Math.PI;
+      else if (angle < -Math.PI) angle += 2 * Math.PI;
+      r[o + J.deltaAngle] = angle;
+      if (store.kind[j] !== JointKind.spring) {
+        boundImpulses(r, o, store.kind[j], this.limits);
+        JOINT_KERNELS[store.kind[j]].prepare(r, o, step);
+      }
     }
     this.activeCount = n;
     this.springs.prepare(store, this.springSlots, springCount, stateCount, bodies, slotOfState, gx, gy);
@@ -135,7 +185,7 @@ export class JointSolver {
 
   /** Each sub-step, before its velocity update: the springs' forces, as the integrator says. */
   springsBefore(states: Float64Array): void {
-    this.springs.before(this.store.record, states, this.step.h, this.integrator);
+    this.springs.before(this.store.record, states, this.step, this.integrator, this.limits);
   }
 
   /** Each sub-step, once the bodies moved. */

@@ -151,7 +151,7 @@ export class SoftStep {
     const h = dt / substeps;
     const inverseH = 1 / h;
     this.prepare(bodies, contacts, h, settings);
-    joints?.prepare(bodies, this.index, this.awake, this.awakeCount + 1, h, Math.min(settings.contactHertz, 0.25 / h), gx, gy);
+    joints?.prepare(bodies, this.index, this.awake, this.awakeCount + 1, h, Math.min(settings.contactHertz, 0.25 / h), gx, gy, settings.maxLinearSpeed, MAX_ROTATION / dt);
     const { kernel, laneCount, awakeCount, states } = this;
     // Velocity plus gravity alone, the kernel's case: the general loop's terms are then 0 and its factors 1.
     const plain = kernel !== null && bodies.customMotionCount === 0 && !bodies.forcesPending;
@@ -172,6 +172,10 @@ export class SoftStep {
       joints?.solve(states, false);
       if (kernel !== null) kernel.relax(laneCount, inverseH);
       else this.relaxContacts(inverseH);
+      // A joint made far from its constraint (or torn by a collision) can throw its bodies faster
+      // than the speed limit in the relax pass, and the next sub-step's warm start and solve
+      // would amplify that towards infinity: each sub-step starts within the limits.
+      if (joints !== null) this.limitVelocities(settings.maxLinearSpeed, maxAngular);
     }
     this.applyRestitution(settings.restitutionThreshold);
     this.store(contacts);
@@ -725,6 +729,29 @@ export class SoftStep {
         states[sb + VY] = vBy;
         states[sb + W] = wB;
       }
+    }
+  }
+
+  /** The speed limits integratePositions applies, without moving the bodies. */
+  private limitVelocities(maxLinearSpeed: number, maxAngular: number): void {
+    const { awakeCount, states } = this;
+    const maxSpeedSq = maxLinearSpeed * maxLinearSpeed;
+    for (let k = 0; k < awakeCount; k++) {
+      const b = (k + 1) * BODY;
+      const vx = states[b + VX];
+      const vy = states[b + VY];
+      const w = states[b + W];
+      const speedSq = vx * vx + vy * vy;
+      if (speedSq > maxSpeedSq) {
+        // Scaled in two steps, so that a speed whose square overflows still comes back finite.
+        const largest = Math.max(Math.abs(vx), Math.abs(vy));
+        const ux = vx / largest;
+        const uy = vy / largest;
+        const ratio = maxLinearSpeed / Math.sqrt(ux * ux + uy * uy);
+        states[b + VX] = ux * ratio;
+        states[b + VY] = uy * ratio;
+      }
+      if (w * w > maxAngular * maxAngular) states[b + W] = w > 0 ? maxAngular : -maxAngular;
     }
   }
 

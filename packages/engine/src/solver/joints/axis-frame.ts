@@ -5,9 +5,11 @@ import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
  * The frame of a joint that slides along an axis fixed in body A (prismatic, wheel), now: the
  * axis and its normal in the world, the translation of B's anchor along the axis from A's, and
  * the lever arms of an impulse along each (a1, a2 along the axis, s1, s2 across it). One record,
- * reused by every joint.
+ * reused by every joint, which also carries the numbers the functions below give and take
+ * (`speed` out; `along`, `across`, `angular` in): V8 boxes numbers passed to or returned from a
+ * call it does not inline.
  */
-export const axisFrame = { ax: 1, ay: 0, rAx: 0, rAy: 0, rBx: 0, rBy: 0, dx: 0, dy: 0, translation: 0, a1: 0, a2: 0, s1: 0, s2: 0 };
+export const axisFrame = { ax: 1, ay: 0, rAx: 0, rAy: 0, rBx: 0, rBy: 0, dx: 0, dy: 0, translation: 0, a1: 0, a2: 0, s1: 0, s2: 0, speed: 0, along: 0, across: 0, angular: 0 };
 export type AxisFrame = typeof axisFrame;
 
 export function currentAxisFrame(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number): AxisFrame {
@@ -56,18 +58,21 @@ function fillArms(f: AxisFrame): void {
   f.s2 = f.rBx * ax + f.rBy * ay;
 }
 
-/** Relative speed along the axis. */
-export function axialSpeed(states: Float64Array, sa: number, sb: number, f: AxisFrame): number {
-  return f.ax * (states[sb + VX] - states[sa + VX]) + f.ay * (states[sb + VY] - states[sa + VY]) + f.a2 * states[sb + W] - f.a1 * states[sa + W];
+/** Relative speed along the axis, into f.speed. */
+export function axialSpeed(states: Float64Array, sa: number, sb: number, f: AxisFrame): void {
+  f.speed = f.ax * (states[sb + VX] - states[sa + VX]) + f.ay * (states[sb + VY] - states[sa + VY]) + f.a2 * states[sb + W] - f.a1 * states[sa + W];
 }
 
-/** Relative speed across the axis. */
-export function normalSpeed(states: Float64Array, sa: number, sb: number, f: AxisFrame): number {
-  return -f.ay * (states[sb + VX] - states[sa + VX]) + f.ax * (states[sb + VY] - states[sa + VY]) + f.s2 * states[sb + W] - f.s1 * states[sa + W];
+/** Relative speed across the axis, into f.speed. */
+export function normalSpeed(states: Float64Array, sa: number, sb: number, f: AxisFrame): void {
+  f.speed = -f.ay * (states[sb + VX] - states[sa + VX]) + f.ax * (states[sb + VY] - states[sa + VY]) + f.s2 * states[sb + W] - f.s1 * states[sa + W];
 }
 
-/** An impulse of `along` on the axis and `across` it, and an angular impulse `angular`, on B (A takes the opposite). */
-export function applyAxisImpulse(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: AxisFrame, along: number, across: number, angular: number): void {
+/** An impulse of `along` on the axis and `across` it, and an angular impulse, on B (A takes the opposite); see push. */
+function applyAxisImpulse(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: AxisFrame): void {
+  const along = f.along;
+  const across = f.across;
+  const angular = f.angular;
   const px = along * f.ax - across * f.ay;
   const py = along * f.ay + across * f.ax;
   const mA = r[o + J.invMassA];
@@ -78,4 +83,16 @@ export function applyAxisImpulse(r: Float64Array, o: number, states: Float64Arra
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
   states[sb + W] += r[o + J.invInertiaB] * (along * f.a2 + across * f.s2 + angular);
+}
+
+/** Applies an impulse along the axis alone. */
+export function pushAlong(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: AxisFrame): void {
+  f.across = 0;
+  f.angular = 0;
+  applyAxisImpulse(r, o, states, sa, sb, f);
+}
+
+/** Applies f.along, f.across and f.angular. */
+export function push(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: AxisFrame): void {
+  applyAxisImpulse(r, o, states, sa, sb, f);
 }

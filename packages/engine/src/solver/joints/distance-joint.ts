@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
-import { makeSoft, DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
-import { limitTotal, type JointKernel, type JointStepContext } from './joint-kernel.js';
+import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
+import { applyLimit, limitIO, softFromRecord, type JointKernel, type JointStepContext } from './joint-kernel.js';
 
 /**
  * A distance joint: the anchors kept `length` apart, rigidly; or, with a range
@@ -9,7 +9,7 @@ import { limitTotal, type JointKernel, type JointStepContext } from './joint-ker
  * Box2D v3's distance joint; the spring acts in both passes, the range's ends as limits.
  */
 export const distanceJoint: JointKernel = {
-  prepare(r, o, h) {
+  prepare(r, o, step) {
     const dx = r[o + J.deltaCenterX] + r[o + J.rBX] - r[o + J.rAX];
     const dy = r[o + J.deltaCenterY] + r[o + J.rBY] - r[o + J.rAY];
     const length = Math.sqrt(dx * dx + dy * dy);
@@ -21,7 +21,7 @@ export const distanceJoint: JointKernel = {
     const crB = r[o + J.rBX] * ay - r[o + J.rBY] * ax;
     const k = r[o + J.invMassA] + r[o + J.invMassB] + r[o + J.invInertiaA] * crA * crA + r[o + J.invInertiaB] * crB * crB;
     r[o + J.axialMass] = k > 0 ? 1 / k : 0;
-    if (r[o + J.hertz] > 0) makeSoft(r[o + J.hertz], r[o + J.dampingRatio], h, r, o + J.springBias);
+    if (r[o + J.hertz] > 0) softFromRecord(r, o, J.hertz, J.springBias, step);
     else r[o + J.springImpulseSum] = 0;
     if (r[o + J.enableLimit] === 0) {
       r[o + J.lowerImpulse] = 0;
@@ -35,8 +35,8 @@ export const distanceJoint: JointKernel = {
     const sa = r[o + J.stateA];
     const sb = r[o + J.stateB];
     const frame = currentFrame(r, o, states, sa, sb);
-    const axial = r[o + J.axialImpulse] + r[o + J.springImpulseSum] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
-    apply(r, o, states, sa, sb, frame, axial);
+    frame.impulse = r[o + J.axialImpulse] + r[o + J.springImpulseSum] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
+    apply(r, o, states, sa, sb, frame);
   },
 
   solve(r, o, states, step, useBias) {
@@ -55,21 +55,31 @@ export const distanceJoint: JointKernel = {
         massScale = step.soft[1];
         impulseScale = step.soft[2];
       }
+      speedAlong(states, sa, sb, f);
       const accumulated = r[o + J.axialImpulse];
-      const impulse = -massScale * axialMass * (speedAlong(states, sa, sb, f) + bias) - impulseScale * accumulated;
+      const impulse = -massScale * axialMass * (f.speed + bias) - impulseScale * accumulated;
       r[o + J.axialImpulse] = accumulated + impulse;
-      apply(r, o, states, sa, sb, f, impulse);
+      f.impulse = impulse;
+      apply(r, o, states, sa, sb, f);
       return;
     }
     if (r[o + J.hertz] > 0) {
       const C = f.length - r[o + J.length];
+      speedAlong(states, sa, sb, f);
       const accumulated = r[o + J.springImpulseSum];
-      const impulse = -r[o + J.springMass] * axialMass * (speedAlong(states, sa, sb, f) + r[o + J.springBias] * C) - r[o + J.springImpulse] * accumulated;
+      const impulse = -r[o + J.springMass] * axialMass * (f.speed + r[o + J.springBias] * C) - r[o + J.springImpulse] * accumulated;
       r[o + J.springImpulseSum] = accumulated + impulse;
-      apply(r, o, states, sa, sb, f, impulse);
+      f.impulse = impulse;
+      apply(r, o, states, sa, sb, f);
     }
-    if (r[o + J.minLength] > 0) limit(r, o, states, sa, sb, f, step, useBias, J.lowerImpulse, f.length - r[o + J.minLength], 1);
-    if (r[o + J.maxLength] < Infinity) limit(r, o, states, sa, sb, f, step, useBias, J.upperImpulse, r[o + J.maxLength] - f.length, -1);
+    if (r[o + J.minLength] > 0) {
+      limitIO[0] = f.length - r[o + J.minLength];
+      limit(r, o, states, sa, sb, f, step, useBias, J.lowerImpulse, 1);
+    }
+    if (r[o + J.maxLength] < Infinity) {
+      limitIO[0] = r[o + J.maxLength] - f.length;
+      limit(r, o, states, sa, sb, f, step, useBias, J.upperImpulse, -1);
+    }
   },
 
   reaction(r, o, inverseH) {
@@ -80,8 +90,12 @@ export const distanceJoint: JointKernel = {
   },
 };
 
-/** The anchors from each centre and the axis between them now; one record reused by every joint. */
-const frame = { rAx: 0, rAy: 0, rBx: 0, rBy: 0, ax: 1, ay: 0, length: 0 };
+/**
+ * The anchors from each centre and the axis between them now; one record reused by every joint,
+ * which also carries the speed along the axis (out of speedAlong) and the impulse (into apply):
+ * V8 boxes numbers passed to or returned from a call it does not inline.
+ */
+const frame = { rAx: 0, rAy: 0, rBx: 0, rBy: 0, ax: 1, ay: 0, length: 0, speed: 0, impulse: 0 };
 type Frame = typeof frame;
 
 function currentFrame(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number): Frame {
@@ -104,17 +118,17 @@ function currentFrame(r: Float64Array, o: number, states: Float64Array, sa: numb
   return f;
 }
 
-/** B's anchor's speed away from A's, along the axis. */
-function speedAlong(states: Float64Array, sa: number, sb: number, f: Frame): number {
+/** B's anchor's speed away from A's, along the axis, into f.speed. */
+function speedAlong(states: Float64Array, sa: number, sb: number, f: Frame): void {
   const dvx = states[sb + VX] - states[sb + W] * f.rBy - (states[sa + VX] - states[sa + W] * f.rAy);
   const dvy = states[sb + VY] + states[sb + W] * f.rBx - (states[sa + VY] + states[sa + W] * f.rAx);
-  return dvx * f.ax + dvy * f.ay;
+  f.speed = dvx * f.ax + dvy * f.ay;
 }
 
-/** An impulse along the axis, pushing B's anchor away from A's. */
-function apply(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: Frame, impulse: number): void {
-  const px = impulse * f.ax;
-  const py = impulse * f.ay;
+/** The impulse f.impulse along the axis, pushing B's anchor away from A's. */
+function apply(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: Frame): void {
+  const px = f.impulse * f.ax;
+  const py = f.impulse * f.ay;
   const mA = r[o + J.invMassA];
   const mB = r[o + J.invMassB];
   states[sa + VX] -= mA * px;
@@ -125,10 +139,11 @@ function apply(r: Float64Array, o: number, states: Float64Array, sa: number, sb:
   states[sb + W] += r[o + J.invInertiaB] * (f.rBx * py - f.rBy * px);
 }
 
-/** One end of the range: C >= 0, `sign` 1 for the lower end (pushing apart), -1 for the upper. */
-function limit(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: Frame, step: JointStepContext, useBias: boolean, field: number, C: number, sign: number): void {
-  const accumulated = r[o + field];
-  const total = limitTotal(C, sign * speedAlong(states, sa, sb, f), r[o + J.axialMass], accumulated, step, useBias);
-  r[o + field] = total;
-  apply(r, o, states, sa, sb, f, sign * (total - accumulated));
+/** One end of the range, its gap C >= 0 in limitIO[0]: `sign` 1 for the lower end (pushing apart), -1 for the upper. */
+function limit(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: Frame, step: JointStepContext, useBias: boolean, field: number, sign: number): void {
+  speedAlong(states, sa, sb, f);
+  limitIO[1] = sign * f.speed;
+  applyLimit(r, o, field, step, useBias);
+  f.impulse = sign * limitIO[2];
+  apply(r, o, states, sa, sb, f);
 }

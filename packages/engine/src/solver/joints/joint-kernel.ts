@@ -1,6 +1,6 @@
-import { atan2 } from '../../math/trig.js';
+import { atan2Into } from '../../math/trig.js';
 import { J } from '../../joints/joint-layout.js';
-import { makeSoft, DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
+import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
 
 /** What every joint's solve reads besides its record: the sub-step and the joints' softness. */
 export interface JointStepContext {
@@ -8,6 +8,8 @@ export interface JointStepContext {
   inverseH: number;
   /** Bias rate, mass scale and impulse scale of a rigid joint's push back to its constraint. */
   soft: Float64Array;
+  /** The same of the target joint's spin damping (see target-joint.ts). */
+  spinSoft: Float64Array;
 }
 
 /**
@@ -20,34 +22,59 @@ export interface JointStepContext {
  *   reaction   after the step, the force and torque the joint put on body B
  */
 export interface JointKernel {
-  prepare(r: Float64Array, o: number, h: number): void;
+  prepare(r: Float64Array, o: number, step: JointStepContext): void;
   warmStart(r: Float64Array, o: number, states: Float64Array): void;
   solve(r: Float64Array, o: number, states: Float64Array, step: JointStepContext, useBias: boolean): void;
   reaction(r: Float64Array, o: number, inverseH: number): void;
 }
 
-/** The joint angle now: its angle at the step's start plus B's turn less A's since. */
-export function jointAngle(states: Float64Array, sa: number, sb: number, deltaAngle: number): number {
+const angleIO = new Float64Array(3);
+
+/**
+ * The joint angle now into r[o + J.angle]: its angle at the step's start plus B's turn less A's
+ * since. (Numbers go through the record and scratch arrays here and below, not as arguments or
+ * results: V8 boxes those where it does not inline a call, an allocation per joint per pass.)
+ */
+export function measureAngle(r: Float64Array, o: number, states: Float64Array): void {
+  const sa = r[o + J.stateA];
+  const sb = r[o + J.stateB];
   const ac = states[sa + DQC];
   const as = states[sa + DQS];
   const bc = states[sb + DQC];
   const bs = states[sb + DQS];
-  return deltaAngle + atan2(bs * ac - bc * as, bc * ac + bs * as);
-}
-
-/** An angle in [-pi, pi]. */
-export function unwind(angle: number): number {
-  if (angle > Math.PI) return angle - 2 * Math.PI;
-  if (angle < -Math.PI) return angle + 2 * Math.PI;
-  return angle;
+  angleIO[0] = bs * ac - bc * as;
+  angleIO[1] = bc * ac + bs * as;
+  atan2Into(angleIO, 0);
+  r[o + J.angle] = r[o + J.deltaAngle] + angleIO[2];
 }
 
 /**
- * The new total impulse of a one-sided limit C >= 0 with speed cdot along it and effective mass
- * `mass`: apart (C > 0) it lets the gap close within the sub-step and no more (speculative, as
- * contacts do); past it, the soft push back in the biased solve, none in the relax pass.
+ * makeSoft (solver-body.ts) for a spring of r[o + hertzField] hertz and damping ratio
+ * r[o + J.dampingRatio], into r[o + at..at + 2]: the same arithmetic, reading its numbers from
+ * the record rather than taking them as arguments.
  */
-export function limitTotal(C: number, cdot: number, mass: number, accumulated: number, step: JointStepContext, useBias: boolean): number {
+export function softFromRecord(r: Float64Array, o: number, hertzField: number, at: number, step: JointStepContext): void {
+  const h = step.h;
+  const omega = 2 * Math.PI * r[o + hertzField];
+  const a1 = 2 * r[o + J.dampingRatio] + h * omega;
+  const a2 = h * omega * a1;
+  const a3 = 1 / (1 + a2);
+  r[o + at] = omega / a1;
+  r[o + at + 1] = a2 * a3;
+  r[o + at + 2] = a3;
+}
+
+/** A limit's gap and speed (limitIO[0], limitIO[1]) in, the change of its impulse (limitIO[2]) out: see applyLimit. */
+export const limitIO = new Float64Array(3);
+
+/**
+ * The new total impulse of a one-sided limit C >= 0, into r[o + field], with C and its speed
+ * along it in limitIO[0..1] and the effective mass r[o + J.axialMass]: apart (C > 0) it lets the
+ * gap close within the sub-step and no more (speculative, as contacts do); past it, the soft push
+ * back in the biased solve, none in the relax pass. The impulse's change goes to limitIO[2].
+ */
+export function applyLimit(r: Float64Array, o: number, field: number, step: JointStepContext, useBias: boolean): void {
+  const C = limitIO[0];
   let bias = 0;
   let massScale = 1;
   let impulseScale = 0;
@@ -57,16 +84,19 @@ export function limitTotal(C: number, cdot: number, mass: number, accumulated: n
     massScale = step.soft[1];
     impulseScale = step.soft[2];
   }
-  const impulse = -massScale * mass * (cdot + bias) - impulseScale * accumulated;
-  return Math.max(accumulated + impulse, 0);
+  const accumulated = r[o + field];
+  const impulse = -massScale * r[o + J.axialMass] * (limitIO[1] + bias) - impulseScale * accumulated;
+  const total = Math.max(accumulated + impulse, 0);
+  r[o + field] = total;
+  limitIO[2] = total - accumulated;
 }
 
 /**
  * What every kind with a spring, limits or a motor prepares alike: the spring's softness (or its
  * impulse cleared when it has none), and the impulses of a limit or motor that is off cleared.
  */
-export function prepareSpringLimitMotor(r: Float64Array, o: number, h: number): void {
-  if (r[o + J.hertz] > 0) makeSoft(r[o + J.hertz], r[o + J.dampingRatio], h, r, o + J.springBias);
+export function prepareSpringLimitMotor(r: Float64Array, o: number, step: JointStepContext): void {
+  if (r[o + J.hertz] > 0) softFromRecord(r, o, J.hertz, J.springBias, step);
   else r[o + J.springImpulseSum] = 0;
   if (r[o + J.enableLimit] === 0) {
     r[o + J.lowerImpulse] = 0;
@@ -75,8 +105,14 @@ export function prepareSpringLimitMotor(r: Float64Array, o: number, h: number): 
   if (r[o + J.enableMotor] === 0) r[o + J.motorImpulse] = 0;
 }
 
-/** Applies the joint's linear impulse at the anchors (where they are now), and `angular` about them, to B (A takes the opposite). */
-export function warmStartPoint(r: Float64Array, o: number, states: Float64Array, angular: number): void {
+/**
+ * Applies the joint's linear impulse at the anchors (where they are now) and its angular impulse
+ * to B (A takes the opposite): a revolute joint's spring, motor and limits, a weld's angular part.
+ * (The kind is passed rather than the angular impulse: a double passed to a call V8 does not
+ * inline is boxed, an allocation per joint per sub-step.)
+ */
+export function warmStartPoint(r: Float64Array, o: number, states: Float64Array, revolute: boolean): void {
+  const angular = revolute ? r[o + J.springImpulseSum] + r[o + J.motorImpulse] + r[o + J.lowerImpulse] - r[o + J.upperImpulse] : r[o + J.angularImpulse];
   const sa = r[o + J.stateA];
   const sb = r[o + J.stateB];
   const rAx = states[sa + DQC] * r[o + J.rAX] - states[sa + DQS] * r[o + J.rAY];
@@ -95,12 +131,19 @@ export function warmStartPoint(r: Float64Array, o: number, states: Float64Array,
   states[sb + W] += r[o + J.invInertiaB] * (rBx * py - rBy * px + angular);
 }
 
+/** The softness of a rigid velocity constraint: no bias, full mass, no impulse decay (the relax pass). */
+export const RIGID = new Float64Array([0, 1, 0]);
+
 /**
  * The 2x2 point constraint that keeps the two anchors together (revolute, weld): the relative
- * speed of the anchors, plus `biasRate` times their separation when biasRate > 0, driven to 0
- * through the block's effective mass, softened by `massScale` and `impulseScale`.
+ * speed of the anchors, plus a bias rate times their separation where it is > 0, driven to 0
+ * through the block's effective mass, softened: the bias rate, mass scale and impulse scale are
+ * soft[at..at + 2] (the joints' softness, a spring's in a record, or RIGID).
  */
-export function solvePoint(r: Float64Array, o: number, states: Float64Array, biasRate: number, massScale: number, impulseScale: number): void {
+export function solvePoint(r: Float64Array, o: number, states: Float64Array, soft: Float64Array, at: number): void {
+  const biasRate = soft[at];
+  const massScale = soft[at + 1];
+  const impulseScale = soft[at + 2];
   const sa = r[o + J.stateA];
   const sb = r[o + J.stateB];
   const mA = r[o + J.invMassA];

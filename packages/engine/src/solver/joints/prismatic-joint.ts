@@ -1,7 +1,7 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
-import { jointAngle, limitTotal, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
-import { applyAxisImpulse, axialSpeed, currentAxisFrame, normalSpeed, startAxisFrame } from './axis-frame.js';
+import { applyLimit, limitIO, measureAngle, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
+import { axialSpeed, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame } from './axis-frame.js';
 
 /**
  * A prismatic joint (a slider): B keeps A's angle (plus the reference) and its anchor stays on
@@ -10,7 +10,7 @@ import { applyAxisImpulse, axialSpeed, currentAxisFrame, normalSpeed, startAxisF
  * prismatic joint).
  */
 export const prismaticJoint: JointKernel = {
-  prepare(r, o, h) {
+  prepare(r, o, step) {
     const f = startAxisFrame(r, o);
     const mA = r[o + J.invMassA];
     const mB = r[o + J.invMassB];
@@ -18,15 +18,17 @@ export const prismaticJoint: JointKernel = {
     const iB = r[o + J.invInertiaB];
     const k = mA + mB + iA * f.a1 * f.a1 + iB * f.a2 * f.a2;
     r[o + J.axialMass] = k > 0 ? 1 / k : 0;
-    prepareSpringLimitMotor(r, o, h);
+    prepareSpringLimitMotor(r, o, step);
   },
 
   warmStart(r, o, states) {
     const sa = r[o + J.stateA];
     const sb = r[o + J.stateB];
     const f = currentAxisFrame(r, o, states, sa, sb);
-    const along = r[o + J.springImpulseSum] + r[o + J.motorImpulse] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
-    applyAxisImpulse(r, o, states, sa, sb, f, along, r[o + J.axialImpulse], r[o + J.angularImpulse]);
+    f.along = r[o + J.springImpulseSum] + r[o + J.motorImpulse] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
+    f.across = r[o + J.axialImpulse];
+    f.angular = r[o + J.angularImpulse];
+    push(r, o, states, sa, sb, f);
   },
 
   solve(r, o, states, step, useBias) {
@@ -35,42 +37,52 @@ export const prismaticJoint: JointKernel = {
     const f = currentAxisFrame(r, o, states, sa, sb);
     const axialMass = r[o + J.axialMass];
     if (r[o + J.hertz] > 0) {
+      axialSpeed(states, sa, sb, f);
       const accumulated = r[o + J.springImpulseSum];
-      const impulse = -r[o + J.springMass] * axialMass * (axialSpeed(states, sa, sb, f) + r[o + J.springBias] * f.translation) - r[o + J.springImpulse] * accumulated;
+      const impulse = -r[o + J.springMass] * axialMass * (f.speed + r[o + J.springBias] * f.translation) - r[o + J.springImpulse] * accumulated;
       r[o + J.springImpulseSum] = accumulated + impulse;
-      applyAxisImpulse(r, o, states, sa, sb, f, impulse, 0, 0);
+      f.along = impulse;
+      pushAlong(r, o, states, sa, sb, f);
     }
     if (r[o + J.enableMotor] === 1) {
+      axialSpeed(states, sa, sb, f);
       const accumulated = r[o + J.motorImpulse];
       const most = r[o + J.maxMotor] * step.h;
-      let total = accumulated + axialMass * (r[o + J.motorSpeed] - axialSpeed(states, sa, sb, f));
+      let total = accumulated + axialMass * (r[o + J.motorSpeed] - f.speed);
       total = total < -most ? -most : total > most ? most : total;
       r[o + J.motorImpulse] = total;
-      applyAxisImpulse(r, o, states, sa, sb, f, total - accumulated, 0, 0);
+      f.along = total - accumulated;
+      pushAlong(r, o, states, sa, sb, f);
     }
     if (r[o + J.enableLimit] === 1) {
-      let accumulated = r[o + J.lowerImpulse];
-      let total = limitTotal(f.translation - r[o + J.lower], axialSpeed(states, sa, sb, f), axialMass, accumulated, step, useBias);
-      r[o + J.lowerImpulse] = total;
-      applyAxisImpulse(r, o, states, sa, sb, f, total - accumulated, 0, 0);
-      accumulated = r[o + J.upperImpulse];
-      total = limitTotal(r[o + J.upper] - f.translation, -axialSpeed(states, sa, sb, f), axialMass, accumulated, step, useBias);
-      r[o + J.upperImpulse] = total;
-      applyAxisImpulse(r, o, states, sa, sb, f, accumulated - total, 0, 0);
+      axialSpeed(states, sa, sb, f);
+      limitIO[0] = f.translation - r[o + J.lower];
+      limitIO[1] = f.speed;
+      applyLimit(r, o, J.lowerImpulse, step, useBias);
+      f.along = limitIO[2];
+      pushAlong(r, o, states, sa, sb, f);
+      axialSpeed(states, sa, sb, f);
+      limitIO[0] = r[o + J.upper] - f.translation;
+      limitIO[1] = -f.speed;
+      applyLimit(r, o, J.upperImpulse, step, useBias);
+      f.along = -limitIO[2];
+      pushAlong(r, o, states, sa, sb, f);
     }
     // Across the axis and in angle, together.
     const mA = r[o + J.invMassA];
     const mB = r[o + J.invMassB];
     const iA = r[o + J.invInertiaA];
     const iB = r[o + J.invInertiaB];
-    let c1 = normalSpeed(states, sa, sb, f);
+    normalSpeed(states, sa, sb, f);
+    let c1 = f.speed;
     let c2 = states[sb + W] - states[sa + W];
     let massScale = 1;
     let impulseScale = 0;
     if (useBias) {
       const bias = step.soft[0];
+      measureAngle(r, o, states);
       c1 += bias * (-f.ay * f.dx + f.ax * f.dy);
-      c2 += bias * jointAngle(states, sa, sb, r[o + J.deltaAngle]);
+      c2 += bias * r[o + J.angle];
       massScale = step.soft[1];
       impulseScale = step.soft[2];
     }
@@ -87,7 +99,10 @@ export const prismaticJoint: JointKernel = {
     const angular = -massScale * b2 - impulseScale * r[o + J.angularImpulse];
     r[o + J.axialImpulse] += across;
     r[o + J.angularImpulse] += angular;
-    applyAxisImpulse(r, o, states, sa, sb, f, 0, across, angular);
+    f.along = 0;
+    f.across = across;
+    f.angular = angular;
+    push(r, o, states, sa, sb, f);
   },
 
   reaction(r, o, inverseH) {

@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
-import { jointAngle, limitTotal, prepareSpringLimitMotor, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
+import { applyLimit, limitIO, measureAngle, prepareSpringLimitMotor, RIGID, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
 
 /**
  * A revolute joint (a pin): the two anchors kept together by a 2x2 point constraint, with an
@@ -9,14 +9,14 @@ import { jointAngle, limitTotal, prepareSpringLimitMotor, solvePoint, warmStartP
  * (Box2D v3's revolute joint, Catto's "Solver2D" soft step).
  */
 export const revoluteJoint: JointKernel = {
-  prepare(r, o, h) {
+  prepare(r, o, step) {
     const k = r[o + J.invInertiaA] + r[o + J.invInertiaB];
     r[o + J.axialMass] = k > 0 ? 1 / k : 0;
-    prepareSpringLimitMotor(r, o, h);
+    prepareSpringLimitMotor(r, o, step);
   },
 
   warmStart(r, o, states) {
-    warmStartPoint(r, o, states, r[o + J.springImpulseSum] + r[o + J.motorImpulse] + r[o + J.lowerImpulse] - r[o + J.upperImpulse]);
+    warmStartPoint(r, o, states, true);
   },
 
   solve(r, o, states, step, useBias) {
@@ -29,7 +29,8 @@ export const revoluteJoint: JointKernel = {
     const turns = iA + iB > 0;
     const axialMass = r[o + J.axialMass];
     if (turns && r[o + J.hertz] > 0) {
-      const C = jointAngle(states, sa, sb, r[o + J.deltaAngle]);
+      measureAngle(r, o, states);
+      const C = r[o + J.angle];
       const accumulated = r[o + J.springImpulseSum];
       const impulse = -r[o + J.springMass] * axialMass * (wB - wA + r[o + J.springBias] * C) - r[o + J.springImpulse] * accumulated;
       r[o + J.springImpulseSum] = accumulated + impulse;
@@ -46,22 +47,22 @@ export const revoluteJoint: JointKernel = {
       wB += iB * (total - accumulated);
     }
     if (turns && r[o + J.enableLimit] === 1) {
-      const angle = jointAngle(states, sa, sb, r[o + J.deltaAngle]);
-      let accumulated = r[o + J.lowerImpulse];
-      let total = limitTotal(angle - r[o + J.lower], wB - wA, axialMass, accumulated, step, useBias);
-      r[o + J.lowerImpulse] = total;
-      wA -= iA * (total - accumulated);
-      wB += iB * (total - accumulated);
-      accumulated = r[o + J.upperImpulse];
-      total = limitTotal(r[o + J.upper] - angle, wA - wB, axialMass, accumulated, step, useBias);
-      r[o + J.upperImpulse] = total;
-      wA += iA * (total - accumulated);
-      wB -= iB * (total - accumulated);
+      measureAngle(r, o, states);
+      const angle = r[o + J.angle];
+      limitIO[0] = angle - r[o + J.lower];
+      limitIO[1] = wB - wA;
+      applyLimit(r, o, J.lowerImpulse, step, useBias);
+      wA -= iA * limitIO[2];
+      wB += iB * limitIO[2];
+      limitIO[0] = r[o + J.upper] - angle;
+      limitIO[1] = wA - wB;
+      applyLimit(r, o, J.upperImpulse, step, useBias);
+      wA += iA * limitIO[2];
+      wB -= iB * limitIO[2];
     }
     states[sa + W] = wA;
     states[sb + W] = wB;
-    if (useBias) solvePoint(r, o, states, step.soft[0], step.soft[1], step.soft[2]);
-    else solvePoint(r, o, states, 0, 1, 0);
+    solvePoint(r, o, states, useBias ? step.soft : RIGID, 0);
   },
 
   reaction(r, o, inverseH) {

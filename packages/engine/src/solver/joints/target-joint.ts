@@ -1,10 +1,10 @@
 import { J } from '../../joints/joint-layout.js';
-import { makeSoft, DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
-import type { JointKernel } from './joint-kernel.js';
+import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
+import { softFromRecord, type JointKernel } from './joint-kernel.js';
 
 /** The spin damping of a dragged body, as Box2D's mouse joint has: a weak soft constraint on its spin alone. */
-const SPIN_HERTZ = 0.5;
-const SPIN_DAMPING = 0.1;
+export const SPIN_HERTZ = 0.5;
+export const SPIN_DAMPING = 0.1;
 
 /**
  * A target joint (Box2D's mouse joint): a spring of `hertz` pulling one body's anchor towards a
@@ -12,9 +12,11 @@ const SPIN_DAMPING = 0.1;
  * spin a little, so that a dragged body does not whirl. Body A is the world (state 0).
  */
 export const targetJoint: JointKernel = {
-  prepare(r, o, h) {
-    makeSoft(r[o + J.hertz], r[o + J.dampingRatio], h, r, o + J.springBias);
-    makeSoft(SPIN_HERTZ, SPIN_DAMPING, h, r, o + J.softBias);
+  prepare(r, o, step) {
+    softFromRecord(r, o, J.hertz, J.springBias, step);
+    r[o + J.softBias] = step.spinSoft[0];
+    r[o + J.softMass] = step.spinSoft[1];
+    r[o + J.softImpulse] = step.spinSoft[2];
   },
 
   warmStart(r, o, states) {

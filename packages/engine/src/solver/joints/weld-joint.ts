@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
-import { makeSoft, W } from '../solver-body.js';
-import { jointAngle, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
+import { W } from '../solver-body.js';
+import { measureAngle, RIGID, softFromRecord, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
 
 /**
  * A weld joint: B keeps its pose in A's frame, the angle first, then the anchors together.
@@ -8,15 +8,15 @@ import { jointAngle, solvePoint, warmStartPoint, type JointKernel } from './join
  * makes that part a spring of its own, acting in both passes (Box2D v3's weld joint).
  */
 export const weldJoint: JointKernel = {
-  prepare(r, o, h) {
+  prepare(r, o, step) {
     const k = r[o + J.invInertiaA] + r[o + J.invInertiaB];
     r[o + J.axialMass] = k > 0 ? 1 / k : 0;
-    if (r[o + J.linearHertz] > 0) makeSoft(r[o + J.linearHertz], r[o + J.dampingRatio], h, r, o + J.springBias);
-    if (r[o + J.angularHertz] > 0) makeSoft(r[o + J.angularHertz], r[o + J.dampingRatio], h, r, o + J.softBias);
+    if (r[o + J.linearHertz] > 0) softFromRecord(r, o, J.linearHertz, J.springBias, step);
+    if (r[o + J.angularHertz] > 0) softFromRecord(r, o, J.angularHertz, J.softBias, step);
   },
 
   warmStart(r, o, states) {
-    warmStartPoint(r, o, states, r[o + J.angularImpulse]);
+    warmStartPoint(r, o, states, false);
   },
 
   solve(r, o, states, step, useBias) {
@@ -29,7 +29,8 @@ export const weldJoint: JointKernel = {
     let massScale = 1;
     let impulseScale = 0;
     if (springyAngle || useBias) {
-      const C = jointAngle(states, sa, sb, r[o + J.deltaAngle]);
+      measureAngle(r, o, states);
+      const C = r[o + J.angle];
       bias = (springyAngle ? r[o + J.softBias] : step.soft[0]) * C;
       massScale = springyAngle ? r[o + J.softMass] : step.soft[1];
       impulseScale = springyAngle ? r[o + J.softImpulse] : step.soft[2];
@@ -39,9 +40,8 @@ export const weldJoint: JointKernel = {
     r[o + J.angularImpulse] = accumulated + impulse;
     states[sa + W] = wA - r[o + J.invInertiaA] * impulse;
     states[sb + W] = wB + r[o + J.invInertiaB] * impulse;
-    if (r[o + J.linearHertz] > 0) solvePoint(r, o, states, r[o + J.springBias], r[o + J.springMass], r[o + J.springImpulse]);
-    else if (useBias) solvePoint(r, o, states, step.soft[0], step.soft[1], step.soft[2]);
-    else solvePoint(r, o, states, 0, 1, 0);
+    if (r[o + J.linearHertz] > 0) solvePoint(r, o, states, r, o + J.springBias);
+    else solvePoint(r, o, states, useBias ? step.soft : RIGID, 0);
   },
 
   reaction(r, o, inverseH) {

@@ -1,7 +1,7 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
-import { limitTotal, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
-import { applyAxisImpulse, axialSpeed, currentAxisFrame, normalSpeed, startAxisFrame } from './axis-frame.js';
+import { applyLimit, limitIO, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
+import { axialSpeed, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame } from './axis-frame.js';
 
 /**
  * A wheel joint: B's anchor stays on the line through A's anchor along A's axis (the
@@ -10,7 +10,7 @@ import { applyAxisImpulse, axialSpeed, currentAxisFrame, normalSpeed, startAxisF
  * joint).
  */
 export const wheelJoint: JointKernel = {
-  prepare(r, o, h) {
+  prepare(r, o, step) {
     const f = startAxisFrame(r, o);
     const mA = r[o + J.invMassA];
     const mB = r[o + J.invMassB];
@@ -21,15 +21,17 @@ export const wheelJoint: JointKernel = {
     const kp = mA + mB + iA * f.s1 * f.s1 + iB * f.s2 * f.s2;
     r[o + J.perpMass] = kp > 0 ? 1 / kp : 0;
     r[o + J.motorMass] = iA + iB > 0 ? 1 / (iA + iB) : 0;
-    prepareSpringLimitMotor(r, o, h);
+    prepareSpringLimitMotor(r, o, step);
   },
 
   warmStart(r, o, states) {
     const sa = r[o + J.stateA];
     const sb = r[o + J.stateB];
     const f = currentAxisFrame(r, o, states, sa, sb);
-    const along = r[o + J.springImpulseSum] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
-    applyAxisImpulse(r, o, states, sa, sb, f, along, r[o + J.axialImpulse], r[o + J.motorImpulse]);
+    f.along = r[o + J.springImpulseSum] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
+    f.across = r[o + J.axialImpulse];
+    f.angular = r[o + J.motorImpulse];
+    push(r, o, states, sa, sb, f);
   },
 
   solve(r, o, states, step, useBias) {
@@ -42,24 +44,33 @@ export const wheelJoint: JointKernel = {
       let total = accumulated - r[o + J.motorMass] * (states[sb + W] - states[sa + W] - r[o + J.motorSpeed]);
       total = total < -most ? -most : total > most ? most : total;
       r[o + J.motorImpulse] = total;
-      applyAxisImpulse(r, o, states, sa, sb, f, 0, 0, total - accumulated);
+      f.along = 0;
+      f.across = 0;
+      f.angular = total - accumulated;
+      push(r, o, states, sa, sb, f);
     }
     const axialMass = r[o + J.axialMass];
     if (r[o + J.hertz] > 0) {
+      axialSpeed(states, sa, sb, f);
       const accumulated = r[o + J.springImpulseSum];
-      const impulse = -r[o + J.springMass] * axialMass * (axialSpeed(states, sa, sb, f) + r[o + J.springBias] * f.translation) - r[o + J.springImpulse] * accumulated;
+      const impulse = -r[o + J.springMass] * axialMass * (f.speed + r[o + J.springBias] * f.translation) - r[o + J.springImpulse] * accumulated;
       r[o + J.springImpulseSum] = accumulated + impulse;
-      applyAxisImpulse(r, o, states, sa, sb, f, impulse, 0, 0);
+      f.along = impulse;
+      pushAlong(r, o, states, sa, sb, f);
     }
     if (r[o + J.enableLimit] === 1) {
-      let accumulated = r[o + J.lowerImpulse];
-      let total = limitTotal(f.translation - r[o + J.lower], axialSpeed(states, sa, sb, f), axialMass, accumulated, step, useBias);
-      r[o + J.lowerImpulse] = total;
-      applyAxisImpulse(r, o, states, sa, sb, f, total - accumulated, 0, 0);
-      accumulated = r[o + J.upperImpulse];
-      total = limitTotal(r[o + J.upper] - f.translation, -axialSpeed(states, sa, sb, f), axialMass, accumulated, step, useBias);
-      r[o + J.upperImpulse] = total;
-      applyAxisImpulse(r, o, states, sa, sb, f, accumulated - total, 0, 0);
+      axialSpeed(states, sa, sb, f);
+      limitIO[0] = f.translation - r[o + J.lower];
+      limitIO[1] = f.speed;
+      applyLimit(r, o, J.lowerImpulse, step, useBias);
+      f.along = limitIO[2];
+      pushAlong(r, o, states, sa, sb, f);
+      axialSpeed(states, sa, sb, f);
+      limitIO[0] = r[o + J.upper] - f.translation;
+      limitIO[1] = -f.speed;
+      applyLimit(r, o, J.upperImpulse, step, useBias);
+      f.along = -limitIO[2];
+      pushAlong(r, o, states, sa, sb, f);
     }
     let bias = 0;
     let massScale = 1;
@@ -69,10 +80,14 @@ export const wheelJoint: JointKernel = {
       massScale = step.soft[1];
       impulseScale = step.soft[2];
     }
+    normalSpeed(states, sa, sb, f);
     const accumulated = r[o + J.axialImpulse];
-    const impulse = -massScale * r[o + J.perpMass] * (normalSpeed(states, sa, sb, f) + bias) - impulseScale * accumulated;
+    const impulse = -massScale * r[o + J.perpMass] * (f.speed + bias) - impulseScale * accumulated;
     r[o + J.axialImpulse] = accumulated + impulse;
-    applyAxisImpulse(r, o, states, sa, sb, f, 0, impulse, 0);
+    f.along = 0;
+    f.across = impulse;
+    f.angular = 0;
+    push(r, o, states, sa, sb, f);
   },
 
   reaction(r, o, inverseH) {
