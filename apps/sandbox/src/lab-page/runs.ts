@@ -96,6 +96,7 @@ export const BROWSER_QUICK: Record<string, Record<string, unknown>> = {
   // The CLI's quick cap of 400 settling steps: at 120 the pile had not begun to sleep (0 % asleep).
   'sap-sleep': { n: 1000, rounds: 2, steps: 5, warmupSteps: 5, settleSteps: 400 },
   piles: { n: 500, settleSeconds: 5, measureSteps: 10 },
+  integrators: { seconds: 2, dt: 1 / 60, stiffnesses: [10, 100, 1000, 10_000, 100_000] },
   // c-maxgrid and targets are Node-only (a C compiler; they drive this page through __labWorlds).
 };
 

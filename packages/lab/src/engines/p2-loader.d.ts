@@ -18,10 +18,18 @@ export interface P2Body {
   updateAABB(): void;
 }
 
+export interface P2RevoluteConstraint {
+  setLimits(lower: number, upper: number): void;
+  motorEnabled: boolean;
+  motorSpeed: number;
+  motorMaxForce: number;
+}
+
 export interface P2World {
   sleepMode: number;
   defaultContactMaterial: { restitution: number; friction: number };
   addBody(body: P2Body): void;
+  addConstraint(constraint: object): void;
   step(dt: number): void;
   clear(): void;
 }
@@ -54,6 +62,8 @@ export interface P2Api {
   Convex: new (options: { vertices: number[][] }) => object;
   Line: new (options: { length: number }) => object;
   GSSolver: new (options: { iterations: number }) => object;
+  RevoluteConstraint: new (bodyA: P2Body, bodyB: P2Body, options: { localPivotA: [number, number]; localPivotB: [number, number]; collideConnected: boolean }) => P2RevoluteConstraint;
+  DistanceConstraint: new (bodyA: P2Body, bodyB: P2Body, options: { localAnchorA: [number, number]; localAnchorB: [number, number]; distance: number; collideConnected: boolean }) => object;
 }
 
 export function loadP2(): Promise<P2Api>;

@@ -59,6 +59,8 @@ import {
 } from './shape-false-positives.js';
 import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
 import { runThreadsLoad, threadsLoadCsv, threadsLoadDefaults, threadsLoadHeadline, threadsLoadSchema, threadsLoadTables, type ThreadsLoadOptions, type ThreadsLoadResult } from './threads-load.js';
+import { joints } from './joints.js';
+import { integrators } from './integrators.js';
 import { cliffsCsv, cliffsDefaults, cliffsHeadline, cliffsSchema, cliffsTables, runCliffs, type CliffsOptions, type CliffsResult } from './cliffs.js';
 
 /** Command-line style overrides; each experiment takes the ones that mean something to it. */
@@ -439,6 +441,8 @@ export const EXPERIMENTS: Record<string, AnyExperiment> = {
   stability,
   'shape-energy': shapeEnergy,
   'shape-false-positives': shapeFalsePositives,
+  joints,
+  integrators,
 };
 
 /** Every experiment; `results` (Node only) runs them all and writes docs/results.md. */

@@ -1,3 +1,4 @@
+import type { JointOptions } from '@maxgrid/engine';
 import type { SceneBody, SceneShape, ShapeScene } from '@maxgrid/scenes';
 
 /**
@@ -184,4 +185,165 @@ function shapeArea(shape: SceneShape): { area: number; cx: number; cy: number; p
   cx /= area;
   cy /= area;
   return { area, cx, cy, polar: polar - area * (cx * cx + cy * cy) };
+}
+
+/**
+ * Thrown by `create` when a scene needs something the engine does not have (a joint kind, a
+ * joint's spring, limit or motor): an experiment then skips that engine on that scene, and says
+ * why, rather than timing a scene with part of it left out.
+ */
+export class UnsupportedSceneError extends Error {
+  constructor(
+    readonly engine: string,
+    readonly scene: string,
+    readonly reason: string,
+  ) {
+    super(`${engine} cannot build scene '${scene}': ${reason}`);
+    this.name = 'UnsupportedSceneError';
+  }
+}
+
+type Point = { x: number; y: number };
+/** Angle limits or translation limits; an unbounded side is ±Infinity. */
+export type JointRange = { lower: number; upper: number };
+
+interface ResolvedBase {
+  /** The joint's index in scene.joints, for messages. */
+  index: number;
+  bodyA: number;
+  bodyB: number;
+  /** In each body's frame from its origin, scene units (defaults filled in: the centre of mass). */
+  anchorA: Point;
+  anchorB: Point;
+  collideConnected: boolean;
+}
+
+/**
+ * A scene joint with every default resolved the way maxgrid's createJoint resolves it
+ * (packages/engine/src/joints/joint-options.ts), so that each peer adapter only maps values, and
+ * all of them read one interpretation of the options.
+ */
+export type ResolvedJoint =
+  | (ResolvedBase & { kind: 'distance'; length: number; minLength: number; maxLength: number; hertz: number; dampingRatio: number })
+  | (ResolvedBase & { kind: 'revolute'; referenceAngle: number; limits: JointRange | null; motor: { speed: number; maxTorque: number } | null; hertz: number; dampingRatio: number })
+  | (ResolvedBase & { kind: 'prismatic'; axis: Point; referenceAngle: number; limits: JointRange | null; motor: { speed: number; maxForce: number } | null; hertz: number; dampingRatio: number })
+  | (ResolvedBase & { kind: 'weld'; referenceAngle: number; linearHertz: number; angularHertz: number; dampingRatio: number })
+  | (ResolvedBase & { kind: 'wheel'; axis: Point; limits: JointRange | null; motor: { speed: number; maxTorque: number } | null; hertz: number; dampingRatio: number });
+
+/** A body's centre of mass in its own frame, from its origin (the shapes' own densities). */
+export function bodyCentroid(body: SceneBody): Point {
+  let mass = 0;
+  let x = 0;
+  let y = 0;
+  for (const shape of body.shapes) {
+    const { area, cx, cy } = shapeArea(shape);
+    const m = (shape.density ?? 1) * area;
+    mass += m;
+    x += m * cx;
+    y += m * cy;
+  }
+  return mass > 0 ? { x: x / mass, y: y / mass } : { x: 0, y: 0 };
+}
+
+/** A point given in body `body`'s frame, in the scene. */
+export function scenePoint(body: SceneBody, p: Point): Point {
+  const a = body.angle ?? 0;
+  const c = Math.cos(a);
+  const s = Math.sin(a);
+  return { x: body.x + c * p.x - s * p.y, y: body.y + s * p.x + c * p.y };
+}
+
+function unitAxis(v: Point | undefined, fallback: Point): Point {
+  const a = v ?? fallback;
+  const length = Math.hypot(a.x, a.y);
+  return { x: a.x / length, y: a.y / length };
+}
+
+function rangeOf(lower: number | undefined, upper: number | undefined): JointRange | null {
+  return lower === undefined && upper === undefined ? null : { lower: lower ?? -Infinity, upper: upper ?? Infinity };
+}
+
+/**
+ * The scene's joints resolved for a peer engine, or an UnsupportedSceneError for what no peer
+ * adapter builds: target (mouse) joints, which need a moving target the experiments do not drive,
+ * and breakable joints, which only maxgrid destroys.
+ */
+export function resolveSceneJoints(scene: ShapeScene, engine: string): ResolvedJoint[] {
+  return (scene.joints ?? []).map((given, index) => {
+    if (given.kind === 'target') throw new UnsupportedSceneError(engine, scene.name, `joint ${index} is a target joint, which the lab's peer adapters do not build`);
+    // maxgrid's force-driven spring between centres has no counterpart these adapters build (the peers' springs are soft constraints).
+    if ((given.kind as string) === 'spring') throw new UnsupportedSceneError(engine, scene.name, `joint ${index} is a force spring (kind 'spring'), which the lab's peer adapters do not build`);
+    const joint = given as Exclude<JointOptions, { kind: 'target' | 'spring' }>;
+    const breakable = (joint.breakForce ?? Infinity) !== Infinity || (joint.breakTorque ?? Infinity) !== Infinity;
+    if (breakable) throw new UnsupportedSceneError(engine, scene.name, `joint ${index} is breakable (breakForce/breakTorque), which the lab's peer adapters do not build`);
+    const a = scene.bodies[joint.bodyA];
+    const b = scene.bodies[joint.bodyB];
+    const base: ResolvedBase = {
+      index,
+      bodyA: joint.bodyA,
+      bodyB: joint.bodyB,
+      anchorA: joint.anchorA ?? bodyCentroid(a),
+      anchorB: joint.anchorB ?? bodyCentroid(b),
+      collideConnected: joint.collideConnected ?? false,
+    };
+    const relative = (b.angle ?? 0) - (a.angle ?? 0);
+    switch (joint.kind) {
+      case 'distance': {
+        const pa = scenePoint(a, base.anchorA);
+        const pb = scenePoint(b, base.anchorB);
+        const length = joint.length ?? Math.hypot(pb.x - pa.x, pb.y - pa.y);
+        const hertz = joint.hertz ?? 0;
+        // As createJoint: rigid at `length` unless a range or a spring is given; a spring alone has no limits.
+        const free = joint.minLength !== undefined || joint.maxLength !== undefined || hertz > 0;
+        return { ...base, kind: 'distance', length, minLength: joint.minLength ?? (free ? 0 : length), maxLength: joint.maxLength ?? (free ? Infinity : length), hertz, dampingRatio: joint.dampingRatio ?? 0 };
+      }
+      case 'revolute':
+        return {
+          ...base,
+          kind: 'revolute',
+          referenceAngle: joint.referenceAngle ?? relative,
+          limits: rangeOf(joint.lowerAngle, joint.upperAngle),
+          motor: (joint.maxMotorTorque ?? 0) > 0 ? { speed: joint.motorSpeed ?? 0, maxTorque: joint.maxMotorTorque! } : null,
+          hertz: joint.hertz ?? 0,
+          dampingRatio: joint.dampingRatio ?? 0,
+        };
+      case 'prismatic':
+        return {
+          ...base,
+          kind: 'prismatic',
+          axis: unitAxis(joint.axis, { x: 1, y: 0 }),
+          referenceAngle: joint.referenceAngle ?? relative,
+          limits: rangeOf(joint.lowerTranslation, joint.upperTranslation),
+          motor: (joint.maxMotorForce ?? 0) > 0 ? { speed: joint.motorSpeed ?? 0, maxForce: joint.maxMotorForce! } : null,
+          hertz: joint.hertz ?? 0,
+          dampingRatio: joint.dampingRatio ?? 0,
+        };
+      case 'weld':
+        return { ...base, kind: 'weld', referenceAngle: joint.referenceAngle ?? relative, linearHertz: joint.linearHertz ?? 0, angularHertz: joint.angularHertz ?? 0, dampingRatio: joint.dampingRatio ?? 0 };
+      case 'wheel':
+        return {
+          ...base,
+          kind: 'wheel',
+          axis: unitAxis(joint.axis, { x: 0, y: 1 }),
+          limits: rangeOf(joint.lowerTranslation, joint.upperTranslation),
+          motor: (joint.maxMotorTorque ?? 0) > 0 ? { speed: joint.motorSpeed ?? 0, maxTorque: joint.maxMotorTorque! } : null,
+          hertz: joint.hertz ?? 1,
+          dampingRatio: joint.dampingRatio ?? 0.7,
+        };
+      default:
+        // A kind added to the engine after these adapters: refused until they learn it.
+        throw new UnsupportedSceneError(engine, scene.name, `joint ${index} is a '${(joint as { kind: string }).kind}' joint, which the lab's peer adapters do not build`);
+    }
+  });
+}
+
+/**
+ * A spring's stiffness and damping from its frequency and damping ratio, for engines that take
+ * those (Box2D 2.4's b2LinearStiffness and b2AngularStiffness do the same): `mass` is the pair's
+ * reduced mass (or inertia), the other's where one body is static.
+ */
+export function springConstants(hertz: number, dampingRatio: number, massA: number, massB: number): { stiffness: number; damping: number } {
+  const mass = massA > 0 && massB > 0 ? (massA * massB) / (massA + massB) : massA > 0 ? massA : massB;
+  const omega = 2 * Math.PI * hertz;
+  return { stiffness: mass * omega * omega, damping: 2 * mass * dampingRatio * omega };
 }

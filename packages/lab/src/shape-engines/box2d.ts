@@ -1,5 +1,5 @@
 import type { SceneShape, ShapeScene } from '@maxgrid/scenes';
-import { materialOf, metersPerUnit, placedVertices, shapeWalls, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
+import { materialOf, metersPerUnit, placedVertices, resolveSceneJoints, shapeWalls, springConstants, UnsupportedSceneError, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
 import { VERSIONS } from '../engines/versions.js';
 import { box2dUsesSimd } from '../engines/box2d.js';
 
@@ -73,8 +73,116 @@ class Box2DShapes implements ShapeSimulation {
         for (const shape of b.shapes) this.fixtures(body, scene, shape, fixture);
         this.bodies.push(body);
       }
+      this.joints(scene, vec);
+    } catch (error) {
+      b2.destroy(this.world);
+      throw error;
     } finally {
       for (const o of [vec, fixture, def]) b2.destroy(o);
+    }
+  }
+
+  /**
+   * The scene's joints as Box2D 2.4 joints, which have every kind but springs on revolute and
+   * prismatic joints and on a weld's translation. Anchors are from each body's origin in both,
+   * and Box2D's frame is the scene's (y down, angles towards +y), so they map by the scale alone.
+   */
+  private joints(scene: ShapeScene, vec: Box2D.b2Vec2): void {
+    const { b2, S } = this;
+    const no = (index: number, what: string) => new UnsupportedSceneError('box2d-wasm', scene.name, `joint ${index}: ${what}`);
+    // Masses scale with area (S^2), so forces with S^3 and torques with S^4.
+    const force = S ** 3;
+    const torque = S ** 4;
+    const huge = 1e9;
+    const clamp = (v: number) => Math.max(-huge, Math.min(huge, v));
+    for (const j of resolveSceneJoints(scene, 'box2d-wasm')) {
+      const a = this.bodies[j.bodyA];
+      const b = this.bodies[j.bodyB];
+      let def: Box2D.b2JointDef;
+      if (j.kind === 'revolute') {
+        if (j.hertz > 0) throw no(j.index, 'a revolute spring (Box2D 2.4 has none)');
+        const d = new b2.b2RevoluteJointDef();
+        d.set_referenceAngle(j.referenceAngle);
+        if (j.limits) {
+          d.set_enableLimit(true);
+          d.set_lowerAngle(clamp(j.limits.lower));
+          d.set_upperAngle(clamp(j.limits.upper));
+        }
+        if (j.motor) {
+          d.set_enableMotor(true);
+          d.set_motorSpeed(j.motor.speed);
+          d.set_maxMotorTorque(j.motor.maxTorque * torque);
+        }
+        def = d;
+      } else if (j.kind === 'distance') {
+        const d = new b2.b2DistanceJointDef();
+        d.set_length(j.length * S);
+        d.set_minLength(j.minLength * S);
+        d.set_maxLength(Math.min(j.maxLength * S, huge));
+        if (j.hertz > 0) {
+          const k = springConstants(j.hertz, j.dampingRatio, a.GetMass(), b.GetMass());
+          d.set_stiffness(k.stiffness);
+          d.set_damping(k.damping);
+        }
+        def = d;
+      } else if (j.kind === 'prismatic') {
+        if (j.hertz > 0) throw no(j.index, 'a prismatic spring (Box2D 2.4 has none)');
+        const d = new b2.b2PrismaticJointDef();
+        vec.Set(j.axis.x, j.axis.y);
+        d.set_localAxisA(vec);
+        d.set_referenceAngle(j.referenceAngle);
+        if (j.limits) {
+          d.set_enableLimit(true);
+          d.set_lowerTranslation(clamp(j.limits.lower * S));
+          d.set_upperTranslation(clamp(j.limits.upper * S));
+        }
+        if (j.motor) {
+          d.set_enableMotor(true);
+          d.set_motorSpeed(j.motor.speed * S);
+          d.set_maxMotorForce(j.motor.maxForce * force);
+        }
+        def = d;
+      } else if (j.kind === 'weld') {
+        if (j.linearHertz > 0) throw no(j.index, "a weld's linear spring (Box2D 2.4's weld springs only its angle)");
+        const d = new b2.b2WeldJointDef();
+        d.set_referenceAngle(j.referenceAngle);
+        if (j.angularHertz > 0) {
+          const k = springConstants(j.angularHertz, j.dampingRatio, centralInertia(a), centralInertia(b));
+          d.set_stiffness(k.stiffness);
+          d.set_damping(k.damping);
+        }
+        def = d;
+      } else {
+        // Box2D 2.4's wheel with no spring leaves the axis free, where maxgrid's holds it rigid.
+        if (!(j.hertz > 0)) throw no(j.index, 'a wheel joint without a spring (rigid along its axis; Box2D 2.4 leaves it free)');
+        const d = new b2.b2WheelJointDef();
+        vec.Set(j.axis.x, j.axis.y);
+        d.set_localAxisA(vec);
+        const k = springConstants(j.hertz, j.dampingRatio, a.GetMass(), b.GetMass());
+        d.set_stiffness(k.stiffness);
+        d.set_damping(k.damping);
+        if (j.limits) {
+          d.set_enableLimit(true);
+          d.set_lowerTranslation(clamp(j.limits.lower * S));
+          d.set_upperTranslation(clamp(j.limits.upper * S));
+        }
+        if (j.motor) {
+          d.set_enableMotor(true);
+          d.set_motorSpeed(j.motor.speed);
+          d.set_maxMotorTorque(j.motor.maxTorque * torque);
+        }
+        def = d;
+      }
+      const anchored = def as Box2D.b2RevoluteJointDef;
+      vec.Set(j.anchorA.x * S, j.anchorA.y * S);
+      anchored.set_localAnchorA(vec);
+      vec.Set(j.anchorB.x * S, j.anchorB.y * S);
+      anchored.set_localAnchorB(vec);
+      def.set_bodyA(a);
+      def.set_bodyB(b);
+      def.set_collideConnected(j.collideConnected);
+      this.world.CreateJoint(def);
+      b2.destroy(def);
     }
   }
 
@@ -157,6 +265,12 @@ class Box2DShapes implements ShapeSimulation {
   dispose(): void {
     this.b2.destroy(this.world);
   }
+}
+
+/** GetInertia is about the body's origin; springs, as b2AngularStiffness, take it about the centre of mass. */
+function centralInertia(body: Box2D.b2Body): number {
+  const c = body.GetLocalCenter();
+  return body.GetInertia() - body.GetMass() * (c.get_x() ** 2 + c.get_y() ** 2);
 }
 
 let modulePromise: Promise<Box2DModule> | undefined;

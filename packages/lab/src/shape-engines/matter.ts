@@ -1,6 +1,6 @@
 import type { SceneBody, SceneShape, ShapeScene } from '@maxgrid/scenes';
 import type * as MatterTypes from 'matter-js';
-import { materialOf, placedVertices, shapeWalls, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
+import { materialOf, placedVertices, resolveSceneJoints, shapeWalls, UnsupportedSceneError, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
 import { VERSIONS } from '../engines/versions.js';
 
 type Matter = typeof MatterTypes;
@@ -50,7 +50,49 @@ class MatterShapes implements ShapeSimulation {
       this.bodies.push(body);
       all.push(body);
     }
-    M.Composite.add(this.engine.world, all);
+    M.Composite.add(this.engine.world, [...all, ...this.constraints(scene)]);
+  }
+
+  /**
+   * The scene's joints as Matter constraints, its only joint: a revolute joint is a pin (a
+   * constraint of length 0), a rigid distance joint a constraint of its length, both at stiffness
+   * 1. Matter has no limits, motors or joints that fix an angle or an axis, and its springs are a
+   * stiffness fraction per iteration rather than a frequency, so those are not built.
+   */
+  private constraints(scene: ShapeScene): MatterTypes.Constraint[] {
+    const { M, F } = this;
+    const no = (index: number, what: string) => new UnsupportedSceneError('matter-js', scene.name, `joint ${index}: ${what}`);
+    const out: MatterTypes.Constraint[] = [];
+    for (const j of resolveSceneJoints(scene, 'matter-js')) {
+      let length: number;
+      if (j.kind === 'revolute') {
+        if (j.limits) throw no(j.index, 'revolute angle limits (Matter has none)');
+        if (j.motor) throw no(j.index, 'a revolute motor, or joint friction (Matter has none)');
+        if (j.hertz > 0) throw no(j.index, 'a revolute spring (Matter has none)');
+        length = 0;
+      } else if (j.kind === 'distance') {
+        if (j.minLength !== j.length || j.maxLength !== j.length) throw no(j.index, "a distance joint that is not rigid (a range or a spring: Matter's constraints are rigid or a stiffness fraction)");
+        length = j.length * F;
+      } else {
+        throw no(j.index, `a ${j.kind} joint (Matter has only distance constraints)`);
+      }
+      const bodyA = this.bodies[j.bodyA];
+      const bodyB = this.bodies[j.bodyB];
+      if (!j.collideConnected) keepApart(M, bodyA, bodyB);
+      out.push(M.Constraint.create({ bodyA, bodyB, pointA: this.offset(scene, j.bodyA, j.anchorA), pointB: this.offset(scene, j.bodyB, j.anchorB), length, stiffness: 1, damping: 0 }));
+    }
+    return out;
+  }
+
+  /** Matter's constraint point: from the body's position (its centre of mass), in world axes, in pixels. */
+  private offset(scene: ShapeScene, k: number, anchor: { x: number; y: number }): { x: number; y: number } {
+    const [cx, cy] = this.centre[k];
+    const angle = scene.bodies[k].angle ?? 0;
+    const c = Math.cos(angle);
+    const s = Math.sin(angle);
+    const dx = anchor.x - cx;
+    const dy = anchor.y - cy;
+    return { x: (c * dx - s * dy) * this.F, y: (s * dx + c * dy) * this.F };
   }
 
   private body(scene: ShapeScene, b: SceneBody): MatterTypes.Body {
@@ -131,6 +173,26 @@ class MatterShapes implements ShapeSimulation {
   }
 }
 
+type JoinedFilter = MatterTypes.ICollisionFilter & { joined?: Set<MatterTypes.ICollisionFilter> };
+
+/**
+ * Matter's constraints do not stop the bodies they join from colliding, and its collision groups
+ * can only keep whole groups apart, not pairs; so a joined pair's filters name each other, and
+ * Matter's canCollide (looked up on every detection) is wrapped, once, to refuse such a pair.
+ * Filters without `joined` (every other Matter world) are judged as before.
+ */
+function keepApart(M: Matter, a: MatterTypes.Body, b: MatterTypes.Body): void {
+  const detector = M.Detector as unknown as { canCollide: (a: JoinedFilter, b: JoinedFilter) => boolean; joinedPairs?: boolean };
+  if (!detector.joinedPairs) {
+    const base = detector.canCollide;
+    detector.canCollide = (fa, fb) => !(fa.joined?.has(fb) ?? false) && base(fa, fb);
+    detector.joinedPairs = true;
+  }
+  for (const body of [a, b]) if (!(body.collisionFilter as JoinedFilter).joined) body.collisionFilter = { ...body.collisionFilter, joined: new Set() } as JoinedFilter;
+  (a.collisionFilter as JoinedFilter).joined!.add(b.collisionFilter);
+  (b.collisionFilter as JoinedFilter).joined!.add(a.collisionFilter);
+}
+
 export const matterShapeProvider: ShapeEngineProvider = {
   id: 'matter-js',
   async load(): Promise<ShapeEngine> {
@@ -142,6 +204,7 @@ export const matterShapeProvider: ShapeEngineProvider = {
       density: '0.001 x the scene density',
       capsule: 'a rectangle with corners rounded by the radius (chamfer)',
       kinematic: 'static bodies moved and turned by hand each step (Matter has no kinematic bodies)',
+      joints: 'constraints at stiffness 1 (a revolute joint: length 0); joined bodies kept from colliding by a wrapped Detector.canCollide',
       units: 'pixels, 1 m = 50 px; gravity.scale 1e-6 so gravity is px/s^2; Engine.update(dt * 1000 ms)',
     };
     const settings = (p: ShapeProfile) => ({ positionIterations: PROFILE[p].position, velocityIterations: PROFILE[p].velocity, constraintIterations: PROFILE[p].constraint, 'Resolver._restingThresh': PROFILE[p].restingThreshold, ...common });

@@ -62,7 +62,9 @@ export function maxgridShapeProvider(broadphase: BroadPhaseName): ShapeEnginePro
       return {
         info: { id, package: '@maxgrid/engine', version: VERSIONS.maxgrid, precision: 'f64', settings: { report: settings, defaults: settings } },
         create: (scene: ShapeScene, _profile: ShapeProfile) => {
-          const world = buildShapeWorld(scene, { broadphase, sleeping: false });
+          // The scene's world options win over the caller's, and a scene may ask for sleeping
+          // (ragdolls): the peers run awake, so maxgrid does too.
+          const world = buildShapeWorld({ ...scene, world: { ...scene.world, sleeping: false } }, { broadphase, sleeping: false });
           return new MaxgridShapes(world);
         },
       };

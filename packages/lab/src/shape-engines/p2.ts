@@ -1,5 +1,5 @@
 import type { SceneShape, ShapeScene } from '@maxgrid/scenes';
-import { bodyMass, materialOf, metersPerUnit, placedVertices, shapeWalls, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
+import { bodyMass, materialOf, metersPerUnit, placedVertices, resolveSceneJoints, shapeWalls, UnsupportedSceneError, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
 import { VERSIONS } from '../engines/versions.js';
 import { loadP2, type P2Api as P2, type P2Body, type P2World } from '../engines/p2-loader.js';
 
@@ -66,6 +66,51 @@ class P2Shapes implements ShapeSimulation {
       this.placement.push({ ox, oy, turn });
       this.world.addBody(body);
       this.bodies.push(body);
+    }
+    this.joints(scene);
+  }
+
+  /**
+   * The scene's joints as p2 constraints: revolute (with limits and a motor) and rigid distance.
+   * p2's other constraints (prismatic, lock) and its springs are not built here. p2 places a
+   * one-shape body at its shape, so anchors move from the origin's frame into that one.
+   */
+  private joints(scene: ShapeScene): void {
+    const { p2, S } = this;
+    const no = (index: number, what: string) => new UnsupportedSceneError('p2-es', scene.name, `joint ${index}: ${what}`);
+    const local = (k: number, p: { x: number; y: number }): [number, number] => {
+      const { ox, oy, turn } = this.placement[k];
+      const c = Math.cos(turn);
+      const s = Math.sin(turn);
+      const dx = p.x - ox;
+      const dy = p.y - oy;
+      return [(c * dx + s * dy) * S, (-s * dx + c * dy) * S];
+    };
+    for (const j of resolveSceneJoints(scene, 'p2-es')) {
+      const a = this.bodies[j.bodyA];
+      const b = this.bodies[j.bodyB];
+      if (j.kind === 'revolute') {
+        if (j.hertz > 0) throw no(j.index, 'a revolute spring (not built for p2)');
+        const joint = new p2.RevoluteConstraint(a, b, { localPivotA: local(j.bodyA, j.anchorA), localPivotB: local(j.bodyB, j.anchorB), collideConnected: j.collideConnected });
+        if (j.limits) {
+          // p2's angle is B's less A's with no reference angle, and its bodies are turned with their shape.
+          const shift = j.referenceAngle + this.placement[j.bodyB].turn - this.placement[j.bodyA].turn;
+          joint.setLimits(Math.max(j.limits.lower, -1e9) + shift, Math.min(j.limits.upper, 1e9) + shift);
+        }
+        if (j.motor) {
+          joint.motorEnabled = true;
+          // p2's motor drives A's spin less B's to its speed: the opposite sign.
+          joint.motorSpeed = -j.motor.speed;
+          // Masses scale with area (S^2), so torques with S^4.
+          joint.motorMaxForce = j.motor.maxTorque * S ** 4;
+        }
+        this.world.addConstraint(joint);
+      } else if (j.kind === 'distance') {
+        if (j.minLength !== j.length || j.maxLength !== j.length) throw no(j.index, 'a distance joint that is not rigid (not built for p2)');
+        this.world.addConstraint(new p2.DistanceConstraint(a, b, { localAnchorA: local(j.bodyA, j.anchorA), localAnchorB: local(j.bodyB, j.anchorB), distance: j.length * S, collideConnected: j.collideConnected }));
+      } else {
+        throw no(j.index, `a ${j.kind} joint (not built for p2)`);
+      }
     }
   }
 

@@ -1,5 +1,5 @@
 import type { SceneShape, ShapeScene } from '@maxgrid/scenes';
-import { materialOf, metersPerUnit, placedVertices, shapeWalls, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
+import { materialOf, metersPerUnit, placedVertices, resolveSceneJoints, shapeWalls, UnsupportedSceneError, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
 import { VERSIONS } from '../engines/versions.js';
 
 type Planck = typeof import('planck');
@@ -53,6 +53,91 @@ class PlanckShapes implements ShapeSimulation {
       });
       for (const shape of b.shapes) this.fixtures(body, scene, shape);
       this.bodies.push(body);
+    }
+    this.joints(scene);
+  }
+
+  /**
+   * The scene's joints as planck's (Box2D 2.3's set): springs are frequency and damping ratio as
+   * in the scene, but a distance joint is either rigid, a spring, or a rope (planck's RopeJoint,
+   * a maximum only); revolute and prismatic joints have no spring, a weld springs only its angle,
+   * a wheel has no limits. Anchors are from each body's origin, in the scene's own frame.
+   */
+  private joints(scene: ShapeScene): void {
+    const { pl, S } = this;
+    const no = (index: number, what: string) => new UnsupportedSceneError('planck', scene.name, `joint ${index}: ${what}`);
+    // Masses scale with area (S^2), so forces with S^3 and torques with S^4.
+    const force = S ** 3;
+    const torque = S ** 4;
+    for (const j of resolveSceneJoints(scene, 'planck')) {
+      const bodyA = this.bodies[j.bodyA];
+      const bodyB = this.bodies[j.bodyB];
+      const base = {
+        localAnchorA: { x: j.anchorA.x * S, y: j.anchorA.y * S },
+        localAnchorB: { x: j.anchorB.x * S, y: j.anchorB.y * S },
+        collideConnected: j.collideConnected,
+        bodyA,
+        bodyB,
+      };
+      if (j.kind === 'revolute') {
+        if (j.hertz > 0) throw no(j.index, 'a revolute spring (planck has none)');
+        this.world.createJoint(
+          new pl.RevoluteJoint({
+            ...base,
+            referenceAngle: j.referenceAngle,
+            enableLimit: j.limits !== null,
+            lowerAngle: j.limits?.lower ?? 0,
+            upperAngle: j.limits?.upper ?? 0,
+            enableMotor: j.motor !== null,
+            motorSpeed: j.motor?.speed ?? 0,
+            maxMotorTorque: (j.motor?.maxTorque ?? 0) * torque,
+          }),
+        );
+      } else if (j.kind === 'distance') {
+        const rigid = j.minLength === j.length && j.maxLength === j.length;
+        const spring = j.hertz > 0 && j.minLength === 0 && j.maxLength === Infinity;
+        const rope = j.hertz === 0 && j.minLength === 0 && Number.isFinite(j.maxLength);
+        if (rigid || spring) {
+          this.world.createJoint(new pl.DistanceJoint({ ...base, length: j.length * S, frequencyHz: spring ? j.hertz : 0, dampingRatio: spring ? j.dampingRatio : 0 }));
+        } else if (rope) {
+          this.world.createJoint(new pl.RopeJoint({ ...base, maxLength: j.maxLength * S }));
+        } else {
+          throw no(j.index, 'a distance joint with a range other than a rope (0 to a maximum), or a spring within limits (planck has neither)');
+        }
+      } else if (j.kind === 'prismatic') {
+        if (j.hertz > 0) throw no(j.index, 'a prismatic spring (planck has none)');
+        this.world.createJoint(
+          new pl.PrismaticJoint({
+            ...base,
+            localAxisA: j.axis,
+            referenceAngle: j.referenceAngle,
+            enableLimit: j.limits !== null,
+            lowerTranslation: (j.limits?.lower ?? 0) * S,
+            upperTranslation: (j.limits?.upper ?? 0) * S,
+            enableMotor: j.motor !== null,
+            motorSpeed: (j.motor?.speed ?? 0) * S,
+            maxMotorForce: (j.motor?.maxForce ?? 0) * force,
+          }),
+        );
+      } else if (j.kind === 'weld') {
+        if (j.linearHertz > 0) throw no(j.index, "a weld's linear spring (planck's weld springs only its angle)");
+        this.world.createJoint(new pl.WeldJoint({ ...base, referenceAngle: j.referenceAngle, frequencyHz: j.angularHertz, dampingRatio: j.dampingRatio }));
+      } else {
+        if (j.limits) throw no(j.index, "a wheel joint's translation limits (planck's wheel joint has none)");
+        // planck's wheel with no spring leaves the axis free, where maxgrid's holds it rigid.
+        if (!(j.hertz > 0)) throw no(j.index, 'a wheel joint without a spring (rigid along its axis; planck leaves it free)');
+        this.world.createJoint(
+          new pl.WheelJoint({
+            ...base,
+            localAxisA: j.axis,
+            frequencyHz: j.hertz,
+            dampingRatio: j.dampingRatio,
+            enableMotor: j.motor !== null,
+            motorSpeed: j.motor?.speed ?? 0,
+            maxMotorTorque: (j.motor?.maxTorque ?? 0) * torque,
+          }),
+        );
+      }
     }
   }
 

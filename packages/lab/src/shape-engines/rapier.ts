@@ -1,11 +1,12 @@
 import type { SceneShape, ShapeScene } from '@maxgrid/scenes';
-import { materialOf, metersPerUnit, placedVertices, shapeWalls, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
+import { materialOf, metersPerUnit, placedVertices, resolveSceneJoints, shapeWalls, UnsupportedSceneError, type PoseState, type ShapeEngine, type ShapeEngineProvider, type ShapeProfile, type ShapeSimulation } from './adapter.js';
 import { VERSIONS } from '../engines/versions.js';
 
 type Rapier = typeof import('@dimforge/rapier2d-simd-compat').default;
 type RapierWorld = InstanceType<Rapier['World']>;
 type RapierBody = ReturnType<RapierWorld['createRigidBody']>;
 type ColliderDesc = InstanceType<Rapier['ColliderDesc']>;
+type RevoluteJoint = InstanceType<Rapier['RevoluteImpulseJoint']>;
 
 /** Per profile: solver iterations and internal PGS passes (Rapier's defaults are 4 and 1). */
 const ITERATIONS: Record<ShapeProfile, { solver: number; pgs: number }> = { report: { solver: 1, pgs: 1 }, defaults: { solver: 4, pgs: 1 } };
@@ -57,6 +58,60 @@ class RapierShapes implements ShapeSimulation {
       const body = this.world.createRigidBody(desc);
       for (const shape of b.shapes) this.world.createCollider(this.collider(R, scene, shape), body);
       this.bodies.push(body);
+    }
+    try {
+      this.joints(R, scene);
+    } catch (error) {
+      this.world.free();
+      throw error;
+    }
+  }
+
+  /**
+   * The scene's joints as Rapier impulse joints: revolute (with limits), fixed (weld), prismatic
+   * (with limits, B keeping A's angle) and rope (a distance joint with a maximum only). Rapier's
+   * JavaScript API sets no largest force on a joint motor, so a motor (even a friction motor at
+   * speed 0) cannot be built; it has no rigid distance joint and no wheel joint. Anchors are in
+   * each body's frame from its translation (the origin), as in the scene.
+   */
+  private joints(R: Rapier, scene: ShapeScene): void {
+    const S = this.S;
+    const no = (index: number, what: string) => new UnsupportedSceneError('rapier', scene.name, `joint ${index}: ${what}`);
+    for (const j of resolveSceneJoints(scene, 'rapier')) {
+      const a1 = { x: j.anchorA.x * S, y: j.anchorA.y * S };
+      const a2 = { x: j.anchorB.x * S, y: j.anchorB.y * S };
+      let data: ReturnType<Rapier['JointData']['revolute']>;
+      let limits: [number, number] | null = null;
+      if (j.kind === 'revolute') {
+        if (j.motor) throw no(j.index, "a revolute motor (Rapier's JavaScript API cannot cap a motor's torque)");
+        if (j.hertz > 0) throw no(j.index, 'a revolute spring');
+        data = R.JointData.revolute(a1, a2);
+        if (j.limits) {
+          // Rapier measures B's angle less A's with no reference angle: the limits move by it.
+          const lower = j.limits.lower + j.referenceAngle;
+          const upper = j.limits.upper + j.referenceAngle;
+          if (!(lower >= -Math.PI && upper <= Math.PI)) throw no(j.index, `angle limits past ±pi once moved by the reference angle (${lower}, ${upper})`);
+          limits = [lower, upper];
+        }
+      } else if (j.kind === 'weld') {
+        if (j.linearHertz > 0 || j.angularHertz > 0) throw no(j.index, 'a soft weld (Rapier has no spring on a fixed joint)');
+        // Frames rotA * frame1 = rotB * frame2: B's angle less A's is frame1 - frame2.
+        data = R.JointData.fixed(a1, j.referenceAngle, a2, 0);
+      } else if (j.kind === 'prismatic') {
+        if (j.motor) throw no(j.index, "a prismatic motor (Rapier's JavaScript API cannot cap a motor's force)");
+        if (j.hertz > 0) throw no(j.index, 'a prismatic spring');
+        if (Math.abs(j.referenceAngle) > 1e-12) throw no(j.index, `a prismatic joint with reference angle ${j.referenceAngle} (Rapier's keeps B at A's angle)`);
+        data = R.JointData.prismatic(a1, a2, j.axis);
+        if (j.limits) limits = [Math.max(j.limits.lower * S, -1e9), Math.min(j.limits.upper * S, 1e9)];
+      } else if (j.kind === 'distance') {
+        if (!(j.hertz === 0 && j.minLength === 0 && Number.isFinite(j.maxLength))) throw no(j.index, 'a distance joint other than a rope (0 to a maximum): Rapier has no rigid distance joint, and its spring is not built here');
+        data = R.JointData.rope(j.maxLength * S, a1, a2);
+      } else {
+        throw no(j.index, 'a wheel joint (Rapier has none)');
+      }
+      const joint = this.world.createImpulseJoint(data, this.bodies[j.bodyA], this.bodies[j.bodyB], true);
+      joint.setContactsEnabled(j.collideConnected);
+      if (limits) (joint as RevoluteJoint).setLimits(limits[0], limits[1]);
     }
   }
 

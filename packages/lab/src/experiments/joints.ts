@@ -1,0 +1,435 @@
+import { buildShapeScene, type ShapeScene, type ShapeSceneName } from '@maxgrid/scenes';
+import { fmt, ratioText, type Table } from '../report/tables.js';
+import { allocatePoses, resolveSceneJoints, scenePoint, UnsupportedSceneError, type PoseState, type ShapeProfile, type ShapeSimulation } from '../shape-engines/adapter.js';
+import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
+import { csvLine, makeMeta, metaSchema, now, spread, spreadSchema, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+// Types only: registry.ts imports this file, and a value imported back would be read before it is defined.
+import type { Experiment, Overrides } from './registry.js';
+
+/**
+ * Issue 21: step times on joint scenes against the peers that have the scene's joints (Box2D
+ * 2.4, planck, Rapier, Matter, p2), with a physical figure beside each time so that an engine
+ * that is fast because its joints give way shows it. Per scene, one simulation per engine,
+ * stepped in turn round by round (as the cliffs experiment does), so that the host's noise hits
+ * them alike; an engine leaves the rotation once it has its steps or has spent its budget. An
+ * engine that lacks one of the scene's joint kinds or features is skipped there, with its reason.
+ */
+export interface JointsOptions {
+  cases: { scene: JointSceneName; params: Record<string, number> }[];
+  /** The peers' settings profile: joints need their engines' iterations, not the report's one. */
+  profile: ShapeProfile;
+  /** Untimed steps first, each engine in turn, so that the timed ones run compiled code. */
+  warmupSteps: number;
+  /** Timed steps per engine, unless the budget runs out first. */
+  steps: number;
+  minSteps: number;
+  budgetMs: number;
+  dt: number;
+  /** The engine the ratios divide by. */
+  baseline: string;
+}
+
+export const JOINT_SCENES = ['joint-grid', 'chain', 'bridge', 'ragdolls', 'car', 'jellies'] as const satisfies readonly ShapeSceneName[];
+export type JointSceneName = (typeof JOINT_SCENES)[number];
+
+export function jointsDefaults(profile: Profile): JointsOptions {
+  const common = { profile: 'defaults' as const, dt: 1 / 60, baseline: 'maxgrid:maxgrid' };
+  return profile === 'full'
+    ? {
+        ...common,
+        cases: [
+          { scene: 'joint-grid', params: { size: 100 } },
+          { scene: 'chain', params: { links: 100, horizontal: 1 } },
+          { scene: 'bridge', params: {} },
+          { scene: 'ragdolls', params: {} },
+          { scene: 'car', params: {} },
+          { scene: 'jellies', params: {} },
+        ],
+        warmupSteps: 30,
+        steps: 300,
+        minSteps: 10,
+        budgetMs: 20_000,
+      }
+    : {
+        ...common,
+        cases: [
+          { scene: 'joint-grid', params: { size: 40 } },
+          { scene: 'chain', params: { links: 100, horizontal: 1 } },
+          { scene: 'bridge', params: {} },
+          { scene: 'ragdolls', params: { count: 20 } },
+          { scene: 'car', params: {} },
+          { scene: 'jellies', params: { count: 8 } },
+        ],
+        warmupSteps: 10,
+        steps: 60,
+        minSteps: 5,
+        budgetMs: 3000,
+      };
+}
+
+/** What the sanity column reads for a scene, and the range a physical answer falls in. */
+export interface SanityFigure {
+  /** What was measured, with its unit. */
+  label: string;
+  value: number;
+  /** Where a plausible answer lies; an engine whose joints gave way lands outside it. */
+  lower: number;
+  upper: number;
+  /** The largest distance between a revolute joint's two anchors, scene units (0 without revolute joints). */
+  pinGap: number;
+  /** The largest plausible pin gap (a fraction of the parts' size), or null where the scene has no pins. */
+  pinGapLimit: number | null;
+  /** The figure within its range and the pin gap within its limit. */
+  ok: boolean;
+}
+
+export interface JointsRow {
+  scene: string;
+  params: Record<string, number>;
+  bodies: number;
+  joints: number;
+  engine: string;
+  /** Timed steps (fewer than the option's where the budget ran out). */
+  steps: number;
+  /** Simulated time at which the sanity figures were read. */
+  seconds: number;
+  ms: Spread;
+  sanity: SanityFigure;
+}
+
+export interface JointsResult {
+  meta: Meta;
+  rows: JointsRow[];
+  skipped: { scene: string; engine: string; reason: string }[];
+}
+
+function pose(p: PoseState, k: number) {
+  return { x: p.x[k], y: p.y[k], angle: p.angle[k], shapes: [] };
+}
+
+/** The largest gap between the anchors of a revolute joint. */
+export function pinGap(scene: ShapeScene, p: PoseState): number {
+  let gap = 0;
+  for (const j of resolveSceneJoints(scene, 'lab')) {
+    if (j.kind !== 'revolute') continue;
+    const a = scenePoint(pose(p, j.bodyA), j.anchorA);
+    const b = scenePoint(pose(p, j.bodyB), j.anchorB);
+    gap = Math.max(gap, Math.hypot(b.x - a.x, b.y - a.y));
+  }
+  return gap;
+}
+
+/**
+ * The scene's physical figure after `seconds` from its start, and its pins' largest gap. The
+ * bounds are loose (a few times what Box2D 2.4 and maxgrid give) but each sits far inside what
+ * the scene does once its joints give way: bodies let go fall g t^2 / 2, and pins come apart by
+ * a good part of the parts' size (Matter's joint grid, p2's bridge).
+ */
+export function jointSanity(scene: ShapeScene, p: PoseState, seconds: number): SanityFigure {
+  const g = Math.hypot(scene.gravity.x, scene.gravity.y);
+  const freeFall = (g * seconds * seconds) / 2;
+  const gap = pinGap(scene, p);
+  const figure = (label: string, value: number, lower: number, upper: number, gapLimit: number | null): SanityFigure => ({
+    label,
+    value,
+    lower,
+    upper,
+    pinGap: gap,
+    pinGapLimit: gapLimit,
+    ok: value >= lower && value <= upper && (gapLimit === null || gap <= gapLimit),
+  });
+  switch (scene.name) {
+    case 'chain': {
+      // The far end of the last link, against the pinned end at the origin, over the chain's length.
+      const links = scene.params.links;
+      const L = scene.params.linkLength;
+      const tip = scenePoint(pose(p, links), { x: L / 2, y: 0 });
+      return figure('tip to pivot / chain length', Math.hypot(tip.x, tip.y) / (links * L), 0.8, 1.05, L / 4);
+    }
+    case 'joint-grid': {
+      // The bottom of the middle column hangs from the pins straight above it: it drops only by
+      // what the grid stretches, where a grid without joints falls freely.
+      const n = scene.params.size;
+      const k = Math.floor(n / 2) * n + n - 1;
+      // Pins at half the spacing apart: Box2D 2.4's grid stretches to 0.4 at its worst pin without coming apart.
+      return figure('drop below the pins, m', p.y[k] - scene.bodies[k].y, -0.5, 0.2 * freeFall + 0.5, 0.5);
+    }
+    case 'bridge': {
+      // The deck starts taut between the posts, so it sags only as far as its pins stretch: a
+      // quarter of the span would take a sixth more length.
+      const k = 2 + Math.floor(scene.params.planks / 2);
+      return figure('midspan sag, m', p.y[k] - scene.bodies[k].y, -0.5, Math.min(0.5 * freeFall + 0.5, scene.params.planks / 4), 0.25);
+    }
+    case 'ragdolls': {
+      // The mean over the limited joints: one limb's overshoot as a body lands is brief, and would make the figure a coin toss.
+      let sum = 0;
+      let count = 0;
+      for (const j of resolveSceneJoints(scene, 'lab')) {
+        if (j.kind !== 'revolute' || !j.limits) continue;
+        const turn = p.angle[j.bodyB] - p.angle[j.bodyA] - j.referenceAngle;
+        const angle = Math.atan2(Math.sin(turn), Math.cos(turn));
+        sum += Math.max(0, j.limits.lower - angle, angle - j.limits.upper);
+        count++;
+      }
+      return figure('mean angle past a limit, rad', sum / Math.max(count, 1), 0, 0.1, 0.1);
+    }
+    case 'car':
+      // The wheels' motors drive the chassis forward only through the wheel joints.
+      return figure('chassis travel, m', p.x[0] - scene.bodies[0].x, 0.25 * seconds, 8 * seconds, null);
+    case 'jellies': {
+      let worst = 0;
+      for (const j of resolveSceneJoints(scene, 'lab')) {
+        if (j.kind !== 'distance') continue;
+        const a = scenePoint(pose(p, j.bodyA), j.anchorA);
+        const b = scenePoint(pose(p, j.bodyB), j.anchorB);
+        worst = Math.max(worst, Math.abs(Math.hypot(b.x - a.x, b.y - a.y) - j.length) / j.length);
+      }
+      return figure('largest spring stretch / rest length', worst, 0, 1, null);
+    }
+    default:
+      throw new RangeError(`joints: no sanity figure for scene '${scene.name}'`);
+  }
+}
+
+export async function runJoints(o: JointsOptions, ctx: RunContext): Promise<JointsResult> {
+  const engines = ctx.shapeEngines ?? [];
+  if (engines.length === 0) throw new RangeError('joints needs shape engines');
+  const rows: JointsRow[] = [];
+  const skipped: JointsResult['skipped'] = [];
+  let done = 0;
+  for (const c of o.cases) {
+    const scene = buildShapeScene(c.scene, c.params);
+    const running: { id: string; sim: ShapeSimulation }[] = [];
+    try {
+      for (const engine of engines) {
+        try {
+          running.push({ id: engine.info.id, sim: engine.create(scene, o.profile) });
+        } catch (error) {
+          if (!(error instanceof UnsupportedSceneError)) throw error;
+          skipped.push({ scene: c.scene, engine: engine.info.id, reason: error.reason });
+        }
+      }
+      for (let s = 0; s < o.warmupSteps; s++) for (const r of running) r.sim.step(o.dt);
+      const times = running.map((): number[] => []);
+      const spent = running.map(() => 0);
+      const active = (i: number) => times[i].length < o.steps && (times[i].length < o.minSteps || spent[i] < o.budgetMs);
+      for (let round = 0; running.some((_, i) => active(i)); round++) {
+        ctx.progress?.(done + Math.min(round, o.steps) / o.steps, o.cases.length, `${c.scene} step ${round + 1}`);
+        for (let k = 0; k < running.length; k++) {
+          const i = (round + k) % running.length;
+          if (!active(i)) continue;
+          const t0 = now();
+          running[i].sim.step(o.dt);
+          const ms = now() - t0;
+          times[i].push(ms);
+          spent[i] += ms;
+        }
+        await ctx.yieldToHost?.();
+      }
+      running.forEach((r, i) => {
+        const p = allocatePoses(r.sim.count);
+        r.sim.read(p);
+        const seconds = (o.warmupSteps + times[i].length) * o.dt;
+        rows.push({
+          scene: c.scene,
+          params: { ...scene.params },
+          bodies: scene.bodies.length,
+          joints: scene.joints?.length ?? 0,
+          engine: r.id,
+          steps: times[i].length,
+          seconds,
+          ms: spread(times[i]),
+          sanity: jointSanity(scene, p, seconds),
+        });
+      });
+    } finally {
+      for (const r of running) r.sim.dispose();
+    }
+    done++;
+  }
+  ctx.progress?.(1, 1, 'done');
+  return { meta: makeMeta('joints', ctx, o), rows, skipped };
+}
+
+function enginesOf(result: JointsResult): string[] {
+  const ids = (result.meta.engines ?? []).map((e) => e.id.replace(/ \(shapes\)$/, ''));
+  const seen = new Set([...result.rows.map((r) => r.engine), ...result.skipped.map((s) => s.engine)]);
+  return ids.filter((id) => seen.has(id));
+}
+
+function scenesOf(result: JointsResult): string[] {
+  return [...new Set([...result.rows.map((r) => r.scene), ...result.skipped.map((s) => s.scene)])];
+}
+
+export function jointsTables(result: JointsResult): Table[] {
+  const engines = enginesOf(result);
+  const scenes = scenesOf(result);
+  const baseline = String(result.meta.options.baseline);
+  const steps = Number(result.meta.options.steps);
+  const row = (scene: string, engine: string) => result.rows.find((r) => r.scene === scene && r.engine === engine);
+  const first = (scene: string) => result.rows.find((r) => r.scene === scene);
+  const params = (scene: string) => {
+    const r = first(scene);
+    return r ? Object.entries(r.params).map(([k, v]) => `${k} ${v}`).join(', ') : '';
+  };
+  const times: Table = {
+    title: `Joint scenes: median ms per step, and its ratio to ${baseline}'s (above 1: maxgrid is faster)`,
+    headers: ['scene', 'bodies', 'joints', ...engines],
+    rows: scenes.map((scene) => {
+      const b = row(scene, baseline);
+      return [
+        `${scene} (${params(scene)})`,
+        String(first(scene)?.bodies ?? ''),
+        String(first(scene)?.joints ?? ''),
+        ...engines.map((e) => {
+          const r = row(scene, e);
+          if (!r) return 'not built';
+          const ratio = e === baseline || !b ? '' : ` (${ratioText(r.ms.median / b.ms.median)})`;
+          const cut = r.steps < steps ? `, ${r.steps} steps` : '';
+          return `${fmt(r.ms.median)}${ratio}${cut}`;
+        }),
+      ];
+    }),
+    note: `One simulation per engine, stepped in turn after ${String(result.meta.options.warmupSteps)} untimed steps; ${steps} timed steps each, fewer where an engine spent its budget of ${fmt(Number(result.meta.options.budgetMs) / 1000)} s. Peers with their recommended settings ('${String(result.meta.options.profile)}'), sleeping off. "not built": the engine lacks one of the scene's joint kinds or features (see below).`,
+  };
+  const sanity: Table = {
+    title: 'Joint scenes: a physical figure after the run (and the largest revolute pin gap, m); "implausible" where the joints gave way',
+    headers: ['scene', 'figure', 'plausible (pin gap)', 'after', ...engines],
+    rows: scenes
+      .filter((scene) => first(scene))
+      .map((scene) => {
+        const f = first(scene)!;
+        return [
+          scene,
+          f.sanity.label,
+          `${fmt(f.sanity.lower)} to ${fmt(f.sanity.upper)}${f.sanity.pinGapLimit === null ? '' : ` (≤ ${fmt(f.sanity.pinGapLimit)})`}`,
+          `${fmt(f.seconds)} s`,
+          ...engines.map((e) => {
+            const r = row(scene, e);
+            if (!r) return '–';
+            const gap = r.sanity.pinGapLimit === null ? '' : ` (${fmt(r.sanity.pinGap)})`;
+            return `${fmt(r.sanity.value)}${gap}${r.sanity.ok ? '' : ' implausible'}`;
+          }),
+        ];
+      }),
+    note: 'Bounds are per scene, loose, and read at the simulated time shown (later or earlier for an engine cut short by its budget; its own figure is judged at its own time).',
+  };
+  const out = [times, sanity];
+  if (result.skipped.length > 0) {
+    out.push({ title: 'Engines not built on a joint scene, and why', headers: ['scene', 'engine', 'reason'], rows: result.skipped.map((s) => [s.scene, s.engine, s.reason]) });
+  }
+  return out;
+}
+
+export function jointsHeadline(result: JointsResult): string[] {
+  const baseline = String(result.meta.options.baseline);
+  const out: string[] = [];
+  for (const scene of scenesOf(result)) {
+    const b = result.rows.find((r) => r.scene === scene && r.engine === baseline);
+    if (!b) continue;
+    const peers = result.rows.filter((r) => r.scene === scene && r.engine !== baseline).map((r) => `${r.engine} ${ratioText(r.ms.median / b.ms.median)}${r.sanity.ok ? '' : ' (implausible)'}`);
+    out.push(`${scene} (${b.bodies} bodies, ${b.joints} joints): ${baseline} ${fmt(b.ms.median)} ms a step; ${peers.length > 0 ? `${peers.join(', ')} as slow` : 'no peer has its joints'}.`);
+  }
+  const bad = result.rows.filter((r) => !r.sanity.ok);
+  out.push(bad.length === 0 ? 'Every engine that ran kept its joints within the plausible range.' : `Outside the plausible range: ${bad.map((r) => `${r.engine} on ${r.scene} (${r.sanity.label} ${fmt(r.sanity.value)}, pin gap ${fmt(r.sanity.pinGap)})`).join(', ')}.`, '');
+  return out;
+}
+
+export function jointsCsv(result: JointsResult): string {
+  const lines = [csvLine(['scene', 'bodies', 'joints', 'engine', 'steps', 'seconds', 'median_ms', 'p25_ms', 'p75_ms', 'sanity_figure', 'sanity_value', 'sanity_ok', 'pin_gap'])];
+  for (const r of result.rows) lines.push(csvLine([r.scene, r.bodies, r.joints, r.engine, r.steps, r.seconds, r.ms.median, r.ms.p25, r.ms.p75, r.sanity.label, r.sanity.value, r.sanity.ok ? 1 : 0, r.sanity.pinGap]));
+  return lines.join('\n') + '\n';
+}
+
+/**
+ * The shared meta schema, but for shape engines' settings rows, whose lengthScale is 0 (their
+ * units are per scene: shapeEngineRow) where metaSchema asks the circle engines for one above 0.
+ */
+const shapeMetaSchema = {
+  ...metaSchema,
+  properties: {
+    ...metaSchema.properties,
+    engines: {
+      ...metaSchema.properties.engines,
+      items: { ...metaSchema.properties.engines.items, properties: { ...metaSchema.properties.engines.items.properties, lengthScale: { type: 'number', minimum: 0 } } },
+    },
+  },
+} as const;
+
+export const jointsSchema = {
+  $id: 'joints',
+  type: 'object',
+  required: ['meta', 'rows', 'skipped'],
+  properties: {
+    meta: shapeMetaSchema,
+    rows: {
+      type: 'array',
+      minItems: 1,
+      items: {
+        type: 'object',
+        required: ['scene', 'params', 'bodies', 'joints', 'engine', 'steps', 'seconds', 'ms', 'sanity'],
+        properties: {
+          scene: { enum: [...JOINT_SCENES] },
+          params: { type: 'object' },
+          bodies: { type: 'integer', minimum: 1 },
+          joints: { type: 'integer', minimum: 1 },
+          engine: { type: 'string' },
+          steps: { type: 'integer', minimum: 1 },
+          seconds: { type: 'number', exclusiveMinimum: 0 },
+          ms: spreadSchema,
+          sanity: {
+            type: 'object',
+            required: ['label', 'value', 'lower', 'upper', 'pinGap', 'pinGapLimit', 'ok'],
+            properties: {
+              label: { type: 'string' },
+              value: { type: 'number' },
+              lower: { type: 'number' },
+              upper: { type: 'number' },
+              pinGap: { type: 'number', minimum: 0 },
+              pinGapLimit: { type: ['number', 'null'] },
+              ok: { type: 'boolean' },
+            },
+            additionalProperties: false,
+          },
+        },
+        additionalProperties: false,
+      },
+    },
+    skipped: {
+      type: 'array',
+      items: {
+        type: 'object',
+        required: ['scene', 'engine', 'reason'],
+        properties: { scene: { enum: [...JOINT_SCENES] }, engine: { type: 'string' }, reason: { type: 'string', minLength: 1 } },
+        additionalProperties: false,
+      },
+    },
+  },
+  additionalProperties: false,
+} as const;
+
+/** --runs sets the timed steps, --dt the step; the cases are fixed (the CLI's --scene names circle scenes). */
+function jointsOptions(profile: Profile, o: Overrides): JointsOptions {
+  const flags: Record<keyof Overrides, string> = { ns: '--n', runs: '--runs', seconds: '--seconds', scenes: '--scene', dt: '--dt' };
+  for (const key of Object.keys(o) as (keyof Overrides)[]) {
+    if (o[key] !== undefined && key !== 'runs' && key !== 'dt') throw new RangeError(`option ${flags[key]} does not apply to experiment 'joints' (it takes --runs, --dt)`);
+  }
+  const d = jointsDefaults(profile);
+  return { ...d, steps: o.runs ?? d.steps, dt: o.dt ?? d.dt };
+}
+
+export const joints: Experiment<JointsOptions, JointsResult> = {
+  name: 'joints',
+  description: "Step time on joint scenes (Box2D v3's joint_grid, a 100-link chain, a bridge, ragdolls, a car, jellies) against every peer that has their joints, with a physical figure per engine (issue 21)",
+  schema: jointsSchema,
+  defaultEngines: ['maxgrid:maxgrid', ...SHAPE_ENGINE_IDS.filter((id) => !id.startsWith('maxgrid:'))],
+  // Seconds of Matter and p2 on the 10,000-body joint grid: too long for the lab page.
+  nodeOnly: true,
+  shapes: true,
+  options: jointsOptions,
+  run: runJoints,
+  csv: jointsCsv,
+  charts: () => [],
+  tables: jointsTables,
+  headline: jointsHeadline,
+};

@@ -1,0 +1,107 @@
+import { beforeAll, describe, expect, it } from 'vitest';
+import { Ajv } from 'ajv';
+import { buildShapeScene } from '@maxgrid/scenes';
+import { allocatePoses, UnsupportedSceneError, type ShapeEngine } from '../src/shape-engines/adapter.js';
+import { loadShapeEnginesNode } from '../src/node/engines.js';
+import { joints, jointSanity, type JointsOptions } from '../src/experiments/joints.js';
+import { EXPERIMENTS } from '../src/experiments/registry.js';
+import { tablesFor } from '../src/report/html.js';
+import { markdownTable } from '../src/report/tables.js';
+
+const IDS = ['maxgrid:maxgrid', 'box2d-wasm', 'planck', 'rapier', 'matter-js', 'p2-es'];
+let engines: ShapeEngine[] = [];
+
+beforeAll(async () => {
+  engines = await loadShapeEnginesNode(IDS);
+});
+
+/** Small enough for every engine in a test; long enough (about 0.8 s) for a joint that was left out to show. */
+const TINY: JointsOptions = {
+  ...joints.options('quick', {}),
+  cases: [
+    { scene: 'chain', params: { links: 10, horizontal: 1 } },
+    { scene: 'joint-grid', params: { size: 10 } },
+    { scene: 'bridge', params: { planks: 6, load: 2 } },
+    { scene: 'ragdolls', params: { count: 2, columns: 2 } },
+  ],
+  warmupSteps: 5,
+  steps: 45,
+  minSteps: 45,
+  budgetMs: 60_000,
+};
+
+/** Which engines build which scene: Rapier cannot cap a joint motor and Matter has no limits or motors, so neither builds the bridge (joint friction) or the ragdolls. */
+const EXPECTED: Record<string, string[]> = {
+  chain: IDS,
+  'joint-grid': IDS,
+  bridge: ['maxgrid:maxgrid', 'box2d-wasm', 'planck', 'p2-es'],
+  ragdolls: ['maxgrid:maxgrid', 'box2d-wasm', 'planck', 'p2-es'],
+};
+
+describe('joints', () => {
+  it('steps every joint scene with every engine that has its joints, each within its physical bounds, and says why the others were not built', async () => {
+    const result = await joints.run(TINY, { engines: [], shapeEngines: engines, environment: { runtime: 'vitest' }, profile: 'custom' });
+    const validate = new Ajv({ allErrors: true, strict: false }).compile(joints.schema);
+    expect(validate(JSON.parse(JSON.stringify(result))), JSON.stringify(validate.errors)).toBe(true);
+    for (const [scene, ids] of Object.entries(EXPECTED)) {
+      const rows = result.rows.filter((r) => r.scene === scene);
+      expect(rows.map((r) => r.engine), scene).toEqual(ids);
+      for (const r of rows) {
+        expect(r.steps, `${scene} ${r.engine}`).toBe(TINY.steps);
+        expect(r.sanity.ok, `${scene} ${r.engine}: ${r.sanity.label} ${r.sanity.value}, pin gap ${r.sanity.pinGap}`).toBe(true);
+      }
+      const skipped = result.skipped.filter((s) => s.scene === scene).map((s) => s.engine);
+      expect([...ids, ...skipped].sort(), scene).toEqual([...IDS].sort());
+    }
+    // The chain stays a chain: its tip within a few per cent of its length from the pivot, every pin within a quarter link.
+    for (const r of result.rows.filter((x) => x.scene === 'chain')) {
+      expect(r.sanity.value, r.engine).toBeGreaterThan(0.9);
+      expect(r.sanity.value, r.engine).toBeLessThan(1.05);
+      expect(r.sanity.pinGap, r.engine).toBeLessThan(0.25);
+    }
+    for (const s of result.skipped) expect(s.reason, `${s.scene} ${s.engine}`).toMatch(/motor|limit/);
+    expect(EXPERIMENTS.joints).toBe(joints);
+    const csv = joints.csv(result).trim().split('\n');
+    expect(csv).toHaveLength(result.rows.length + 1);
+    for (const t of tablesFor('joints', result)) {
+      for (const row of t.rows) expect(row).toHaveLength(t.headers.length);
+      expect(markdownTable(t)).toContain('| ---');
+    }
+    expect(joints.headline(result).join(' ')).toContain('Every engine that ran kept its joints within the plausible range');
+  });
+
+  it('the sanity figures tell a scene whose joints were left out: each engine on the chain and the joint grid without them is implausible', () => {
+    for (const [name, params] of [['chain', { links: 10, horizontal: 1 }], ['joint-grid', { size: 10 }]] as const) {
+      const scene = buildShapeScene(name, params);
+      const loose = { ...scene, joints: [] };
+      for (const engine of engines) {
+        const sim = engine.create(loose, 'defaults');
+        try {
+          for (let s = 0; s < 50; s++) sim.step(1 / 60);
+          const p = allocatePoses(sim.count);
+          sim.read(p);
+          // Judged against the scene with its joints, as the experiment judges every engine.
+          expect(jointSanity(scene, p, 50 / 60).ok, `${engine.info.id} ${name}`).toBe(false);
+        } finally {
+          sim.dispose();
+        }
+      }
+    }
+  });
+
+  it('an adapter refuses a joint it cannot build rather than leaving it out', () => {
+    const byId = (id: string) => engines.find((e) => e.info.id === id)!;
+    const refusals: [string, string, Record<string, number>, RegExp][] = [
+      ['rapier', 'bridge', { planks: 3, load: 0 }, /motor/],
+      ['matter-js', 'ragdolls', { count: 1 }, /limits/],
+      ['planck', 'car', { bumps: 1 }, /wheel joint's translation limits/],
+      ['rapier', 'car', { bumps: 1 }, /wheel/],
+      ['p2-es', 'jellies', { count: 1, side: 2 }, /distance/],
+    ];
+    for (const [id, name, params, reason] of refusals) {
+      const create = () => byId(id).create(buildShapeScene(name as 'chain', params), 'defaults');
+      expect(create, `${id} ${name}`).toThrow(UnsupportedSceneError);
+      expect(create, `${id} ${name}`).toThrow(reason);
+    }
+  });
+});
