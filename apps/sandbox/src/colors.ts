@@ -10,6 +10,12 @@ const HALF = PALETTE_SIZE / 2;
 /** Static circles and segments: a neutral grey no palette entry comes near (palette saturation ≥ 0.55). */
 export const STATIC_COLOR = '#c3ccd6';
 export const STATIC_RGB = [0xc3, 0xcc, 0xd6] as const;
+/**
+ * Joints: a pale cyan of lightness 0.81, above every palette entry's (0.5 to 0.65), so a joint
+ * never takes a body's colour and the tests can count its pixels.
+ */
+export const JOINT_COLOR = '#9ef0ff';
+export const JOINT_RGB = [0x9e, 0xf0, 0xff] as const;
 
 function hash32(a: number, b: number): number {
   let h = Math.imul(a ^ 0x9e3779b9, 0x85ebca6b) ^ Math.imul(b + 0x632be5ab, 0xc2b2ae35);

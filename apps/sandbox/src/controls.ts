@@ -4,6 +4,7 @@ import {
   SEED_MAX,
   SPAWN_KINDS,
   SUBSTEP_CHOICES,
+  isJointScene,
   isShapeScene,
   sceneDefinition,
   threadChoices,
@@ -72,12 +73,14 @@ export class Controls {
     circles.label = 'Circles';
     const shapes = document.createElement('optgroup');
     shapes.label = 'Shapes';
+    const joints = document.createElement('optgroup');
+    joints.label = 'Joints';
     for (const name of SCENE_CHOICES) {
       const option = new Option(name, name);
       option.title = sceneDefinition(name).description;
-      (isShapeScene(name) ? shapes : circles).append(option);
+      (isJointScene(name) ? joints : isShapeScene(name) ? shapes : circles).append(option);
     }
-    this.sceneSelect.append(circles, shapes);
+    this.sceneSelect.append(circles, shapes, joints);
     for (const kind of SPAWN_KINDS) this.spawn.append(new Option(kind, kind));
     for (const count of SUBSTEP_CHOICES) this.substeps.append(new Option(String(count), String(count)));
     this.substeps.addEventListener('change', () => {

@@ -5,13 +5,16 @@ import type { ViewTransform } from './view.js';
 
 /** Pointer travel, in CSS pixels, below which a press on empty space counts as a click. */
 const CLICK_SLOP = 5;
+/** How near a joint's drawn line, in CSS pixels, a Cut click must land: a finger's width, about. */
+const CUT_REACH = 8;
 
 /**
  * Mouse, pen and touch through pointer events, by tool. Drag: press on a body to drag it
  * (releasing throws it with the pointer's velocity), click empty space to add a body of the
  * scene's size, of the kind chosen. Ray: press and drag to cast a ray from the press to the pointer. Point: hover to
  * ask which circles contain the pointer. Box: press and drag to span a box from the press to the
- * pointer and ask which circles overlap it.
+ * pointer and ask which circles overlap it. Pin: press on a body to pin it to the world there.
+ * Cut: press near a joint's line to destroy that joint.
  */
 export function attachPointer(
   target: HTMLElement,
@@ -21,6 +24,7 @@ export function attachPointer(
   spawnRadius: () => number,
   spawnKind: () => SpawnKind,
   onChange: () => void,
+  say: (message: string) => void,
 ): void {
   let pointerId = -1;
   let startX = 0;
@@ -58,6 +62,24 @@ export function attachPointer(
       query.point(x, y);
       return;
     }
+    if (query.tool === 'pin') {
+      const body = sim.bodyAt(x, y);
+      if (body < 0) return;
+      try {
+        sim.pin(body, x, y);
+      } catch (error) {
+        say(`Cannot pin body ${body}: ${error instanceof Error ? error.message : String(error)}.`);
+      }
+      onChange();
+      return;
+    }
+    if (query.tool === 'cut') {
+      const joint = sim.jointNear(x, y, (CUT_REACH * view.dpr) / view.scale);
+      if (joint < 0) return;
+      sim.cut(joint);
+      onChange();
+      return;
+    }
     const handle = sim.bodyAt(x, y);
     onEmpty = handle < 0;
     if (!onEmpty) sim.beginDrag(handle, x, y);
@@ -71,7 +93,7 @@ export function attachPointer(
     }
     if (e.pointerId !== pointerId) return;
     if (query.tool === 'ray' || query.tool === 'box') spanTo(worldX(e), worldY(e));
-    else if (!onEmpty) sim.moveDrag(worldX(e), worldY(e));
+    else if (query.tool === 'drag' && !onEmpty) sim.moveDrag(worldX(e), worldY(e));
   });
 
   target.addEventListener('pointerleave', (e) => {
@@ -86,7 +108,7 @@ export function attachPointer(
       onChange();
       return;
     }
-    if (query.tool === 'point') return;
+    if (query.tool === 'point' || query.tool === 'pin' || query.tool === 'cut') return;
     if (!onEmpty) {
       sim.endDrag();
       return;

@@ -165,9 +165,11 @@ function resize(): void {
   const box = sim.box;
   const dpr = Math.min(window.devicePixelRatio || 1, 2);
   if (!view.fit(stage.clientWidth, stage.clientHeight, dpr, box.width, box.height, box.x, box.y)) return;
+  // A region that follows a body changes the offsets every step, not the size: setting a canvas's
+  // size, even to the same value, clears it and reallocates its backing store.
   for (const c of [renderer.canvas, overlay.canvas]) {
-    c.width = view.width;
-    c.height = view.height;
+    if (c.width !== view.width) c.width = view.width;
+    if (c.height !== view.height) c.height = view.height;
   }
 }
 
@@ -197,10 +199,10 @@ byId('download').addEventListener('click', () => {
   if (format === 'json') download(`${base}.json`, 'application/json', toJson(sim.recorder, settings, DT, world.broadphase, world.integrator));
   else download(`${base}.csv`, 'text/csv', toCsv(sim.recorder));
 });
-attachPointer(overlay.canvas, sim, view, query, () => spawnRadius(settings.scene, settings.params), () => settings.spawn, refreshStats);
+attachPointer(overlay.canvas, sim, view, query, () => spawnRadius(settings.scene, settings.params), () => settings.spawn, refreshStats, say);
 
 // Read by the renderers and the overlay every frame: kept up to date in place, never rebuilt.
-const shapes: SceneShapes = { segments: sim.segments, staticCircles: 0, sleepers: 0 };
+const shapes: SceneShapes = { segments: sim.segments, staticCircles: 0, sleepers: 0, joints: null };
 const overlayOptions: OverlayOptions = { grid: false, aabb: false, contacts: false, held: -1, grab: null, segments: sim.segments, touches: sim.touches, hits: sim.hits, query };
 
 rebuild(settings);
@@ -212,9 +214,12 @@ declare global {
   interface Window {
     /** Per-frame timings, read by the lab's sandbox-render experiment (see frame-log.ts). */
     __sandboxFrames?: { read(): FrameSample; clear(): void; webglDevice(): string | null };
-    /** For the end-to-end tests: a body's pose by handle, the engine's route, the region drawn, and the view's mapping to CSS pixels. */
+    /** For the end-to-end tests: a body's pose by handle, the engine's route, the region drawn, the view's mapping to CSS pixels, and the joints. */
     __sandboxProbe?: {
       pose(handle: number): { x: number; y: number; angle: number; type: string };
+      jointCount(): number;
+      /** The k-th live joint's handle and world anchors, in slot order, or null past the last. */
+      joint(k: number): { handle: number; ax: number; ay: number; bx: number; by: number } | null;
       route(): string;
       region(): { x: number; y: number; width: number; height: number };
       toCss(x: number, y: number): { x: number; y: number };
@@ -225,6 +230,11 @@ window.__sandboxProbe = {
   pose: (handle) => {
     const b = sim.world.getBody(handle);
     return { x: b.x, y: b.y, angle: b.angle, type: b.type };
+  },
+  jointCount: () => sim.world.jointCount,
+  joint: (k) => {
+    const j = sim.world.jointViews();
+    return k < j.count ? { handle: j.handle[k], ax: j.anchorAX[k], ay: j.anchorAY[k], bx: j.anchorBX[k], by: j.anchorBY[k] } : null;
   },
   route: () => sim.world.route.route,
   region: () => ({ ...sim.box }),
@@ -267,6 +277,7 @@ function frame(now: number): void {
   shapes.segments = overlayOptions.segments = sim.segments;
   shapes.staticCircles = sim.staticCircles;
   shapes.sleepers = sim.world.stats.sleepingBodies;
+  shapes.joints = sim.world.jointCount > 0 ? sim.world.jointViews() : null;
   renderer.draw(sim.world.views(), sim.colors, view, sim.box, shapes);
   overlayOptions.grid = settings.grid;
   overlayOptions.aabb = settings.aabb;

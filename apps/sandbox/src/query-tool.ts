@@ -29,6 +29,8 @@ export class QueryTool {
   inBox: number[] = [];
   private dirty = true;
   private askedAtStep = -1;
+  /** The joint count the Pin or Cut readout shows, so its text is made again only when it changes. */
+  private shownJoints = -1;
 
   constructor(private readonly readout: HTMLElement) {}
 
@@ -83,6 +85,16 @@ export class QueryTool {
 
   /** Asks again when the pointer moved or the world stepped since the last answer. */
   update(world: World): void {
+    if (this.tool === 'pin' || this.tool === 'cut') {
+      // Joints also go without a click (they break, or go with a body), so the count is read every frame.
+      const joints = world.jointCount;
+      if (!this.dirty && joints === this.shownJoints) return;
+      this.dirty = false;
+      this.shownJoints = joints;
+      const what = this.tool === 'pin' ? 'Pin: click a body to pin it to the world there' : "Cut: click a joint's line to cut it";
+      this.readout.textContent = `${what} · ${joints.toLocaleString('en-US')} joint${joints === 1 ? '' : 's'}`;
+      return;
+    }
     const steps = world.stats.steps;
     if (!this.dirty && steps === this.askedAtStep) return;
     this.dirty = false;

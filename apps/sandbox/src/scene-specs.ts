@@ -2,14 +2,20 @@ import { SCENES, SHAPE_SCENES, seedBoxParams, type ParamSpec } from '@maxgrid/sc
 
 /** The circle scenes the page offers; bouncing-ball is one circle, a lab accuracy test rather than a view. */
 export const CIRCLE_SCENE_CHOICES = ['seed-box', 'funnel', 'mixed', 'uniform'] as const;
+/** The scenes of bodies held together by joints (pins, springs, wheels), after the other shapes. */
+export const JOINT_SCENE_CHOICES = ['chain', 'bridge', 'joint-grid', 'ragdolls', 'car', 'jellies'] as const;
 /** The scenes of shapes (boxes, polygons, capsules that turn), after the circles. */
-export const SHAPE_SCENE_CHOICES = ['polygon-box', 'pyramid', 'uniform-polygons', 'many-pyramids', 'tumbler', 'vertical-stack', 'card-house', 'ramp'] as const;
+export const SHAPE_SCENE_CHOICES = ['polygon-box', 'pyramid', 'uniform-polygons', 'many-pyramids', 'tumbler', 'vertical-stack', 'card-house', 'ramp', ...JOINT_SCENE_CHOICES] as const;
 export const SCENE_CHOICES = [...CIRCLE_SCENE_CHOICES, ...SHAPE_SCENE_CHOICES] as const;
 export type SceneChoice = (typeof SCENE_CHOICES)[number];
 export type ShapeSceneChoice = (typeof SHAPE_SCENE_CHOICES)[number];
 
 export function isShapeScene(scene: SceneChoice): scene is ShapeSceneChoice {
   return (SHAPE_SCENE_CHOICES as readonly string[]).includes(scene);
+}
+
+export function isJointScene(scene: SceneChoice): boolean {
+  return (JOINT_SCENE_CHOICES as readonly string[]).includes(scene);
 }
 
 /** A scene's description and parameter specs, circle or shape. */
@@ -89,6 +95,8 @@ interface Presentation {
   min?: number;
   max?: number;
   log?: boolean;
+  /** The page's starting value, where the scene's default is a benchmark's size that steps too slowly to watch. */
+  default?: number;
 }
 
 const PRESENTATION: Record<string, Presentation> = {
@@ -120,7 +128,50 @@ const PRESENTATION: Record<string, Presentation> = {
 };
 
 /** Scenes in metres (Box2D's benchmarks and stacks) rather than the report's pixels. */
-const METRIC_SCENES: readonly SceneChoice[] = ['pyramid', 'many-pyramids', 'tumbler', 'vertical-stack', 'card-house', 'ramp'];
+const METRIC_SCENES: readonly SceneChoice[] = ['pyramid', 'many-pyramids', 'tumbler', 'vertical-stack', 'card-house', 'ramp', ...JOINT_SCENE_CHOICES];
+
+const onOff = (v: number) => (v ? 'on' : 'off');
+
+/**
+ * Parameters whose name means something else in another scene (joint-grid's `size` is a count,
+ * the car's `speed` is in radians per second, not the tumbler's degrees), or that only one scene
+ * has. The maxima keep each scene to what a page steps at interactive rates: the scenes allow
+ * 10,000 links or a 1,000-circle-square grid, which take seconds a step.
+ */
+const SCENE_PRESENTATION: Partial<Record<SceneChoice, Record<string, Presentation>>> = {
+  chain: {
+    links: { label: 'Links', step: 1, max: 500, format: count },
+    linkLength: { label: 'Link length', step: 0.05, max: 5, format: fixed(2, ' m') },
+    horizontal: { label: 'Start horizontal', step: 1, format: onOff },
+    density: { label: 'Density', step: 1, max: 1000, format: fixed(0, ' kg/m²') },
+  },
+  bridge: {
+    planks: { label: 'Planks', step: 1, max: 200, format: count },
+    load: { label: 'Boxes dropped', step: 1, max: 200, format: count },
+    jointFriction: { label: 'Pin friction', step: 1, max: 1000, format: fixed(0, ' N·m') },
+  },
+  'joint-grid': {
+    // Box2D's 100 x 100 took 140 ms a step in headless Chromium on a two-core machine: a slide show.
+    size: { label: 'Circles per side', step: 1, max: 150, default: 40, format: count },
+  },
+  ragdolls: {
+    count: { label: 'Ragdolls', step: 1, max: 400, format: count },
+    columns: { label: 'Columns', step: 1, max: 40, format: count },
+  },
+  car: {
+    speed: { label: 'Motor speed', step: 0.5, min: -50, max: 50, format: fixed(1, ' rad/s') },
+    torque: { label: 'Motor torque', step: 1, max: 200, format: fixed(0, ' N·m') },
+    hertz: { label: 'Suspension', step: 0.5, max: 20, format: fixed(1, ' Hz') },
+    bumps: { label: 'Bumps', step: 1, max: 500, format: count },
+  },
+  jellies: {
+    count: { label: 'Jellies', step: 1, max: 200, format: count },
+    side: { label: 'Particles per side', step: 1, max: 20, format: count },
+    hertz: { label: 'Spring', step: 0.5, max: 60, format: fixed(1, ' Hz') },
+    dampingRatio: { label: 'Spring damping', step: 0.05, max: 5, format: fixed(2) },
+    funnel: { label: 'Funnel', step: 1, format: onOff },
+  },
+};
 
 /** Their parameters shown in metres. */
 const METRIC_PRESENTATION: Record<string, Presentation> = {
@@ -128,8 +179,9 @@ const METRIC_PRESENTATION: Record<string, Presentation> = {
   size: { label: 'Size', step: 0.05, max: 10, format: fixed(2, ' m') },
 };
 
-function fromSceneSpec(key: string, spec: ParamSpec, metric = false): NumberSpec {
-  const look = (metric ? METRIC_PRESENTATION[key] : undefined) ?? PRESENTATION[key] ?? { label: key, step: spec.integer ? 1 : 0.01, format: fixed(2) };
+function fromSceneSpec(scene: SceneChoice, key: string, spec: ParamSpec): NumberSpec {
+  const metric = METRIC_SCENES.includes(scene);
+  const look = SCENE_PRESENTATION[scene]?.[key] ?? (metric ? METRIC_PRESENTATION[key] : undefined) ?? PRESENTATION[key] ?? { label: key, step: spec.integer ? 1 : 0.01, format: fixed(2) };
   const min = Math.max(spec.min, look.min ?? spec.min);
   const max = Math.min(spec.max, look.max ?? spec.max, key === 'n' ? QUANTITY_MAX : Infinity);
   return {
@@ -138,7 +190,7 @@ function fromSceneSpec(key: string, spec: ParamSpec, metric = false): NumberSpec
     min,
     max,
     step: look.step,
-    default: Math.min(max, Math.max(min, spec.default)),
+    default: Math.min(max, Math.max(min, look.default ?? spec.default)),
     description: spec.description,
     format: look.format,
     slider: look.log ? logSlider(max) : undefined,
@@ -155,7 +207,7 @@ export function sceneSpecs(scene: SceneChoice): readonly NumberSpec[] {
     const params: Record<string, ParamSpec> = sceneDefinition(scene).params;
     specs = Object.entries(params)
       .filter(([key]) => key !== 'seed')
-      .map(([key, spec]) => fromSceneSpec(key, spec, METRIC_SCENES.includes(scene)));
+      .map(([key, spec]) => fromSceneSpec(scene, key, spec));
     cache.set(scene, specs);
   }
   return specs;
@@ -177,6 +229,11 @@ export function clampNumber(spec: NumberSpec, value: number): number {
   return Math.min(spec.max, Number(snapped.toFixed(6)));
 }
 
+/** The body (by handle) an open scene's region follows across as it moves, or -1: the car, which drives away. */
+export function followedBody(scene: ShapeSceneChoice): number {
+  return scene === 'car' ? 0 : -1;
+}
+
 /** Radius (half the size) of a body added by a click: the scene's typical size. */
 export function spawnRadius(scene: SceneChoice, p: Record<string, number>): number {
   if (scene === 'mixed') return 1.5 * p.minRadius;
@@ -184,5 +241,8 @@ export function spawnRadius(scene: SceneChoice, p: Record<string, number>): numb
   if (scene === 'tumbler') return 0.125;
   if (scene === 'card-house') return 0.1;
   if (scene === 'pyramid' || scene === 'many-pyramids' || scene === 'vertical-stack' || scene === 'ramp') return 0.5;
+  if (scene === 'chain') return p.linkLength / 4;
+  if (scene === 'bridge' || scene === 'joint-grid' || scene === 'car') return 0.4;
+  if (scene === 'ragdolls' || scene === 'jellies') return 0.25;
   return p.size;
 }

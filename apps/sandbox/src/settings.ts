@@ -2,7 +2,7 @@ import { BROADPHASE_NAMES, INTEGRATOR_NAMES, type BroadPhaseName, type Integrato
 import { seedBoxParams } from '@maxgrid/scenes';
 import { SCENE_CHOICES, clampNumber, defaultParams, defaultSeed, sceneDefinition, sceneSpecs, type SceneChoice } from './scene-specs.js';
 
-export { SCENE_CHOICES, clampNumber, isShapeScene, sceneDefinition, sceneSpecs, type NumberSpec, type SceneChoice } from './scene-specs.js';
+export { SCENE_CHOICES, clampNumber, isJointScene, isShapeScene, sceneDefinition, sceneSpecs, type NumberSpec, type SceneChoice } from './scene-specs.js';
 
 /**
  * Everything the URL reproduces. The scene, its seed and its parameters always rebuild the same
@@ -61,7 +61,7 @@ export function offeredThreads(asked: number, cores: number): number {
 export const RENDERER_NAMES = ['canvas', 'webgl'] as const;
 export type RendererName = (typeof RENDERER_NAMES)[number];
 
-export const TOOL_NAMES = ['drag', 'ray', 'point', 'box'] as const;
+export const TOOL_NAMES = ['drag', 'ray', 'point', 'box', 'pin', 'cut'] as const;
 export type ToolName = (typeof TOOL_NAMES)[number];
 
 /** World options that rebuild the scene, by URL key; `continuous` is on by default, as in the engine. */

@@ -1,6 +1,7 @@
 import { World, BodyTypeCode, type BroadPhaseName, type IntegratorName } from '@maxgrid/engine';
 import { buildScene, buildShapeScene } from '@maxgrid/scenes';
 import { isShapeScene, sceneParams, type Settings, type SpawnKind } from './settings.js';
+import { followedBody } from './scene-specs.js';
 import { BodyColors } from './colors.js';
 import { Recorder } from './monitor/recorder.js';
 import { HitEvents } from './hit-events.js';
@@ -65,6 +66,14 @@ export class Simulation {
   private grabY = 0;
   /** Gravity's magnitude, or a scene size per second squared: what the drag spring's force is capped by. */
   private dragLimit = 0;
+  /**
+   * The static body every pin holds to, made by the world's first pin: a body without shapes, so
+   * nothing draws it, hits it or picks it, at the world's origin so its frame is the world's.
+   */
+  private pinAnchor = -1;
+  /** The body the region follows across (the car), and where the region's left edge is from it. */
+  private followHandle = -1;
+  private followOffset = 0;
 
   constructor(private readonly now: () => number = () => performance.now()) {}
 
@@ -124,6 +133,10 @@ export class Simulation {
     this.accumulator = 0;
     this.droppedSteps = 0;
     this.dragHandle = -1;
+    this.pinAnchor = -1;
+    const follow = isShapeScene(settings.scene) ? followedBody(settings.scene) : -1;
+    this.followHandle = follow >= 0 && world.hasBody(follow) ? follow : -1;
+    if (this.followHandle >= 0) this.followOffset = region.x - v.x[world.slotOfHandle(this.followHandle)];
   }
 
   setBroadphase(name: BroadPhaseName): void {
@@ -180,6 +193,7 @@ export class Simulation {
     this.applyDrag();
     world.step(DT);
     this.time += DT;
+    this.follow();
     this.touches.record(world);
     this.hits.record(world);
     const stats = world.stats;
@@ -369,6 +383,79 @@ export class Simulation {
     // The force at the grab point turns the body: torque r x F.
     const torque = rx * fy - ry * fx;
     if (torque !== 0 && world.getBody(h).inertia > 0) world.applyTorque(h, torque);
+  }
+
+  /**
+   * Pins body `handle` to the world at the world point (x, y): a revolute joint from the shared
+   * static anchor, so the body hangs from there and turns about it. Returns the joint's handle;
+   * throws the engine's RangeError when the world refuses (a kinematic body: nothing to act on).
+   */
+  pin(handle: number, x: number, y: number): number {
+    const world = this.world;
+    const b = world.getBody(handle);
+    const c = Math.cos(b.angle);
+    const s = Math.sin(b.angle);
+    const dx = x - b.x;
+    const dy = y - b.y;
+    const made = this.pinAnchor < 0 || !world.hasBody(this.pinAnchor);
+    if (made) this.pinAnchor = world.createBody({ x: 0, y: 0, type: 'static' });
+    try {
+      const joint = world.createJoint({ kind: 'revolute', bodyA: this.pinAnchor, bodyB: handle, anchorA: { x, y }, anchorB: { x: c * dx + s * dy, y: -s * dx + c * dy } });
+      // A world of circles moves to the shape route with its first joint, as with a spawned box.
+      this.shapes = world.route.route === 'shapes';
+      this.colors.ensure(world.views().slotCount);
+      return joint;
+    } catch (error) {
+      if (made) {
+        world.destroyBody(this.pinAnchor);
+        this.pinAnchor = -1;
+      }
+      throw error;
+    }
+  }
+
+  /**
+   * The joint whose line (anchor to anchor) passes nearest a world point, within `tolerance`
+   * world units, or -1. Per click only: a scan of every joint's drawn line.
+   */
+  jointNear(x: number, y: number, tolerance: number): number {
+    const j = this.world.jointViews();
+    let best = -1;
+    let bestSq = tolerance * tolerance;
+    for (let k = 0; k < j.count; k++) {
+      const ax = j.anchorAX[k];
+      const ay = j.anchorAY[k];
+      const ex = j.anchorBX[k] - ax;
+      const ey = j.anchorBY[k] - ay;
+      const lengthSq = ex * ex + ey * ey;
+      const t = lengthSq > 0 ? Math.min(1, Math.max(0, ((x - ax) * ex + (y - ay) * ey) / lengthSq)) : 0;
+      const dx = x - ax - t * ex;
+      const dy = y - ay - t * ey;
+      const dSq = dx * dx + dy * dy;
+      if (dSq <= bestSq) {
+        bestSq = dSq;
+        best = j.handle[k];
+      }
+    }
+    return best;
+  }
+
+  /** Destroys a joint (the Cut tool); its bodies wake and go their own ways. */
+  cut(joint: number): void {
+    this.world.destroyJoint(joint);
+  }
+
+  // Keeps the followed body where it started across the region: a car would otherwise drive out
+  // of the picture within seconds. Only across, so the road stays where it is on screen.
+  private follow(): void {
+    const h = this.followHandle;
+    if (h < 0) return;
+    if (!this.world.hasBody(h)) {
+      this.followHandle = -1;
+      return;
+    }
+    const x = this.world.views().x[this.world.slotOfHandle(h)];
+    if (Number.isFinite(x)) this.box.x = x + this.followOffset;
   }
 
   private placeDragged(px: number, py: number): void {

@@ -51,6 +51,7 @@ export class MonitorPanel {
     falsePositives: byId('stat-false-positives'),
     lowerHalf: byId('stat-lower-half'),
     sleeping: byId('stat-sleeping'),
+    joints: byId('stat-joints'),
     segmentContacts: byId('stat-segment-contacts'),
     swept: byId('stat-swept'),
     filtered: byId('stat-filtered'),
@@ -71,6 +72,7 @@ export class MonitorPanel {
     end: byId('row-end'),
     hits: byId('row-hits'),
     fastestHit: byId('row-fastest-hit'),
+    joints: byId('row-joints'),
   };
   private lastText = -Infinity;
   private lastChart = -Infinity;
@@ -123,6 +125,8 @@ export class MonitorPanel {
       r.lowerHalf.hidden = !sim.falls;
       if (sim.falls) o.lowerHalf.textContent = integer(sim.lowerHalf());
       o.sleeping.textContent = integer(st.sleepingBodies);
+      r.joints.hidden = world.jointCount === 0;
+      o.joints.textContent = integer(world.jointCount);
       r.segmentContacts.hidden = sim.segments.length === 0;
       o.segmentContacts.textContent = integer(st.segmentContacts);
       r.swept.hidden = !sim.continuous;

@@ -1,7 +1,7 @@
 import { BodyTypeCode, type BodyViews } from '@maxgrid/engine';
-import { PALETTE_SIZE, STATIC_COLOR, type BodyColors } from '../colors.js';
+import { JOINT_COLOR, PALETTE_SIZE, STATIC_COLOR, type BodyColors } from '../colors.js';
 import type { ViewTransform } from '../view.js';
-import { BACKGROUND, BOX_FILL, SLEEP_DIM, type Renderer, type SceneShapes } from './renderer.js';
+import { BACKGROUND, BOX_FILL, JOINT_DOT_PX, JOINT_LINE_ALPHA, JOINT_LINE_PX, SLEEP_DIM, type Renderer, type SceneShapes } from './renderer.js';
 import { ShapeChains, addShapePath } from './shape-paths.js';
 
 const TAU = 2 * Math.PI;
@@ -47,6 +47,7 @@ export class Canvas2DRenderer implements Renderer {
 
     if (v.shapes) {
       this.drawShapes(v, colors, shapes);
+      this.drawJoints(shapes, view);
       return;
     }
     const { x, y, radius, type, slotCount } = v;
@@ -78,6 +79,7 @@ export class Canvas2DRenderer implements Renderer {
       ctx.fillStyle = SLEEP_DIM;
       ctx.fill();
     }
+    this.drawJoints(shapes, view);
   }
 
   /**
@@ -120,6 +122,42 @@ export class Canvas2DRenderer implements Renderer {
       ctx.fillStyle = SLEEP_DIM;
       ctx.fill();
     }
+  }
+
+  /**
+   * Joints over the bodies they join: every line in one stroke, every anchor dot in one fill, sized
+   * in pixels so they read the same at any zoom.
+   */
+  private drawJoints(scene: SceneShapes, view: ViewTransform): void {
+    const j = scene.joints;
+    if (j === null || j.count === 0) return;
+    const ctx = this.ctx;
+    const { anchorAX, anchorAY, anchorBX, anchorBY, count } = j;
+    const pixel = view.dpr / view.scale;
+    ctx.beginPath();
+    for (let k = 0; k < count; k++) {
+      ctx.moveTo(anchorAX[k], anchorAY[k]);
+      ctx.lineTo(anchorBX[k], anchorBY[k]);
+    }
+    ctx.strokeStyle = JOINT_COLOR;
+    ctx.lineWidth = JOINT_LINE_PX * pixel;
+    ctx.lineCap = 'round';
+    ctx.globalAlpha = JOINT_LINE_ALPHA;
+    ctx.stroke();
+    ctx.globalAlpha = 1;
+    const r = JOINT_DOT_PX * pixel;
+    ctx.beginPath();
+    for (let k = 0; k < count; k++) {
+      ctx.moveTo(anchorAX[k] + r, anchorAY[k]);
+      ctx.arc(anchorAX[k], anchorAY[k], r, 0, TAU);
+      // A pin's two anchors coincide: one dot is enough.
+      if (anchorBX[k] !== anchorAX[k] || anchorBY[k] !== anchorAY[k]) {
+        ctx.moveTo(anchorBX[k] + r, anchorBY[k]);
+        ctx.arc(anchorBX[k], anchorBY[k], r, 0, TAU);
+      }
+    }
+    ctx.fillStyle = JOINT_COLOR;
+    ctx.fill();
   }
 
   private addCircle(cx: number, cy: number, r: number, tiny: number): void {

@@ -2,6 +2,7 @@ import { BodyTypeCode, type BodyViews } from '@maxgrid/engine';
 import { STATIC_RGB, type BodyColors } from '../colors.js';
 import type { ViewTransform } from '../view.js';
 import type { Renderer, SceneShapes } from './renderer.js';
+import { JointLayer } from './webgl-joints.js';
 import { SegmentLayer } from './webgl-segments.js';
 import { ShapeLayer } from './webgl-shapes.js';
 import { link, must } from './webgl-util.js';
@@ -65,6 +66,7 @@ export class WebGLRenderer implements Renderer {
   private readonly uOffset: WebGLUniformLocation | null;
   private readonly uPixels: WebGLUniformLocation | null;
   private readonly segments: SegmentLayer;
+  private readonly joints: JointLayer;
   private shapeLayer: ShapeLayer | null = null;
   private bodies = new Float32Array(0);
   private gpuCapacity = 0;
@@ -112,6 +114,7 @@ export class WebGLRenderer implements Renderer {
     gl.vertexAttribDivisor(color, 1);
     gl.bindVertexArray(null);
     this.segments = new SegmentLayer(gl, quad);
+    this.joints = new JointLayer(gl, quad);
 
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
@@ -146,6 +149,7 @@ export class WebGLRenderer implements Renderer {
       colors.ensure(n);
       this.shapeLayer ??= new ShapeLayer(gl);
       this.shapeLayer.draw(v, v.shapes, colors, sx, sy, ox, oy);
+      this.joints.draw(shapes.joints, sx, sy, ox, oy, view.scale, view.dpr);
       return;
     }
     if (n === 0) return;
@@ -181,5 +185,6 @@ export class WebGLRenderer implements Renderer {
     gl.uniform1f(this.uPixels, view.scale);
     gl.drawArraysInstanced(gl.TRIANGLE_STRIP, 0, 4, n);
     gl.bindVertexArray(null);
+    this.joints.draw(shapes.joints, sx, sy, ox, oy, view.scale, view.dpr);
   }
 }

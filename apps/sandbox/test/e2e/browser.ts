@@ -76,3 +76,23 @@ export async function overlayPixels(page: Page): Promise<number> {
     return count;
   });
 }
+
+/** Pixels of the stage's screenshot within `tolerance` of `rgb` on every channel: one colour's share of the picture. */
+export async function pixelsNear(page: Page, rgb: readonly [number, number, number], tolerance = 12): Promise<number> {
+  const png = await page.locator('#stage').screenshot();
+  return page.evaluate(
+    async ({ b64, rgb, tolerance }) => {
+      const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${b64}`)).blob());
+      const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+      const ctx = canvas.getContext('2d') as OffscreenCanvasRenderingContext2D;
+      ctx.drawImage(bitmap, 0, 0);
+      const d = ctx.getImageData(0, 0, bitmap.width, bitmap.height).data;
+      let count = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        if (Math.abs(d[i] - rgb[0]) <= tolerance && Math.abs(d[i + 1] - rgb[1]) <= tolerance && Math.abs(d[i + 2] - rgb[2]) <= tolerance) count++;
+      }
+      return count;
+    },
+    { b64: png.toString('base64'), rgb, tolerance },
+  );
+}
