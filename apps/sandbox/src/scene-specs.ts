@@ -3,7 +3,7 @@ import { SCENES, SHAPE_SCENES, seedBoxParams, type ParamSpec } from '@maxgrid/sc
 /** The circle scenes the page offers; bouncing-ball is one circle, a lab accuracy test rather than a view. */
 export const CIRCLE_SCENE_CHOICES = ['seed-box', 'funnel', 'mixed', 'uniform'] as const;
 /** The scenes of bodies held together by joints (pins, springs, wheels), after the other shapes. */
-export const JOINT_SCENE_CHOICES = ['chain', 'bridge', 'joint-grid', 'ragdolls', 'car', 'jellies'] as const;
+export const JOINT_SCENE_CHOICES = ['chain', 'bridge', 'joint-grid', 'ragdolls', 'car', 'jellies', 'blobs'] as const;
 /** The scenes of shapes (boxes, polygons, capsules that turn), after the circles. */
 export const SHAPE_SCENE_CHOICES = ['polygon-box', 'pyramid', 'uniform-polygons', 'many-pyramids', 'tumbler', 'vertical-stack', 'card-house', 'ramp', ...JOINT_SCENE_CHOICES] as const;
 export const SCENE_CHOICES = [...CIRCLE_SCENE_CHOICES, ...SHAPE_SCENE_CHOICES] as const;
@@ -170,6 +170,17 @@ const SCENE_PRESENTATION: Partial<Record<SceneChoice, Record<string, Presentatio
     hertz: { label: 'Spring', step: 0.5, max: 60, format: fixed(1, ' Hz') },
     dampingRatio: { label: 'Spring damping', step: 0.05, max: 5, format: fixed(2) },
     funnel: { label: 'Funnel', step: 1, format: onOff },
+    stiffness: { label: 'Force springs', step: 10, max: 10_000, format: fixed(0, ' N/m') },
+    stretch: { label: 'Start stretched', step: 0.05, format: fixed(2, '×') },
+    floor: { label: 'Floor', step: 1, format: onOff },
+  },
+  blobs: {
+    count: { label: 'Blobs', step: 1, max: 200, format: count },
+    segments: { label: 'Particles per ring', step: 1, format: (v: number) => String(4 * 2 ** v) },
+    radius: { label: 'Radius', step: 0.1, max: 5, format: fixed(1, ' m') },
+    pressure: { label: 'Gas pressure', step: 1, max: 1000, format: fixed(0, ' N/m') },
+    hertz: { label: 'Ring springs', step: 0.5, max: 60, format: fixed(1, ' Hz') },
+    funnel: { label: 'Funnel', step: 1, format: onOff },
   },
 };
 
@@ -243,6 +254,6 @@ export function spawnRadius(scene: SceneChoice, p: Record<string, number>): numb
   if (scene === 'pyramid' || scene === 'many-pyramids' || scene === 'vertical-stack' || scene === 'ramp') return 0.5;
   if (scene === 'chain') return p.linkLength / 4;
   if (scene === 'bridge' || scene === 'joint-grid' || scene === 'car') return 0.4;
-  if (scene === 'ragdolls' || scene === 'jellies') return 0.25;
+  if (scene === 'ragdolls' || scene === 'jellies' || scene === 'blobs') return 0.25;
   return p.size;
 }

@@ -1,6 +1,6 @@
 export { World } from './world.js';
 export type { CircleState, BodyState, ShapeState, BodyViews, ShapeViews, ContactPointViews, QueryOptions, JointState, JointViews, JointEventsView } from './world-types.js';
-export type { JointOptions, JointBaseOptions, DistanceJointOptions, RevoluteJointOptions, PrismaticJointOptions, WeldJointOptions, WheelJointOptions, TargetJointOptions, SpringJointOptions } from './joints/joint-options.js';
+export type { JointOptions, JointBaseOptions, DistanceJointOptions, RevoluteJointOptions, PrismaticJointOptions, WeldJointOptions, WheelJointOptions, TargetJointOptions, SpringJointOptions, PressureJointOptions } from './joints/joint-options.js';
 export { JOINT_KIND_NAMES } from './joints/joint-layout.js';
 export type { BodyOptions, BoxOptions, PolygonOptions, CapsuleOptions, ShapeOptions, MaterialOptions, OffsetOptions } from './shapes/shape-options.js';
 export { MAX_POLYGON_VERTICES, SHAPE_KIND_NAMES } from './shapes/geometry.js';

@@ -133,7 +133,7 @@ export interface ContactPointViews {
 
 /** A joint as it stands after the last step (see World.getJoint). */
 export interface JointState {
-  kind: 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'target' | 'spring';
+  kind: 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'target' | 'spring' | 'pressure';
   /** The bodies' handles; a target joint's bodyA is null (the world). */
   bodyA: number | null;
   bodyB: number;
@@ -150,9 +150,12 @@ export interface JointState {
   /** B's anchor's distance from A's along the axis (prismatic, wheel), or 0. */
   translation: number;
   collideConnected: boolean;
+  /** A pressure joint's ring of bodies and the area it encloses now; [] and 0 for the other kinds. */
+  ring: number[];
+  area: number;
 }
 
-/** Every joint's anchors in the world, for drawing (see World.jointViews); reused by every call. */
+/** Every joint's anchors in the world, for drawing (see World.jointViews; pressure joints, which have none, are left out); reused by every call. */
 export interface JointViews {
   count: number;
   /** Joint handles, and the kind of each (JOINT_KIND_NAMES index). */

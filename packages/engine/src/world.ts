@@ -788,9 +788,10 @@ export class World {
     if (store !== undefined && !store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} joints at once`);
     this.engage();
     const joints = this.useJoints();
-    const slot = joints.store.add(resolved.kind, resolved.bodyA, resolved.bodyB, resolved.collide, resolved.definition);
+    const slot = joints.store.add(resolved.kind, resolved.bodyA, resolved.bodyB, resolved.collide, resolved.definition, resolved.ring);
     if (resolved.bodyA >= 0) this.bodies.wake(resolved.bodyA);
     this.bodies.wake(resolved.bodyB);
+    if (resolved.ring) for (const body of resolved.ring) this.bodies.wake(body);
     return joints.store.handleOf(slot);
   }
 
@@ -824,8 +825,9 @@ export class World {
     const s = this.slot(handle);
     const out: number[] = [];
     const store = this.joints?.store;
-    if (!store || s >= store.firstEdge.length) return out;
-    for (let e = store.firstEdge[s]; e >= 0; e = store.edgeNext[e]) out.push(store.handleOf(e >> 1));
+    if (!store) return out;
+    if (s < store.firstEdge.length) for (let e = store.firstEdge[s]; e >= 0; e = store.edgeNext[e]) out.push(store.handleOf(e >> 1));
+    for (const j of store.ringsOf(s)) if (!out.includes(store.handleOf(j))) out.push(store.handleOf(j));
     return out.sort((a, b) => a - b);
   }
 
@@ -871,7 +873,21 @@ export class World {
       angle: kind === JointKind.target || kind === JointKind.distance || kind === JointKind.spring ? 0 : angle,
       translation: slides ? dx * axisX + dy * axisY : 0,
       collideConnected: store.collide[j] === 1,
+      ring: kind === JointKind.pressure ? Array.from(store.ring(j), (body) => this.bodies.handleOf(body)) : [],
+      area: kind === JointKind.pressure ? this.ringArea(store.ring(j)) : 0,
     };
+  }
+
+  /** The area of the polygon through a ring's bodies' centres of mass. */
+  private ringArea(ring: Int32Array): number {
+    const { x, y } = this.bodies;
+    let twice = 0;
+    for (let k = 0; k < ring.length; k++) {
+      const p = ring[k];
+      const q = ring[(k + 1) % ring.length];
+      twice += x[p] * y[q] - x[q] * y[p];
+    }
+    return Math.abs(0.5 * twice);
   }
 
   /** Moves a target joint's target; its body wakes. */
@@ -935,7 +951,7 @@ export class World {
     const r = store.record;
     let n = 0;
     for (let j = 0; j < store.slotCount; j++) {
-      if (store.live[j] === 0) continue;
+      if (store.live[j] === 0 || store.kind[j] === JointKind.pressure) continue;
       const o = j * JOINT_STRIDE;
       const a = store.bodyA[j];
       if (a >= 0) {
@@ -1224,14 +1240,19 @@ export class World {
   /** Body `slot`'s joints go with it, each noted for the next step's joint events; their other bodies wake. */
   private destroyJointsOf(slot: number): void {
     const store = this.joints!.store;
-    if (slot >= store.firstEdge.length) return;
-    while (store.firstEdge[slot] >= 0) {
+    while (slot < store.firstEdge.length && store.firstEdge[slot] >= 0) {
       const j = store.firstEdge[slot] >> 1;
       const a = store.bodyA[j];
       const b = store.bodyB[j];
       this.pendingJointEvents.push({ joint: store.handleOf(j), reason: 'bodyDestroyed', bodyA: a >= 0 ? this.bodies.handleOf(a) : null, bodyB: this.bodies.handleOf(b) });
       if (a >= 0 && a !== slot) this.bodies.wake(a);
       if (b !== slot) this.bodies.wake(b);
+      store.remove(j);
+    }
+    // Rings hold bodies beyond their first two, which have no edges.
+    for (const j of store.ringsOf(slot)) {
+      this.pendingJointEvents.push({ joint: store.handleOf(j), reason: 'bodyDestroyed', bodyA: this.bodies.handleOf(store.bodyA[j]), bodyB: this.bodies.handleOf(store.bodyB[j]) });
+      for (const body of store.ring(j)) if (body !== slot) this.bodies.wake(body);
       store.remove(j);
     }
   }

@@ -37,13 +37,13 @@ async function engineBytesPerStep(world: World, steps: number): Promise<{ bytes:
   }
 }
 
-/** Pairs of boxes on prismatic joints (limit, motor, spring) and wheel joints, no segments. */
+/** Boxes on prismatic joints (limit, motor, spring) above the ground, each carrying a wheel on a wheel joint; no segments. */
 function sliders(n: number): World {
   const world = new World({ gravity: { x: 0, y: 10 } });
   const ground = world.createBox({ x: 0, y: 2, width: 4 * n + 10, height: 1, type: 'static' });
   for (let k = 0; k < n; k++) {
     const base = world.createBox({ x: 4 * k, y: 0, width: 1, height: 1 });
-    world.createJoint({ kind: 'prismatic', bodyA: ground, bodyB: base, axis: { x: 0, y: 1 }, lowerTranslation: -3, upperTranslation: -1, maxMotorForce: 5, motorSpeed: 1, hertz: 2 });
+    world.createJoint({ kind: 'prismatic', bodyA: ground, bodyB: base, anchorA: { x: 4 * k, y: -2 }, axis: { x: 0, y: 1 }, lowerTranslation: -3, upperTranslation: -1, maxMotorForce: 5, motorSpeed: 1, hertz: 2 });
     const wheel = world.createCircle({ x: 4 * k + 1.5, y: 0, radius: 0.4, friction: 0.5 });
     world.createJoint({ kind: 'wheel', bodyA: base, bodyB: wheel, anchorA: { x: 1.5, y: 0 }, maxMotorTorque: 2, motorSpeed: 3, lowerTranslation: -0.2, upperTranslation: 0.2 });
   }
@@ -62,6 +62,7 @@ describe('a warmed-up step allocates nothing per body or pair', () => {
     ['ragdolls on revolute joints with limits and motors', (k: number) => buildShapeWorld(buildShapeScene('ragdolls', { count: 10 * k }))],
     ['a loaded bridge on revolute joints with friction motors', (k: number) => buildShapeWorld(buildShapeScene('bridge', { planks: 30 * k, load: 5 * k }))],
     ['jellies on distance springs, falling free', (k: number) => buildShapeWorld(buildShapeScene('jellies', { count: 2 * k, side: 4, funnel: 0, floor: 0 }))],
+    ['pressure blobs: gas in rings of circles on distance springs', (k: number) => buildShapeWorld(buildShapeScene('blobs', { count: 2 * k, funnel: 0 }))],
     ['jellies on force springs integrated by rk4', (k: number) => buildShapeWorld(buildShapeScene('jellies', { count: 2 * k, side: 4, funnel: 0, floor: 0, stiffness: 500 }), { integrator: 'rk4' })],
     ['sliders and wheels on prismatic and wheel joints with limits, motors and springs', (k: number) => sliders(20 * k)],
   ] as const)('%s', async (_name, build) => {

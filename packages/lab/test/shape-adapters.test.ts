@@ -26,6 +26,7 @@ const SMALL: Record<string, Record<string, number>> = {
   ragdolls: { count: 1 },
   car: { bumps: 2 },
   jellies: { count: 1, side: 3 },
+  blobs: { count: 2 },
 };
 
 describe('shape engines', () => {

@@ -20,6 +20,7 @@ import { jointGrid, jointGridParams } from './joint-grid.js';
 import { ragdolls, ragdollsParams } from './ragdolls.js';
 import { car, carParams } from './car.js';
 import { jellies, jelliesParams } from './soft-bodies.js';
+import { blobs, blobsParams } from './blobs.js';
 import { farBodies, farBodiesParams, sparseBox, sparseBoxParams, twoCrowds, twoCrowdsParams, segmentFloor, segmentFloorParams, staticWall, staticWallParams, logRadii, logRadiiParams } from './cliffs.js';
 
 export { Prng } from './prng.js';
@@ -27,7 +28,7 @@ export { buildWorld, type Scene, type SceneSegment, type BuildOptions, type Laye
 export { buildShapeWorld, boxBody, type ShapeScene, type SceneBody, type SceneShape, type ShapeBuildOptions } from './shape-scene.js';
 export { pyramid, pyramidParams, verticalStack, verticalStackParams, cardHouse, cardHouseParams, ramp, rampParams, uniformPolygons, uniformPolygonsParams };
 export { manyPyramids, manyPyramidsParams, tumbler, tumblerParams, polygonBox, polygonBoxParams };
-export { chain, chainParams, bridge, bridgeParams, jointGrid, jointGridParams, ragdolls, ragdollsParams, car, carParams, jellies, jelliesParams };
+export { chain, chainParams, bridge, bridgeParams, jointGrid, jointGridParams, ragdolls, ragdollsParams, car, carParams, jellies, jelliesParams, blobs, blobsParams };
 export { resolveParams, type ParamSpec, type ParamSpecs } from './params.js';
 export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams, funnel, funnelParams };
 
@@ -169,6 +170,11 @@ export const SHAPE_SCENES = {
     description: 'Soft bodies: lattice jellies of circles on distance springs (shear springs included) falling into a funnel',
     params: jelliesParams,
     build: jellies,
+  },
+  blobs: {
+    description: 'Soft bodies: pressure blobs, rings of circles on distance springs around a gas (a pressure joint), falling into a funnel',
+    params: blobsParams,
+    build: blobs,
   },
 } satisfies Record<string, ShapeSceneDefinition>;
 

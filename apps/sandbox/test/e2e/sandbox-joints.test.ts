@@ -16,6 +16,7 @@ const JOINT_SCENES: Record<string, string> = {
   ragdolls: 'count=4&columns=4',
   car: 'bumps=5',
   jellies: 'count=2&side=4',
+  blobs: 'count=2',
 };
 
 let browser: Browser;

@@ -1,5 +1,5 @@
 /** Joint kinds, as stored in JointStore.kind and named in JointOptions.kind. */
-export const JointKind = { distance: 0, revolute: 1, prismatic: 2, weld: 3, wheel: 4, target: 5, spring: 6 } as const;
+export const JointKind = { distance: 0, revolute: 1, prismatic: 2, weld: 3, wheel: 4, target: 5, spring: 6, pressure: 7 } as const;
 export type JointKindName = keyof typeof JointKind;
 export const JOINT_KIND_NAMES = Object.keys(JointKind) as JointKindName[];
 
@@ -43,7 +43,7 @@ export const J = {
   /** Above these the joint breaks (Infinity: never). */
   breakForce: 23,
   breakTorque: 24,
-  /** A force-driven spring's stiffness (force per length) and damping (force per speed). */
+  /** A force-driven spring's stiffness (force per length) and damping (force per speed); a pressure joint's gas pressure at its rest area, whose area is its `length`. */
   stiffness: 25,
   damping: 62,
 

@@ -135,7 +135,21 @@ export interface SpringJointOptions {
   breakForce?: number | undefined;
 }
 
-export type JointOptions = SpringJointOptions | DistanceJointOptions | RevoluteJointOptions | PrismaticJointOptions | WeldJointOptions | WheelJointOptions | TargetJointOptions;
+/**
+ * Gas in a ring of bodies (a pressure blob, with springs or joints between neighbours to hold it
+ * together): the ideal gas law at constant temperature, P = pressure x A0 / A, A the area of the
+ * polygon through the bodies' centres (A0 when made), P pushing each edge outwards with P times
+ * its length. The bodies collide as before; the joint's bodyA and bodyB are the ring's first two.
+ */
+export interface PressureJointOptions {
+  kind: 'pressure';
+  /** At least 3 distinct bodies, in order around the ring (either way round). */
+  bodies: number[];
+  /** The gas pressure at the ring's area when made: force per length. */
+  pressure: number;
+}
+
+export type JointOptions = PressureJointOptions | SpringJointOptions | DistanceJointOptions | RevoluteJointOptions | PrismaticJointOptions | WeldJointOptions | WheelJointOptions | TargetJointOptions;
 
 const BASE_KEYS = ['kind', 'bodyA', 'bodyB', 'anchorA', 'anchorB', 'collideConnected', 'breakForce', 'breakTorque'];
 const SPRING_KEYS = ['hertz', 'dampingRatio'];
@@ -147,6 +161,7 @@ const KEYS: Record<JointKindName, string[]> = {
   wheel: [...BASE_KEYS, 'axis', 'lowerTranslation', 'upperTranslation', 'motorSpeed', 'maxMotorTorque', ...SPRING_KEYS],
   target: ['kind', 'body', 'target', 'anchor', 'hertz', 'dampingRatio', 'maxForce', 'breakForce', 'breakTorque'],
   spring: ['kind', 'bodyA', 'bodyB', 'length', 'stiffness', 'damping', 'collideConnected', 'breakForce'],
+  pressure: ['kind', 'bodies', 'pressure'],
 };
 
 /** What resolveJoint needs of the world: body slots from handles, and the bodies' poses. */
@@ -164,13 +179,14 @@ export interface JointWorld {
   gravity(): number;
 }
 
-/** A validated joint: its kind, body slots (A -1 for the world), whether they collide, and its record's definition. */
+/** A validated joint: its kind, body slots (A -1 for the world), whether they collide, its record's definition, and a pressure joint's ring. */
 export interface ResolvedJoint {
   kind: number;
   bodyA: number;
   bodyB: number;
   collide: boolean;
   definition: Float64Array;
+  ring: Int32Array | null;
 }
 
 const point = new Float64Array(2);
@@ -224,6 +240,32 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
   r[J.breakForce] = threshold('breakForce', o.breakForce);
   r[J.breakTorque] = threshold('breakTorque', o.breakTorque);
   r[J.axisX] = 1;
+  if (kind === 'pressure') {
+    if (!Array.isArray(o.bodies)) throw new TypeError(`bodies must be an array of body handles, got ${describeValue(o.bodies)}`);
+    if (o.bodies.length < 3) throw new RangeError(`bodies must hold at least 3 bodies for a ring, got ${o.bodies.length}`);
+    const ring = new Int32Array(o.bodies.length);
+    let dynamic = false;
+    let twice = 0;
+    for (let k = 0; k < ring.length; k++) {
+      ring[k] = world.bodySlot(`bodies[${k}]`, o.bodies[k]);
+      if (ring.indexOf(ring[k]) < k) throw new RangeError(`bodies[${k}] (${describeValue(o.bodies[k])}) is already in the ring: its bodies must be distinct`);
+      if (world.isDynamic(ring[k])) dynamic = true;
+    }
+    if (!dynamic) throw new RangeError('bodies are all static or kinematic: a pressure joint needs a dynamic body to act on');
+    for (let k = 0; k < ring.length; k++) {
+      world.localCenter(ring[k], point);
+      world.worldPoint(ring[k], point[0], point[1], point);
+      world.localCenter(ring[(k + 1) % ring.length], pointB);
+      world.worldPoint(ring[(k + 1) % ring.length], pointB[0], pointB[1], pointB);
+      twice += point[0] * pointB[1] - pointB[0] * point[1];
+    }
+    const area = Math.abs(0.5 * twice);
+    if (!(area > 0)) throw new RangeError(`the ring's bodies enclose no area (${area}): a pressure joint needs a ring around a space`);
+    if (o.pressure === undefined) throw new TypeError('pressure must be a finite number, got undefined (a pressure joint needs one)');
+    r[J.stiffness] = boundedNonNegative('pressure', o.pressure);
+    r[J.length] = area;
+    return { kind: JointKind.pressure, bodyA: ring[0], bodyB: ring[1], collide: true, definition: r, ring };
+  }
   if (kind === 'target') {
     const b = world.bodySlot('body', o.body);
     if (!world.isDynamic(b)) throw new RangeError(`body ${describeValue(o.body)} must be dynamic for a target joint to pull it`);
@@ -238,7 +280,7 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     if (!(r[J.hertz] > 0)) throw new RangeError(`hertz must be > 0 for a target joint, got ${describeValue(o.hertz)}`);
     r[J.dampingRatio] = optionalNonNegative('dampingRatio', o.dampingRatio, 0.7);
     r[J.maxForce] = o.maxForce === undefined ? 1000 * world.mass(b) * Math.max(world.gravity(), 1) : boundedNonNegative('maxForce', o.maxForce);
-    return { kind: JointKind.target, bodyA: -1, bodyB: b, collide: true, definition: r };
+    return { kind: JointKind.target, bodyA: -1, bodyB: b, collide: true, definition: r, ring: null };
   }
   const a = world.bodySlot('bodyA', o.bodyA);
   const b = world.bodySlot('bodyB', o.bodyB);
@@ -261,7 +303,7 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     if (o.stiffness === undefined) throw new TypeError('stiffness must be a finite number, got undefined (a spring needs one)');
     r[J.stiffness] = boundedNonNegative('stiffness', o.stiffness);
     r[J.damping] = optionalNonNegative('damping', o.damping, 0);
-    return { kind: JointKind.spring, bodyA: a, bodyB: b, collide, definition: r };
+    return { kind: JointKind.spring, bodyA: a, bodyB: b, collide, definition: r, ring: null };
   }
   world.localCenter(a, point);
   const anchorA = o.anchorA === undefined ? { x: point[0], y: point[1] } : vector('anchorA', o.anchorA);
@@ -293,14 +335,14 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     r[J.minLength] = min;
     r[J.maxLength] = max;
     r[J.enableLimit] = hertz > 0 || min < max ? 1 : 0;
-    return { kind: JointKind.distance, bodyA: a, bodyB: b, collide, definition: r };
+    return { kind: JointKind.distance, bodyA: a, bodyB: b, collide, definition: r, ring: null };
   }
   r[J.referenceAngle] = o.referenceAngle === undefined ? relative : finiteNumber('referenceAngle', o.referenceAngle);
   if (kind === 'weld') {
     r[J.linearHertz] = optionalNonNegative('linearHertz', o.linearHertz, 0);
     r[J.angularHertz] = optionalNonNegative('angularHertz', o.angularHertz, 0);
     r[J.dampingRatio] = optionalNonNegative('dampingRatio', o.dampingRatio, 0);
-    return { kind: JointKind.weld, bodyA: a, bodyB: b, collide, definition: r };
+    return { kind: JointKind.weld, bodyA: a, bodyB: b, collide, definition: r, ring: null };
   }
   const wheel = kind === 'wheel';
   r[J.hertz] = optionalNonNegative('hertz', o.hertz, wheel ? 1 : 0);
@@ -314,11 +356,11 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     if (o.lowerAngle !== undefined && !(Math.abs(finiteNumber('lowerAngle', o.lowerAngle)) <= Math.PI)) throw new RangeError(`lowerAngle must be within [-pi, pi], got ${describeValue(o.lowerAngle)}`);
     if (o.upperAngle !== undefined && !(Math.abs(finiteNumber('upperAngle', o.upperAngle)) <= Math.PI)) throw new RangeError(`upperAngle must be within [-pi, pi], got ${describeValue(o.upperAngle)}`);
     range('lowerAngle', 'upperAngle', o.lowerAngle, o.upperAngle, r);
-    return { kind: JointKind.revolute, bodyA: a, bodyB: b, collide, definition: r };
+    return { kind: JointKind.revolute, bodyA: a, bodyB: b, collide, definition: r, ring: null };
   }
   const axis = unitAxis('axis', o.axis, wheel ? { x: 0, y: 1 } : { x: 1, y: 0 });
   r[J.axisX] = axis.x;
   r[J.axisY] = axis.y;
   range('lowerTranslation', 'upperTranslation', o.lowerTranslation, o.upperTranslation, r);
-  return { kind: wheel ? JointKind.wheel : JointKind.prismatic, bodyA: a, bodyB: b, collide, definition: r };
+  return { kind: wheel ? JointKind.wheel : JointKind.prismatic, bodyA: a, bodyB: b, collide, definition: r, ring: null };
 }

@@ -28,14 +28,18 @@ export class JointStore {
   firstEdge = new Int32Array(0);
   /** Joints whose bodies do not collide: the narrow-phase asks `joined` only while there are some. */
   nonColliding = 0;
+  /** A pressure joint's ring of body slots, in order; its first two are also its bodies A and B. */
+  private readonly rings = new Map<number, Int32Array>();
+  /** Per body slot, how many rings it is in (slots beyond the array are in none). */
+  ringMember = new Int32Array(0);
   private freeSlots: number[] = [];
 
   hasRoom(): boolean {
     return this.freeSlots.length > 0 || this.slotCount < SLOT_SPACE;
   }
 
-  /** Adds a joint whose definition is `definition` (JOINT_STRIDE doubles); returns its slot. */
-  add(kind: number, a: number, b: number, collide: boolean, definition: Float64Array): number {
+  /** Adds a joint whose definition is `definition` (JOINT_STRIDE doubles), a pressure joint with its ring; returns its slot. */
+  add(kind: number, a: number, b: number, collide: boolean, definition: Float64Array, ring: Int32Array | null = null): number {
     let slot = this.freeSlots.pop();
     if (slot === undefined) {
       if (this.slotCount === this.kind.length) this.grow(this.slotCount + 1);
@@ -50,11 +54,36 @@ export class JointStore {
     this.record.set(definition, slot * JOINT_STRIDE);
     this.link(2 * slot, a);
     this.link(2 * slot + 1, b);
+    if (ring !== null) {
+      this.rings.set(slot, ring);
+      for (const body of ring) {
+        if (this.ringMember.length <= body) this.ringMember = grow(this.ringMember, grownCapacity(this.ringMember.length, body + 1));
+        this.ringMember[body]++;
+      }
+    }
     this.count++;
     return slot;
   }
 
+  /** A pressure joint's ring of body slots. */
+  ring(slot: number): Int32Array {
+    return this.rings.get(slot)!;
+  }
+
+  /** The pressure joints whose ring holds body `body`, in slot order. */
+  ringsOf(body: number): number[] {
+    const out: number[] = [];
+    if (body >= this.ringMember.length || this.ringMember[body] === 0) return out;
+    for (const [slot, ring] of this.rings) if (ring.includes(body)) out.push(slot);
+    return out.sort((x, y) => x - y);
+  }
+
   remove(slot: number): void {
+    const ring = this.rings.get(slot);
+    if (ring !== undefined) {
+      for (const body of ring) this.ringMember[body]--;
+      this.rings.delete(slot);
+    }
     this.unlink(2 * slot, this.bodyA[slot]);
     this.unlink(2 * slot + 1, this.bodyB[slot]);
     if (this.collide[slot] === 0) this.nonColliding--;

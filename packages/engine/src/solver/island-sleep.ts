@@ -3,6 +3,7 @@ import { TypeCode } from '../store/body-types.js';
 import { ContactList, WORLD } from '../narrowphase/contact-list.js';
 import { grownCapacity } from '../util/grow.js';
 import type { JointStore } from '../joints/joint-store.js';
+import { JointKind } from '../joints/joint-layout.js';
 
 /**
  * Island sleeping for worlds with shapes (Box2D v3's islands, computed afresh each step): the
@@ -64,6 +65,16 @@ export class IslandSleep {
         if (joints.live[j] === 0) continue;
         const a = joints.bodyA[j];
         const b = joints.bodyB[j];
+        if (joints.kind[j] === JointKind.pressure) {
+          // A ring is one island.
+          const ring = joints.ring(j);
+          for (let k = 1; k < ring.length; k++) {
+            const p = ring[k - 1];
+            const q = ring[k];
+            if (type[p] === TypeCode.dynamic && asleep[p] === 0 && type[q] === TypeCode.dynamic && asleep[q] === 0) this.union(p, q);
+          }
+          continue;
+        }
         const awakeB = type[b] === TypeCode.dynamic && asleep[b] === 0;
         if (a < 0) {
           // A target joint pulls its body somewhere: it stays awake while it has one.

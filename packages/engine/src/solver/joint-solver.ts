@@ -2,6 +2,7 @@ import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind, type JointKindName } from '../joints/joint-layout.js';
 import { ForceSprings } from './force-springs.js';
+import { GasPressure } from './gas-pressure.js';
 import type { IntegratorName } from '../integrate/integrator.js';
 import type { JointStore } from '../joints/joint-store.js';
 import { BODY, makeSoft } from './solver-body.js';
@@ -16,8 +17,8 @@ import { atan2Into } from '../math/trig.js';
 
 const angleIO = new Float64Array(3);
 
-/** Each constraint kind's solver: one line per kind. Springs are forces, integrated apart (ForceSprings). */
-const KERNEL_OF: Record<Exclude<JointKindName, 'spring'>, JointKernel> = {
+/** Each constraint kind's solver: one line per kind. Springs and gas pressure are forces, applied apart (ForceSprings, GasPressure). */
+const KERNEL_OF: Record<Exclude<JointKindName, 'spring' | 'pressure'>, JointKernel> = {
   distance: distanceJoint,
   revolute: revoluteJoint,
   prismatic: prismaticJoint,
@@ -26,7 +27,7 @@ const KERNEL_OF: Record<Exclude<JointKindName, 'spring'>, JointKernel> = {
   target: targetJoint,
 };
 /** The same, indexed by JointKind. */
-const JOINT_KERNELS: readonly JointKernel[] = JOINT_KIND_NAMES.map((name) => (name === 'spring' ? null! : KERNEL_OF[name]));
+const JOINT_KERNELS: readonly JointKernel[] = JOINT_KIND_NAMES.map((name) => (name === 'spring' || name === 'pressure' ? null! : KERNEL_OF[name]));
 
 /** The accumulated impulses of a joint, and whether each is angular (a torque's) rather than linear. */
 const IMPULSES = [J.linearImpulseX, J.linearImpulseY, J.angularImpulse, J.springImpulseSum, J.motorImpulse, J.lowerImpulse, J.upperImpulse, J.axialImpulse];
@@ -62,6 +63,15 @@ function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64
   }
 }
 
+/** Wakes every sleeping body of a ring of which some body moves. */
+function wakeRing(bodies: BodyStore, ring: Int32Array): void {
+  const { type, asleep } = bodies;
+  let moving = false;
+  for (let k = 0; k < ring.length && !moving; k++) moving = type[ring[k]] === TypeCode.kinematic || (type[ring[k]] === TypeCode.dynamic && asleep[ring[k]] === 0);
+  if (!moving) return;
+  for (let k = 0; k < ring.length; k++) if (asleep[ring[k]] === 1) bodies.wake(ring[k]);
+}
+
 /** How stiff and damped a rigid joint's push back is: Box2D v3's joint softness (jointHertz, jointDampingRatio). */
 export interface JointSettings {
   hertz: number;
@@ -82,6 +92,9 @@ export class JointSolver {
   private activeCount = 0;
   /** Live force-driven springs some body of which moves, in slot order. */
   private springSlots = new Int32Array(0);
+  /** Live pressure joints, in slot order. */
+  private pressureSlots = new Int32Array(0);
+  private readonly gas = new GasPressure();
   private readonly springs = new ForceSprings();
   /** The speed limits, linear and angular, for boundImpulses. */
   private readonly limits = new Float64Array(2);
@@ -99,6 +112,10 @@ export class JointSolver {
       const a = store.bodyA[j];
       const b = store.bodyB[j];
       if (a < 0) continue;
+      if (store.kind[j] === JointKind.pressure) {
+        wakeRing(bodies, store.ring(j));
+        continue;
+      }
       const movingA = type[a] === TypeCode.kinematic || (type[a] === TypeCode.dynamic && asleep[a] === 0);
       const movingB = type[b] === TypeCode.kinematic || (type[b] === TypeCode.dynamic && asleep[b] === 0);
       if (movingA && asleep[b] === 1) bodies.wake(b);
@@ -119,10 +136,12 @@ export class JointSolver {
     if (this.active.length < store.slotCount) {
       this.active = new Int32Array(Math.max(store.slotCount, 2 * this.active.length));
       this.springSlots = new Int32Array(this.active.length);
+      this.pressureSlots = new Int32Array(this.active.length);
     }
     this.limits[0] = maxSpeed;
     this.limits[1] = maxAngular;
     let springCount = 0;
+    let pressureCount = 0;
     const { invMass, x, y } = bodies;
     const rigid = bodies.rigid!;
     const { c, s, invInertia, localCenterX, localCenterY } = rigid;
@@ -138,6 +157,12 @@ export class JointSolver {
       r[o + J.forceX] = 0;
       r[o + J.forceY] = 0;
       r[o + J.torque] = 0;
+      if (store.kind[j] === JointKind.pressure) {
+        // The whole ring wakes together (wakeJoined), so its first two bodies speak for it.
+        r[o + J.active] = ia === 0 && ib === 0 ? 0 : 1;
+        if (ia !== 0 || ib !== 0) this.pressureSlots[pressureCount++] = j;
+        continue;
+      }
       if (ia === 0 && ib === 0) {
         r[o + J.active] = 0;
         continue;
@@ -181,11 +206,13 @@ export class JointSolver {
     }
     this.activeCount = n;
     this.springs.prepare(store, this.springSlots, springCount, stateCount, bodies, slotOfState, gx, gy);
+    this.gas.prepare(store, this.pressureSlots, pressureCount, bodies, index);
   }
 
   /** Each sub-step, before its velocity update: the springs' forces, as the integrator says. */
   springsBefore(states: Float64Array): void {
     this.springs.before(this.store.record, states, this.step, this.integrator, this.limits);
+    this.gas.apply(this.store.record, states, this.step);
   }
 
   /** Each sub-step, once the bodies moved. */
@@ -227,6 +254,6 @@ export class JointSolver {
   }
 
   memoryBytes(): number {
-    return this.active.byteLength + this.springSlots.byteLength + this.springs.memoryBytes();
+    return this.active.byteLength + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
   }
 }

@@ -273,7 +273,9 @@ export function resolveSceneJoints(scene: ShapeScene, engine: string): ResolvedJ
     if (given.kind === 'target') throw new UnsupportedSceneError(engine, scene.name, `joint ${index} is a target joint, which the lab's peer adapters do not build`);
     // maxgrid's force-driven spring between centres has no counterpart these adapters build (the peers' springs are soft constraints).
     if ((given.kind as string) === 'spring') throw new UnsupportedSceneError(engine, scene.name, `joint ${index} is a force spring (kind 'spring'), which the lab's peer adapters do not build`);
-    const joint = given as Exclude<JointOptions, { kind: 'target' | 'spring' }>;
+    // Gas in a ring of bodies: no peer engine has one.
+    if (given.kind === 'pressure') throw new UnsupportedSceneError(engine, scene.name, `joint ${index} is a pressure joint (gas in a ring of bodies), which no peer engine has`);
+    const joint = given as Exclude<JointOptions, { kind: 'target' | 'spring' | 'pressure' }>;
     const breakable = (joint.breakForce ?? Infinity) !== Infinity || (joint.breakTorque ?? Infinity) !== Infinity;
     if (breakable) throw new UnsupportedSceneError(engine, scene.name, `joint ${index} is breakable (breakForce/breakTorque), which the lab's peer adapters do not build`);
     const a = scene.bodies[joint.bodyA];
