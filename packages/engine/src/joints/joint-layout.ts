@@ -7,6 +7,10 @@ export const JOINT_KIND_NAMES = Object.keys(JointKind) as JointKindName[];
  * A joint's record: JOINT_STRIDE doubles, its definition first (fixed by createJoint), then what
  * the solver prepares at the start of each step, then the impulses, which persist between steps
  * for the warm start. Every kind uses the fields it needs and leaves the others 0.
+ *
+ * The solver's modules copy these into constants of their own (`const { rAX: R_AX } = J`): V8
+ * folds a module's own constant numbers into the code, where a property of an imported object is
+ * loaded at every use; on a lattice of distance joints that took a joint's pass from 90 to 65 ns.
  */
 export const J = {
   // Definition. Anchors in each body's own frame, from its origin.

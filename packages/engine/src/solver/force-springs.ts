@@ -5,6 +5,9 @@ import { BODY, DPX, DPY, DYNAMIC, VX, VY } from './solver-body.js';
 import { grownCapacity } from '../util/grow.js';
 import { TypeCode } from '../store/body-types.js';
 
+// The record's fields as this module's own constants, which V8 folds into the code (see J).
+const { damping: DAMPING, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, forceX: FORCE_X, forceY: FORCE_Y, length: LENGTH, stateA: STATE_A, stateB: STATE_B, stiffness: STIFFNESS, torque: TORQUE } = J;
+
 /**
  * Force-driven springs (joints of kind 'spring'): Hooke's law between two bodies' centres,
  * F = k (length - rest) + c (speed apart), integrated in each sub-step of the soft step by the
@@ -48,8 +51,8 @@ export class ForceSprings {
     const r = store.record;
     for (let k = 0; k < count; k++) {
       const o = joints[k] * JOINT_STRIDE;
-      n = this.join(r[o + J.stateA] / BODY, n);
-      n = this.join(r[o + J.stateB] / BODY, n);
+      n = this.join(r[o + STATE_A] / BODY, n);
+      n = this.join(r[o + STATE_B] / BODY, n);
     }
     this.memberCount = n;
     if (this.buffers.length < n * MEMBER) this.buffers = new Float64Array(grownCapacity(this.buffers.length / MEMBER, n) * MEMBER);
@@ -102,16 +105,16 @@ export class ForceSprings {
   finish(r: Float64Array, states: Float64Array): void {
     for (let k = 0; k < this.count; k++) {
       const o = this.joints[k] * JOINT_STRIDE;
-      const sa = r[o + J.stateA];
-      const sb = r[o + J.stateB];
+      const sa = r[o + STATE_A];
+      const sb = r[o + STATE_B];
       io[DX] = states[sb + DPX] - states[sa + DPX];
       io[DY] = states[sb + DPY] - states[sa + DPY];
       io[DVX] = states[sb + VX] - states[sa + VX];
       io[DVY] = states[sb + VY] - states[sa + VY];
       tension(r, o);
-      r[o + J.forceX] = -io[PULL] * io[UNIT_X];
-      r[o + J.forceY] = -io[PULL] * io[UNIT_Y];
-      r[o + J.torque] = 0;
+      r[o + FORCE_X] = -io[PULL] * io[UNIT_X];
+      r[o + FORCE_Y] = -io[PULL] * io[UNIT_Y];
+      r[o + TORQUE] = 0;
     }
   }
 
@@ -239,8 +242,8 @@ export class ForceSprings {
     }
     for (let k = 0; k < this.count; k++) {
       const o = this.joints[k] * JOINT_STRIDE;
-      const ma = memberOf[r[o + J.stateA] / BODY];
-      const mb = memberOf[r[o + J.stateB] / BODY];
+      const ma = memberOf[r[o + STATE_A] / BODY];
+      const mb = memberOf[r[o + STATE_B] / BODY];
       const a = ma * MEMBER;
       const c = mb * MEMBER;
       const pax = ma < 0 ? 0 : b[a + PX];
@@ -286,8 +289,8 @@ const UNIT_X = 5;
 const UNIT_Y = 6;
 
 function tension(r: Float64Array, o: number): void {
-  const x = r[o + J.deltaCenterX] + io[DX];
-  const y = r[o + J.deltaCenterY] + io[DY];
+  const x = r[o + DELTA_CENTER_X] + io[DX];
+  const y = r[o + DELTA_CENTER_Y] + io[DY];
   const length = Math.sqrt(x * x + y * y);
   if (!(length > 0)) {
     io[UNIT_X] = 0;
@@ -297,7 +300,7 @@ function tension(r: Float64Array, o: number): void {
   }
   io[UNIT_X] = x / length;
   io[UNIT_Y] = y / length;
-  io[PULL] = r[o + J.stiffness] * (length - r[o + J.length]) + r[o + J.damping] * (io[DVX] * io[UNIT_X] + io[DVY] * io[UNIT_Y]);
+  io[PULL] = r[o + STIFFNESS] * (length - r[o + LENGTH]) + r[o + DAMPING] * (io[DVX] * io[UNIT_X] + io[DVY] * io[UNIT_Y]);
 }
 
 /** Doubles per member in `buffers`. */

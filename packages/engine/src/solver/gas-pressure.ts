@@ -5,6 +5,9 @@ import type { JointStore } from '../joints/joint-store.js';
 import { BODY, DPX, DPY, DYNAMIC, VX, VY } from './solver-body.js';
 import { grownCapacity } from '../util/grow.js';
 
+// The record's fields as this module's own constants, which V8 folds into the code (see J).
+const { length: LENGTH, stiffness: STIFFNESS } = J;
+
 /** The area a ring may be squeezed to, as a fraction of its rest area, before its pressure stops rising. */
 const LEAST_AREA = 0.05;
 
@@ -76,11 +79,11 @@ export class GasPressure {
         const yj = baseY[j] + states[state[j] + DPY];
         twice += xi * yj - xj * yi;
       }
-      const rest = r[o + J.length];
+      const rest = r[o + LENGTH];
       const area = Math.max(Math.abs(0.5 * twice), LEAST_AREA * rest);
       // The pressure, with the sense of the ring's winding folded in: (ey, -ex) points out of a
       // ring of positive area, (-ey, ex) out of one of negative area.
-      const p = ((twice >= 0 ? 1 : -1) * r[o + J.stiffness] * rest) / area;
+      const p = ((twice >= 0 ? 1 : -1) * r[o + STIFFNESS] * rest) / area;
       const share = 0.5 * h * p;
       for (let i = from; i < to; i++) {
         const j = i + 1 === to ? from : i + 1;

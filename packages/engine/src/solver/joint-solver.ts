@@ -15,6 +15,9 @@ import { wheelJoint } from './joints/wheel-joint.js';
 import { SPIN_DAMPING, SPIN_HERTZ, targetJoint } from './joints/target-joint.js';
 import { atan2Into } from '../math/trig.js';
 
+// The record's fields as this module's own constants, which V8 folds into the code (see J).
+const { active: ACTIVE, anchorAX: ANCHOR_AX, anchorAY: ANCHOR_AY, anchorBX: ANCHOR_BX, anchorBY: ANCHOR_BY, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axisX: AXIS_X, axisY: AXIS_Y, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, referenceAngle: REFERENCE_ANGLE, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, targetX: TARGET_X, targetY: TARGET_Y, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+
 const angleIO = new Float64Array(3);
 
 /** Each constraint kind's solver: one line per kind. Springs and gas pressure are forces, applied apart (ForceSprings, GasPressure). */
@@ -30,14 +33,14 @@ const KERNEL_OF: Record<Exclude<JointKindName, 'spring' | 'pressure'>, JointKern
 const JOINT_KERNELS: readonly JointKernel[] = JOINT_KIND_NAMES.map((name) => (name === 'spring' || name === 'pressure' ? null! : KERNEL_OF[name]));
 
 /** The accumulated impulses of a joint, and whether each is angular (a torque's) rather than linear. */
-const IMPULSES = [J.linearImpulseX, J.linearImpulseY, J.angularImpulse, J.springImpulseSum, J.motorImpulse, J.lowerImpulse, J.upperImpulse, J.axialImpulse];
+const IMPULSES = [LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE, SPRING_IMPULSE_SUM, MOTOR_IMPULSE, LOWER_IMPULSE, UPPER_IMPULSE, AXIAL_IMPULSE];
 const ANGULAR: Record<number, readonly number[]> = {
   [JointKind.distance]: [],
-  [JointKind.revolute]: [J.springImpulseSum, J.motorImpulse, J.lowerImpulse, J.upperImpulse],
-  [JointKind.prismatic]: [J.angularImpulse],
-  [JointKind.weld]: [J.angularImpulse],
-  [JointKind.wheel]: [J.motorImpulse],
-  [JointKind.target]: [J.angularImpulse],
+  [JointKind.revolute]: [SPRING_IMPULSE_SUM, MOTOR_IMPULSE, LOWER_IMPULSE, UPPER_IMPULSE],
+  [JointKind.prismatic]: [ANGULAR_IMPULSE],
+  [JointKind.weld]: [ANGULAR_IMPULSE],
+  [JointKind.wheel]: [MOTOR_IMPULSE],
+  [JointKind.target]: [ANGULAR_IMPULSE],
 };
 
 /**
@@ -49,8 +52,8 @@ const ANGULAR: Record<number, readonly number[]> = {
 function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64Array): void {
   const maxSpeed = limits[0];
   const maxAngular = limits[1];
-  const inverseMass = r[o + J.invMassA] + r[o + J.invMassB];
-  const inverseInertia = r[o + J.invInertiaA] + r[o + J.invInertiaB];
+  const inverseMass = r[o + INV_MASS_A] + r[o + INV_MASS_B];
+  const inverseInertia = r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B];
   const linear = inverseMass > 0 ? (2 * maxSpeed) / inverseMass : 0;
   const angular = inverseInertia > 0 ? (2 * maxAngular) / inverseInertia : 0;
   const angularFields = ANGULAR[kind];
@@ -154,51 +157,51 @@ export class JointSolver {
       const b = store.bodyB[j];
       const ia = a < 0 ? 0 : index[a];
       const ib = index[b];
-      r[o + J.forceX] = 0;
-      r[o + J.forceY] = 0;
-      r[o + J.torque] = 0;
+      r[o + FORCE_X] = 0;
+      r[o + FORCE_Y] = 0;
+      r[o + TORQUE] = 0;
       if (store.kind[j] === JointKind.pressure) {
         // The whole ring wakes together (wakeJoined), so its first two bodies speak for it.
-        r[o + J.active] = ia === 0 && ib === 0 ? 0 : 1;
+        r[o + ACTIVE] = ia === 0 && ib === 0 ? 0 : 1;
         if (ia !== 0 || ib !== 0) this.pressureSlots[pressureCount++] = j;
         continue;
       }
       if (ia === 0 && ib === 0) {
-        r[o + J.active] = 0;
+        r[o + ACTIVE] = 0;
         continue;
       }
-      r[o + J.active] = 1;
+      r[o + ACTIVE] = 1;
       if (store.kind[j] === JointKind.spring) this.springSlots[springCount++] = j;
       else this.active[n++] = j;
-      r[o + J.stateA] = ia * BODY;
-      r[o + J.stateB] = ib * BODY;
-      r[o + J.invMassA] = ia === 0 ? 0 : invMass[a];
-      r[o + J.invInertiaA] = ia === 0 ? 0 : invInertia[a];
-      r[o + J.invMassB] = ib === 0 ? 0 : invMass[b];
-      r[o + J.invInertiaB] = ib === 0 ? 0 : invInertia[b];
+      r[o + STATE_A] = ia * BODY;
+      r[o + STATE_B] = ib * BODY;
+      r[o + INV_MASS_A] = ia === 0 ? 0 : invMass[a];
+      r[o + INV_INERTIA_A] = ia === 0 ? 0 : invInertia[a];
+      r[o + INV_MASS_B] = ib === 0 ? 0 : invMass[b];
+      r[o + INV_INERTIA_B] = ib === 0 ? 0 : invInertia[b];
       const ca = a < 0 ? 1 : c[a];
       const sa = a < 0 ? 0 : s[a];
       const cb = c[b];
       const sb = s[b];
-      const lax = a < 0 ? 0 : r[o + J.anchorAX] - localCenterX[a];
-      const lay = a < 0 ? 0 : r[o + J.anchorAY] - localCenterY[a];
-      const lbx = r[o + J.anchorBX] - localCenterX[b];
-      const lby = r[o + J.anchorBY] - localCenterY[b];
-      r[o + J.rAX] = ca * lax - sa * lay;
-      r[o + J.rAY] = sa * lax + ca * lay;
-      r[o + J.rBX] = cb * lbx - sb * lby;
-      r[o + J.rBY] = sb * lbx + cb * lby;
-      r[o + J.deltaCenterX] = x[b] - (a < 0 ? r[o + J.targetX] : x[a]);
-      r[o + J.deltaCenterY] = y[b] - (a < 0 ? r[o + J.targetY] : y[a]);
-      r[o + J.worldAxisX] = ca * r[o + J.axisX] - sa * r[o + J.axisY];
-      r[o + J.worldAxisY] = sa * r[o + J.axisX] + ca * r[o + J.axisY];
+      const lax = a < 0 ? 0 : r[o + ANCHOR_AX] - localCenterX[a];
+      const lay = a < 0 ? 0 : r[o + ANCHOR_AY] - localCenterY[a];
+      const lbx = r[o + ANCHOR_BX] - localCenterX[b];
+      const lby = r[o + ANCHOR_BY] - localCenterY[b];
+      r[o + R_AX] = ca * lax - sa * lay;
+      r[o + R_AY] = sa * lax + ca * lay;
+      r[o + R_BX] = cb * lbx - sb * lby;
+      r[o + R_BY] = sb * lbx + cb * lby;
+      r[o + DELTA_CENTER_X] = x[b] - (a < 0 ? r[o + TARGET_X] : x[a]);
+      r[o + DELTA_CENTER_Y] = y[b] - (a < 0 ? r[o + TARGET_Y] : y[a]);
+      r[o + WORLD_AXIS_X] = ca * r[o + AXIS_X] - sa * r[o + AXIS_Y];
+      r[o + WORLD_AXIS_Y] = sa * r[o + AXIS_X] + ca * r[o + AXIS_Y];
       angleIO[0] = sb * ca - cb * sa;
       angleIO[1] = cb * ca + sb * sa;
       atan2Into(angleIO, 0);
-      let angle = angleIO[2] - r[o + J.referenceAngle];
+      let angle = angleIO[2] - r[o + REFERENCE_ANGLE];
       if (angle > Math.PI) angle -= 2 * Math.PI;
       else if (angle < -Math.PI) angle += 2 * Math.PI;
-      r[o + J.deltaAngle] = angle;
+      r[o + DELTA_ANGLE] = angle;
       if (store.kind[j] !== JointKind.spring) {
         boundImpulses(r, o, store.kind[j], this.limits);
         JOINT_KERNELS[store.kind[j]].prepare(r, o, step);

@@ -1,6 +1,9 @@
 import { J } from '../../joints/joint-layout.js';
 import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
 
+// The record's fields as this module's own constants, which V8 folds into the code (see J).
+const { deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+
 /**
  * The frame of a joint that slides along an axis fixed in body A (prismatic, wheel), now: the
  * axis and its normal in the world, the translation of B's anchor along the axis from A's, and
@@ -18,14 +21,14 @@ export function currentAxisFrame(r: Float64Array, o: number, states: Float64Arra
   const qAs = states[sa + DQS];
   const qBc = states[sb + DQC];
   const qBs = states[sb + DQS];
-  f.rAx = qAc * r[o + J.rAX] - qAs * r[o + J.rAY];
-  f.rAy = qAs * r[o + J.rAX] + qAc * r[o + J.rAY];
-  f.rBx = qBc * r[o + J.rBX] - qBs * r[o + J.rBY];
-  f.rBy = qBs * r[o + J.rBX] + qBc * r[o + J.rBY];
-  f.ax = qAc * r[o + J.worldAxisX] - qAs * r[o + J.worldAxisY];
-  f.ay = qAs * r[o + J.worldAxisX] + qAc * r[o + J.worldAxisY];
-  f.dx = states[sb + DPX] - states[sa + DPX] + r[o + J.deltaCenterX] + f.rBx - f.rAx;
-  f.dy = states[sb + DPY] - states[sa + DPY] + r[o + J.deltaCenterY] + f.rBy - f.rAy;
+  f.rAx = qAc * r[o + R_AX] - qAs * r[o + R_AY];
+  f.rAy = qAs * r[o + R_AX] + qAc * r[o + R_AY];
+  f.rBx = qBc * r[o + R_BX] - qBs * r[o + R_BY];
+  f.rBy = qBs * r[o + R_BX] + qBc * r[o + R_BY];
+  f.ax = qAc * r[o + WORLD_AXIS_X] - qAs * r[o + WORLD_AXIS_Y];
+  f.ay = qAs * r[o + WORLD_AXIS_X] + qAc * r[o + WORLD_AXIS_Y];
+  f.dx = states[sb + DPX] - states[sa + DPX] + r[o + DELTA_CENTER_X] + f.rBx - f.rAx;
+  f.dy = states[sb + DPY] - states[sa + DPY] + r[o + DELTA_CENTER_Y] + f.rBy - f.rAy;
   fillArms(f);
   return f;
 }
@@ -33,14 +36,14 @@ export function currentAxisFrame(r: Float64Array, o: number, states: Float64Arra
 /** The frame at the step's start, from the prepared fields alone. */
 export function startAxisFrame(r: Float64Array, o: number): AxisFrame {
   const f = axisFrame;
-  f.rAx = r[o + J.rAX];
-  f.rAy = r[o + J.rAY];
-  f.rBx = r[o + J.rBX];
-  f.rBy = r[o + J.rBY];
-  f.ax = r[o + J.worldAxisX];
-  f.ay = r[o + J.worldAxisY];
-  f.dx = r[o + J.deltaCenterX] + f.rBx - f.rAx;
-  f.dy = r[o + J.deltaCenterY] + f.rBy - f.rAy;
+  f.rAx = r[o + R_AX];
+  f.rAy = r[o + R_AY];
+  f.rBx = r[o + R_BX];
+  f.rBy = r[o + R_BY];
+  f.ax = r[o + WORLD_AXIS_X];
+  f.ay = r[o + WORLD_AXIS_Y];
+  f.dx = r[o + DELTA_CENTER_X] + f.rBx - f.rAx;
+  f.dy = r[o + DELTA_CENTER_Y] + f.rBy - f.rAy;
   fillArms(f);
   return f;
 }
@@ -75,14 +78,14 @@ function applyAxisImpulse(r: Float64Array, o: number, states: Float64Array, sa: 
   const angular = f.angular;
   const px = along * f.ax - across * f.ay;
   const py = along * f.ay + across * f.ax;
-  const mA = r[o + J.invMassA];
-  const mB = r[o + J.invMassB];
+  const mA = r[o + INV_MASS_A];
+  const mB = r[o + INV_MASS_B];
   states[sa + VX] -= mA * px;
   states[sa + VY] -= mA * py;
-  states[sa + W] -= r[o + J.invInertiaA] * (along * f.a1 + across * f.s1 + angular);
+  states[sa + W] -= r[o + INV_INERTIA_A] * (along * f.a1 + across * f.s1 + angular);
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
-  states[sb + W] += r[o + J.invInertiaB] * (along * f.a2 + across * f.s2 + angular);
+  states[sb + W] += r[o + INV_INERTIA_B] * (along * f.a2 + across * f.s2 + angular);
 }
 
 /** Applies an impulse along the axis alone. */

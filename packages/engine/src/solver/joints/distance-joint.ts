@@ -2,6 +2,9 @@ import { J } from '../../joints/joint-layout.js';
 import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
 import { applyLimit, limitIO, softFromRecord, type JointKernel, type JointStepContext } from './joint-kernel.js';
 
+// The record's fields as this module's own constants, which V8 folds into the code (see J).
+const { axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, length: LENGTH, lowerImpulse: LOWER_IMPULSE, maxLength: MAX_LENGTH, minLength: MIN_LENGTH, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+
 /**
  * A distance joint: the anchors kept `length` apart, rigidly; or, with a range
  * (minLength < maxLength), free within it (a rope) and pulled towards `length` by a spring of
@@ -10,43 +13,43 @@ import { applyLimit, limitIO, softFromRecord, type JointKernel, type JointStepCo
  */
 export const distanceJoint: JointKernel = {
   prepare(r, o, step) {
-    const dx = r[o + J.deltaCenterX] + r[o + J.rBX] - r[o + J.rAX];
-    const dy = r[o + J.deltaCenterY] + r[o + J.rBY] - r[o + J.rAY];
+    const dx = r[o + DELTA_CENTER_X] + r[o + R_BX] - r[o + R_AX];
+    const dy = r[o + DELTA_CENTER_Y] + r[o + R_BY] - r[o + R_AY];
     const length = Math.sqrt(dx * dx + dy * dy);
     const ax = length > 0 ? dx / length : 1;
     const ay = length > 0 ? dy / length : 0;
-    r[o + J.worldAxisX] = ax;
-    r[o + J.worldAxisY] = ay;
-    const crA = r[o + J.rAX] * ay - r[o + J.rAY] * ax;
-    const crB = r[o + J.rBX] * ay - r[o + J.rBY] * ax;
-    const k = r[o + J.invMassA] + r[o + J.invMassB] + r[o + J.invInertiaA] * crA * crA + r[o + J.invInertiaB] * crB * crB;
-    r[o + J.axialMass] = k > 0 ? 1 / k : 0;
-    if (r[o + J.hertz] > 0) softFromRecord(r, o, J.hertz, J.springBias, step);
-    else r[o + J.springImpulseSum] = 0;
-    if (r[o + J.enableLimit] === 0) {
-      r[o + J.lowerImpulse] = 0;
-      r[o + J.upperImpulse] = 0;
+    r[o + WORLD_AXIS_X] = ax;
+    r[o + WORLD_AXIS_Y] = ay;
+    const crA = r[o + R_AX] * ay - r[o + R_AY] * ax;
+    const crB = r[o + R_BX] * ay - r[o + R_BY] * ax;
+    const k = r[o + INV_MASS_A] + r[o + INV_MASS_B] + r[o + INV_INERTIA_A] * crA * crA + r[o + INV_INERTIA_B] * crB * crB;
+    r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;
+    if (r[o + HERTZ] > 0) softFromRecord(r, o, HERTZ, SPRING_BIAS, step);
+    else r[o + SPRING_IMPULSE_SUM] = 0;
+    if (r[o + ENABLE_LIMIT] === 0) {
+      r[o + LOWER_IMPULSE] = 0;
+      r[o + UPPER_IMPULSE] = 0;
     } else {
-      r[o + J.axialImpulse] = 0;
+      r[o + AXIAL_IMPULSE] = 0;
     }
   },
 
   warmStart(r, o, states) {
-    const sa = r[o + J.stateA];
-    const sb = r[o + J.stateB];
+    const sa = r[o + STATE_A];
+    const sb = r[o + STATE_B];
     const frame = currentFrame(r, o, states, sa, sb);
-    frame.impulse = r[o + J.axialImpulse] + r[o + J.springImpulseSum] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
+    frame.impulse = r[o + AXIAL_IMPULSE] + r[o + SPRING_IMPULSE_SUM] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
     apply(r, o, states, sa, sb, frame);
   },
 
   solve(r, o, states, step, useBias) {
-    const sa = r[o + J.stateA];
-    const sb = r[o + J.stateB];
+    const sa = r[o + STATE_A];
+    const sb = r[o + STATE_B];
     const f = currentFrame(r, o, states, sa, sb);
-    const axialMass = r[o + J.axialMass];
-    if (r[o + J.enableLimit] === 0) {
+    const axialMass = r[o + AXIAL_MASS];
+    if (r[o + ENABLE_LIMIT] === 0) {
       // Rigid: the length held, with the joints' soft push back in the biased pass.
-      const C = f.length - r[o + J.length];
+      const C = f.length - r[o + LENGTH];
       let bias = 0;
       let massScale = 1;
       let impulseScale = 0;
@@ -56,37 +59,37 @@ export const distanceJoint: JointKernel = {
         impulseScale = step.soft[2];
       }
       speedAlong(states, sa, sb, f);
-      const accumulated = r[o + J.axialImpulse];
+      const accumulated = r[o + AXIAL_IMPULSE];
       const impulse = -massScale * axialMass * (f.speed + bias) - impulseScale * accumulated;
-      r[o + J.axialImpulse] = accumulated + impulse;
+      r[o + AXIAL_IMPULSE] = accumulated + impulse;
       f.impulse = impulse;
       apply(r, o, states, sa, sb, f);
       return;
     }
-    if (r[o + J.hertz] > 0) {
-      const C = f.length - r[o + J.length];
+    if (r[o + HERTZ] > 0) {
+      const C = f.length - r[o + LENGTH];
       speedAlong(states, sa, sb, f);
-      const accumulated = r[o + J.springImpulseSum];
-      const impulse = -r[o + J.springMass] * axialMass * (f.speed + r[o + J.springBias] * C) - r[o + J.springImpulse] * accumulated;
-      r[o + J.springImpulseSum] = accumulated + impulse;
+      const accumulated = r[o + SPRING_IMPULSE_SUM];
+      const impulse = -r[o + SPRING_MASS] * axialMass * (f.speed + r[o + SPRING_BIAS] * C) - r[o + SPRING_IMPULSE] * accumulated;
+      r[o + SPRING_IMPULSE_SUM] = accumulated + impulse;
       f.impulse = impulse;
       apply(r, o, states, sa, sb, f);
     }
-    if (r[o + J.minLength] > 0) {
-      limitIO[0] = f.length - r[o + J.minLength];
-      limit(r, o, states, sa, sb, f, step, useBias, J.lowerImpulse, 1);
+    if (r[o + MIN_LENGTH] > 0) {
+      limitIO[0] = f.length - r[o + MIN_LENGTH];
+      limit(r, o, states, sa, sb, f, step, useBias, LOWER_IMPULSE, 1);
     }
-    if (r[o + J.maxLength] < Infinity) {
-      limitIO[0] = r[o + J.maxLength] - f.length;
-      limit(r, o, states, sa, sb, f, step, useBias, J.upperImpulse, -1);
+    if (r[o + MAX_LENGTH] < Infinity) {
+      limitIO[0] = r[o + MAX_LENGTH] - f.length;
+      limit(r, o, states, sa, sb, f, step, useBias, UPPER_IMPULSE, -1);
     }
   },
 
   reaction(r, o, inverseH) {
-    const axial = (r[o + J.axialImpulse] + r[o + J.springImpulseSum] + r[o + J.lowerImpulse] - r[o + J.upperImpulse]) * inverseH;
-    r[o + J.forceX] = axial * r[o + J.worldAxisX];
-    r[o + J.forceY] = axial * r[o + J.worldAxisY];
-    r[o + J.torque] = 0;
+    const axial = (r[o + AXIAL_IMPULSE] + r[o + SPRING_IMPULSE_SUM] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE]) * inverseH;
+    r[o + FORCE_X] = axial * r[o + WORLD_AXIS_X];
+    r[o + FORCE_Y] = axial * r[o + WORLD_AXIS_Y];
+    r[o + TORQUE] = 0;
   },
 };
 
@@ -104,17 +107,17 @@ function currentFrame(r: Float64Array, o: number, states: Float64Array, sa: numb
   const qAs = states[sa + DQS];
   const qBc = states[sb + DQC];
   const qBs = states[sb + DQS];
-  f.rAx = qAc * r[o + J.rAX] - qAs * r[o + J.rAY];
-  f.rAy = qAs * r[o + J.rAX] + qAc * r[o + J.rAY];
-  f.rBx = qBc * r[o + J.rBX] - qBs * r[o + J.rBY];
-  f.rBy = qBs * r[o + J.rBX] + qBc * r[o + J.rBY];
-  const dx = states[sb + DPX] - states[sa + DPX] + r[o + J.deltaCenterX] + f.rBx - f.rAx;
-  const dy = states[sb + DPY] - states[sa + DPY] + r[o + J.deltaCenterY] + f.rBy - f.rAy;
+  f.rAx = qAc * r[o + R_AX] - qAs * r[o + R_AY];
+  f.rAy = qAs * r[o + R_AX] + qAc * r[o + R_AY];
+  f.rBx = qBc * r[o + R_BX] - qBs * r[o + R_BY];
+  f.rBy = qBs * r[o + R_BX] + qBc * r[o + R_BY];
+  const dx = states[sb + DPX] - states[sa + DPX] + r[o + DELTA_CENTER_X] + f.rBx - f.rAx;
+  const dy = states[sb + DPY] - states[sa + DPY] + r[o + DELTA_CENTER_Y] + f.rBy - f.rAy;
   const length = Math.sqrt(dx * dx + dy * dy);
   f.length = length;
   // Anchors that meet keep the axis they had at the step's start.
-  f.ax = length > 0 ? dx / length : r[o + J.worldAxisX];
-  f.ay = length > 0 ? dy / length : r[o + J.worldAxisY];
+  f.ax = length > 0 ? dx / length : r[o + WORLD_AXIS_X];
+  f.ay = length > 0 ? dy / length : r[o + WORLD_AXIS_Y];
   return f;
 }
 
@@ -129,14 +132,14 @@ function speedAlong(states: Float64Array, sa: number, sb: number, f: Frame): voi
 function apply(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: Frame): void {
   const px = f.impulse * f.ax;
   const py = f.impulse * f.ay;
-  const mA = r[o + J.invMassA];
-  const mB = r[o + J.invMassB];
+  const mA = r[o + INV_MASS_A];
+  const mB = r[o + INV_MASS_B];
   states[sa + VX] -= mA * px;
   states[sa + VY] -= mA * py;
-  states[sa + W] -= r[o + J.invInertiaA] * (f.rAx * py - f.rAy * px);
+  states[sa + W] -= r[o + INV_INERTIA_A] * (f.rAx * py - f.rAy * px);
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
-  states[sb + W] += r[o + J.invInertiaB] * (f.rBx * py - f.rBy * px);
+  states[sb + W] += r[o + INV_INERTIA_B] * (f.rBx * py - f.rBy * px);
 }
 
 /** One end of the range, its gap C >= 0 in limitIO[0]: `sign` 1 for the lower end (pushing apart), -1 for the upper. */

@@ -2,6 +2,9 @@ import { atan2Into } from '../../math/trig.js';
 import { J } from '../../joints/joint-layout.js';
 import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
 
+// The record's fields as this module's own constants, which V8 folds into the code (see J).
+const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, axialMass: AXIAL_MASS, dampingRatio: DAMPING_RATIO, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, springBias: SPRING_BIAS, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, upperImpulse: UPPER_IMPULSE } = J;
+
 /** What every joint's solve reads besides its record: the sub-step and the joints' softness. */
 export interface JointStepContext {
   h: number;
@@ -31,13 +34,13 @@ export interface JointKernel {
 const angleIO = new Float64Array(3);
 
 /**
- * The joint angle now into r[o + J.angle]: its angle at the step's start plus B's turn less A's
+ * The joint angle now into r[o + ANGLE]: its angle at the step's start plus B's turn less A's
  * since. (Numbers go through the record and scratch arrays here and below, not as arguments or
  * results: V8 boxes those where it does not inline a call, an allocation per joint per pass.)
  */
 export function measureAngle(r: Float64Array, o: number, states: Float64Array): void {
-  const sa = r[o + J.stateA];
-  const sb = r[o + J.stateB];
+  const sa = r[o + STATE_A];
+  const sb = r[o + STATE_B];
   const ac = states[sa + DQC];
   const as = states[sa + DQS];
   const bc = states[sb + DQC];
@@ -45,18 +48,18 @@ export function measureAngle(r: Float64Array, o: number, states: Float64Array): 
   angleIO[0] = bs * ac - bc * as;
   angleIO[1] = bc * ac + bs * as;
   atan2Into(angleIO, 0);
-  r[o + J.angle] = r[o + J.deltaAngle] + angleIO[2];
+  r[o + ANGLE] = r[o + DELTA_ANGLE] + angleIO[2];
 }
 
 /**
  * makeSoft (solver-body.ts) for a spring of r[o + hertzField] hertz and damping ratio
- * r[o + J.dampingRatio], into r[o + at..at + 2]: the same arithmetic, reading its numbers from
+ * r[o + DAMPING_RATIO], into r[o + at..at + 2]: the same arithmetic, reading its numbers from
  * the record rather than taking them as arguments.
  */
 export function softFromRecord(r: Float64Array, o: number, hertzField: number, at: number, step: JointStepContext): void {
   const h = step.h;
   const omega = 2 * Math.PI * r[o + hertzField];
-  const a1 = 2 * r[o + J.dampingRatio] + h * omega;
+  const a1 = 2 * r[o + DAMPING_RATIO] + h * omega;
   const a2 = h * omega * a1;
   const a3 = 1 / (1 + a2);
   r[o + at] = omega / a1;
@@ -69,7 +72,7 @@ export const limitIO = new Float64Array(3);
 
 /**
  * The new total impulse of a one-sided limit C >= 0, into r[o + field], with C and its speed
- * along it in limitIO[0..1] and the effective mass r[o + J.axialMass]: apart (C > 0) it lets the
+ * along it in limitIO[0..1] and the effective mass r[o + AXIAL_MASS]: apart (C > 0) it lets the
  * gap close within the sub-step and no more (speculative, as contacts do); past it, the soft push
  * back in the biased solve, none in the relax pass. The impulse's change goes to limitIO[2].
  */
@@ -85,7 +88,7 @@ export function applyLimit(r: Float64Array, o: number, field: number, step: Join
     impulseScale = step.soft[2];
   }
   const accumulated = r[o + field];
-  const impulse = -massScale * r[o + J.axialMass] * (limitIO[1] + bias) - impulseScale * accumulated;
+  const impulse = -massScale * r[o + AXIAL_MASS] * (limitIO[1] + bias) - impulseScale * accumulated;
   const total = Math.max(accumulated + impulse, 0);
   r[o + field] = total;
   limitIO[2] = total - accumulated;
@@ -96,13 +99,13 @@ export function applyLimit(r: Float64Array, o: number, field: number, step: Join
  * impulse cleared when it has none), and the impulses of a limit or motor that is off cleared.
  */
 export function prepareSpringLimitMotor(r: Float64Array, o: number, step: JointStepContext): void {
-  if (r[o + J.hertz] > 0) softFromRecord(r, o, J.hertz, J.springBias, step);
-  else r[o + J.springImpulseSum] = 0;
-  if (r[o + J.enableLimit] === 0) {
-    r[o + J.lowerImpulse] = 0;
-    r[o + J.upperImpulse] = 0;
+  if (r[o + HERTZ] > 0) softFromRecord(r, o, HERTZ, SPRING_BIAS, step);
+  else r[o + SPRING_IMPULSE_SUM] = 0;
+  if (r[o + ENABLE_LIMIT] === 0) {
+    r[o + LOWER_IMPULSE] = 0;
+    r[o + UPPER_IMPULSE] = 0;
   }
-  if (r[o + J.enableMotor] === 0) r[o + J.motorImpulse] = 0;
+  if (r[o + ENABLE_MOTOR] === 0) r[o + MOTOR_IMPULSE] = 0;
 }
 
 /**
@@ -112,23 +115,23 @@ export function prepareSpringLimitMotor(r: Float64Array, o: number, step: JointS
  * inline is boxed, an allocation per joint per sub-step.)
  */
 export function warmStartPoint(r: Float64Array, o: number, states: Float64Array, revolute: boolean): void {
-  const angular = revolute ? r[o + J.springImpulseSum] + r[o + J.motorImpulse] + r[o + J.lowerImpulse] - r[o + J.upperImpulse] : r[o + J.angularImpulse];
-  const sa = r[o + J.stateA];
-  const sb = r[o + J.stateB];
-  const rAx = states[sa + DQC] * r[o + J.rAX] - states[sa + DQS] * r[o + J.rAY];
-  const rAy = states[sa + DQS] * r[o + J.rAX] + states[sa + DQC] * r[o + J.rAY];
-  const rBx = states[sb + DQC] * r[o + J.rBX] - states[sb + DQS] * r[o + J.rBY];
-  const rBy = states[sb + DQS] * r[o + J.rBX] + states[sb + DQC] * r[o + J.rBY];
-  const px = r[o + J.linearImpulseX];
-  const py = r[o + J.linearImpulseY];
-  const mA = r[o + J.invMassA];
-  const mB = r[o + J.invMassB];
+  const angular = revolute ? r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE] : r[o + ANGULAR_IMPULSE];
+  const sa = r[o + STATE_A];
+  const sb = r[o + STATE_B];
+  const rAx = states[sa + DQC] * r[o + R_AX] - states[sa + DQS] * r[o + R_AY];
+  const rAy = states[sa + DQS] * r[o + R_AX] + states[sa + DQC] * r[o + R_AY];
+  const rBx = states[sb + DQC] * r[o + R_BX] - states[sb + DQS] * r[o + R_BY];
+  const rBy = states[sb + DQS] * r[o + R_BX] + states[sb + DQC] * r[o + R_BY];
+  const px = r[o + LINEAR_IMPULSE_X];
+  const py = r[o + LINEAR_IMPULSE_Y];
+  const mA = r[o + INV_MASS_A];
+  const mB = r[o + INV_MASS_B];
   states[sa + VX] -= mA * px;
   states[sa + VY] -= mA * py;
-  states[sa + W] -= r[o + J.invInertiaA] * (rAx * py - rAy * px + angular);
+  states[sa + W] -= r[o + INV_INERTIA_A] * (rAx * py - rAy * px + angular);
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
-  states[sb + W] += r[o + J.invInertiaB] * (rBx * py - rBy * px + angular);
+  states[sb + W] += r[o + INV_INERTIA_B] * (rBx * py - rBy * px + angular);
 }
 
 /** The softness of a rigid velocity constraint: no bias, full mass, no impulse decay (the relax pass). */
@@ -144,12 +147,12 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   const biasRate = soft[at];
   const massScale = soft[at + 1];
   const impulseScale = soft[at + 2];
-  const sa = r[o + J.stateA];
-  const sb = r[o + J.stateB];
-  const mA = r[o + J.invMassA];
-  const mB = r[o + J.invMassB];
-  const iA = r[o + J.invInertiaA];
-  const iB = r[o + J.invInertiaB];
+  const sa = r[o + STATE_A];
+  const sb = r[o + STATE_B];
+  const mA = r[o + INV_MASS_A];
+  const mB = r[o + INV_MASS_B];
+  const iA = r[o + INV_INERTIA_A];
+  const iB = r[o + INV_INERTIA_B];
   const vAx = states[sa + VX];
   const vAy = states[sa + VY];
   const wA = states[sa + W];
@@ -160,15 +163,15 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   const qAs = states[sa + DQS];
   const qBc = states[sb + DQC];
   const qBs = states[sb + DQS];
-  const rAx = qAc * r[o + J.rAX] - qAs * r[o + J.rAY];
-  const rAy = qAs * r[o + J.rAX] + qAc * r[o + J.rAY];
-  const rBx = qBc * r[o + J.rBX] - qBs * r[o + J.rBY];
-  const rBy = qBs * r[o + J.rBX] + qBc * r[o + J.rBY];
+  const rAx = qAc * r[o + R_AX] - qAs * r[o + R_AY];
+  const rAy = qAs * r[o + R_AX] + qAc * r[o + R_AY];
+  const rBx = qBc * r[o + R_BX] - qBs * r[o + R_BY];
+  const rBy = qBs * r[o + R_BX] + qBc * r[o + R_BY];
   let cx = vBx - wB * rBy - (vAx - wA * rAy);
   let cy = vBy + wB * rBx - (vAy + wA * rAx);
   if (biasRate > 0) {
-    cx += biasRate * (states[sb + DPX] - states[sa + DPX] + r[o + J.deltaCenterX] + rBx - rAx);
-    cy += biasRate * (states[sb + DPY] - states[sa + DPY] + r[o + J.deltaCenterY] + rBy - rAy);
+    cx += biasRate * (states[sb + DPX] - states[sa + DPX] + r[o + DELTA_CENTER_X] + rBx - rAx);
+    cy += biasRate * (states[sb + DPY] - states[sa + DPY] + r[o + DELTA_CENTER_Y] + rBy - rAy);
   }
   const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
   const k12 = -rAy * rAx * iA - rBy * rBx * iB;
@@ -177,10 +180,10 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   det = det !== 0 ? 1 / det : 0;
   const bx = det * (k22 * cx - k12 * cy);
   const by = det * (k11 * cy - k12 * cx);
-  const px = -massScale * bx - impulseScale * r[o + J.linearImpulseX];
-  const py = -massScale * by - impulseScale * r[o + J.linearImpulseY];
-  r[o + J.linearImpulseX] += px;
-  r[o + J.linearImpulseY] += py;
+  const px = -massScale * bx - impulseScale * r[o + LINEAR_IMPULSE_X];
+  const py = -massScale * by - impulseScale * r[o + LINEAR_IMPULSE_Y];
+  r[o + LINEAR_IMPULSE_X] += px;
+  r[o + LINEAR_IMPULSE_Y] += py;
   states[sa + VX] = vAx - mA * px;
   states[sa + VY] = vAy - mA * py;
   states[sa + W] = wA - iA * (rAx * py - rAy * px);

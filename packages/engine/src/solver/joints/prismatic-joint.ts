@@ -3,6 +3,9 @@ import { W } from '../solver-body.js';
 import { applyLimit, limitIO, measureAngle, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
 import { axialSpeed, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame } from './axis-frame.js';
 
+// The record's fields as this module's own constants, which V8 folds into the code (see J).
+const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, lower: LOWER, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorSpeed: MOTOR_SPEED, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upper: UPPER, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+
 /**
  * A prismatic joint (a slider): B keeps A's angle (plus the reference) and its anchor stays on
  * the line through A's anchor along A's axis, both as one 2x2 block; along the line, an optional
@@ -12,67 +15,67 @@ import { axialSpeed, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFr
 export const prismaticJoint: JointKernel = {
   prepare(r, o, step) {
     const f = startAxisFrame(r, o);
-    const mA = r[o + J.invMassA];
-    const mB = r[o + J.invMassB];
-    const iA = r[o + J.invInertiaA];
-    const iB = r[o + J.invInertiaB];
+    const mA = r[o + INV_MASS_A];
+    const mB = r[o + INV_MASS_B];
+    const iA = r[o + INV_INERTIA_A];
+    const iB = r[o + INV_INERTIA_B];
     const k = mA + mB + iA * f.a1 * f.a1 + iB * f.a2 * f.a2;
-    r[o + J.axialMass] = k > 0 ? 1 / k : 0;
+    r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;
     prepareSpringLimitMotor(r, o, step);
   },
 
   warmStart(r, o, states) {
-    const sa = r[o + J.stateA];
-    const sb = r[o + J.stateB];
+    const sa = r[o + STATE_A];
+    const sb = r[o + STATE_B];
     const f = currentAxisFrame(r, o, states, sa, sb);
-    f.along = r[o + J.springImpulseSum] + r[o + J.motorImpulse] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
-    f.across = r[o + J.axialImpulse];
-    f.angular = r[o + J.angularImpulse];
+    f.along = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    f.across = r[o + AXIAL_IMPULSE];
+    f.angular = r[o + ANGULAR_IMPULSE];
     push(r, o, states, sa, sb, f);
   },
 
   solve(r, o, states, step, useBias) {
-    const sa = r[o + J.stateA];
-    const sb = r[o + J.stateB];
+    const sa = r[o + STATE_A];
+    const sb = r[o + STATE_B];
     const f = currentAxisFrame(r, o, states, sa, sb);
-    const axialMass = r[o + J.axialMass];
-    if (r[o + J.hertz] > 0) {
+    const axialMass = r[o + AXIAL_MASS];
+    if (r[o + HERTZ] > 0) {
       axialSpeed(states, sa, sb, f);
-      const accumulated = r[o + J.springImpulseSum];
-      const impulse = -r[o + J.springMass] * axialMass * (f.speed + r[o + J.springBias] * f.translation) - r[o + J.springImpulse] * accumulated;
-      r[o + J.springImpulseSum] = accumulated + impulse;
+      const accumulated = r[o + SPRING_IMPULSE_SUM];
+      const impulse = -r[o + SPRING_MASS] * axialMass * (f.speed + r[o + SPRING_BIAS] * f.translation) - r[o + SPRING_IMPULSE] * accumulated;
+      r[o + SPRING_IMPULSE_SUM] = accumulated + impulse;
       f.along = impulse;
       pushAlong(r, o, states, sa, sb, f);
     }
-    if (r[o + J.enableMotor] === 1) {
+    if (r[o + ENABLE_MOTOR] === 1) {
       axialSpeed(states, sa, sb, f);
-      const accumulated = r[o + J.motorImpulse];
-      const most = r[o + J.maxMotor] * step.h;
-      let total = accumulated + axialMass * (r[o + J.motorSpeed] - f.speed);
+      const accumulated = r[o + MOTOR_IMPULSE];
+      const most = r[o + MAX_MOTOR] * step.h;
+      let total = accumulated + axialMass * (r[o + MOTOR_SPEED] - f.speed);
       total = total < -most ? -most : total > most ? most : total;
-      r[o + J.motorImpulse] = total;
+      r[o + MOTOR_IMPULSE] = total;
       f.along = total - accumulated;
       pushAlong(r, o, states, sa, sb, f);
     }
-    if (r[o + J.enableLimit] === 1) {
+    if (r[o + ENABLE_LIMIT] === 1) {
       axialSpeed(states, sa, sb, f);
-      limitIO[0] = f.translation - r[o + J.lower];
+      limitIO[0] = f.translation - r[o + LOWER];
       limitIO[1] = f.speed;
-      applyLimit(r, o, J.lowerImpulse, step, useBias);
+      applyLimit(r, o, LOWER_IMPULSE, step, useBias);
       f.along = limitIO[2];
       pushAlong(r, o, states, sa, sb, f);
       axialSpeed(states, sa, sb, f);
-      limitIO[0] = r[o + J.upper] - f.translation;
+      limitIO[0] = r[o + UPPER] - f.translation;
       limitIO[1] = -f.speed;
-      applyLimit(r, o, J.upperImpulse, step, useBias);
+      applyLimit(r, o, UPPER_IMPULSE, step, useBias);
       f.along = -limitIO[2];
       pushAlong(r, o, states, sa, sb, f);
     }
     // Across the axis and in angle, together.
-    const mA = r[o + J.invMassA];
-    const mB = r[o + J.invMassB];
-    const iA = r[o + J.invInertiaA];
-    const iB = r[o + J.invInertiaB];
+    const mA = r[o + INV_MASS_A];
+    const mB = r[o + INV_MASS_B];
+    const iA = r[o + INV_INERTIA_A];
+    const iB = r[o + INV_INERTIA_B];
     normalSpeed(states, sa, sb, f);
     let c1 = f.speed;
     let c2 = states[sb + W] - states[sa + W];
@@ -82,7 +85,7 @@ export const prismaticJoint: JointKernel = {
       const bias = step.soft[0];
       measureAngle(r, o, states);
       c1 += bias * (-f.ay * f.dx + f.ax * f.dy);
-      c2 += bias * r[o + J.angle];
+      c2 += bias * r[o + ANGLE];
       massScale = step.soft[1];
       impulseScale = step.soft[2];
     }
@@ -95,10 +98,10 @@ export const prismaticJoint: JointKernel = {
     det = det !== 0 ? 1 / det : 0;
     const b1 = det * (k22 * c1 - k12 * c2);
     const b2 = det * (k11 * c2 - k12 * c1);
-    const across = -massScale * b1 - impulseScale * r[o + J.axialImpulse];
-    const angular = -massScale * b2 - impulseScale * r[o + J.angularImpulse];
-    r[o + J.axialImpulse] += across;
-    r[o + J.angularImpulse] += angular;
+    const across = -massScale * b1 - impulseScale * r[o + AXIAL_IMPULSE];
+    const angular = -massScale * b2 - impulseScale * r[o + ANGULAR_IMPULSE];
+    r[o + AXIAL_IMPULSE] += across;
+    r[o + ANGULAR_IMPULSE] += angular;
     f.along = 0;
     f.across = across;
     f.angular = angular;
@@ -106,12 +109,12 @@ export const prismaticJoint: JointKernel = {
   },
 
   reaction(r, o, inverseH) {
-    const along = r[o + J.springImpulseSum] + r[o + J.motorImpulse] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
-    const across = r[o + J.axialImpulse];
-    const ax = r[o + J.worldAxisX];
-    const ay = r[o + J.worldAxisY];
-    r[o + J.forceX] = (along * ax - across * ay) * inverseH;
-    r[o + J.forceY] = (along * ay + across * ax) * inverseH;
-    r[o + J.torque] = r[o + J.angularImpulse] * inverseH;
+    const along = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    const across = r[o + AXIAL_IMPULSE];
+    const ax = r[o + WORLD_AXIS_X];
+    const ay = r[o + WORLD_AXIS_Y];
+    r[o + FORCE_X] = (along * ax - across * ay) * inverseH;
+    r[o + FORCE_Y] = (along * ay + across * ax) * inverseH;
+    r[o + TORQUE] = r[o + ANGULAR_IMPULSE] * inverseH;
   },
 };

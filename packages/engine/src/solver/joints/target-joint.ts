@@ -2,6 +2,9 @@ import { J } from '../../joints/joint-layout.js';
 import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
 import { softFromRecord, type JointKernel } from './joint-kernel.js';
 
+// The record's fields as this module's own constants, which V8 folds into the code (see J).
+const { angularImpulse: ANGULAR_IMPULSE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaB: INV_INERTIA_B, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, maxForce: MAX_FORCE, rBX: R_BX, rBY: R_BY, softBias: SOFT_BIAS, softImpulse: SOFT_IMPULSE, softMass: SOFT_MASS, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springMass: SPRING_MASS, stateB: STATE_B, torque: TORQUE } = J;
+
 /** The spin damping of a dragged body, as Box2D's mouse joint has: a weak soft constraint on its spin alone. */
 export const SPIN_HERTZ = 0.5;
 export const SPIN_DAMPING = 0.1;
@@ -13,61 +16,61 @@ export const SPIN_DAMPING = 0.1;
  */
 export const targetJoint: JointKernel = {
   prepare(r, o, step) {
-    softFromRecord(r, o, J.hertz, J.springBias, step);
-    r[o + J.softBias] = step.spinSoft[0];
-    r[o + J.softMass] = step.spinSoft[1];
-    r[o + J.softImpulse] = step.spinSoft[2];
+    softFromRecord(r, o, HERTZ, SPRING_BIAS, step);
+    r[o + SOFT_BIAS] = step.spinSoft[0];
+    r[o + SOFT_MASS] = step.spinSoft[1];
+    r[o + SOFT_IMPULSE] = step.spinSoft[2];
   },
 
   warmStart(r, o, states) {
-    const sb = r[o + J.stateB];
-    const rBx = states[sb + DQC] * r[o + J.rBX] - states[sb + DQS] * r[o + J.rBY];
-    const rBy = states[sb + DQS] * r[o + J.rBX] + states[sb + DQC] * r[o + J.rBY];
-    const px = r[o + J.linearImpulseX];
-    const py = r[o + J.linearImpulseY];
-    states[sb + VX] += r[o + J.invMassB] * px;
-    states[sb + VY] += r[o + J.invMassB] * py;
-    states[sb + W] += r[o + J.invInertiaB] * (rBx * py - rBy * px + r[o + J.angularImpulse]);
+    const sb = r[o + STATE_B];
+    const rBx = states[sb + DQC] * r[o + R_BX] - states[sb + DQS] * r[o + R_BY];
+    const rBy = states[sb + DQS] * r[o + R_BX] + states[sb + DQC] * r[o + R_BY];
+    const px = r[o + LINEAR_IMPULSE_X];
+    const py = r[o + LINEAR_IMPULSE_Y];
+    states[sb + VX] += r[o + INV_MASS_B] * px;
+    states[sb + VY] += r[o + INV_MASS_B] * py;
+    states[sb + W] += r[o + INV_INERTIA_B] * (rBx * py - rBy * px + r[o + ANGULAR_IMPULSE]);
   },
 
   solve(r, o, states, step) {
-    const sb = r[o + J.stateB];
-    const mB = r[o + J.invMassB];
-    const iB = r[o + J.invInertiaB];
+    const sb = r[o + STATE_B];
+    const mB = r[o + INV_MASS_B];
+    const iB = r[o + INV_INERTIA_B];
     let vx = states[sb + VX];
     let vy = states[sb + VY];
     let w = states[sb + W];
     {
-      const accumulated = r[o + J.angularImpulse];
-      const impulse = r[o + J.softMass] * (iB > 0 ? -w / iB : 0) - r[o + J.softImpulse] * accumulated;
-      r[o + J.angularImpulse] = accumulated + impulse;
+      const accumulated = r[o + ANGULAR_IMPULSE];
+      const impulse = r[o + SOFT_MASS] * (iB > 0 ? -w / iB : 0) - r[o + SOFT_IMPULSE] * accumulated;
+      r[o + ANGULAR_IMPULSE] = accumulated + impulse;
       w += iB * impulse;
     }
-    const rBx = states[sb + DQC] * r[o + J.rBX] - states[sb + DQS] * r[o + J.rBY];
-    const rBy = states[sb + DQS] * r[o + J.rBX] + states[sb + DQC] * r[o + J.rBY];
-    const bias = r[o + J.springBias];
-    const cx = vx - w * rBy + bias * (states[sb + DPX] + r[o + J.deltaCenterX] + rBx);
-    const cy = vy + w * rBx + bias * (states[sb + DPY] + r[o + J.deltaCenterY] + rBy);
+    const rBx = states[sb + DQC] * r[o + R_BX] - states[sb + DQS] * r[o + R_BY];
+    const rBy = states[sb + DQS] * r[o + R_BX] + states[sb + DQC] * r[o + R_BY];
+    const bias = r[o + SPRING_BIAS];
+    const cx = vx - w * rBy + bias * (states[sb + DPX] + r[o + DELTA_CENTER_X] + rBx);
+    const cy = vy + w * rBx + bias * (states[sb + DPY] + r[o + DELTA_CENTER_Y] + rBy);
     const k11 = mB + iB * rBy * rBy;
     const k12 = -iB * rBx * rBy;
     const k22 = mB + iB * rBx * rBx;
     let det = k11 * k22 - k12 * k12;
     det = det !== 0 ? 1 / det : 0;
-    const massScale = r[o + J.springMass];
-    const impulseScale = r[o + J.springImpulse];
-    const oldX = r[o + J.linearImpulseX];
-    const oldY = r[o + J.linearImpulseY];
+    const massScale = r[o + SPRING_MASS];
+    const impulseScale = r[o + SPRING_IMPULSE];
+    const oldX = r[o + LINEAR_IMPULSE_X];
+    const oldY = r[o + LINEAR_IMPULSE_Y];
     let totalX = oldX - massScale * det * (k22 * cx - k12 * cy) - impulseScale * oldX;
     let totalY = oldY - massScale * det * (k11 * cy - k12 * cx) - impulseScale * oldY;
-    const most = r[o + J.maxForce] * step.h;
+    const most = r[o + MAX_FORCE] * step.h;
     const sq = totalX * totalX + totalY * totalY;
     if (sq > most * most) {
       const scale = most / Math.sqrt(sq);
       totalX *= scale;
       totalY *= scale;
     }
-    r[o + J.linearImpulseX] = totalX;
-    r[o + J.linearImpulseY] = totalY;
+    r[o + LINEAR_IMPULSE_X] = totalX;
+    r[o + LINEAR_IMPULSE_Y] = totalY;
     const px = totalX - oldX;
     const py = totalY - oldY;
     vx += mB * px;
@@ -79,8 +82,8 @@ export const targetJoint: JointKernel = {
   },
 
   reaction(r, o, inverseH) {
-    r[o + J.forceX] = r[o + J.linearImpulseX] * inverseH;
-    r[o + J.forceY] = r[o + J.linearImpulseY] * inverseH;
-    r[o + J.torque] = r[o + J.angularImpulse] * inverseH;
+    r[o + FORCE_X] = r[o + LINEAR_IMPULSE_X] * inverseH;
+    r[o + FORCE_Y] = r[o + LINEAR_IMPULSE_Y] * inverseH;
+    r[o + TORQUE] = r[o + ANGULAR_IMPULSE] * inverseH;
   },
 };

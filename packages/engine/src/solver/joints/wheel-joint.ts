@@ -3,6 +3,9 @@ import { W } from '../solver-body.js';
 import { applyLimit, limitIO, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
 import { axialSpeed, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame } from './axis-frame.js';
 
+// The record's fields as this module's own constants, which V8 folds into the code (see J).
+const { axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, lower: LOWER, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorMass: MOTOR_MASS, motorSpeed: MOTOR_SPEED, perpMass: PERP_MASS, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upper: UPPER, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+
 /**
  * A wheel joint: B's anchor stays on the line through A's anchor along A's axis (the
  * suspension's travel), pulled back to translation 0 by a spring of `hertz` along it, with B free
@@ -12,63 +15,63 @@ import { axialSpeed, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFr
 export const wheelJoint: JointKernel = {
   prepare(r, o, step) {
     const f = startAxisFrame(r, o);
-    const mA = r[o + J.invMassA];
-    const mB = r[o + J.invMassB];
-    const iA = r[o + J.invInertiaA];
-    const iB = r[o + J.invInertiaB];
+    const mA = r[o + INV_MASS_A];
+    const mB = r[o + INV_MASS_B];
+    const iA = r[o + INV_INERTIA_A];
+    const iB = r[o + INV_INERTIA_B];
     const ka = mA + mB + iA * f.a1 * f.a1 + iB * f.a2 * f.a2;
-    r[o + J.axialMass] = ka > 0 ? 1 / ka : 0;
+    r[o + AXIAL_MASS] = ka > 0 ? 1 / ka : 0;
     const kp = mA + mB + iA * f.s1 * f.s1 + iB * f.s2 * f.s2;
-    r[o + J.perpMass] = kp > 0 ? 1 / kp : 0;
-    r[o + J.motorMass] = iA + iB > 0 ? 1 / (iA + iB) : 0;
+    r[o + PERP_MASS] = kp > 0 ? 1 / kp : 0;
+    r[o + MOTOR_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
     prepareSpringLimitMotor(r, o, step);
   },
 
   warmStart(r, o, states) {
-    const sa = r[o + J.stateA];
-    const sb = r[o + J.stateB];
+    const sa = r[o + STATE_A];
+    const sb = r[o + STATE_B];
     const f = currentAxisFrame(r, o, states, sa, sb);
-    f.along = r[o + J.springImpulseSum] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
-    f.across = r[o + J.axialImpulse];
-    f.angular = r[o + J.motorImpulse];
+    f.along = r[o + SPRING_IMPULSE_SUM] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    f.across = r[o + AXIAL_IMPULSE];
+    f.angular = r[o + MOTOR_IMPULSE];
     push(r, o, states, sa, sb, f);
   },
 
   solve(r, o, states, step, useBias) {
-    const sa = r[o + J.stateA];
-    const sb = r[o + J.stateB];
+    const sa = r[o + STATE_A];
+    const sb = r[o + STATE_B];
     const f = currentAxisFrame(r, o, states, sa, sb);
-    if (r[o + J.enableMotor] === 1) {
-      const accumulated = r[o + J.motorImpulse];
-      const most = r[o + J.maxMotor] * step.h;
-      let total = accumulated - r[o + J.motorMass] * (states[sb + W] - states[sa + W] - r[o + J.motorSpeed]);
+    if (r[o + ENABLE_MOTOR] === 1) {
+      const accumulated = r[o + MOTOR_IMPULSE];
+      const most = r[o + MAX_MOTOR] * step.h;
+      let total = accumulated - r[o + MOTOR_MASS] * (states[sb + W] - states[sa + W] - r[o + MOTOR_SPEED]);
       total = total < -most ? -most : total > most ? most : total;
-      r[o + J.motorImpulse] = total;
+      r[o + MOTOR_IMPULSE] = total;
       f.along = 0;
       f.across = 0;
       f.angular = total - accumulated;
       push(r, o, states, sa, sb, f);
     }
-    const axialMass = r[o + J.axialMass];
-    if (r[o + J.hertz] > 0) {
+    const axialMass = r[o + AXIAL_MASS];
+    if (r[o + HERTZ] > 0) {
       axialSpeed(states, sa, sb, f);
-      const accumulated = r[o + J.springImpulseSum];
-      const impulse = -r[o + J.springMass] * axialMass * (f.speed + r[o + J.springBias] * f.translation) - r[o + J.springImpulse] * accumulated;
-      r[o + J.springImpulseSum] = accumulated + impulse;
+      const accumulated = r[o + SPRING_IMPULSE_SUM];
+      const impulse = -r[o + SPRING_MASS] * axialMass * (f.speed + r[o + SPRING_BIAS] * f.translation) - r[o + SPRING_IMPULSE] * accumulated;
+      r[o + SPRING_IMPULSE_SUM] = accumulated + impulse;
       f.along = impulse;
       pushAlong(r, o, states, sa, sb, f);
     }
-    if (r[o + J.enableLimit] === 1) {
+    if (r[o + ENABLE_LIMIT] === 1) {
       axialSpeed(states, sa, sb, f);
-      limitIO[0] = f.translation - r[o + J.lower];
+      limitIO[0] = f.translation - r[o + LOWER];
       limitIO[1] = f.speed;
-      applyLimit(r, o, J.lowerImpulse, step, useBias);
+      applyLimit(r, o, LOWER_IMPULSE, step, useBias);
       f.along = limitIO[2];
       pushAlong(r, o, states, sa, sb, f);
       axialSpeed(states, sa, sb, f);
-      limitIO[0] = r[o + J.upper] - f.translation;
+      limitIO[0] = r[o + UPPER] - f.translation;
       limitIO[1] = -f.speed;
-      applyLimit(r, o, J.upperImpulse, step, useBias);
+      applyLimit(r, o, UPPER_IMPULSE, step, useBias);
       f.along = -limitIO[2];
       pushAlong(r, o, states, sa, sb, f);
     }
@@ -81,9 +84,9 @@ export const wheelJoint: JointKernel = {
       impulseScale = step.soft[2];
     }
     normalSpeed(states, sa, sb, f);
-    const accumulated = r[o + J.axialImpulse];
-    const impulse = -massScale * r[o + J.perpMass] * (f.speed + bias) - impulseScale * accumulated;
-    r[o + J.axialImpulse] = accumulated + impulse;
+    const accumulated = r[o + AXIAL_IMPULSE];
+    const impulse = -massScale * r[o + PERP_MASS] * (f.speed + bias) - impulseScale * accumulated;
+    r[o + AXIAL_IMPULSE] = accumulated + impulse;
     f.along = 0;
     f.across = impulse;
     f.angular = 0;
@@ -91,12 +94,12 @@ export const wheelJoint: JointKernel = {
   },
 
   reaction(r, o, inverseH) {
-    const along = r[o + J.springImpulseSum] + r[o + J.lowerImpulse] - r[o + J.upperImpulse];
-    const across = r[o + J.axialImpulse];
-    const ax = r[o + J.worldAxisX];
-    const ay = r[o + J.worldAxisY];
-    r[o + J.forceX] = (along * ax - across * ay) * inverseH;
-    r[o + J.forceY] = (along * ay + across * ax) * inverseH;
-    r[o + J.torque] = r[o + J.motorImpulse] * inverseH;
+    const along = r[o + SPRING_IMPULSE_SUM] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    const across = r[o + AXIAL_IMPULSE];
+    const ax = r[o + WORLD_AXIS_X];
+    const ay = r[o + WORLD_AXIS_Y];
+    r[o + FORCE_X] = (along * ax - across * ay) * inverseH;
+    r[o + FORCE_Y] = (along * ay + across * ax) * inverseH;
+    r[o + TORQUE] = r[o + MOTOR_IMPULSE] * inverseH;
   },
 };
