@@ -1,6 +1,6 @@
 import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
-import type { SceneBody, ShapeScene } from './shape-scene.js';
+import { funnelAndFloor, type SceneBody, type ShapeScene } from './shape-scene.js';
 
 export const blobsParams = {
   count: { default: 12, min: 1, max: 10000, integer: true, description: 'blobs' },
@@ -64,14 +64,7 @@ export function blobs(given?: Partial<Record<keyof typeof blobsParams, number>>)
     joints.push({ kind: 'pressure', bodies: Array.from({ length: n }, (_, i) => first + i), pressure: p.pressure });
   }
   const width = columns * pitch + 4;
-  const segments: ShapeScene['segments'] = [];
-  if (p.funnel === 1) {
-    segments.push({ x1: -width / 2, y1: -width / 2, x2: -2 * p.radius, y2: 0, thickness: 0.1 });
-    segments.push({ x1: width / 2, y1: -width / 2, x2: 2 * p.radius, y2: 0, thickness: 0.1 });
-    segments.push({ x1: -width, y1: 8, x2: width, y2: 8, thickness: 0.1 });
-    segments.push({ x1: -width, y1: 8, x2: -width, y2: -4, thickness: 0.1 });
-    segments.push({ x1: width, y1: 8, x2: width, y2: -4, thickness: 0.1 });
-  }
+  const segments = funnelAndFloor(width, 4 * p.radius, p.funnel === 1, p.funnel === 1);
   const rows = Math.ceil(p.count / columns);
   return {
     name: 'blobs',

@@ -72,3 +72,22 @@ export function buildShapeWorld(scene: ShapeScene, options: ShapeBuildOptions = 
 export function boxBody(x: number, y: number, width: number, height: number, extra: Omit<SceneBody, 'x' | 'y' | 'shapes'> = {}, material: Partial<SceneShape> = {}): SceneBody {
   return { x, y, ...extra, shapes: [{ kind: 'box', width, height, ...material } as SceneShape] };
 }
+
+/**
+ * Static walls for soft bodies poured from above: a funnel of `width` whose outlet, `outlet` wide,
+ * is at y = 0, and below it a floor at y = 8 with walls at its ends (circles roll, and a soft body
+ * on a bare floor rolls away like a wheel). Either part may be left out.
+ */
+export function funnelAndFloor(width: number, outlet: number, funnel: boolean, floor: boolean): ShapeScene['segments'] {
+  const segments: ShapeScene['segments'] = [];
+  if (funnel) {
+    segments.push({ x1: -width / 2, y1: -width / 2, x2: -outlet / 2, y2: 0, thickness: 0.1 });
+    segments.push({ x1: width / 2, y1: -width / 2, x2: outlet / 2, y2: 0, thickness: 0.1 });
+  }
+  if (floor) {
+    segments.push({ x1: -width, y1: 8, x2: width, y2: 8, thickness: 0.1 });
+    segments.push({ x1: -width, y1: 8, x2: -width, y2: -4, thickness: 0.1 });
+    segments.push({ x1: width, y1: 8, x2: width, y2: -4, thickness: 0.1 });
+  }
+  return segments;
+}

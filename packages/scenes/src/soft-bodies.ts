@@ -1,6 +1,6 @@
 import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
-import type { SceneBody, ShapeScene } from './shape-scene.js';
+import { funnelAndFloor, type SceneBody, type ShapeScene } from './shape-scene.js';
 
 export const jelliesParams = {
   count: { default: 20, min: 1, max: 10000, integer: true, description: 'jellies' },
@@ -54,17 +54,7 @@ export function jellies(given?: Partial<Record<keyof typeof jelliesParams, numbe
     }
   }
   const width = columns * (size + 1) + 4;
-  const segments: ShapeScene['segments'] = [];
-  if (p.funnel === 1) {
-    segments.push({ x1: -width / 2, y1: -width / 2, x2: -1.5, y2: 0, thickness: 0.1 });
-    segments.push({ x1: width / 2, y1: -width / 2, x2: 1.5, y2: 0, thickness: 0.1 });
-  }
-  // A floor with walls: circles roll, so a jelly on a bare floor rolls away like a wheel.
-  if (p.floor === 1) {
-    segments.push({ x1: -width, y1: 8, x2: width, y2: 8, thickness: 0.1 });
-    segments.push({ x1: -width, y1: 8, x2: -width, y2: -4, thickness: 0.1 });
-    segments.push({ x1: width, y1: 8, x2: width, y2: -4, thickness: 0.1 });
-  }
+  const segments = funnelAndFloor(width, 3, p.funnel === 1, p.floor === 1);
   const rows = Math.ceil(p.count / columns);
   return {
     name: 'jellies',

@@ -1,8 +1,9 @@
 import { J } from '../../joints/joint-layout.js';
 import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
+import { applyLimit, limitIO, turnAnchors, type JointStepContext } from './joint-kernel.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
-const { deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+const { axialMass: AXIAL_MASS, lower: LOWER, lowerImpulse: LOWER_IMPULSE, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, upper: UPPER, upperImpulse: UPPER_IMPULSE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
 
 /**
  * The frame of a joint that slides along an axis fixed in body A (prismatic, wheel), now: the
@@ -17,14 +18,9 @@ export type AxisFrame = typeof axisFrame;
 
 export function currentAxisFrame(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number): AxisFrame {
   const f = axisFrame;
+  turnAnchors(r, o, states, sa, sb, f);
   const qAc = states[sa + DQC];
   const qAs = states[sa + DQS];
-  const qBc = states[sb + DQC];
-  const qBs = states[sb + DQS];
-  f.rAx = qAc * r[o + R_AX] - qAs * r[o + R_AY];
-  f.rAy = qAs * r[o + R_AX] + qAc * r[o + R_AY];
-  f.rBx = qBc * r[o + R_BX] - qBs * r[o + R_BY];
-  f.rBy = qBs * r[o + R_BX] + qBc * r[o + R_BY];
   f.ax = qAc * r[o + WORLD_AXIS_X] - qAs * r[o + WORLD_AXIS_Y];
   f.ay = qAs * r[o + WORLD_AXIS_X] + qAc * r[o + WORLD_AXIS_Y];
   f.dx = states[sb + DPX] - states[sa + DPX] + r[o + DELTA_CENTER_X] + f.rBx - f.rAx;
@@ -98,4 +94,30 @@ export function pushAlong(r: Float64Array, o: number, states: Float64Array, sa: 
 /** Applies f.along, f.across and f.angular. */
 export function push(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: AxisFrame): void {
   applyAxisImpulse(r, o, states, sa, sb, f);
+}
+
+/** The spring along the axis, towards translation 0 (prismatic, wheel). */
+export function axialSpring(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: AxisFrame): void {
+  axialSpeed(states, sa, sb, f);
+  const accumulated = r[o + SPRING_IMPULSE_SUM];
+  const impulse = -r[o + SPRING_MASS] * r[o + AXIAL_MASS] * (f.speed + r[o + SPRING_BIAS] * f.translation) - r[o + SPRING_IMPULSE] * accumulated;
+  r[o + SPRING_IMPULSE_SUM] = accumulated + impulse;
+  f.along = impulse;
+  pushAlong(r, o, states, sa, sb, f);
+}
+
+/** The translation limits, lower then upper (prismatic, wheel). */
+export function axialLimits(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: AxisFrame, step: JointStepContext, useBias: boolean): void {
+  axialSpeed(states, sa, sb, f);
+  limitIO[0] = f.translation - r[o + LOWER];
+  limitIO[1] = f.speed;
+  applyLimit(r, o, LOWER_IMPULSE, step, useBias);
+  f.along = limitIO[2];
+  pushAlong(r, o, states, sa, sb, f);
+  axialSpeed(states, sa, sb, f);
+  limitIO[0] = r[o + UPPER] - f.translation;
+  limitIO[1] = -f.speed;
+  applyLimit(r, o, UPPER_IMPULSE, step, useBias);
+  f.along = -limitIO[2];
+  pushAlong(r, o, states, sa, sb, f);
 }

@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
-import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
-import { applyLimit, limitIO, softFromRecord, type JointKernel, type JointStepContext } from './joint-kernel.js';
+import { DPX, DPY, VX, VY, W } from '../solver-body.js';
+import { applyLimit, limitIO, softFromRecord, turnAnchors, type JointKernel, type JointStepContext } from './joint-kernel.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, length: LENGTH, lowerImpulse: LOWER_IMPULSE, maxLength: MAX_LENGTH, minLength: MIN_LENGTH, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
@@ -103,14 +103,7 @@ type Frame = typeof frame;
 
 function currentFrame(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number): Frame {
   const f = frame;
-  const qAc = states[sa + DQC];
-  const qAs = states[sa + DQS];
-  const qBc = states[sb + DQC];
-  const qBs = states[sb + DQS];
-  f.rAx = qAc * r[o + R_AX] - qAs * r[o + R_AY];
-  f.rAy = qAs * r[o + R_AX] + qAc * r[o + R_AY];
-  f.rBx = qBc * r[o + R_BX] - qBs * r[o + R_BY];
-  f.rBy = qBs * r[o + R_BX] + qBc * r[o + R_BY];
+  turnAnchors(r, o, states, sa, sb, f);
   const dx = states[sb + DPX] - states[sa + DPX] + r[o + DELTA_CENTER_X] + f.rBx - f.rAx;
   const dy = states[sb + DPY] - states[sa + DPY] + r[o + DELTA_CENTER_Y] + f.rBy - f.rAy;
   const length = Math.sqrt(dx * dx + dy * dy);

@@ -191,3 +191,23 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   states[sb + VY] = vBy + mB * py;
   states[sb + W] = wB + iB * (rBx * py - rBy * px);
 }
+
+/** Where a frame keeps the anchors from each centre of mass, in the world now. */
+export interface TurnedAnchors {
+  rAx: number;
+  rAy: number;
+  rBx: number;
+  rBy: number;
+}
+
+/** The prepared anchors turned by each body's rotation since the step began, into f. */
+export function turnAnchors(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: TurnedAnchors): void {
+  const qAc = states[sa + DQC];
+  const qAs = states[sa + DQS];
+  const qBc = states[sb + DQC];
+  const qBs = states[sb + DQS];
+  f.rAx = qAc * r[o + R_AX] - qAs * r[o + R_AY];
+  f.rAy = qAs * r[o + R_AX] + qAc * r[o + R_AY];
+  f.rBx = qBc * r[o + R_BX] - qBs * r[o + R_BY];
+  f.rBy = qBs * r[o + R_BX] + qBc * r[o + R_BY];
+}

@@ -1,10 +1,10 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
-import { applyLimit, limitIO, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
-import { axialSpeed, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame } from './axis-frame.js';
+import { prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
+import { axialLimits, axialSpring, currentAxisFrame, normalSpeed, push, startAxisFrame } from './axis-frame.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
-const { axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, lower: LOWER, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorMass: MOTOR_MASS, motorSpeed: MOTOR_SPEED, perpMass: PERP_MASS, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upper: UPPER, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+const { axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorMass: MOTOR_MASS, motorSpeed: MOTOR_SPEED, perpMass: PERP_MASS, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
 
 /**
  * A wheel joint: B's anchor stays on the line through A's anchor along A's axis (the
@@ -52,29 +52,8 @@ export const wheelJoint: JointKernel = {
       f.angular = total - accumulated;
       push(r, o, states, sa, sb, f);
     }
-    const axialMass = r[o + AXIAL_MASS];
-    if (r[o + HERTZ] > 0) {
-      axialSpeed(states, sa, sb, f);
-      const accumulated = r[o + SPRING_IMPULSE_SUM];
-      const impulse = -r[o + SPRING_MASS] * axialMass * (f.speed + r[o + SPRING_BIAS] * f.translation) - r[o + SPRING_IMPULSE] * accumulated;
-      r[o + SPRING_IMPULSE_SUM] = accumulated + impulse;
-      f.along = impulse;
-      pushAlong(r, o, states, sa, sb, f);
-    }
-    if (r[o + ENABLE_LIMIT] === 1) {
-      axialSpeed(states, sa, sb, f);
-      limitIO[0] = f.translation - r[o + LOWER];
-      limitIO[1] = f.speed;
-      applyLimit(r, o, LOWER_IMPULSE, step, useBias);
-      f.along = limitIO[2];
-      pushAlong(r, o, states, sa, sb, f);
-      axialSpeed(states, sa, sb, f);
-      limitIO[0] = r[o + UPPER] - f.translation;
-      limitIO[1] = -f.speed;
-      applyLimit(r, o, UPPER_IMPULSE, step, useBias);
-      f.along = -limitIO[2];
-      pushAlong(r, o, states, sa, sb, f);
-    }
+    if (r[o + HERTZ] > 0) axialSpring(r, o, states, sa, sb, f);
+    if (r[o + ENABLE_LIMIT] === 1) axialLimits(r, o, states, sa, sb, f, step, useBias);
     let bias = 0;
     let massScale = 1;
     let impulseScale = 0;
