@@ -1,35 +1,5 @@
-// Steps a fixed set of scenes and prints each final state hash as JSON: run by runtimes.test.ts
-// under Node and Bun (JavaScriptCore), with the WebAssembly kernels and with WebAssembly removed.
-// Plain JavaScript over the built packages, so that every runtime runs the same code.
+// Prints the state hashes of scene-hash-cases.mjs as JSON, for runtimes.test.ts to run under Node
+// and Bun; `--no-wasm` removes WebAssembly first, so that the TypeScript paths run.
 if (process.argv.includes('--no-wasm')) delete globalThis.WebAssembly;
-const { World } = await import('../../dist/index.js');
-const { buildScene, buildWorld, buildShapeScene, buildShapeWorld } = await import('../../../scenes/dist/index.js');
-
-const cases = [
-  ['uniform, maxgrid', () => buildWorld(buildScene('uniform', { n: 2000, seed: 5 }), { broadphase: 'maxgrid' })],
-  ['uniform, sap', () => buildWorld(buildScene('uniform', { n: 2000, seed: 5 }), { broadphase: 'sap' })],
-  ['uniform, hgrid', () => buildWorld(buildScene('uniform', { n: 2000, seed: 5 }), { broadphase: 'hgrid' })],
-  ['seed-box, explicit Euler', () => buildWorld(buildScene('seed-box', { n: 1500, seed: 2 }), { integrator: 'explicit-euler' })],
-  ['pyramid', () => buildShapeWorld(buildShapeScene('pyramid', { base: 20 }))],
-  ['polygon-box', () => buildShapeWorld(buildShapeScene('polygon-box', { n: 400 }))],
-  ['ragdolls', () => buildShapeWorld(buildShapeScene('ragdolls', { count: 8 }))],
-  ['car', () => buildShapeWorld(buildShapeScene('car', { bumps: 5 }))],
-  ['blobs', () => buildShapeWorld(buildShapeScene('blobs', { count: 4 }))],
-  ['jellies, force springs, rk4', () => buildShapeWorld(buildShapeScene('jellies', { count: 3, side: 4, stiffness: 800 }), { integrator: 'rk4' })],
-  [
-    'turned circles with torque',
-    () => {
-      const world = new World({ gravity: { x: 0, y: 10 }, bounds: { width: 100, height: 100 } });
-      for (let k = 0; k < 50; k++) world.createCircle({ x: 10 + k, y: 20 + (k % 7), radius: 0.4, angle: k / 3, angularVelocity: k / 5 });
-      return world;
-    },
-  ],
-];
-
-const hashes = {};
-for (const [name, build] of cases) {
-  const world = build();
-  for (let s = 0; s < 150; s++) world.step(1 / 60);
-  hashes[name] = { hash: world.stateHash(), kernels: world.backend.softStepKernel.running || world.backend.gridKernel.running || world.backend.bodyKernel.running };
-}
-console.log(JSON.stringify(hashes));
+const { sceneHashes } = await import('./scene-hash-cases.mjs');
+console.log(JSON.stringify(sceneHashes(await import('../../dist/index.js'), await import('../../../scenes/dist/index.js'))));
