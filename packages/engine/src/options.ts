@@ -30,17 +30,17 @@ export interface Vector {
 
 export interface WorldOptions {
   /** An axis-aligned box from (0, 0) to (width, height) that contains every body. Default: none. */
-  bounds?: { width: number; height: number } | null;
+  bounds?: { width: number; height: number } | null | undefined;
   /** Acceleration applied to dynamic bodies, in length units per second squared. Default (0, 0). */
-  gravity?: Vector;
+  gravity?: Vector | undefined;
   /** Restitution of the box walls and default restitution of new bodies. Default 1 (elastic). */
-  restitution?: number;
+  restitution?: number | undefined;
   /**
    * Friction of the box walls and default friction of new shapes, as `restitution` is. Default 0,
    * the report's frictionless circles; Box2D's default is 0.6. A pair's friction is the geometric
    * mean of its two. Above 0 the world takes the shape route (docs/engine.md, "The shape route").
    */
-  friction?: number;
+  friction?: number | undefined;
   /**
    * The contact solver of a world with shapes: 'soft', Box2D v3's soft step with sub-steps, which
    * holds stacks and piles; 'elastic', the report's single pass of exact impulses, which keeps the
@@ -48,126 +48,126 @@ export interface WorldOptions {
    * default): the report's circle engine while the world holds only frictionless circles, and
    * the soft step once it has any other shape, friction, or a body made with createBody.
    */
-  solver?: 'auto' | 'elastic' | 'soft';
+  solver?: 'auto' | 'elastic' | 'soft' | undefined;
   /** Sub-steps of the soft step. Default 4, as Box2D v3. An integer in [1, 64]. */
-  substeps?: number;
+  substeps?: number | undefined;
   /**
    * Length units per meter, as Box2D's b2SetLengthUnitsPerMeter and Rapier's length_unit: the
    * soft step's tolerances (linear slop 0.005 m, speculative distance 0.02 m, push-out speed
    * 3 m/s, restitution threshold 1 m/s, sleep speed 0.05 m/s, top speed 400 m/s) are scaled by it.
    * Default 1 (meters). The lab's pixel scenes use 50.
    */
-  lengthUnit?: number;
+  lengthUnit?: number | undefined;
   /** Stiffness of the soft step's contacts, as a frequency in hertz. Default 30 (Box2D). */
-  contactHertz?: number;
+  contactHertz?: number | undefined;
   /** Damping ratio of the soft step's contacts. Default 10 (Box2D). */
-  contactDampingRatio?: number;
+  contactDampingRatio?: number | undefined;
   /**
    * How hard a rigid joint pulls back to its constraint in the soft step, as a frequency in hertz
    * (at most twice the contacts'), and its damping ratio. Defaults 60 and 2 (Box2D v3's jointHertz
    * and jointDampingRatio).
    */
-  jointHertz?: number;
-  jointDampingRatio?: number;
+  jointHertz?: number | undefined;
+  jointDampingRatio?: number | undefined;
   /** The fastest a dynamic body moves, length units per second: the last stage of every step caps speeds at it. Default: with shapes 400 x lengthUnit (Box2D's maximumLinearSpeed); the circle engine 1e100, which only keeps numbers finite. At most 1e100. */
-  maxLinearSpeed?: number;
+  maxLinearSpeed?: number | undefined;
   /**
    * Collisions approaching slower than this are inelastic, as Box2D's restitution threshold:
    * lets bodies come to rest (and sleep) under gravity. Default 0 on the circle route and in the
    * elastic pass, so elastic scenes stay exact; 1 x lengthUnit in the soft step, as Box2D.
    */
-  restitutionThreshold?: number;
+  restitutionThreshold?: number | undefined;
   /**
    * Fraction of each contact's overlap (beyond `contactSlop`) that separation removes in a step.
    * Default 1: the report's mass-weighted separation, which removes it all at once. In piles under
    * gravity that pushes bodies through each other and the pile boils; 0.2, Box2D's Baumgarte factor,
    * with a small `contactSlop` lets it rest (docs/engine.md, "Piles"). In (0, 1].
    */
-  positionCorrection?: number;
+  positionCorrection?: number | undefined;
   /**
    * Overlap, in length units, that separation leaves in place, so that resting contacts persist
    * from step to step and their impulses carry the load. Default 0. About 1 % of a radius suits piles.
    */
-  contactSlop?: number;
+  contactSlop?: number | undefined;
   /**
    * Passes of the contact solve. Default 1: the report's single pass of impulses and separation.
    * More switch to sequential impulses with warm starting and the box walls as contacts (Box2D
    * v2's solver), which hold piles up; see docs/engine.md, "Piles". An integer in [1, 64].
    */
-  solverIterations?: number;
+  solverIterations?: number | undefined;
   /** Default 'auto'. */
-  broadphase?: BroadPhaseName;
+  broadphase?: BroadPhaseName | undefined;
   /**
    * Default 'semi-implicit-euler'; 'explicit-euler' is the report's exact method; 'rk4' (classical
    * Runge-Kutta) integrates force-driven springs and takes the shape route (docs/engine.md, Integrators).
    */
-  integrator?: IntegratorName;
+  integrator?: IntegratorName | undefined;
   /**
    * Let dynamic bodies that stay slower than `sleepSpeed` for `sleepTime` seconds fall asleep.
    * Default false: the report's scenes are all motion, and sleeping changes results.
    */
-  sleeping?: boolean;
+  sleeping?: boolean | undefined;
   /**
    * Speed below which a body counts as still, in length units per second. Default 1 on the circle
    * route, where one pass of impulses leaves resting bodies about |g| dt fast (keep it above that);
    * 0.05 x lengthUnit in the soft step, as Box2D. A turning body counts its rim's speed too.
    */
-  sleepSpeed?: number;
+  sleepSpeed?: number | undefined;
   /** Seconds a body must stay still before it sleeps. Default 0.5. */
-  sleepTime?: number;
+  sleepTime?: number | undefined;
   /**
    * Sweep dynamic bodies that move more than their radius in a step against static circles and
    * segments, so that none tunnels through them. Default true; the lab turns it off to match the
    * report's discrete Unity settings.
    */
-  continuous?: boolean;
+  continuous?: boolean | undefined;
   /** Record begin and end touch events each step (see `world.contactEvents()`). Default false. */
-  contactEvents?: boolean;
+  contactEvents?: boolean | undefined;
   /**
    * Record a hit event for each collision of two bodies, of a body and a segment, or of a body and
    * a box wall, whose approach speed is at least this (swept impacts included). Default: none.
    */
-  hitEventThreshold?: number;
+  hitEventThreshold?: number | undefined;
 }
 
 export interface CircleOptions {
   x: number;
   y: number;
-  vx?: number;
-  vy?: number;
+  vx?: number | undefined;
+  vy?: number | undefined;
   radius: number;
   /** Default 'dynamic'. */
-  type?: BodyType;
+  type?: BodyType | undefined;
   /** Default: the world's `restitution`. */
-  restitution?: number;
+  restitution?: number | undefined;
   /** Default density * pi * radius^2. Give `mass` or `density`, not both. */
-  mass?: number;
+  mass?: number | undefined;
   /** Mass per unit area when `mass` is not given. Default 1. */
-  density?: number;
+  density?: number | undefined;
   /** Collision layers this body belongs to, a 32-bit set. Default 1. */
-  category?: number;
+  category?: number | undefined;
   /** Layers this body collides with, a 32-bit set. Default 0xffffffff (all). */
-  mask?: number;
+  mask?: number | undefined;
   /** Multiplies the world's gravity for this body. Default 1. */
-  gravityScale?: number;
+  gravityScale?: number | undefined;
   /** Velocity decays as v / (1 + dt * linearDamping) each step, as in Box2D. Default 0. */
-  linearDamping?: number;
+  linearDamping?: number | undefined;
   /** Coulomb friction. Default: the world's `friction`. Above 0 the world takes the shape route. */
-  friction?: number;
+  friction?: number | undefined;
   /** Default 0. See MaterialOptions.rollingResistance. */
-  rollingResistance?: number;
+  rollingResistance?: number | undefined;
   /** Reports overlaps and never collides. Default false. */
-  sensor?: boolean;
+  sensor?: boolean | undefined;
   /** Radians, in the sense documented in docs/engine.md. Default 0. */
-  angle?: number;
+  angle?: number | undefined;
   /** Radians per second. Default 0. */
-  angularVelocity?: number;
+  angularVelocity?: number | undefined;
   /** Default 0. */
-  angularDamping?: number;
+  angularDamping?: number | undefined;
   /** Default false. */
-  fixedRotation?: boolean;
+  fixedRotation?: boolean | undefined;
   /** Default false. See BodyOptions.bullet. */
-  bullet?: boolean;
+  bullet?: boolean | undefined;
 }
 
 export interface ResolvedWorldOptions {
@@ -206,13 +206,13 @@ export interface SegmentOptions {
   x2: number;
   y2: number;
   /** Half the wall's width: the segment acts as a capsule of this radius. Default 0. */
-  thickness?: number;
+  thickness?: number | undefined;
   /** Default: the world's `restitution`. */
-  restitution?: number;
+  restitution?: number | undefined;
   /** Default: the world's `friction`. A segment with friction puts the world on the shape route (docs/engine.md). */
-  friction?: number;
-  category?: number;
-  mask?: number;
+  friction?: number | undefined;
+  category?: number | undefined;
+  mask?: number | undefined;
 }
 
 const WORLD_KEYS = [

@@ -62,7 +62,7 @@ export interface ShapeState {
 
 export interface QueryOptions {
   /** Only bodies whose category shares a bit with this mask. Default: all. */
-  mask?: number;
+  mask?: number | undefined;
 }
 
 /**

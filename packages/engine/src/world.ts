@@ -724,7 +724,7 @@ export class World {
    * rather than wait for workers the scheduler does not run (`stats.threads` says which ran).
    * `adaptive: false` always uses the threads, for measuring them.
    */
-  async startWorkers(workerCount: number, options: { minBodies?: number; adaptive?: boolean } = {}): Promise<void> {
+  async startWorkers(workerCount: number, options: { minBodies?: number | undefined; adaptive?: boolean | undefined } = {}): Promise<void> {
     checkWorkerCount(workerCount);
     knownKeys('startWorkers options', plainObject('startWorkers options', options), ['minBodies', 'adaptive']);
     const minBodies = options.minBodies === undefined ? DEFAULT_MIN_BODIES : nonNegativeInteger('minBodies', options.minBodies);

@@ -3,7 +3,9 @@
  * plain ES2022, whose lib has no WebAssembly declarations.
  */
 export interface KernelMemory {
-  readonly buffer: ArrayBuffer | SharedArrayBuffer;
+  // ArrayBufferLike, which includes SharedArrayBuffer where the lib has it: naming it would fail
+  // the declarations of a consumer compiling for an older target.
+  readonly buffer: ArrayBufferLike;
   grow(pages: number): number;
 }
 
