@@ -3,6 +3,7 @@ import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 import { posix } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import * as sceneModule from '@maxgrid/scenes';
 
 const root = fileURLToPath(new URL('../../../', import.meta.url));
 
@@ -21,12 +22,12 @@ describe('package exports', () => {
     expect(existsSync(`${root}packages/engine/dist/index.d.ts`)).toBe(true);
   });
 
-  it('npm pack ships the built JavaScript, its types, a README and a LICENSE, and nothing else', () => {
+  it('npm pack ships the built JavaScript, its types, a README, a LICENSE and a CHANGELOG, and nothing else', () => {
     const engine = `${root}packages/engine`;
     const [pack] = JSON.parse(execFileSync('npm', ['pack', '--dry-run', '--json', '--ignore-scripts'], { cwd: engine, stdio: ['ignore', 'pipe', 'ignore'] }).toString()) as [{ files: { path: string }[]; size: number }];
     const paths = pack.files.map((f) => f.path);
-    for (const needed of ['README.md', 'LICENSE', 'package.json', 'dist/index.js', 'dist/index.d.ts', 'dist/parallel/worker-entry.js']) expect(paths).toContain(needed);
-    expect(paths.filter((p) => !/^dist\/.*\.(js|d\.ts)$/.test(p) && !['README.md', 'LICENSE', 'package.json'].includes(p))).toEqual([]);
+    for (const needed of ['README.md', 'LICENSE', 'CHANGELOG.md', 'package.json', 'dist/index.js', 'dist/index.d.ts', 'dist/parallel/worker-entry.js']) expect(paths).toContain(needed);
+    expect(paths.filter((p) => !/^dist\/.*\.(js|d\.ts)$/.test(p) && !['README.md', 'LICENSE', 'CHANGELOG.md', 'package.json'].includes(p))).toEqual([]);
     // Every module the built entry reaches is shipped: relative imports of each shipped file resolve inside the pack.
     const shipped = new Set(paths);
     for (const file of paths.filter((p) => p.endsWith('.js'))) {
@@ -39,5 +40,20 @@ describe('package exports', () => {
     expect(Object.keys(manifest.exports['.'])[0]).toBe('types');
     expect(manifest.type).toBe('module');
     expect(manifest.engines.node).toMatch(/>=20\.19/);
+  });
+  it('npm pack of @maxgrid/scenes ships its built JavaScript and types, a README, a LICENSE and a CHANGELOG, and nothing else', () => {
+    const scenes = `${root}packages/scenes`;
+    const [pack] = JSON.parse(execFileSync('npm', ['pack', '--dry-run', '--json', '--ignore-scripts'], { cwd: scenes, stdio: ['ignore', 'pipe', 'ignore'] }).toString()) as [{ files: { path: string }[] }];
+    const paths = pack.files.map((f) => f.path);
+    for (const needed of ['README.md', 'LICENSE', 'CHANGELOG.md', 'package.json', 'dist/index.js', 'dist/index.d.ts']) expect(paths).toContain(needed);
+    expect(paths.filter((p) => !/^dist\/.*\.(js|d\.ts)$/.test(p) && !['README.md', 'LICENSE', 'CHANGELOG.md', 'package.json'].includes(p))).toEqual([]);
+    const manifest = JSON.parse(readFileSync(`${scenes}/package.json`, 'utf8')) as { exports: Record<string, Record<string, string>>; engines: { node: string } };
+    expect(Object.keys(manifest.exports['.'])[0]).toBe('types');
+    expect(manifest.engines.node).toMatch(/>=20\.19/);
+    // Its README's example, run as written.
+    const example = /```ts\n([\s\S]*?)```/.exec(readFileSync(`${scenes}/README.md`, 'utf8'))![1].replace(/^import .*$/m, '');
+    const lines: unknown[][] = [];
+    new Function('buildShapeScene', 'buildShapeWorld', 'console', example)(sceneModule.buildShapeScene, sceneModule.buildShapeWorld, { log: (...v: unknown[]) => lines.push(v) });
+    expect(lines[0][0]).toBe(20);
   });
 });
