@@ -17,3 +17,5 @@ export { BROADPHASE_NAMES } from './broadphase/registry.js';
 export type { IntegratorName } from './integrate/integrator.js';
 export { INTEGRATOR_NAMES } from './integrate/integrator.js';
 export type { GridGeometry } from './broadphase/maxgrid.js';
+export type { DebugRenderBuffers, DebugRenderOptions } from './debug-draw.js';
+export { DEBUG_COLORS } from './debug-draw.js';

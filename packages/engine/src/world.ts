@@ -41,6 +41,7 @@ import {
   type ShapeOptions,
 } from './shapes/shape-options.js';
 import * as analytics from './analytics.js';
+import { DEBUG_COLORS, DebugDraw, type DebugRenderBuffers, type DebugRenderOptions } from './debug-draw.js';
 import { JointStore } from './joints/joint-store.js';
 import { J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind } from './joints/joint-layout.js';
 import { resolveJoint, type JointOptions, type JointWorld } from './joints/joint-options.js';
@@ -1149,6 +1150,37 @@ export class World {
     }
     return v;
   }
+
+  /**
+   * The world as coloured line segments any renderer can draw (see DebugRenderBuffers): shape
+   * outlines coloured by body state, static segments and the box, joints, and contact normals,
+   * each part on unless `options` turns it off. The buffers are reused by every call.
+   */
+  debugRender(options: DebugRenderOptions = {}): DebugRenderBuffers {
+    const o = plainObject('debugRender options', options);
+    knownKeys('debugRender options', o, ['shapes', 'statics', 'joints', 'contacts', 'contactLength']);
+    const on = (field: string) => (o[field] === undefined ? true : flag(field, o[field]));
+    const shapes = on('shapes');
+    const statics = on('statics');
+    const joints = on('joints');
+    const contacts = on('contacts');
+    const contactLength = o.contactLength === undefined ? 0.2 * this.resolved.lengthUnit : nonNegativeNumber('contactLength', o.contactLength);
+    const draw = this.debugDraw;
+    draw.begin();
+    if (shapes) draw.bodies(this.bodies, this.shapes.engaged ? this.shapes.store : null);
+    if (statics) draw.statics(this.segments, this.bounds);
+    if (joints) {
+      const v = this.jointViews();
+      for (let k = 0; k < v.count; k++) draw.line(v.anchorAX[k], v.anchorAY[k], v.anchorBX[k], v.anchorBY[k], DEBUG_COLORS.joint);
+    }
+    if (contacts) {
+      const c = this.contactPoints();
+      for (let k = 0; k < c.count; k++) draw.line(c.x[k], c.y[k], c.x[k] + contactLength * c.nx[k], c.y[k] + contactLength * c.ny[k], DEBUG_COLORS.contact);
+    }
+    return draw.out;
+  }
+
+  private readonly debugDraw = new DebugDraw();
 
   /** The Max Grid of the last step (for drawing it), or null with another broad-phase. */
   gridGeometry(): GridGeometry | null {
