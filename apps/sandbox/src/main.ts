@@ -1,4 +1,4 @@
-import type { BroadPhaseName } from '@maxgrid/engine';
+import { BodyTypeCode, type BroadPhaseName } from '@maxgrid/engine';
 import { refusals } from './broadphase-budget.js';
 import { Controls, usableCores } from './controls.js';
 import { download, toCsv, toJson } from './data-export.js';
@@ -38,6 +38,7 @@ const notice = byId<HTMLParagraphElement>('notice');
 const paceLine = byId<HTMLParagraphElement>('pace');
 const pace = new Pace();
 const pauseButton = byId<HTMLButtonElement>('pause');
+const overfill = byId<HTMLParagraphElement>('overfill');
 
 const sim = new Simulation();
 const view = new ViewTransform();
@@ -65,6 +66,29 @@ const controls = new Controls(settings, {
 
 function say(message: string): void {
   notice.textContent = message;
+}
+
+/**
+ * Warns when the circles' area exceeds the box's: the quantity slider allows far more circles
+ * than fit (50,000 default circles cover 4.3 times the box), and such a world does not settle but
+ * is pushed apart for as long as it runs. Summed from the bodies, so clicks that add circles count.
+ */
+function showOverfill(): void {
+  let ratio = 0;
+  if (sim.bounded && !sim.shapes) {
+    const v = sim.world.views();
+    let area = 0;
+    for (let s = 0; s < v.slotCount; s++) if (v.type[s] === BodyTypeCode.dynamic) area += Math.PI * v.radius[s] * v.radius[s];
+    ratio = area / (sim.box.width * sim.box.height);
+  }
+  overfill.hidden = !(ratio > 1);
+  overfill.textContent = ratio > 1 ? `Circles cover ${ratio.toFixed(1)}x the box's area: they will overlap and be pushed apart.` : '';
+}
+
+/** The button names what a click will do, so a paused page does not look like a running one. */
+function showPaused(): void {
+  pauseButton.textContent = sim.paused ? 'Resume' : 'Pause';
+  pauseButton.setAttribute('aria-pressed', String(sim.paused));
 }
 
 /** Broad-phases the current world would make too slow, with why (broadphase-budget.ts). */
@@ -109,6 +133,7 @@ function rebuild(next: Settings): void {
   query.setTool(settings.tool);
   controls.show(settings, refused);
   saveUrl();
+  showOverfill();
   forceStats = true;
 }
 
@@ -175,13 +200,14 @@ function resize(): void {
 
 // Buttons and clicks refresh the numbers at once, so what is on screen matches what was done.
 function refreshStats(): void {
+  showOverfill();
   query.update(sim.world);
   monitor.update(performance.now(), sim, true);
 }
 
 pauseButton.addEventListener('click', () => {
   sim.paused = !sim.paused;
-  pauseButton.setAttribute('aria-pressed', String(sim.paused));
+  showPaused();
   refreshStats();
 });
 byId('step').addEventListener('click', () => {
@@ -203,7 +229,7 @@ attachPointer(overlay.canvas, sim, view, query, () => spawnRadius(settings.scene
 
 // Read by the renderers and the overlay every frame: kept up to date in place, never rebuilt.
 const shapes: SceneShapes = { segments: sim.segments, staticCircles: 0, sleepers: 0, joints: null };
-const overlayOptions: OverlayOptions = { grid: false, aabb: false, contacts: false, held: -1, grab: null, segments: sim.segments, touches: sim.touches, hits: sim.hits, query };
+const overlayOptions: OverlayOptions = { grid: false, aabb: false, contacts: false, held: -1, grab: null, segments: sim.segments, touches: sim.touches, hits: sim.hits, query, bounds: null };
 
 rebuild(settings);
 settings.renderer = selectRenderer(settings.renderer);
@@ -282,6 +308,7 @@ function frame(now: number): void {
   overlayOptions.grid = settings.grid;
   overlayOptions.aabb = settings.aabb;
   overlayOptions.contacts = settings.contacts;
+  overlayOptions.bounds = sim.bounded ? sim.box : null;
   overlayOptions.held = sim.dragging;
   overlayOptions.grab = sim.grabPoint();
   query.update(sim.world);

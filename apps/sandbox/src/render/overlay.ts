@@ -18,6 +18,8 @@ export interface OverlayOptions {
   touches: TouchEvents;
   hits: HitEvents;
   query: QueryTool;
+  /** The box's walls, where the grid overlay stops; null for an open scene. */
+  bounds: { x: number; y: number; width: number; height: number } | null;
 }
 
 export const RAY_COLOR = '#f0f6fc';
@@ -65,7 +67,7 @@ export class Overlay {
 
     if (o.grid) {
       const g = world.gridGeometry();
-      if (g && g.cellSize > 0) this.drawGrid(g, view);
+      if (g && g.cellSize > 0) this.drawGrid(g, view, o.bounds);
     }
     if (o.aabb) this.drawBoxes(world, o.segments);
     if (o.touches.enabled) this.drawFlashes(world, o.touches, hairline);
@@ -267,8 +269,16 @@ export class Overlay {
   }
 
   // Cells thinner than ~3 device pixels would paint the whole box grey; draw every k-th line then.
-  private drawGrid(g: GridGeometry, view: ViewTransform): void {
+  private drawGrid(g: GridGeometry, view: ViewTransform, bounds: OverlayOptions['bounds']): void {
     const ctx = this.ctx;
+    // The grid is whole cells over the circles' extent, so its last row and column can reach past
+    // the walls (up to a cell, ~19 px); no body can be there, so the picture stops at the box.
+    ctx.save();
+    if (bounds) {
+      ctx.beginPath();
+      ctx.rect(bounds.x, bounds.y, bounds.width, bounds.height);
+      ctx.clip();
+    }
     const every = Math.max(1, Math.ceil(3 / (g.cellSize * view.scale)));
     const x1 = g.originX + g.columns * g.cellSize;
     const y1 = g.originY + g.rows * g.cellSize;
@@ -286,5 +296,6 @@ export class Overlay {
       ctx.lineTo(x1, y);
     }
     ctx.stroke();
+    ctx.restore();
   }
 }

@@ -82,8 +82,9 @@ async function overlayPixelsNear(page: Page, want: number[]): Promise<number> {
   }, want);
 }
 
+/** Pauses, or resumes when paused: the button reads Pause or Resume. */
 function pause(page: Page) {
-  return page.getByRole('button', { name: 'Pause', exact: true }).click();
+  return page.locator('#pause').click();
 }
 
 describe('2D sandbox: engine features', () => {

@@ -190,8 +190,8 @@ describe('2D sandbox', () => {
   it('pauses, steps once and resets', async () => {
     const { page, errors } = await openPage(browser, '/?n=100');
     await stepsPass(page, 0, 5);
-    const pause = page.getByRole('button', { name: 'Pause', exact: true });
-    await pause.click();
+    const pause = page.locator('#pause');
+    await page.getByRole('button', { name: 'Pause', exact: true }).click();
     expect(await pause.getAttribute('aria-pressed')).toBe('true');
     const paused = await stat(page, 'steps');
     await page.waitForTimeout(400);
@@ -201,7 +201,8 @@ describe('2D sandbox', () => {
     await page.getByRole('button', { name: 'Reset', exact: true }).click();
     await expect.poll(() => stat(page, 'steps'), POLL).toBe(0);
     expect(await page.locator('#stat-time').innerText()).toBe('0.00 s');
-    await pause.click();
+    // Still paused after a reset: the button says what a click does now.
+    await page.getByRole('button', { name: 'Resume', exact: true }).click();
     await stepsPass(page, 0, 5);
     expect(errors).toEqual([]);
     await page.close();
