@@ -145,9 +145,6 @@ export class JointSolver {
     this.limits[1] = maxAngular;
     let springCount = 0;
     let pressureCount = 0;
-    const { invMass, x, y } = bodies;
-    const rigid = bodies.rigid!;
-    const { c, s, invInertia, localCenterX, localCenterY } = rigid;
     const r = store.record;
     let n = 0;
     for (let j = 0; j < store.slotCount; j++) {
@@ -173,43 +170,58 @@ export class JointSolver {
       r[o + ACTIVE] = 1;
       if (store.kind[j] === JointKind.spring) this.springSlots[springCount++] = j;
       else this.active[n++] = j;
-      r[o + STATE_A] = ia * BODY;
-      r[o + STATE_B] = ib * BODY;
-      r[o + INV_MASS_A] = ia === 0 ? 0 : invMass[a];
-      r[o + INV_INERTIA_A] = ia === 0 ? 0 : invInertia[a];
-      r[o + INV_MASS_B] = ib === 0 ? 0 : invMass[b];
-      r[o + INV_INERTIA_B] = ib === 0 ? 0 : invInertia[b];
-      const ca = a < 0 ? 1 : c[a];
-      const sa = a < 0 ? 0 : s[a];
-      const cb = c[b];
-      const sb = s[b];
-      const lax = a < 0 ? 0 : r[o + ANCHOR_AX] - localCenterX[a];
-      const lay = a < 0 ? 0 : r[o + ANCHOR_AY] - localCenterY[a];
-      const lbx = r[o + ANCHOR_BX] - localCenterX[b];
-      const lby = r[o + ANCHOR_BY] - localCenterY[b];
-      r[o + R_AX] = ca * lax - sa * lay;
-      r[o + R_AY] = sa * lax + ca * lay;
-      r[o + R_BX] = cb * lbx - sb * lby;
-      r[o + R_BY] = sb * lbx + cb * lby;
-      r[o + DELTA_CENTER_X] = x[b] - (a < 0 ? r[o + TARGET_X] : x[a]);
-      r[o + DELTA_CENTER_Y] = y[b] - (a < 0 ? r[o + TARGET_Y] : y[a]);
-      r[o + WORLD_AXIS_X] = ca * r[o + AXIS_X] - sa * r[o + AXIS_Y];
-      r[o + WORLD_AXIS_Y] = sa * r[o + AXIS_X] + ca * r[o + AXIS_Y];
-      angleIO[0] = sb * ca - cb * sa;
-      angleIO[1] = cb * ca + sb * sa;
-      atan2Into(angleIO, 0);
-      let angle = angleIO[2] - r[o + REFERENCE_ANGLE];
-      if (angle > Math.PI) angle -= 2 * Math.PI;
-      else if (angle < -Math.PI) angle += 2 * Math.PI;
-      r[o + DELTA_ANGLE] = angle;
-      if (store.kind[j] !== JointKind.spring) {
-        boundImpulses(r, o, store.kind[j], this.limits);
-        JOINT_KERNELS[store.kind[j]].prepare(r, o, step);
-      }
+      this.prepareJoint(bodies, j, o, ia, ib);
     }
     this.activeCount = n;
     this.springs.prepare(store, this.springSlots, springCount, stateCount, bodies, slotOfState, gx, gy);
     this.gas.prepare(store, this.pressureSlots, pressureCount, bodies, index);
+  }
+
+  /**
+   * The common fields of joint j (record offset o; its bodies' solver states ia, ib), then its
+   * kind's. Apart from prepare's loop so that each compiles quickly: a step that ran this in
+   * the interpreter would box every number it computes.
+   */
+  private prepareJoint(bodies: BodyStore, j: number, o: number, ia: number, ib: number): void {
+    const { store, step } = this;
+    const r = store.record;
+    const a = store.bodyA[j];
+    const b = store.bodyB[j];
+    const { invMass, x, y } = bodies;
+    const { c, s, invInertia, localCenterX, localCenterY } = bodies.rigid!;
+    r[o + STATE_A] = ia * BODY;
+    r[o + STATE_B] = ib * BODY;
+    r[o + INV_MASS_A] = ia === 0 ? 0 : invMass[a];
+    r[o + INV_INERTIA_A] = ia === 0 ? 0 : invInertia[a];
+    r[o + INV_MASS_B] = ib === 0 ? 0 : invMass[b];
+    r[o + INV_INERTIA_B] = ib === 0 ? 0 : invInertia[b];
+    const ca = a < 0 ? 1 : c[a];
+    const sa = a < 0 ? 0 : s[a];
+    const cb = c[b];
+    const sb = s[b];
+    const lax = a < 0 ? 0 : r[o + ANCHOR_AX] - localCenterX[a];
+    const lay = a < 0 ? 0 : r[o + ANCHOR_AY] - localCenterY[a];
+    const lbx = r[o + ANCHOR_BX] - localCenterX[b];
+    const lby = r[o + ANCHOR_BY] - localCenterY[b];
+    r[o + R_AX] = ca * lax - sa * lay;
+    r[o + R_AY] = sa * lax + ca * lay;
+    r[o + R_BX] = cb * lbx - sb * lby;
+    r[o + R_BY] = sb * lbx + cb * lby;
+    r[o + DELTA_CENTER_X] = x[b] - (a < 0 ? r[o + TARGET_X] : x[a]);
+    r[o + DELTA_CENTER_Y] = y[b] - (a < 0 ? r[o + TARGET_Y] : y[a]);
+    r[o + WORLD_AXIS_X] = ca * r[o + AXIS_X] - sa * r[o + AXIS_Y];
+    r[o + WORLD_AXIS_Y] = sa * r[o + AXIS_X] + ca * r[o + AXIS_Y];
+    angleIO[0] = sb * ca - cb * sa;
+    angleIO[1] = cb * ca + sb * sa;
+    atan2Into(angleIO, 0);
+    let angle = angleIO[2] - r[o + REFERENCE_ANGLE];
+    if (angle > Math.PI) angle -= 2 * Math.PI;
+    else if (angle < -Math.PI) angle += 2 * Math.PI;
+    r[o + DELTA_ANGLE] = angle;
+    if (store.kind[j] !== JointKind.spring) {
+      boundImpulses(r, o, store.kind[j], this.limits);
+      JOINT_KERNELS[store.kind[j]].prepare(r, o, step);
+    }
   }
 
   /** Each sub-step, before its velocity update: the springs' forces, as the integrator says. */
