@@ -9,7 +9,7 @@ import { nodeEnvironment } from './machine.js';
 import { writeCharts, writeText } from './output.js';
 import { runExperiment } from './run.js';
 
-const ORDER = ['step-time', 'energy', 'false-positives', 'scale', 'sap-sleep', 'cliffs', 'threads-load', 'piles', 'shape-step-time', 'stability', 'shape-energy', 'shape-false-positives', 'c-maxgrid', 'targets', 'sandbox-render'] as const;
+const ORDER = ['step-time', 'energy', 'false-positives', 'scale', 'sap-sleep', 'cliffs', 'threads-load', 'piles', 'shape-step-time', 'stability', 'shape-energy', 'shape-false-positives', 'joints', 'integrators', 'c-maxgrid', 'targets', 'sandbox-render'] as const;
 
 export interface ResultsRequest {
   profile: Profile;
