@@ -2,7 +2,7 @@ import type { BodyStore } from './store/body-store.js';
 import { TypeCode } from './store/body-types.js';
 import type { SegmentStore } from './store/segment-store.js';
 import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type ShapeStore } from './store/shape-store.js';
-import { ShapeKind } from './shapes/geometry.js';
+import { MAX_POLYGON_VERTICES, ShapeKind } from './shapes/geometry.js';
 import { cosSin } from './math/trig.js';
 import { grownCapacity } from './util/grow.js';
 
@@ -52,6 +52,8 @@ for (let k = 0; k <= ROUND; k++) {
   AROUND[2 * k] = at[0];
   AROUND[2 * k + 1] = at[1];
 }
+
+const placed = new Float64Array(2 * MAX_POLYGON_VERTICES);
 
 /** Fills the buffers; the world hands it its stores. */
 export class DebugDraw {
@@ -123,18 +125,23 @@ export class DebugDraw {
     const base = k * SHAPE_STRIDE + SHAPE_VERTICES;
     const r = shapes.radius[k];
     const n = shapes.vertexCount[k];
-    const wx = (v: number) => px + c * record[base + v * VERTEX] - s * record[base + v * VERTEX + 1];
-    const wy = (v: number) => py + s * record[base + v * VERTEX] + c * record[base + v * VERTEX + 1];
     const kind = shapes.kind[k];
+    // The shape's vertices in the world, into a scratch array reused by every shape.
+    for (let v = 0; v < n; v++) {
+      const lx = record[base + v * VERTEX];
+      const ly = record[base + v * VERTEX + 1];
+      placed[2 * v] = px + c * lx - s * ly;
+      placed[2 * v + 1] = py + s * lx + c * ly;
+    }
     if (kind === ShapeKind.circle) {
-      this.circle(wx(0), wy(0), r, c, s, color);
+      this.circle(placed[0], placed[1], r, c, s, color);
       return;
     }
     if (kind === ShapeKind.capsule) {
-      const ax = wx(0);
-      const ay = wy(0);
-      const bx = wx(1);
-      const by = wy(1);
+      const ax = placed[0];
+      const ay = placed[1];
+      const bx = placed[2];
+      const by = placed[3];
       const length = Math.sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay));
       const ux = length > 0 ? (bx - ax) / length : c;
       const uy = length > 0 ? (by - ay) / length : s;
@@ -152,7 +159,7 @@ export class DebugDraw {
       const ny = record[base + v * VERTEX + 3];
       const ox = r * (c * nx - s * ny);
       const oy = r * (s * nx + c * ny);
-      this.line(wx(v) + ox, wy(v) + oy, wx(w) + ox, wy(w) + oy, color);
+      this.line(placed[2 * v] + ox, placed[2 * v + 1] + oy, placed[2 * w] + ox, placed[2 * w + 1] + oy, color);
     }
   }
 

@@ -1244,6 +1244,7 @@ export class World {
       return rigid ? atan2(rigid.s[slot], rigid.c[slot]) : 0;
     },
     isDynamic: (slot) => this.bodies.type[slot] === TypeCode.dynamic,
+    ringArea: (ring) => this.ringArea(ring),
     mass: (slot) => this.bodies.mass[slot],
     gravity: () => {
       const g = this.pipeline.settings.gravity;

@@ -10,7 +10,8 @@ export const JOINT_KIND_NAMES = Object.keys(JointKind) as JointKindName[];
  *
  * The solver's modules copy these into constants of their own (`const { rAX: R_AX } = J`): V8
  * folds a module's own constant numbers into the code, where a property of an imported object is
- * loaded at every use; on a lattice of distance joints that took a joint's pass from 90 to 65 ns.
+ * loaded at every use; a lattice of distance joints solved about 17 % faster for it (three
+ * alternating runs against the build before).
  */
 export const J = {
   // Definition. Anchors in each body's own frame, from its origin.

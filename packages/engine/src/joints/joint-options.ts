@@ -175,6 +175,8 @@ export interface JointWorld {
   /** Body `slot`'s angle (its rotation's, by the engine's own atan2). */
   angle(slot: number): number;
   isDynamic(slot: number): boolean;
+  /** The area of the polygon through a ring of bodies' centres of mass. */
+  ringArea(ring: Int32Array): number;
   mass(slot: number): number;
   gravity(): number;
 }
@@ -245,21 +247,13 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     if (o.bodies.length < 3) throw new RangeError(`bodies must hold at least 3 bodies for a ring, got ${o.bodies.length}`);
     const ring = new Int32Array(o.bodies.length);
     let dynamic = false;
-    let twice = 0;
     for (let k = 0; k < ring.length; k++) {
       ring[k] = world.bodySlot(`bodies[${k}]`, o.bodies[k]);
       if (ring.indexOf(ring[k]) < k) throw new RangeError(`bodies[${k}] (${describeValue(o.bodies[k])}) is already in the ring: its bodies must be distinct`);
       if (world.isDynamic(ring[k])) dynamic = true;
     }
     if (!dynamic) throw new RangeError('bodies are all static or kinematic: a pressure joint needs a dynamic body to act on');
-    for (let k = 0; k < ring.length; k++) {
-      world.localCenter(ring[k], point);
-      world.worldPoint(ring[k], point[0], point[1], point);
-      world.localCenter(ring[(k + 1) % ring.length], pointB);
-      world.worldPoint(ring[(k + 1) % ring.length], pointB[0], pointB[1], pointB);
-      twice += point[0] * pointB[1] - pointB[0] * point[1];
-    }
-    const area = Math.abs(0.5 * twice);
+    const area = world.ringArea(ring);
     if (!(area > 0)) throw new RangeError(`the ring's bodies enclose no area (${area}): a pressure joint needs a ring around a space`);
     if (o.pressure === undefined) throw new TypeError('pressure must be a finite number, got undefined (a pressure joint needs one)');
     r[J.stiffness] = boundedNonNegative('pressure', o.pressure);

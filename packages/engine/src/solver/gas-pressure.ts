@@ -28,6 +28,9 @@ export class GasPressure {
   private baseX = new Float64Array(0);
   private baseY = new Float64Array(0);
   private invMass = new Float64Array(0);
+  /** Per ring member, its position in the current sub-step. */
+  private px = new Float64Array(0);
+  private py = new Float64Array(0);
   private start = new Int32Array(0);
 
   prepare(store: JointStore, joints: Int32Array, count: number, bodies: BodyStore, index: Int32Array): void {
@@ -45,6 +48,8 @@ export class GasPressure {
       this.baseX = new Float64Array(capacity);
       this.baseY = new Float64Array(capacity);
       this.invMass = new Float64Array(capacity);
+      this.px = new Float64Array(capacity);
+      this.py = new Float64Array(capacity);
     }
     let m = 0;
     for (let k = 0; k < count; k++) {
@@ -65,19 +70,20 @@ export class GasPressure {
   /** Each sub-step, before the velocity update: every ring's pressure on its bodies over h. */
   apply(r: Float64Array, states: Float64Array, step: { h: number }): void {
     const h = step.h;
-    const { state, baseX, baseY, invMass, start } = this;
+    const { state, baseX, baseY, invMass, start, px, py } = this;
     for (let k = 0; k < this.count; k++) {
       const o = this.joints[k] * JOINT_STRIDE;
       const from = start[k];
       const to = start[k + 1];
+      // Where each body is now, once: only velocities change below.
+      for (let i = from; i < to; i++) {
+        px[i] = baseX[i] + states[state[i] + DPX];
+        py[i] = baseY[i] + states[state[i] + DPY];
+      }
       let twice = 0;
       for (let i = from; i < to; i++) {
         const j = i + 1 === to ? from : i + 1;
-        const xi = baseX[i] + states[state[i] + DPX];
-        const yi = baseY[i] + states[state[i] + DPY];
-        const xj = baseX[j] + states[state[j] + DPX];
-        const yj = baseY[j] + states[state[j] + DPY];
-        twice += xi * yj - xj * yi;
+        twice += px[i] * py[j] - px[j] * py[i];
       }
       const rest = r[o + LENGTH];
       const area = Math.max(Math.abs(0.5 * twice), LEAST_AREA * rest);
@@ -87,8 +93,8 @@ export class GasPressure {
       const share = 0.5 * h * p;
       for (let i = from; i < to; i++) {
         const j = i + 1 === to ? from : i + 1;
-        const ex = baseX[j] + states[state[j] + DPX] - (baseX[i] + states[state[i] + DPX]);
-        const ey = baseY[j] + states[state[j] + DPY] - (baseY[i] + states[state[i] + DPY]);
+        const ex = px[j] - px[i];
+        const ey = py[j] - py[i];
         const ix = share * ey;
         const iy = -share * ex;
         const si = state[i];
@@ -106,6 +112,6 @@ export class GasPressure {
   }
 
   memoryBytes(): number {
-    return this.joints.byteLength + this.start.byteLength + this.state.byteLength + this.baseX.byteLength * 3;
+    return this.joints.byteLength + this.start.byteLength + this.state.byteLength + this.baseX.byteLength * 5;
   }
 }
