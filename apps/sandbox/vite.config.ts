@@ -6,9 +6,9 @@ const ISOLATION = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-E
 
 const page = (name: string) => fileURLToPath(new URL(`./${name}`, import.meta.url));
 
-// Three pages: the 2D sandbox (index), the report's three.js + cannon-es exploration (3d), and the
-// lab's browser runner (lab). The workspace packages are served from source, so edits to the
-// engine show up without a rebuild.
+// The pages: the 2D sandbox (index), the report's three.js + cannon-es exploration (3d), the lab's
+// browser runner (lab), and the debug-draw examples (examples/). The workspace packages are served
+// from source, so edits to the engine show up without a rebuild.
 export default defineConfig({
   root: fileURLToPath(new URL('.', import.meta.url)),
   resolve: { alias: workspaceAliases },
@@ -25,6 +25,15 @@ export default defineConfig({
   preview: { host: '127.0.0.1', port: 4173, headers: ISOLATION },
   build: {
     target: 'es2022',
-    rollupOptions: { input: { index: page('index.html'), '3d': page('3d.html'), lab: page('lab.html') } },
+    rollupOptions: {
+      input: {
+        index: page('index.html'),
+        '3d': page('3d.html'),
+        lab: page('lab.html'),
+        'debug-canvas': page('examples/debug-canvas.html'),
+        'debug-pixi': page('examples/debug-pixi.html'),
+        'debug-three': page('examples/debug-three.html'),
+      },
+    },
   },
 });
