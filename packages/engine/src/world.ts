@@ -53,6 +53,7 @@ import type { StepStats } from './step/stats.js';
 import type { CircleIntegratorName, IntegratorName } from './integrate/integrator.js';
 import { MAX_DT, MAX_MAGNITUDE, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
 import { flag } from './options.js';
+import { copyOptions, field, holdsObject, numberField, readSnapshot, writeOnto, writeSnapshot } from './snapshot/world-snapshot.js';
 import {
   bodyType,
   broadphaseName,
@@ -95,6 +96,8 @@ export class World {
   private readonly defaultRestitution: number;
   private readonly defaultFriction: number;
   private readonly resolved: ResolvedWorldOptions;
+  /** The options as given, for World.restore to build a world of the same configuration. */
+  private readonly creation: Record<string, unknown>;
   private readonly queries = new Queries(this.bodies);
   private readonly disturbances = new Disturbances();
   private readonly shapes = new BodyShapes(this.bodies);
@@ -162,6 +165,7 @@ export class World {
 
   constructor(options: WorldOptions = {}) {
     const resolved = resolveWorldOptions(options);
+    this.creation = copyOptions(options) as Record<string, unknown>;
     this.resolved = resolved;
     this.bounds = resolved.bounds;
     this.bodies.box = resolved.bounds;
@@ -234,6 +238,67 @@ export class World {
   /** Statistics of the last step; the same object is updated in place by every step. */
   get stats(): Readonly<StepStats> {
     return this.pipeline.stats;
+  }
+
+  /**
+   * The world's whole state as bytes: bodies, shapes, segments, joints, contacts with their
+   * warm-start impulses, sleep timers, pending forces and events, free handles, options. A world
+   * restored from them (World.restore, or restore in place) steps to exactly the same bits as
+   * this one from here on, in any runtime. Worker threads are not part of it. Allocates: take one
+   * when the game needs one, not every frame of a large world.
+   */
+  snapshot(): Uint8Array {
+    return writeSnapshot(this);
+  }
+
+  /**
+   * A new world from `snapshot()`'s bytes, stepping to the same bits as the world they came from
+   * (without worker threads: start them again). A corrupt, cut, or future-format snapshot, or one
+   * an engine with another state layout wrote, is a RangeError saying so; nothing is built.
+   */
+  static restore(snapshot: Uint8Array): World {
+    const read = readSnapshot(snapshot);
+    const world = new World(read.options as WorldOptions);
+    const state = read.state;
+    if (holdsObject(field(state, 'bodies', 'rigid'))) world.useRigid();
+    if (holdsObject(field(state, 'shapeRoute'))) world.engage();
+    if (holdsObject(field(state, 'joints'))) world.useJoints();
+    if (holdsObject(field(state, 'pipeline', 'events'))) world.useEvents();
+    const capacity = numberField(field(state, 'bodies', 'capacity'));
+    if (capacity > 0) world.bodies.reserve(capacity);
+    writeOnto(world, read);
+    // Columns a parallel step had moved onto shared memory come back to this thread's own.
+    if (world.bodies.shared) world.bodies.setShared(false);
+    if (world.pipeline.contacts.shared) world.pipeline.contacts.setShared(false);
+    // Caches keyed on these versions (views of columns, grids, trees) were copied as they were in
+    // the original, over its memory: new versions make each remake itself over this world's.
+    world.bodies.layoutVersion++;
+    world.bodies.membershipVersion++;
+    world.bodies.staticFlips++;
+    world.shapes.store.version++;
+    world.segments.version++;
+    world.staticVersion++;
+    world.geometryVersion++;
+    return world;
+  }
+
+  /**
+   * Turns this world into the one `snapshot` was taken of, keeping this object: handles held
+   * from before are as valid as they were when the snapshot was taken. Stops worker threads;
+   * views(), stats and other objects read before must be read again. A snapshot that is refused
+   * (see World.restore) leaves this world unchanged.
+   */
+  restore(snapshot: Uint8Array): void {
+    const restored = World.restore(snapshot);
+    this.stopWorkers();
+    const starts = this.workerStarts;
+    const self = this as unknown as Record<string, unknown>;
+    for (const [key, value] of Object.entries(restored)) {
+      // Callbacks that read this world's fields stay this world's: the restored fields move here.
+      if (value !== null && typeof value === 'object' && Object.values(value).every((item) => typeof item === 'function')) continue;
+      self[key] = value;
+    }
+    this.workerStarts = starts + 1;
   }
 
   createCircle(options: CircleOptions): number {

@@ -54,25 +54,36 @@ export interface StepStats {
   threads: number;
 }
 
+/**
+ * A class rather than an object literal so that snapshots can tell it apart: its timings are
+ * measurements of this machine, not state, and are left out (see TIMINGS).
+ */
+class StepStatsRecord implements StepStats {
+  steps = 0;
+  bodies = 0;
+  pairTests = 0;
+  candidatePairs = 0;
+  contacts = 0;
+  segmentContacts = 0;
+  sweptBodies = 0;
+  filteredPairs = 0;
+  sleepingBodies = 0;
+  integrateMs = 0;
+  boundaryMs = 0;
+  broadphaseMs = 0;
+  narrowphaseMs = 0;
+  solveMs = 0;
+  correctMs = 0;
+  reportMs = 0;
+  totalMs = 0;
+  threads = 1;
+}
+
+export { StepStatsRecord };
+
+/** The stage timings of StepStats. */
+export const TIMINGS = ['integrateMs', 'boundaryMs', 'broadphaseMs', 'narrowphaseMs', 'solveMs', 'correctMs', 'reportMs', 'totalMs'];
+
 export function emptyStats(): StepStats {
-  return {
-    steps: 0,
-    bodies: 0,
-    pairTests: 0,
-    candidatePairs: 0,
-    contacts: 0,
-    segmentContacts: 0,
-    sweptBodies: 0,
-    filteredPairs: 0,
-    sleepingBodies: 0,
-    integrateMs: 0,
-    boundaryMs: 0,
-    broadphaseMs: 0,
-    narrowphaseMs: 0,
-    solveMs: 0,
-    correctMs: 0,
-    reportMs: 0,
-    totalMs: 0,
-    threads: 1,
-  };
+  return new StepStatsRecord();
 }

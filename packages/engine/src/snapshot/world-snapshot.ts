@@ -1,0 +1,94 @@
+import { applyState, captureState, hostResource, lazyPart, StateMismatch, transientFields, type StateValue } from './state-graph.js';
+import { decodeSnapshot, encodeSnapshot } from './snapshot-format.js';
+import { BodyKernel } from '../store/body-kernel.js';
+import { GridKernel } from '../broadphase/grid-kernel.js';
+import { SoftStepKernel } from '../solver/soft-step-kernel.js';
+import { ContactSorter } from '../store/contact-sorter.js';
+import { ParallelStep } from '../parallel/parallel-step.js';
+import { SoftStep } from '../solver/soft-step.js';
+import { StaticTree } from '../broadphase/static-tree.js';
+import { CellGrid } from '../broadphase/cell-grid.js';
+import { PairSink } from '../store/pair-sink.js';
+import { StepStatsRecord, TIMINGS } from '../step/stats.js';
+
+/** The engine's version, written into every snapshot so that a refusal can say who wrote it. */
+export const ENGINE_VERSION = '0.1.0';
+
+// Kernels own WebAssembly instances over memories a step fills afresh; a parallel step owns threads.
+for (const ctor of [BodyKernel, GridKernel, SoftStepKernel, ContactSorter, ParallelStep]) hostResource(ctor);
+// The soft step gathers these afresh each step, into its kernel's memory where it has one.
+transientFields(SoftStep, ['states', 'constraints', 'pairs']);
+// A broad-phase's chunk of candidates is handed on within the step that found them.
+transientFields(PairSink, ['a', 'b', 'consumerMs']);
+// Timings measure the machine, not the world: left out, a snapshot is the same bytes wherever it is taken.
+transientFields(StepStatsRecord, TIMINGS);
+lazyPart('StaticTree', StaticTree);
+lazyPart('CellGrid', CellGrid);
+
+/** The snapshot of `world`, whose field `creation` holds the options it was built with. */
+export function writeSnapshot(world: object): Uint8Array {
+  return encodeSnapshot({ engineVersion: ENGINE_VERSION, state: captureState(world) });
+}
+
+export interface ReadSnapshot {
+  state: StateValue;
+  /** The options the world was built with, to build the world the state is written onto. */
+  options: Record<string, unknown>;
+  engineVersion: string;
+}
+
+/** Checks a snapshot's bytes and reads them; a TypeError or RangeError says what is wrong. */
+export function readSnapshot(bytes: unknown): ReadSnapshot {
+  if (!(bytes instanceof Uint8Array)) {
+    throw new TypeError(`snapshot must be a Uint8Array (from world.snapshot()), got ${bytes === null ? 'null' : typeof bytes === 'object' ? (bytes as object).constructor?.name ?? 'an object' : typeof bytes}`);
+  }
+  const content = decodeSnapshot(bytes, ENGINE_VERSION);
+  const creation = field(content.state, 'creation');
+  if (creation === null || creation.t !== 'object' || creation.name !== '') throw mismatch(content.engineVersion, 'the world options are missing');
+  const options: Record<string, unknown> = {};
+  applyState(options, creation);
+  return { state: content.state, options, engineVersion: content.engineVersion };
+}
+
+/** A field of an object node of the tree, or null where the node is no object or lacks it. */
+export function field(node: StateValue | null, ...path: string[]): StateValue | null {
+  for (const key of path) {
+    if (node === null || node.t !== 'object') return null;
+    const found = node.fields.find(([k]) => k === key);
+    node = found ? found[1] : null;
+  }
+  return node;
+}
+
+/** Whether a field of the tree holds an object (a lazily made part the original world had). */
+export function holdsObject(node: StateValue | null): boolean {
+  return node !== null && (node.t === 'object' || node.t === 'ref');
+}
+
+/** A number field of the tree, or NaN. */
+export function numberField(node: StateValue | null): number {
+  return node !== null && node.t === 'value' && typeof node.v === 'number' ? node.v : NaN;
+}
+
+/** Writes the state onto `world` (freshly built, its lazy parts made); a RangeError where it does not fit. */
+export function writeOnto(world: object, read: ReadSnapshot): void {
+  try {
+    applyState(world, read.state);
+  } catch (error) {
+    if (error instanceof StateMismatch) throw mismatch(read.engineVersion, error.message);
+    throw error;
+  }
+}
+
+function mismatch(writtenBy: string, detail: string): RangeError {
+  return new RangeError(`snapshot does not match this engine's state layout (written by @maxgrid/engine ${writtenBy}, this is ${ENGINE_VERSION}): ${detail}`);
+}
+
+/** A deep copy of plain options data, kept by a world so that a snapshot can rebuild it. */
+export function copyOptions(value: unknown): unknown {
+  if (value === null || typeof value !== 'object') return value;
+  if (Array.isArray(value)) return value.map(copyOptions);
+  const out: Record<string, unknown> = {};
+  for (const [key, item] of Object.entries(value)) out[key] = copyOptions(item);
+  return out;
+}

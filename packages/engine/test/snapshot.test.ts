@@ -1,0 +1,221 @@
+import { describe, expect, it } from 'vitest';
+import fc from 'fast-check';
+import { SCENES, SHAPE_SCENES, buildWorld, buildShapeWorld } from '@maxgrid/scenes';
+import { World, type ContactEventsView } from '../src/index.js';
+import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
+import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
+import { setSoftStepKernelEnabled } from '../src/solver/soft-step-kernel.js';
+
+const DT = 1 / 60;
+
+/** Small versions of every scene, so that each one's features (joints, rings, segments, sleep) are covered quickly. */
+const SHAPE_PARAMS: Record<string, Record<string, number>> = {
+  pyramid: { base: 20 },
+  'many-pyramids': { rows: 2, columns: 2 },
+  'joint-grid': { size: 12 },
+  'uniform-polygons': { n: 300 },
+  'polygon-box': { n: 300 },
+  tumbler: { grid: 12 },
+  ragdolls: { count: 8 },
+  jellies: { count: 6 },
+  blobs: { count: 6 },
+};
+
+const CASES: [string, () => World][] = [
+  ...Object.keys(SCENES).map((name): [string, () => World] => {
+    const scene = SCENES[name as keyof typeof SCENES];
+    const params = 'n' in scene.params ? { n: 300 } : {};
+    return [name, () => buildWorld(scene.build(params))];
+  }),
+  ...Object.keys(SHAPE_SCENES).map((name): [string, () => World] => [name, () => buildShapeWorld(SHAPE_SCENES[name as keyof typeof SHAPE_SCENES].build(SHAPE_PARAMS[name] ?? {}))]),
+];
+
+function stepped(make: () => World, steps: number): World {
+  const world = make();
+  for (let s = 0; s < steps; s++) world.step(DT);
+  return world;
+}
+
+/** The state hash after each of `steps` steps. */
+function trace(world: World, steps: number): string[] {
+  const out: string[] = [];
+  for (let s = 0; s < steps; s++) {
+    world.step(DT);
+    out.push(world.stateHash());
+  }
+  return out;
+}
+
+describe('snapshots', () => {
+  it.each(CASES)('%s: a restored world steps to the same bits as the original, new or in place', (_name, make) => {
+    const original = stepped(make, 25);
+    const bytes = original.snapshot();
+    const restored = World.restore(bytes);
+    // In place, over a world that has gone elsewhere meanwhile.
+    const inPlace = stepped(make, 40);
+    inPlace.restore(bytes);
+    expect(restored.stateHash()).toBe(original.stateHash());
+    expect(inPlace.stateHash()).toBe(original.stateHash());
+    const expected = trace(original, 40);
+    expect(trace(restored, 40)).toEqual(expected);
+    expect(trace(inPlace, 40)).toEqual(expected);
+  });
+
+  it('without the WebAssembly kernels too, and a snapshot crosses between the two', () => {
+    const names = ['uniform', 'funnel', 'pyramid', 'bridge', 'blobs'];
+    for (const [name, make] of CASES.filter(([n]) => names.includes(n))) {
+      const withKernels = stepped(make, 20);
+      const bytes = withKernels.snapshot();
+      const expected = trace(withKernels, 30);
+      setGridKernelEnabled(false);
+      setBodyKernelEnabled(false);
+      setSoftStepKernelEnabled(false);
+      try {
+        const plain = World.restore(bytes);
+        expect(plain.backend.gridKernel.running || plain.backend.bodyKernel.running || plain.backend.softStepKernel.running, name).toBe(false);
+        expect(trace(plain, 30), name).toEqual(expected);
+        const back = stepped(make, 20);
+        const plainBytes = back.snapshot();
+        setGridKernelEnabled(true);
+        setBodyKernelEnabled(true);
+        setSoftStepKernelEnabled(true);
+        expect(trace(World.restore(plainBytes), 30), `${name}, taken without kernels`).toEqual(expected);
+      } finally {
+        setGridKernelEnabled(true);
+        setBodyKernelEnabled(true);
+        setSoftStepKernelEnabled(true);
+      }
+    }
+  });
+
+  it('handles: held ones stay valid, and the next bodies, shapes and joints get the same handles', () => {
+    const make = CASES.find(([n]) => n === 'ragdolls')![1];
+    const original = stepped(make, 10);
+    const held = original.handles();
+    // Holes in the slot lists, so that the free lists decide the next handles.
+    original.destroyBody(held[3]);
+    original.destroyBody(held[7]);
+    original.destroyJoint(original.jointHandles()[2]);
+    const bytes = original.snapshot();
+    const other = stepped(make, 30);
+    other.restore(bytes);
+    for (const h of held.filter((_, i) => i !== 3 && i !== 7)) expect(other.getBody(h)).toEqual(original.getBody(h));
+    expect(other.hasBody(held[3])).toBe(false);
+    expect(other.jointHandles()).toEqual(original.jointHandles());
+    const next = (w: World) => {
+      const a = w.createBox({ x: 0, y: -5, width: 1, height: 1 });
+      const b = w.createCircle({ x: 2, y: -5, radius: 0.5, friction: 0.5 });
+      const j = w.createJoint({ kind: 'distance', bodyA: a, bodyB: b });
+      return [a, b, j, w.getBody(a).shapes[0]];
+    };
+    expect(next(other)).toEqual(next(original));
+    expect(trace(other, 20)).toEqual(trace(original, 20));
+  });
+
+  it('carries options, pending forces, sleep and events into the restored world', () => {
+    const world = new World({ bounds: { width: 40, height: 40 }, gravity: { x: 0, y: -9 }, friction: 0.4, restitution: 0.2, contactEvents: true, sleeping: true, broadphase: 'sap' });
+    world.createBox({ x: 20, y: 1, width: 40, height: 2, type: 'static' });
+    const boxes = Array.from({ length: 6 }, (_, i) => world.createBox({ x: 10 + 3 * i, y: 4, width: 1, height: 1 }));
+    for (let s = 0; s < 200; s++) world.step(DT);
+    world.applyForce(boxes[0], 50, 0);
+    world.setGravity(1, -9);
+    const bytes = world.snapshot();
+    const restored = World.restore(bytes);
+    expect(restored.gravity).toEqual({ x: 1, y: -9 });
+    expect(restored.broadphase).toBe('sap');
+    expect(restored.friction).toBe(0.4);
+    expect(restored.getBody(boxes[5]).awake).toBe(world.getBody(boxes[5]).awake);
+    const events = (w: World) => {
+      const e: ContactEventsView = w.contactEvents();
+      return [e.shapeBeginCount, [...e.shapeBeginA.subarray(0, e.shapeBeginCount)], e.shapeEndCount, [...e.shapeEndA.subarray(0, e.shapeEndCount)]];
+    };
+    for (let s = 0; s < 30; s++) {
+      world.step(DT);
+      restored.step(DT);
+      expect(events(restored)).toEqual(events(world));
+    }
+    expect(restored.stateHash()).toBe(world.stateHash());
+  });
+
+  it('a world with worker threads snapshots, and its restored twin steps to the same bits', async () => {
+    const make = () => buildWorld(SCENES.uniform.build({ n: 3000 }), { broadphase: 'maxgrid' });
+    const world = make();
+    await world.startWorkers(2, { minBodies: 0, adaptive: false });
+    try {
+      for (let s = 0; s < 10; s++) world.step(DT);
+      const bytes = world.snapshot();
+      const restored = World.restore(bytes);
+      expect(restored.workerCount).toBe(1);
+      expect(trace(restored, 20)).toEqual(trace(world, 20));
+      // In place over the threaded world: its threads stop, the bits go on.
+      const twin = World.restore(bytes);
+      world.restore(bytes);
+      expect(world.workerCount).toBe(1);
+      expect(trace(world, 10)).toEqual(trace(twin, 10));
+    } finally {
+      world.stopWorkers();
+    }
+  });
+
+  describe('refused snapshots say why and build nothing', () => {
+    const source = stepped(CASES.find(([n]) => n === 'bridge')![1], 5);
+    const bytes = source.snapshot();
+
+    function expectRefusedInPlace(bad: unknown, message: RegExp, Kind: typeof TypeError | typeof RangeError = RangeError) {
+      const world = stepped(CASES.find(([n]) => n === 'bridge')![1], 9);
+      const hash = world.stateHash();
+      expect(() => world.restore(bad as Uint8Array)).toThrow(Kind);
+      expect(() => world.restore(bad as Uint8Array)).toThrow(message);
+      expect(() => World.restore(bad as Uint8Array)).toThrow(message);
+      expect(world.stateHash()).toBe(hash);
+      const twin = stepped(CASES.find(([n]) => n === 'bridge')![1], 9);
+      expect(trace(world, 10)).toEqual(trace(twin, 10));
+    }
+
+    it('not bytes', () => {
+      expectRefusedInPlace('abc', /snapshot must be a Uint8Array.*string/, TypeError);
+      expectRefusedInPlace(null, /snapshot must be a Uint8Array.*null/, TypeError);
+      expectRefusedInPlace(Array.from(bytes), /snapshot must be a Uint8Array.*Array/, TypeError);
+    });
+
+    it('truncated, at any length', () => {
+      for (const length of [0, 3, 15, 16, 17, bytes.length >> 1, bytes.length - 1]) expectRefusedInPlace(bytes.subarray(0, length), /truncated/);
+    });
+
+    it('not a snapshot, or bytes past its end', () => {
+      expectRefusedInPlace(new Uint8Array(64), /not a maxgrid snapshot/);
+      const longer = new Uint8Array(bytes.length + 3);
+      longer.set(bytes);
+      expectRefusedInPlace(longer, /3 bytes past its end/);
+    });
+
+    it('a future format version', () => {
+      const future = bytes.slice();
+      new DataView(future.buffer).setUint16(4, 2, true);
+      expectRefusedInPlace(future, /format version 2 is newer than this engine .* reads \(1\)/);
+    });
+
+    it('any flipped byte of the payload', () => {
+      fc.assert(
+        fc.property(fc.integer({ min: 16, max: bytes.length - 1 }), fc.integer({ min: 1, max: 255 }), (at, flip) => {
+          const bad = bytes.slice();
+          bad[at] ^= flip;
+          expect(() => World.restore(bad)).toThrow(/snapshot is corrupt/);
+        }),
+        { numRuns: 200, seed: 23 },
+      );
+    });
+
+    it('damage that keeps the hash is still caught by the reader, never half applied', () => {
+      // A payload rewritten with a consistent hash: the structure itself is checked.
+      const forged = bytes.slice();
+      const view = new DataView(forged.buffer);
+      // The engine version string's length, made to run past the payload.
+      view.setUint32(16, 0x7fffffff, true);
+      let hash = 0x811c9dc5;
+      for (let i = 16; i < forged.length; i++) hash = Math.imul(hash ^ forged[i], 0x01000193);
+      view.setUint32(12, hash >>> 0, true);
+      expectRefusedInPlace(forged, /snapshot is corrupt: a value at byte 20 runs past the payload's end/);
+    });
+  });
+});
