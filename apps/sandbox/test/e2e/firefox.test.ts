@@ -11,7 +11,7 @@ import { sceneHashes } from '../../../../packages/engine/test/runtimes/scene-has
 const FIREFOX_PATH = process.env.FIREFOX_PATH ?? '/usr/bin/firefox-esr';
 const ROOT = fileURLToPath(new URL('../../../../', import.meta.url));
 
-type Hashes = Record<string, { hash: string; kernels: boolean }>;
+type Hashes = Record<string, { hash: string; restored: string; snapshot: string; kernels: boolean }>;
 
 let browser: Browser;
 
@@ -43,7 +43,7 @@ async function firefoxHashes(wasm: boolean): Promise<Hashes> {
 }
 
 describe('the same bits in SpiderMonkey (Firefox ESR) as in V8 (Node)', () => {
-  it('steps circles, shapes, joints, blobs and rk4 springs to the same state hashes, with the WebAssembly kernels and without', async () => {
+  it('steps circles, shapes, joints, blobs and rk4 springs to the same state hashes, with the WebAssembly kernels and without, and restores snapshots to them', async () => {
     const node = sceneHashes(engine, scenes) as Hashes;
     const kernels = await firefoxHashes(true);
     const scalar = await firefoxHashes(false);
@@ -54,6 +54,9 @@ describe('the same bits in SpiderMonkey (Firefox ESR) as in V8 (Node)', () => {
       expect(kernels[name].kernels, `${name}: kernels run in Firefox`).toBe(true);
       expect(scalar[name].kernels, `${name}: none without WebAssembly`).toBe(false);
       expect([kernels[name].hash, scalar[name].hash], name).toEqual([node[name].hash, node[name].hash]);
+      // A snapshot taken halfway restores in Firefox to the same bits, and is the same bytes as Node's.
+      expect([kernels[name].restored, scalar[name].restored], `${name}, restored`).toEqual([node[name].hash, node[name].hash]);
+      expect(kernels[name].snapshot, `${name}, snapshot bytes`).toBe(node[name].snapshot);
     }
   }, 240_000);
 });

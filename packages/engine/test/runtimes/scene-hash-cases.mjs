@@ -27,9 +27,20 @@ export function sceneHashes(engine, scenes) {
   const hashes = {};
   for (const [name, build] of cases) {
     const world = build();
-    for (let s = 0; s < 150; s++) world.step(1 / 60);
+    let restored = null;
+    let snapshot = '';
+    for (let s = 0; s < 150; s++) {
+      if (s === 75) {
+        // Taken halfway, restored here and stepped on: the bytes themselves must agree across runtimes too.
+        const bytes = world.snapshot();
+        snapshot = `${bytes.length}:${new DataView(bytes.buffer, bytes.byteOffset).getUint32(12, true).toString(16)}`;
+        restored = World.restore(bytes);
+      }
+      world.step(1 / 60);
+      if (restored) restored.step(1 / 60);
+    }
     const b = world.backend;
-    hashes[name] = { hash: world.stateHash(), kernels: b.softStepKernel.running || b.gridKernel.running || b.bodyKernel.running };
+    hashes[name] = { hash: world.stateHash(), restored: restored.stateHash(), snapshot, kernels: b.softStepKernel.running || b.gridKernel.running || b.bodyKernel.running };
   }
   return hashes;
 }
