@@ -789,15 +789,26 @@ export class World {
    * on the threads, so that a machine whose cores are busy with other work steps on one thread
    * rather than wait for workers the scheduler does not run (`stats.threads` says which ran).
    * `adaptive: false` always uses the threads, for measuring them.
+   *
+   * `workerUrl` (a URL or a string) names the worker script, for builds that do not emit the
+   * engine's own: Vite and webpack 5 do by themselves; with esbuild, build
+   * `@maxgrid/engine/worker` as an entry point of its own and pass the URL it is served at.
    */
-  async startWorkers(workerCount: number, options: { minBodies?: number | undefined; adaptive?: boolean | undefined } = {}): Promise<void> {
+  async startWorkers(
+    workerCount: number,
+    options: { minBodies?: number | undefined; adaptive?: boolean | undefined; workerUrl?: string | { readonly href: string } | undefined } = {},
+  ): Promise<void> {
     checkWorkerCount(workerCount);
-    knownKeys('startWorkers options', plainObject('startWorkers options', options), ['minBodies', 'adaptive']);
+    knownKeys('startWorkers options', plainObject('startWorkers options', options), ['minBodies', 'adaptive', 'workerUrl']);
     const minBodies = options.minBodies === undefined ? DEFAULT_MIN_BODIES : nonNegativeInteger('minBodies', options.minBodies);
     if (options.adaptive !== undefined && typeof options.adaptive !== 'boolean') throw new TypeError(`startWorkers option adaptive must be a boolean, got ${String(options.adaptive)}`);
+    const script: unknown = options.workerUrl;
+    if (script !== undefined && !(typeof script === 'string' ? script !== '' : typeof (script as { href?: unknown } | null)?.href === 'string')) {
+      throw new TypeError(`startWorkers option workerUrl must be a URL or a non-empty string, got ${script === '' ? '""' : String(script)}`);
+    }
     this.stopWorkers();
     const started = this.workerStarts;
-    const parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts);
+    const parallel = await ParallelStep.start(workerCount, this.bodies, this.pipeline.contacts, options.workerUrl);
     if (started !== this.workerStarts) {
       // stopWorkers (or another startWorkers) was called while these were starting: it wins.
       parallel.stop();

@@ -24,7 +24,8 @@ world.step(1 / 60);
 const hits: number[] = world.queryAABB(-1, -1, 1, 1, { mask: undefined });
 const first = world.jointHandles()[0];
 if (first !== undefined) console.log(world.getJoint(first).force.y, hits.length, world.views().x[0], world.backend.route);
-void world.startWorkers(2, { minBodies: undefined, adaptive: undefined });
+void world.startWorkers(2, { minBodies: undefined, adaptive: undefined, workerUrl: undefined });
+void world.startWorkers(2, { workerUrl: new URL('https://example.com/worker.js') });
 `;
 
 function compile(compilerOptions: Record<string, unknown>): string {

@@ -20,6 +20,8 @@ describe('package exports', () => {
     const out = execFileSync(process.execPath, ['--input-type=module', '-e', script], { cwd: root }).toString();
     expect(JSON.parse(out)).toEqual({ names: ['naive', 'sap', 'sap-xy', 'sap-persistent', 'maxgrid', 'hgrid', 'auto'], bodies: 50, isWorld: true });
     expect(existsSync(`${root}packages/engine/dist/index.d.ts`)).toBe(true);
+    // The worker script's own export, imported where it has no worker to serve: it does nothing.
+    expect(execFileSync(process.execPath, ['--input-type=module', '-e', "await import('@maxgrid/engine/worker'); console.log('loaded')"], { cwd: root }).toString().trim()).toBe('loaded');
   });
 
   it('npm pack ships the built JavaScript, its types, a README, a LICENSE and a CHANGELOG, and nothing else', () => {
@@ -38,6 +40,9 @@ describe('package exports', () => {
     }
     const manifest = JSON.parse(readFileSync(`${engine}/package.json`, 'utf8')) as { exports: Record<string, Record<string, string>>; engines: { node: string }; type: string };
     expect(Object.keys(manifest.exports['.'])[0]).toBe('types');
+    // The worker script, for bundlers that do not emit it by themselves (docs/engine.md, "Workers in your bundler").
+    expect(manifest.exports['./worker']).toEqual({ types: './dist/parallel/worker-entry.d.ts', default: './dist/parallel/worker-entry.js' });
+    for (const target of Object.values(manifest.exports['./worker'])) expect(paths).toContain(target.slice(2));
     expect(manifest.type).toBe('module');
     expect(manifest.engines.node).toMatch(/>=20\.19/);
   });

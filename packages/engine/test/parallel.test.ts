@@ -7,6 +7,7 @@ import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
 import { bandedBin, setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import { spinBudget, spinWhileEqual } from '../src/parallel/host.js';
 import { ThreadGovernor } from '../src/parallel/governor.js';
+import { fileURLToPath } from 'node:url';
 
 // Worker threads load the compiled engine (dist/), which `npm test` builds first.
 
@@ -345,6 +346,9 @@ describe('parallel step', () => {
       [{ minBodies: '5' }, 'minBodies must be a finite number, got "5"'],
       [{ minBodes: 1 }, "startWorkers options has unknown option 'minBodes'"],
       [{ adaptive: 1 }, 'startWorkers option adaptive must be a boolean, got 1'],
+      [{ workerUrl: '' }, 'startWorkers option workerUrl must be a URL or a non-empty string, got ""'],
+      [{ workerUrl: 7 }, 'startWorkers option workerUrl must be a URL or a non-empty string, got 7'],
+      [{ workerUrl: { path: '/worker.js' } }, 'startWorkers option workerUrl must be a URL or a non-empty string, got [object Object]'],
       [null, 'startWorkers options must be an object, got null'],
     ] as const) {
       await expect(world.startWorkers(2, options as never)).rejects.toBeInstanceOf(TypeError);
@@ -353,6 +357,23 @@ describe('parallel step', () => {
     }
     world.stopWorkers();
     expect(world.stateHash()).toBe(before);
+  });
+
+  it('starts its workers on the script workerUrl names, as a URL or a path, with the same bits; a script that is not there rejects', async () => {
+    const build = uniform(400);
+    const serial = await hashWith(build, 0, 30);
+    const script = new URL('../dist/parallel/worker-entry.js', import.meta.url);
+    for (const workerUrl of [script, fileURLToPath(script)]) {
+      const world = build();
+      await world.startWorkers(2, { minBodies: 0, adaptive: false, workerUrl });
+      for (let s = 0; s < 30; s++) world.step(1 / 60);
+      expect(world.backend.lastStepThreads).toBe(2);
+      expect(world.stateHash()).toBe(serial);
+      world.stopWorkers();
+    }
+    const world = build();
+    await expect(world.startWorkers(2, { workerUrl: new URL('../dist/parallel/no-such-worker.js', import.meta.url) })).rejects.toThrow(/no-such-worker\.js/);
+    expect(world.workerCount).toBe(1);
   });
 
   it('polls for the next command only where threads fit the cores, and stops polling when the budget runs out', () => {

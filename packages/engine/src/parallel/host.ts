@@ -31,10 +31,20 @@ interface BrowserWorker extends WorkerHandle {
 
 type Global = {
   process?: { versions?: { node?: string } };
-  Worker?: new (url: URL, options: { type: 'module' }) => BrowserWorker;
+  Worker?: unknown;
   SharedArrayBuffer?: unknown;
   crossOriginIsolated?: boolean;
+  location?: { href: string };
 };
+
+// A browser's Worker, named as a free variable: bundlers only recognise `new Worker(...)` itself.
+declare const Worker: new (url: string | URL, options: { type: 'module' }) => BrowserWorker;
+
+/**
+ * Where a worker thread's script is (startWorkers' `workerUrl`): a URL, or a string (in a browser
+ * resolved against the page; in Node a path or a file: URL, as worker_threads takes it).
+ */
+export type WorkerScript = string | { readonly href: string };
 
 const host = globalThis as unknown as Global;
 
@@ -53,15 +63,49 @@ export function threadsUnavailable(): string | null {
 }
 
 /**
- * The worker script beside this module. Run from TypeScript sources (tests, tsx, a Vite dev
- * server), Node threads load the compiled twin in dist/, because a bare worker thread cannot load
- * TypeScript; a browser asks the dev server, which compiles the source on request.
+ * The worker script beside this module, for Node. Run from TypeScript sources (tests, tsx), Node
+ * threads load the compiled twin in dist/, because a bare worker thread cannot load TypeScript.
+ * `here` is a variable so that bundlers do not take this for an asset to emit.
  */
-function workerUrl(): URL {
+function nodeWorkerUrl(): URL {
   const here = import.meta.url;
-  // The path, not the whole URL: a dev server may add a query (`?t=...`) after the extension.
-  if (!new URL(here).pathname.endsWith('.ts')) return new URL('./worker-entry.js', here);
-  return isNode ? new URL('../../dist/parallel/worker-entry.js', here) : new URL('./worker-entry.ts', here);
+  // The path, not the whole URL: a loader may add a query (`?t=...`) after the extension.
+  return new URL(here).pathname.endsWith('.ts') ? new URL('../../dist/parallel/worker-entry.js', here) : new URL('./worker-entry.js', here);
+}
+
+/**
+ * A module Web Worker on `script`, or on the engine's own worker script. The default is written
+ * out in full, as one expression with a literal path, because that is the form Vite and webpack
+ * recognise: they emit the worker script as a chunk of its own and rewrite the URL to it (and
+ * Vite, serving TypeScript sources, finds worker-entry.ts for the .js). Unbundled, it is the
+ * file beside this one.
+ */
+function browserWorker(script: WorkerScript | undefined): BrowserWorker {
+  if (script !== undefined) return new Worker(typeof script === 'string' ? script : script.href, { type: 'module' });
+  return new Worker(new URL('./worker-entry.js', import.meta.url), { type: 'module' });
+}
+
+/** Why a browser worker did not start, naming the script and what to do about it. */
+function browserStartFailure(script: WorkerScript | undefined, detail: string | undefined): string {
+  const because = detail ? `: ${detail}` : '';
+  if (script !== undefined) {
+    return `worker thread failed to start: the browser could not load or run the worker script ${absolute(typeof script === 'string' ? script : script.href)}${because}. startWorkers(n, { workerUrl }) must name the engine's worker script (@maxgrid/engine/worker) as your build emits and serves it`;
+  }
+  const here = import.meta.url;
+  return (
+    `worker thread failed to start: the browser could not load or run the engine's worker script ${absolute(new URL('./worker-entry.js', here).href)} ` +
+    `(beside ${here}, the module that started it)${because}. Vite and webpack 5 emit it by themselves; with a bundler that does not (esbuild, for one), ` +
+    'build @maxgrid/engine/worker as an entry point of its own and pass its URL: startWorkers(n, { workerUrl })'
+  );
+}
+
+/** `url` resolved against the page, as a Worker resolves it; as given where it does not parse. */
+function absolute(url: string): string {
+  try {
+    return new URL(url, host.location?.href).href;
+  } catch {
+    return url;
+  }
 }
 
 // Variables, not literals, so that bundlers for the browser leave the Node-only imports alone.
@@ -71,7 +115,7 @@ const OS = 'node:os';
 /** Logical cores this process may run on, or 0 where the host does not say. */
 export async function hardwareThreads(): Promise<number> {
   if (isNode) {
-    const os = (await import(/* @vite-ignore */ OS)) as { availableParallelism?: () => number; cpus(): unknown[] };
+    const os = (await import(/* @vite-ignore */ /* webpackIgnore: true */ OS)) as { availableParallelism?: () => number; cpus(): unknown[] };
     return os.availableParallelism?.() ?? os.cpus().length;
   }
   return (globalThis as { navigator?: { hardwareConcurrency?: number } }).navigator?.hardwareConcurrency ?? 0;
@@ -107,14 +151,14 @@ export function spinWhileEqual(array: Int32Array, index: number, value: number, 
 }
 
 /**
- * Starts a worker, sends it `init` and resolves once it answers that it is ready. Node workers are
- * unref'd: a world that is never stopped does not keep the process alive.
+ * Starts a worker on `script` (by default the engine's worker-entry.js), sends it `init` and
+ * resolves once it answers that it is ready. Node workers are unref'd: a world that is never
+ * stopped does not keep the process alive.
  */
-export async function startWorker(init: unknown): Promise<WorkerHandle> {
-  const url = workerUrl();
+export async function startWorker(init: unknown, script?: WorkerScript): Promise<WorkerHandle> {
   if (isNode) {
-    const { Worker } = (await import(/* @vite-ignore */ WORKER_THREADS)) as { Worker: new (url: URL) => NodeWorker };
-    const worker = new Worker(url);
+    const { Worker } = (await import(/* @vite-ignore */ /* webpackIgnore: true */ WORKER_THREADS)) as { Worker: new (url: string | URL) => NodeWorker };
+    const worker = new Worker(script === undefined ? nodeWorkerUrl() : typeof script === 'string' ? script : new URL(script.href));
     await new Promise<void>((resolve, reject) => {
       worker.on('message', (message: { kind?: string; error?: string }) => {
         if (message.kind === 'ready') resolve();
@@ -126,14 +170,15 @@ export async function startWorker(init: unknown): Promise<WorkerHandle> {
     worker.unref();
     return worker;
   }
-  const worker = new host.Worker!(url, { type: 'module' });
+  const worker = browserWorker(script);
   await new Promise<void>((resolve, reject) => {
     worker.onmessage = (event) => {
       const message = event.data as { kind?: string; error?: string };
       if (message.kind === 'ready') resolve();
       if (message.kind === 'failed') reject(new Error(`worker thread failed: ${message.error}`));
     };
-    worker.onerror = (event) => reject(new Error(`worker thread failed to start: ${event.message ?? 'unknown error'}`));
+    // A script that could not be fetched fires a bare Event; one that threw, an ErrorEvent with a message.
+    worker.onerror = (event) => reject(new Error(browserStartFailure(script, event.message)));
     worker.postMessage(init);
   });
   return worker;

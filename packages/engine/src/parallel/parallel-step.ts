@@ -21,7 +21,7 @@ import {
 } from './control.js';
 import { ThreadKernels } from './kernels.js';
 import { ThreadGovernor } from './governor.js';
-import { hardwareThreads, spinBudget, startWorker, threadsUnavailable, type WorkerHandle } from './host.js';
+import { hardwareThreads, spinBudget, startWorker, threadsUnavailable, type WorkerHandle, type WorkerScript } from './host.js';
 import { awaitWorkers, publishCommand } from './handoff.js';
 import { finiteNumber } from '../util/validate.js';
 
@@ -117,10 +117,11 @@ export class ParallelStep {
   }
 
   /**
-   * Starts `threads - 1` workers; the caller is thread 0. Moves the body columns and the contact
-   * buffer to shared memory. Each step then passes the grid it bins into.
+   * Starts `threads - 1` workers, on `script` or by default the engine's worker script; the caller
+   * is thread 0. Moves the body columns and the contact buffer to shared memory. Each step then
+   * passes the grid it bins into.
    */
-  static async start(threads: number, bodies: BodyStore, contacts: ContactBuffer): Promise<ParallelStep> {
+  static async start(threads: number, bodies: BodyStore, contacts: ContactBuffer, script?: WorkerScript): Promise<ParallelStep> {
     checkWorkerCount(threads);
     const why = threadsUnavailable();
     if (why) throw new Error(`cannot start worker threads: ${why}`);
@@ -131,7 +132,7 @@ export class ParallelStep {
     const workers: WorkerHandle[] = [];
     try {
       for (let index = 1; index < threads; index++) {
-        workers.push(await startWorker({ kind: 'init', index, control: control.buffer, params: params.buffer, results: results.buffer }));
+        workers.push(await startWorker({ kind: 'init', index, control: control.buffer, params: params.buffer, results: results.buffer }, script));
       }
     } catch (error) {
       for (const worker of workers) worker.terminate();

@@ -79,12 +79,20 @@ async function serve(k: ThreadKernels, seen: number): Promise<void> {
   }
 }
 
+// A variable, not a literal, so that bundlers for the browser leave the Node-only import alone.
+const WORKER_THREADS = 'node:worker_threads';
+
+type ParentPort = { on(event: 'message', listener: (message: InitMessage | BufferMessage) => void): void; postMessage: Post };
+
+// No top-level await: bundlers build worker scripts as classic scripts by default (Vite's iife),
+// which cannot hold one. Node queues the init message until the listener is on. Outside a worker
+// thread (parentPort null) there is nothing to serve.
 if (isNode) {
-  const { parentPort } = (await import(/* @vite-ignore */ 'node:worker_threads' as string)) as {
-    parentPort: { on(event: 'message', listener: (message: InitMessage | BufferMessage) => void): void; postMessage: Post };
-  };
-  post = (message) => parentPort.postMessage(message);
-  parentPort.on('message', receive);
+  void import(/* @vite-ignore */ /* webpackIgnore: true */ WORKER_THREADS).then(({ parentPort }: { parentPort: ParentPort | null }) => {
+    if (!parentPort) return;
+    post = (message) => parentPort.postMessage(message);
+    parentPort.on('message', receive);
+  });
 } else {
   const self = globalThis as unknown as { onmessage: (event: { data: InitMessage | BufferMessage }) => void; postMessage: Post };
   post = (message) => self.postMessage(message);
