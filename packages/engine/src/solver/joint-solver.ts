@@ -211,13 +211,17 @@ export class JointSolver {
     r[o + DELTA_CENTER_Y] = y[b] - (a < 0 ? r[o + TARGET_Y] : y[a]);
     r[o + WORLD_AXIS_X] = ca * r[o + AXIS_X] - sa * r[o + AXIS_Y];
     r[o + WORLD_AXIS_Y] = sa * r[o + AXIS_X] + ca * r[o + AXIS_Y];
-    angleIO[0] = sb * ca - cb * sa;
-    angleIO[1] = cb * ca + sb * sa;
-    atan2Into(angleIO, 0);
-    let angle = angleIO[2] - r[o + REFERENCE_ANGLE];
-    if (angle > Math.PI) angle -= 2 * Math.PI;
-    else if (angle < -Math.PI) angle += 2 * Math.PI;
-    r[o + DELTA_ANGLE] = angle;
+    const kind = store.kind[j];
+    // Only the kinds that hold or limit an angle read it, and the arc tangent is most of a distance joint's preparation.
+    if (kind === JointKind.revolute || kind === JointKind.prismatic || kind === JointKind.weld) {
+      angleIO[0] = sb * ca - cb * sa;
+      angleIO[1] = cb * ca + sb * sa;
+      atan2Into(angleIO, 0);
+      let angle = angleIO[2] - r[o + REFERENCE_ANGLE];
+      if (angle > Math.PI) angle -= 2 * Math.PI;
+      else if (angle < -Math.PI) angle += 2 * Math.PI;
+      r[o + DELTA_ANGLE] = angle;
+    }
     if (store.kind[j] !== JointKind.spring) {
       boundImpulses(r, o, store.kind[j], this.limits);
       JOINT_KERNELS[store.kind[j]].prepare(r, o, step);

@@ -98,14 +98,21 @@ export const distanceJoint: JointKernel = {
  * which also carries the speed along the axis (out of speedAlong) and the impulse (into apply):
  * V8 boxes numbers passed to or returned from a call it does not inline.
  */
-const frame = { rAx: 0, rAy: 0, rBx: 0, rBy: 0, ax: 1, ay: 0, length: 0, speed: 0, impulse: 0 };
+const frame = { rAx: 0, rAy: 0, rBx: 0, rBy: 0, ax: 1, ay: 0, length: 0, speed: 0, impulse: 0, point: false };
 type Frame = typeof frame;
 
 function currentFrame(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number): Frame {
   const f = frame;
-  turnAnchors(r, o, states, sa, sb, f);
-  const dx = states[sb + DPX] - states[sa + DPX] + r[o + DELTA_CENTER_X] + f.rBx - f.rAx;
-  const dy = states[sb + DPY] - states[sa + DPY] + r[o + DELTA_CENTER_Y] + f.rBy - f.rAy;
+  // Anchors at both centres (the particles of ropes, jellies and blobs): no turn can move them, and
+  // the joint exerts no torque, so the passes skip the rotations, which halves a lattice's solve.
+  f.point = r[o + R_AX] === 0 && r[o + R_AY] === 0 && r[o + R_BX] === 0 && r[o + R_BY] === 0;
+  let dx = states[sb + DPX] - states[sa + DPX] + r[o + DELTA_CENTER_X];
+  let dy = states[sb + DPY] - states[sa + DPY] + r[o + DELTA_CENTER_Y];
+  if (!f.point) {
+    turnAnchors(r, o, states, sa, sb, f);
+    dx = dx + f.rBx - f.rAx;
+    dy = dy + f.rBy - f.rAy;
+  }
   const length = Math.sqrt(dx * dx + dy * dy);
   f.length = length;
   // Anchors that meet keep the axis they had at the step's start.
@@ -116,6 +123,10 @@ function currentFrame(r: Float64Array, o: number, states: Float64Array, sa: numb
 
 /** B's anchor's speed away from A's, along the axis, into f.speed. */
 function speedAlong(states: Float64Array, sa: number, sb: number, f: Frame): void {
+  if (f.point) {
+    f.speed = (states[sb + VX] - states[sa + VX]) * f.ax + (states[sb + VY] - states[sa + VY]) * f.ay;
+    return;
+  }
   const dvx = states[sb + VX] - states[sb + W] * f.rBy - (states[sa + VX] - states[sa + W] * f.rAy);
   const dvy = states[sb + VY] + states[sb + W] * f.rBx - (states[sa + VY] + states[sa + W] * f.rAx);
   f.speed = dvx * f.ax + dvy * f.ay;
@@ -129,9 +140,10 @@ function apply(r: Float64Array, o: number, states: Float64Array, sa: number, sb:
   const mB = r[o + INV_MASS_B];
   states[sa + VX] -= mA * px;
   states[sa + VY] -= mA * py;
-  states[sa + W] -= r[o + INV_INERTIA_A] * (f.rAx * py - f.rAy * px);
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
+  if (f.point) return;
+  states[sa + W] -= r[o + INV_INERTIA_A] * (f.rAx * py - f.rAy * px);
   states[sb + W] += r[o + INV_INERTIA_B] * (f.rBx * py - f.rBy * px);
 }
 
