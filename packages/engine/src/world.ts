@@ -264,6 +264,8 @@ export class World {
     if (holdsObject(field(state, 'shapeRoute'))) world.engage();
     if (holdsObject(field(state, 'joints'))) world.useJoints();
     if (holdsObject(field(state, 'pipeline', 'events'))) world.useEvents();
+    const broadphase = field(state, 'pipeline', 'broadPhase', 'name');
+    if (broadphase?.t === 'value' && typeof broadphase.v === 'string' && broadphase.v !== world.broadphase) world.setBroadphase(broadphase.v as BroadPhaseName);
     const capacity = numberField(field(state, 'bodies', 'capacity'));
     if (capacity > 0) world.bodies.reserve(capacity);
     writeOnto(world, read);
