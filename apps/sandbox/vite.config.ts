@@ -1,4 +1,4 @@
-import { defineConfig } from 'vite';
+import { defineConfig, type Connect, type Plugin } from 'vite';
 import { fileURLToPath } from 'node:url';
 import { workspaceAliases } from '../../vitest.shared.js';
 
@@ -6,12 +6,38 @@ const ISOLATION = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-E
 
 const page = (name: string) => fileURLToPath(new URL(`./${name}`, import.meta.url));
 
+/**
+ * The API reference (`npm run docs:api`) is written to public/api/. Vite serves a public file by
+ * its exact name only and answers /api/ with the sandbox's own page, so the folder's index is
+ * named for it; /api gets the slash its pages' relative links need.
+ */
+function apiReferenceIndex(): Plugin {
+  const rewrite: Connect.NextHandleFunction = (req, res, next) => {
+    const [path, query] = (req.url ?? '').split('?', 2);
+    const search = query === undefined ? '' : `?${query}`;
+    if (path === '/api') {
+      res.statusCode = 301;
+      res.setHeader('Location', `/api/${search}`);
+      res.end();
+      return;
+    }
+    if (path === '/api/') req.url = `/api/index.html${search}`;
+    next();
+  };
+  return {
+    name: 'maxgrid-api-reference-index',
+    configureServer: (server) => void server.middlewares.use(rewrite),
+    configurePreviewServer: (server) => void server.middlewares.use(rewrite),
+  };
+}
+
 // The pages: the 2D sandbox (index), the report's three.js + cannon-es exploration (3d), the lab's
 // browser runner (lab), and the debug-draw examples (examples/). The workspace packages are served
 // from source, so edits to the engine show up without a rebuild.
 export default defineConfig({
   root: fileURLToPath(new URL('.', import.meta.url)),
   resolve: { alias: workspaceAliases },
+  plugins: [apiReferenceIndex()],
   // Pre-bundle every third-party module the pages load, including the lab's lazily imported peer
   // engines: otherwise Vite discovers them on first use, re-optimises and reloads the page, which
   // cuts a running experiment (or a test) short. planck is named through the lab, under whose

@@ -1,3 +1,10 @@
+/**
+ * A deterministic 2D physics engine: a {@link World} holds bodies, shapes, segments and joints and
+ * steps them. Everything else here is what its methods take (options), what they return (states,
+ * views, statistics), or the names an option accepts.
+ *
+ * @module @maxgrid/engine
+ */
 export { World } from './world.js';
 export type { CircleState, BodyState, ShapeState, BodyViews, ShapeViews, ContactPointViews, QueryOptions, JointState, JointViews, JointEventsView } from './world-types.js';
 export type { JointOptions, JointBaseOptions, DistanceJointOptions, RevoluteJointOptions, PrismaticJointOptions, WeldJointOptions, WheelJointOptions, TargetJointOptions, SpringJointOptions, PressureJointOptions } from './joints/joint-options.js';

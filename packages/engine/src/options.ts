@@ -23,11 +23,13 @@ import {
   describeValue,
 } from './util/validate.js';
 
+/** A point or a direction in world units. */
 export interface Vector {
   x: number;
   y: number;
 }
 
+/** What the World constructor takes; every option has a default, so `new World()` is a valid, empty, unbounded world. */
 export interface WorldOptions {
   /** An axis-aligned box from (0, 0) to (width, height) that contains every body. Default: none. */
   bounds?: { width: number; height: number } | null | undefined;
@@ -130,6 +132,7 @@ export interface WorldOptions {
   hitEventThreshold?: number | undefined;
 }
 
+/** What createCircle takes: the report's circle body, with optional spin, friction and layers. */
 export interface CircleOptions {
   x: number;
   y: number;
@@ -200,6 +203,7 @@ export interface ResolvedWorldOptions {
   continuous: boolean;
 }
 
+/** What createSegment takes: a static wall from (x1, y1) to (x2, y2), which bodies collide with but never move. */
 export interface SegmentOptions {
   x1: number;
   y1: number;

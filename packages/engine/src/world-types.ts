@@ -1,5 +1,6 @@
 import type { BodyType } from './store/body-types.js';
 
+/** A circle body as getCircle reads it: the report's circle, with its motion type, material and layers. */
 export interface CircleState {
   x: number;
   y: number;
@@ -60,6 +61,7 @@ export interface ShapeState {
   sensor: boolean;
 }
 
+/** Filters for the point, box and ray queries. */
 export interface QueryOptions {
   /** Only bodies whose category shares a bit with this mask. Default: all. */
   mask?: number | undefined;

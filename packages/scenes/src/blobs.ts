@@ -2,6 +2,7 @@ import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
 import { funnelAndFloor, type SceneBody, type ShapeScene } from './shape-scene.js';
 
+/** The parameters blobs takes, with their defaults and ranges (resolveParams checks them). */
 export const blobsParams = {
   count: { default: 12, min: 1, max: 10000, integer: true, description: 'blobs' },
   segments: { default: 2, min: 0, max: 4, integer: true, description: 'particles per ring: 4 x 2^segments (16 by default)' },

@@ -1,6 +1,7 @@
 import { resolveParams, type ParamSpecs } from './params.js';
 import { allocateScene, type Scene } from './scene.js';
 
+/** The parameters bouncingBall takes, with their defaults and ranges (resolveParams checks them). */
 export const bouncingBallParams = {
   width: { default: 400, min: 1, max: 1e6, description: 'box width' },
   height: { default: 900, min: 1, max: 1e6, description: 'box height' },

@@ -2,6 +2,7 @@ import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
 import { boxBody, type SceneBody, type ShapeScene } from './shape-scene.js';
 
+/** The parameters bridge takes, with their defaults and ranges (resolveParams checks them). */
 export const bridgeParams = {
   planks: { default: 30, min: 2, max: 10000, integer: true, description: 'planks in the bridge' },
   load: { default: 10, min: 0, max: 1000, integer: true, description: 'boxes dropped on the bridge' },

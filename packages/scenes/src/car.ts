@@ -2,6 +2,7 @@ import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
 import type { SceneBody, ShapeScene } from './shape-scene.js';
 
+/** The parameters car takes, with their defaults and ranges (resolveParams checks them). */
 export const carParams = {
   speed: { default: 10, min: -200, max: 200, description: 'wheel motor speed, radians per second (positive drives right)' },
   torque: { default: 10, min: 0, max: 1e6, description: 'largest motor torque of each wheel' },

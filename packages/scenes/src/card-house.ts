@@ -1,6 +1,7 @@
 import { resolveParams, type ParamSpecs } from './params.js';
 import { boxBody, type SceneBody, type ShapeScene } from './shape-scene.js';
 
+/** The parameters cardHouse takes, with their defaults and ranges (resolveParams checks them). */
 export const cardHouseParams = {
   levels: { default: 5, min: 1, max: 20, integer: true, description: 'storeys of the house' },
   friction: { default: 0.7, min: 0, max: 10, description: 'friction of the cards and the ground' },

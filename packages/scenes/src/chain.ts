@@ -2,6 +2,7 @@ import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
 import type { SceneBody, ShapeScene } from './shape-scene.js';
 
+/** The parameters chain takes, with their defaults and ranges (resolveParams checks them). */
 export const chainParams = {
   links: { default: 100, min: 1, max: 10000, integer: true, description: 'links in the chain' },
   linkLength: { default: 1, min: 0.05, max: 100, description: 'length of a link (pin to pin), m' },

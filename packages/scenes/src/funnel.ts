@@ -2,6 +2,7 @@ import { Prng } from './prng.js';
 import { resolveParams, type ParamSpecs } from './params.js';
 import { allocateScene, type Scene } from './scene.js';
 
+/** The parameters funnel takes, with their defaults and ranges (resolveParams checks them). */
 export const funnelParams = {
   n: { default: 500, min: 0, max: 20_000, integer: true, description: 'number of falling circles' },
   seed: { default: 1, min: 0, max: 2 ** 32 - 1, integer: true, description: 'PRNG seed' },

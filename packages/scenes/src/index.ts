@@ -1,3 +1,11 @@
+/**
+ * Seeded scene builders for `@maxgrid/engine`, as plain data, so that the same scene builds the
+ * same bodies in maxgrid and in the engines the lab measures it against: {@link buildScene} and
+ * {@link buildWorld} for circle scenes, {@link buildShapeScene} and {@link buildShapeWorld} for
+ * scenes of bodies with shapes and joints.
+ *
+ * @module @maxgrid/scenes
+ */
 import { seedBox, seedBoxParams } from './seed-box.js';
 import { uniform, uniformParams } from './uniform.js';
 import { bouncingBall, bouncingBallParams } from './bouncing-ball.js';
@@ -29,12 +37,15 @@ export { buildShapeWorld, boxBody, type ShapeScene, type SceneBody, type SceneSh
 export { pyramid, pyramidParams, verticalStack, verticalStackParams, cardHouse, cardHouseParams, ramp, rampParams, uniformPolygons, uniformPolygonsParams };
 export { manyPyramids, manyPyramidsParams, tumbler, tumblerParams, polygonBox, polygonBoxParams };
 export { chain, chainParams, bridge, bridgeParams, jointGrid, jointGridParams, ragdolls, ragdollsParams, car, carParams, jellies, jelliesParams, blobs, blobsParams };
-export { resolveParams, type ParamSpec, type ParamSpecs } from './params.js';
+export { resolveParams, type ParamSpec, type ParamSpecs, type ParamValues } from './params.js';
 export { seedBox, seedBoxParams, uniform, uniformParams, bouncingBall, bouncingBallParams, mixed, mixedParams, funnel, funnelParams };
 
+/** A circle scene by name: what it shows, the parameters it takes, and its builder. */
 export interface SceneDefinition {
+  /** What the scene shows, in one line. */
   description: string;
   params: ParamSpecs;
+  /** Builds the scene; parameters left out take their defaults. */
   build(params?: Partial<Record<string, number>>): Scene;
 }
 
@@ -80,12 +91,17 @@ export const CLIFF_SCENES = {
   'log-radii': { description: 'uniform with radii log-uniform from 0.01 to 10,000 (six decades)', params: logRadiiParams, build: logRadii },
 } satisfies Record<string, SceneDefinition>;
 
+/** The name of a cliff scene. */
 export type CliffSceneName = keyof typeof CLIFF_SCENES;
+/** Every cliff scene's name, in the order CLIFF_SCENES lists them. */
 export const CLIFF_SCENE_NAMES = Object.keys(CLIFF_SCENES) as CliffSceneName[];
 
+/** The name of a circle scene. */
 export type SceneName = keyof typeof SCENES;
+/** Every circle scene's name, in the order SCENES lists them. */
 export const SCENE_NAMES = Object.keys(SCENES) as SceneName[];
 
+/** Builds a circle scene of SCENES by name; an unknown name throws a RangeError that lists the known ones. */
 export function buildScene(name: string, params?: Partial<Record<string, number>>): Scene {
   if (!(name in SCENES)) {
     throw new RangeError(`unknown scene '${name}'; scenes: ${SCENE_NAMES.join(', ')}`);
@@ -93,9 +109,12 @@ export function buildScene(name: string, params?: Partial<Record<string, number>
   return SCENES[name as SceneName].build(params);
 }
 
+/** A scene of bodies with shapes by name: what it shows, the parameters it takes, and its builder. */
 export interface ShapeSceneDefinition {
+  /** What the scene shows, in one line. */
   description: string;
   params: ParamSpecs;
+  /** Builds the scene; parameters left out take their defaults. */
   build(params?: Partial<Record<string, number>>): ShapeScene;
 }
 
@@ -178,9 +197,12 @@ export const SHAPE_SCENES = {
   },
 } satisfies Record<string, ShapeSceneDefinition>;
 
+/** The name of a scene with shapes. */
 export type ShapeSceneName = keyof typeof SHAPE_SCENES;
+/** Every shape scene's name, in the order SHAPE_SCENES lists them. */
 export const SHAPE_SCENE_NAMES = Object.keys(SHAPE_SCENES) as ShapeSceneName[];
 
+/** Builds a scene with shapes by name; an unknown name throws a RangeError that lists the known ones. */
 export function buildShapeScene(name: string, params?: Partial<Record<string, number>>): ShapeScene {
   if (!(name in SHAPE_SCENES)) throw new RangeError(`unknown shape scene '${name}'; shape scenes: ${SHAPE_SCENE_NAMES.join(', ')}`);
   return SHAPE_SCENES[name as ShapeSceneName].build(params);

@@ -2,19 +2,21 @@ import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
 import type { SceneBody, ShapeScene } from './shape-scene.js';
 
+/** The parameters jointGrid takes, with their defaults and ranges (resolveParams checks them). */
 export const jointGridParams = {
   size: { default: 100, min: 2, max: 1000, integer: true, description: 'circles along each side of the grid' },
 } satisfies ParamSpecs;
+
+/** The seven static circles the grid hangs from: the middle of the top row. */
+function isFixed(row: number, column: number, middle: number): boolean {
+  return row === 0 && column >= middle - 3 && column <= middle + 3;
+}
 
 /**
  * Box2D v3's joint_grid benchmark: a size x size grid of circles (radius 0.4, one apart) each
  * pinned by revolute joints to its neighbour above and to its left, hanging from the seven
  * static circles in the middle of the top row. Meters, gravity 10, y down.
  */
-function isFixed(row: number, column: number, middle: number): boolean {
-  return row === 0 && column >= middle - 3 && column <= middle + 3;
-}
-
 export function jointGrid(given?: Partial<Record<keyof typeof jointGridParams, number>>): ShapeScene {
   const p = resolveParams('joint-grid', jointGridParams, given);
   const n = p.size;

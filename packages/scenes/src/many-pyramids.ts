@@ -1,6 +1,7 @@
 import { resolveParams, type ParamSpecs } from './params.js';
 import { boxBody, type SceneBody, type ShapeScene } from './shape-scene.js';
 
+/** The parameters manyPyramids takes, with their defaults and ranges (resolveParams checks them). */
 export const manyPyramidsParams = {
   rows: { default: 20, min: 1, max: 100, integer: true, description: 'rows of pyramids, each on its own floor' },
   columns: { default: 20, min: 1, max: 100, integer: true, description: 'pyramids per row' },

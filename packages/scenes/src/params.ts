@@ -7,8 +7,10 @@ export interface ParamSpec {
   description: string;
 }
 
+/** A scene's parameters by name. */
 export type ParamSpecs = Record<string, ParamSpec>;
 
+/** A scene's parameter values by name, defaults filled in, as resolveParams returns them. */
 export type ParamValues<S extends ParamSpecs> = { [K in keyof S]: number };
 
 /** Fills defaults and rejects unknown names, non-numbers and out-of-range values by name. */

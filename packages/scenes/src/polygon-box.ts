@@ -2,6 +2,7 @@ import { Prng } from './prng.js';
 import { resolveParams, type ParamSpecs } from './params.js';
 import type { SceneBody, SceneShape, ShapeScene } from './shape-scene.js';
 
+/** The parameters polygonBox takes, with their defaults and ranges (resolveParams checks them). */
 export const polygonBoxParams = {
   n: { default: 1000, min: 0, max: 2_000_000, integer: true, description: 'number of bodies: boxes, triangles, hexagons, capsules and circles in turn' },
   seed: { default: 1, min: 0, max: 2 ** 32 - 1, integer: true, description: 'PRNG seed' },

@@ -5,6 +5,7 @@
 export class Prng {
   private state: number;
 
+  /** A generator whose sequence depends only on the low 32 bits of `seed`. */
   constructor(seed: number) {
     this.state = seed >>> 0;
   }

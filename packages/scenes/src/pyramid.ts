@@ -1,6 +1,7 @@
 import { resolveParams, type ParamSpecs } from './params.js';
 import { boxBody, type SceneBody, type ShapeScene } from './shape-scene.js';
 
+/** The parameters pyramid takes, with their defaults and ranges (resolveParams checks them). */
 export const pyramidParams = {
   base: { default: 100, min: 1, max: 1000, integer: true, description: 'boxes in the bottom row (base 100: 5,050 boxes)' },
   friction: { default: 0.6, min: 0, max: 10, description: 'friction of the boxes and the ground' },

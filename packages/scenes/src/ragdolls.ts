@@ -2,6 +2,7 @@ import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
 import { boxBody, type SceneBody, type SceneShape, type ShapeScene } from './shape-scene.js';
 
+/** The parameters ragdolls takes, with their defaults and ranges (resolveParams checks them). */
 export const ragdollsParams = {
   count: { default: 40, min: 1, max: 10000, integer: true, description: 'ragdolls raining down' },
   columns: { default: 10, min: 1, max: 1000, integer: true, description: 'ragdolls side by side in each row' },

@@ -1,6 +1,7 @@
 import { resolveParams, type ParamSpecs } from './params.js';
 import type { SceneBody, ShapeScene } from './shape-scene.js';
 
+/** The parameters ramp takes, with their defaults and ranges (resolveParams checks them). */
 export const rampParams = {
   angle: { default: 20, min: 0, max: 80, description: 'slope of the ramp, degrees' },
   friction: { default: 0.5, min: 0, max: 10, description: 'friction of the box and the ramp' },

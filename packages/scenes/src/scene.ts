@@ -30,6 +30,7 @@ export interface Scene {
   segments: SceneSegment[];
 }
 
+/** A static wall from (x1, y1) to (x2, y2), as the engine's createSegment takes it. */
 export interface SceneSegment {
   x1: number;
   y1: number;
@@ -70,7 +71,9 @@ export interface Layers {
  * plus collision layers: `layers(k, isStatic)` for circle k, and `segmentLayers` for every segment.
  */
 export interface BuildOptions extends Omit<WorldOptions, 'bounds' | 'gravity' | 'restitution'> {
+  /** The collision layers of circle k; without it every circle keeps the defaults (category 1, every mask bit). */
   layers?: (k: number, isStatic: boolean) => Layers;
+  /** The collision layers of every segment. */
   segmentLayers?: Layers;
 }
 

@@ -2,6 +2,7 @@ import { Prng } from './prng.js';
 import { resolveParams, type ParamSpecs } from './params.js';
 import { allocateScene, type Scene } from './scene.js';
 
+/** The parameters seedBox takes, with their defaults and ranges (resolveParams checks them). */
 export const seedBoxParams = {
   n: { default: 1000, min: 0, max: 2_000_000, integer: true, description: 'number of circles' },
   seed: { default: 1, min: 0, max: 2 ** 32 - 1, integer: true, description: 'PRNG seed' },

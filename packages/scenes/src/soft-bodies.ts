@@ -2,6 +2,7 @@ import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
 import { funnelAndFloor, type SceneBody, type ShapeScene } from './shape-scene.js';
 
+/** The parameters jellies takes, with their defaults and ranges (resolveParams checks them). */
 export const jelliesParams = {
   count: { default: 20, min: 1, max: 10000, integer: true, description: 'jellies' },
   side: { default: 6, min: 2, max: 100, integer: true, description: 'particles along each side of a jelly' },

@@ -1,6 +1,7 @@
 import { resolveParams, type ParamSpecs } from './params.js';
 import { boxBody, type SceneBody, type ShapeScene } from './shape-scene.js';
 
+/** The parameters tumbler takes, with their defaults and ranges (resolveParams checks them). */
 export const tumblerParams = {
   grid: { default: 45, min: 1, max: 200, integer: true, description: 'boxes per side of the square they start in (45: 2,025 boxes)' },
   speed: { default: 25, min: -3600, max: 3600, description: 'the drum turns this many degrees a second' },

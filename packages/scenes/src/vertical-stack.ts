@@ -1,6 +1,7 @@
 import { resolveParams, type ParamSpecs } from './params.js';
 import { boxBody, type SceneBody, type ShapeScene } from './shape-scene.js';
 
+/** The parameters verticalStack takes, with their defaults and ranges (resolveParams checks them). */
 export const verticalStackParams = {
   count: { default: 15, min: 1, max: 1000, integer: true, description: 'boxes in the stack' },
   size: { default: 1, min: 0.01, max: 100, description: 'side of each box, m' },

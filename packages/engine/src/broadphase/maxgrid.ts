@@ -4,6 +4,7 @@ import type { PairSink } from '../store/pair-sink.js';
 import { CellGrid } from './cell-grid.js';
 import { LiveExtent } from './live-extent.js';
 
+/** A Max Grid's cells, as gridGeometry returns them for drawing: columns x rows squares of side cellSize from (originX, originY). */
 export interface GridGeometry {
   originX: number;
   originY: number;

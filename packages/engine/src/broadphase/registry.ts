@@ -17,6 +17,13 @@ export const BROADPHASES = {
   auto: () => new AutoBroadPhase(),
 } satisfies Record<string, () => BroadPhase>;
 
+/**
+ * A broad-phase a world can be given (WorldOptions.broadphase, setBroadphase); each gives the same
+ * bits, at its own speed.
+ *
+ * @useDeclaredType
+ */
 export type BroadPhaseName = keyof typeof BROADPHASES;
 
+/** Every broad-phase name, for option lists and validation. */
 export const BROADPHASE_NAMES = Object.keys(BROADPHASES) as BroadPhaseName[];

@@ -21,7 +21,10 @@ export type CircleIntegratorName = keyof typeof INTEGRATORS;
  * Every integrator a world can be given. 'rk4' (classical Runge-Kutta) is for force-driven
  * springs (joints of kind 'spring'): it moves the world to the shape route, where the soft step
  * integrates each sub-step's spring forces with it (solver/force-springs.ts).
+ *
+ * @useDeclaredType
  */
 export type IntegratorName = CircleIntegratorName | 'rk4';
 
+/** Every integrator name, for option lists and validation. */
 export const INTEGRATOR_NAMES: readonly IntegratorName[] = ['explicit-euler', 'semi-implicit-euler', 'rk4'];

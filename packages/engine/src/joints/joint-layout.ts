@@ -1,6 +1,7 @@
 /** Joint kinds, as stored in JointStore.kind and named in JointOptions.kind. */
 export const JointKind = { distance: 0, revolute: 1, prismatic: 2, weld: 3, wheel: 4, target: 5, spring: 6, pressure: 7 } as const;
 export type JointKindName = keyof typeof JointKind;
+/** Every joint kind, indexed by the code that `JointViews.kind` holds. */
 export const JOINT_KIND_NAMES = Object.keys(JointKind) as JointKindName[];
 
 /**

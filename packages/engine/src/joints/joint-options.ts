@@ -149,6 +149,7 @@ export interface PressureJointOptions {
   pressure: number;
 }
 
+/** What createJoint takes: one joint of any kind, told apart by `kind`. */
 export type JointOptions = PressureJointOptions | SpringJointOptions | DistanceJointOptions | RevoluteJointOptions | PrismaticJointOptions | WeldJointOptions | WheelJointOptions | TargetJointOptions;
 
 const BASE_KEYS = ['kind', 'bodyA', 'bodyB', 'anchorA', 'anchorB', 'collideConnected', 'breakForce', 'breakTorque'];

@@ -5,6 +5,7 @@ import { rayCircle, rayCircleEntry } from './ray-circle.js';
 import type { ShapeStore } from '../store/shape-store.js';
 import { rayNormal, rayShape, shapeContains, shapeOverlapsBox } from './shape-queries.js';
 
+/** Where a ray enters a body: the point, the outward surface normal there, and the body's handle. */
 export interface RayHit {
   handle: number;
   /** Where along the segment from (x1, y1) to (x2, y2) the ray enters the circle, in [0, 1]. */

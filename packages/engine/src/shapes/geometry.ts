@@ -3,6 +3,7 @@ import { atan2 } from '../math/trig.js';
 /** Shape kinds, as stored in the shape store; the narrow-phase dispatches on a pair of them. */
 export const ShapeKind = { circle: 0, capsule: 1, polygon: 2 } as const;
 export type ShapeKindCode = (typeof ShapeKind)[keyof typeof ShapeKind];
+/** Every stored shape kind, indexed by the code that `ShapeViews.kind` holds (a box is stored as a polygon). */
 export const SHAPE_KIND_NAMES = ['circle', 'capsule', 'polygon'] as const;
 
 /** The most vertices a convex polygon may have, as in Box2D (B2_MAX_POLYGON_VERTICES). */

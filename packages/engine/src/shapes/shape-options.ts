@@ -58,6 +58,7 @@ export interface OffsetOptions {
   offsetAngle?: number | undefined;
 }
 
+/** One shape to attach to a body (createBody, addShape), told apart by `kind`; its offset places it in the body's frame. */
 export type ShapeOptions =
   | ({ kind: 'circle'; radius: number } & Omit<OffsetOptions, 'offsetAngle'> & MaterialOptions)
   | ({ kind: 'box'; width: number; height: number; radius?: number | undefined } & OffsetOptions & MaterialOptions)

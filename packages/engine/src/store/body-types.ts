@@ -1,6 +1,7 @@
 /** Motion types, as in the report's section 3.1.2 and in Box2D / Unity. */
 export type BodyType = 'static' | 'kinematic' | 'dynamic';
 
+/** Every motion type, for option lists and validation. */
 export const BODY_TYPES: readonly BodyType[] = ['static', 'kinematic', 'dynamic'];
 
 /**
