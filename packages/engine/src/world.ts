@@ -163,6 +163,7 @@ export class World {
     vertices: new Float64Array(0),
   };
 
+  /** An empty world; options left out take the defaults WorldOptions lists (no box, no gravity, elastic, frictionless). */
   constructor(options: WorldOptions = {}) {
     const resolved = resolveWorldOptions(options);
     this.creation = copyOptions(options) as Record<string, unknown>;
@@ -179,14 +180,17 @@ export class World {
     if (resolved.solver === 'soft' || resolved.friction > 0 || resolved.integrator === 'rk4') this.engage();
   }
 
+  /** Live bodies: circles and bodies with shapes, of every motion type. */
   get bodyCount(): number {
     return this.bodies.liveCount;
   }
 
+  /** The broad-phase the next step uses (WorldOptions.broadphase, setBroadphase). */
   get broadphase(): BroadPhaseName {
     return this.pipeline.broadPhase.name as BroadPhaseName;
   }
 
+  /** The integrator the next step uses (WorldOptions.integrator, setIntegrator). */
   get integrator(): IntegratorName {
     return this.integratorChoice;
   }
@@ -218,19 +222,23 @@ export class World {
     };
   }
 
+  /** A copy of the world's gravity: changing it changes nothing; setGravity does. */
   get gravity(): Vector {
     const g = this.pipeline.settings.gravity;
     return { x: g.x, y: g.y };
   }
 
+  /** The box walls' restitution, and the default of new bodies and segments. */
   get restitution(): number {
     return this.defaultRestitution;
   }
 
+  /** The box walls' friction, and the default of new shapes and segments. */
   get friction(): number {
     return this.defaultFriction;
   }
 
+  /** A copy of the box from (0, 0) to (width, height) that contains every body, or null without one. */
   get box(): { width: number; height: number } | null {
     return this.bounds ? { ...this.bounds } : null;
   }
@@ -303,6 +311,11 @@ export class World {
     this.workerStarts = starts + 1;
   }
 
+  /**
+   * Adds a circle body and returns its handle. A world of frictionless circles steps on the
+   * report's circle engine; a circle with friction, rolling resistance, a sensor or `bullet` moves
+   * the world to the shape route.
+   */
   createCircle(options: CircleOptions): number {
     const body = resolveCircle(options, this.defaultRestitution);
     const o = options as unknown as Record<string, unknown>;
@@ -451,11 +464,13 @@ export class World {
     return this.segments.add(segment);
   }
 
+  /** Removes a static segment; a stale or unknown handle throws a RangeError. */
   destroySegment(handle: number): void {
     this.segments.remove(this.segmentSlot(handle));
     this.staticVersion++;
   }
 
+  /** A segment as created, with every default filled in. */
   getSegment(handle: number): Required<SegmentOptions> {
     const s = this.segmentSlot(handle);
     const g = this.segments;
@@ -472,6 +487,7 @@ export class World {
     };
   }
 
+  /** Live static segments. */
   get segmentCount(): number {
     return this.segments.count;
   }
@@ -481,10 +497,12 @@ export class World {
     return this.shapes.store.count;
   }
 
+  /** Whether a handle names a live body: false once it is destroyed, even if its slot is reused. */
   hasBody(handle: number): boolean {
     return this.bodies.slotOf(handle) >= 0;
   }
 
+  /** A circle body's state (see CircleState); a body that is not a single circle throws: use getBody and getShape. */
   getCircle(handle: number): CircleState {
     const s = this.slot(handle);
     const b = this.bodies;
@@ -575,6 +593,7 @@ export class World {
     return store.handleOf(slot);
   }
 
+  /** Sets a body's linear velocity and wakes it; a static body throws. */
   setVelocity(handle: number, vx: number, vy: number): void {
     const s = this.slot(handle);
     boundedNumber('vx', vx);
@@ -673,18 +692,21 @@ export class World {
     this.bodies.wake(s);
   }
 
+  /** Sets the factor on the world's gravity for one body (CircleOptions.gravityScale); wakes it. */
   setGravityScale(handle: number, scale: number): void {
     const s = this.slot(handle);
     this.bodies.setMotion(s, boundedNumber('gravityScale', scale), this.bodies.linearDamping[s]);
     this.bodies.wake(s);
   }
 
+  /** Sets a body's linear damping (CircleOptions.linearDamping), at least 0; wakes it. */
   setLinearDamping(handle: number, damping: number): void {
     const s = this.slot(handle);
     this.bodies.setMotion(s, this.bodies.gravityScale[s], nonNegativeNumber('linearDamping', damping));
     this.bodies.wake(s);
   }
 
+  /** Sets a body's angular damping, at least 0, as linearDamping does for velocity; wakes it. */
   setAngularDamping(handle: number, damping: number): void {
     const s = this.slot(handle);
     const value = nonNegativeNumber('angularDamping', damping);
@@ -723,6 +745,7 @@ export class World {
     if (this.bodies.type[s] === TypeCode.static) this.staticVersion++;
   }
 
+  /** Whether a body is awake; a sleeping body does not move until something wakes it (setAwake, a setter, a touch). */
   isAwake(handle: number): boolean {
     return this.bodies.asleep[this.slot(handle)] === 0;
   }
@@ -749,6 +772,7 @@ export class World {
     this.geometryVersion++;
   }
 
+  /** Switches the broad-phase from the next step; every broad-phase gives the same bits, at its own speed. */
   setBroadphase(name: BroadPhaseName): void {
     const checked = broadphaseName(name);
     if (checked !== this.pipeline.broadPhase.name) this.pipeline.broadPhase = BROADPHASES[checked]();
@@ -764,6 +788,7 @@ export class World {
     if (this.joints) this.joints.integrator = checked;
   }
 
+  /** Sets the world's gravity, in length units per second squared. */
   setGravity(x: number, y: number): void {
     const g = vector('gravity', { x, y });
     this.pipeline.settings.gravity.x = g.x;
@@ -883,10 +908,12 @@ export class World {
     store.remove(j);
   }
 
+  /** Whether a handle names a live joint: false once it is destroyed, breaks, or goes with one of its bodies. */
   hasJoint(handle: number): boolean {
     return this.joints !== null && this.joints.store.slotOf(handle) >= 0;
   }
 
+  /** Live joints. */
   get jointCount(): number {
     return this.joints?.store.count ?? 0;
   }
@@ -1079,6 +1106,7 @@ export class World {
     return energy;
   }
 
+  /** Linear momentum of the dynamic bodies (sum of m v). */
   momentum(): Vector {
     return analytics.momentum(this.bodies);
   }
@@ -1194,6 +1222,7 @@ export class World {
     return this.queries.rayAll(this.geometryVersion, x1, y1, x2, y2, mask, rayHitsOutput(out));
   }
 
+  /** Zero-copy views of the body columns for renderers (see BodyViews); take them again after adding bodies. */
   views(): BodyViews {
     const v = this.viewsRecord;
     const b = this.bodies;
