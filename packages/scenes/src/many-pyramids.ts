@@ -10,7 +10,7 @@ export const manyPyramidsParams = {
 } satisfies ParamSpecs;
 
 /**
- * Box2D v3's `many_pyramids` benchmark (shared/benchmarks.c): rows x columns small pyramids of
+ * Box2D v3's `many_pyramids` benchmark (Box2D's own shared/benchmarks.c): rows x columns small pyramids of
  * unit boxes, each row of pyramids on its own floor (a static segment), 22,000 boxes at the
  * defaults; meters, gravity 10, sleeping off. y points down, so the floors step upwards (towards
  * negative y) from y = 0.

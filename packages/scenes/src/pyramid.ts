@@ -9,7 +9,7 @@ export const pyramidParams = {
 } satisfies ParamSpecs;
 
 /**
- * Box2D v3's `large_pyramid` benchmark (shared/benchmarks.c): a triangle of unit boxes, `base` in
+ * Box2D v3's `large_pyramid` benchmark (Box2D's own shared/benchmarks.c): a triangle of unit boxes, `base` in
  * the bottom row and one fewer in each row above, each resting on two below, every box touching
  * its neighbours, on a static ground 200 x 2 m; density 1, gravity 10, meters. y points down, as
  * in every scene: the ground's top is y = 0 and the pyramid rises towards negative y.

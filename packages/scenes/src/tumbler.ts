@@ -9,7 +9,7 @@ export const tumblerParams = {
 } satisfies ParamSpecs;
 
 /**
- * Box2D v3's `tumbler` benchmark (shared/benchmarks.c): small boxes (0.25 m) tumbling in a hollow
+ * Box2D v3's `tumbler` benchmark (Box2D's own shared/benchmarks.c): small boxes (0.25 m) tumbling in a hollow
  * square drum 20 m wide that turns at a constant speed. Box2D drives its drum with a revolute
  * motor; here the drum is a kinematic body given that angular velocity, which turns it the same
  * way without a joint. Meters, gravity 10. y points down: the drum's centre is at (0, -10).
