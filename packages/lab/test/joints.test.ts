@@ -89,6 +89,27 @@ describe('joints', () => {
     }
   });
 
+  it("the blobs' figure tells rings without their gas: they fold below the plausible area, and hold it with the gas", () => {
+    const scene = buildShapeScene('blobs', { count: 2 });
+    const maxgrid = engines.find((e) => e.info.id === 'maxgrid:maxgrid')!;
+    const figure = (given: typeof scene) => {
+      const sim = maxgrid.create(given, 'defaults');
+      try {
+        for (let s = 0; s < 180; s++) sim.step(1 / 60);
+        const p = allocatePoses(sim.count);
+        sim.read(p);
+        return jointSanity(scene, p, 3);
+      } finally {
+        sim.dispose();
+      }
+    };
+    const held = figure(scene);
+    expect(held.ok, JSON.stringify(held)).toBe(true);
+    const empty = figure({ ...scene, joints: scene.joints!.filter((j) => j.kind !== 'pressure') });
+    expect(empty.ok).toBe(false);
+    expect(empty.value).toBeLessThan(0.6);
+  });
+
   it('an adapter refuses a joint it cannot build rather than leaving it out', () => {
     const byId = (id: string) => engines.find((e) => e.info.id === id)!;
     const refusals: [string, string, Record<string, number>, RegExp][] = [

@@ -29,7 +29,7 @@ export interface JointsOptions {
   baseline: string;
 }
 
-export const JOINT_SCENES = ['joint-grid', 'chain', 'bridge', 'ragdolls', 'car', 'jellies'] as const satisfies readonly ShapeSceneName[];
+export const JOINT_SCENES = ['joint-grid', 'chain', 'bridge', 'ragdolls', 'car', 'jellies', 'blobs'] as const satisfies readonly ShapeSceneName[];
 export type JointSceneName = (typeof JOINT_SCENES)[number];
 
 export function jointsDefaults(profile: Profile): JointsOptions {
@@ -44,6 +44,10 @@ export function jointsDefaults(profile: Profile): JointsOptions {
           { scene: 'ragdolls', params: {} },
           { scene: 'car', params: {} },
           { scene: 'jellies', params: {} },
+          // Soft bodies at scale (issue 21): hundreds of them, ten to twenty thousand particles.
+          { scene: 'jellies', params: { count: 400 } },
+          { scene: 'blobs', params: { count: 625 } },
+          { scene: 'blobs', params: { count: 625, segments: 3 } },
         ],
         warmupSteps: 30,
         steps: 300,
@@ -59,6 +63,7 @@ export function jointsDefaults(profile: Profile): JointsOptions {
           { scene: 'ragdolls', params: { count: 20 } },
           { scene: 'car', params: {} },
           { scene: 'jellies', params: { count: 8 } },
+          { scene: 'blobs', params: { count: 12 } },
         ],
         warmupSteps: 10,
         steps: 60,
@@ -110,6 +115,8 @@ function pose(p: PoseState, k: number) {
 /** The largest gap between the anchors of a revolute joint. */
 export function pinGap(scene: ShapeScene, p: PoseState): number {
   let gap = 0;
+  // Only revolute pins are measured; a scene with kinds the peers lack (a blob's gas) has none to resolve.
+  if (!(scene.joints ?? []).some((j) => j.kind === 'revolute')) return 0;
   for (const j of resolveSceneJoints(scene, 'lab')) {
     if (j.kind !== 'revolute') continue;
     const a = scenePoint(pose(p, j.bodyA), j.anchorA);
@@ -185,6 +192,28 @@ export function jointSanity(scene: ShapeScene, p: PoseState, seconds: number): S
         worst = Math.max(worst, Math.abs(Math.hypot(b.x - a.x, b.y - a.y) - j.length) / j.length);
       }
       return figure('largest spring stretch / rest length', worst, 0, 1, null);
+    }
+    case 'blobs': {
+      // The gas holds each ring's area near its rest area (it inflates them a fifth past their
+      // start), where an empty ring folds to a third; the median, since a ring landing under
+      // another is squashed for a moment.
+      const ratios: number[] = [];
+      for (const j of scene.joints ?? []) {
+        if (j.kind !== 'pressure') continue;
+        const ring = j.bodies;
+        let now = 0;
+        let start = 0;
+        for (let i = 0; i < ring.length; i++) {
+          const a = ring[i];
+          const b = ring[(i + 1) % ring.length];
+          now += p.x[a] * p.y[b] - p.x[b] * p.y[a];
+          start += scene.bodies[a].x * scene.bodies[b].y - scene.bodies[b].x * scene.bodies[a].y;
+        }
+        ratios.push(now / start);
+      }
+      ratios.sort((x, y) => x - y);
+      const median = ratios.length === 0 ? NaN : ratios[ratios.length >> 1];
+      return figure("median ring's area / its area at the start", median, 0.6, 1.5, null);
     }
     default:
       throw new RangeError(`joints: no sanity figure for scene '${scene.name}'`);
@@ -420,7 +449,7 @@ function jointsOptions(profile: Profile, o: Overrides): JointsOptions {
 
 export const joints: Experiment<JointsOptions, JointsResult> = {
   name: 'joints',
-  description: "Step time on joint scenes (Box2D v3's joint_grid, a 100-link chain, a bridge, ragdolls, a car, jellies) against every peer that has their joints, with a physical figure per engine (issue 21)",
+  description: "Step time on joint scenes (Box2D v3's joint_grid, a 100-link chain, a bridge, ragdolls, a car, jellies, pressure blobs) against every peer that has their joints, with a physical figure per engine (issue 21)",
   schema: jointsSchema,
   defaultEngines: ['maxgrid:maxgrid', ...SHAPE_ENGINE_IDS.filter((id) => !id.startsWith('maxgrid:'))],
   // Seconds of Matter and p2 on the 10,000-body joint grid: too long for the lab page.
