@@ -40,8 +40,8 @@ export function toJson(recorder: Recorder, settings: Settings, dt: number, broad
   });
 }
 
-export function download(filename: string, mime: string, text: string): void {
-  const url = URL.createObjectURL(new Blob([text], { type: mime }));
+export function download(filename: string, mime: string, data: BlobPart): void {
+  const url = URL.createObjectURL(new Blob([data], { type: mime }));
   const a = document.createElement('a');
   a.href = url;
   a.download = filename;

@@ -1,4 +1,4 @@
-import { BodyTypeCode, type BroadPhaseName } from '@maxgrid/engine';
+import { BodyTypeCode, World, type BroadPhaseName } from '@maxgrid/engine';
 import { refusals } from './broadphase-budget.js';
 import { Controls, usableCores } from './controls.js';
 import { download, toCsv, toJson } from './data-export.js';
@@ -22,6 +22,8 @@ import {
 } from './settings.js';
 import { DT, STEP_BUDGET_MS, Simulation } from './simulation.js';
 import { Pace } from './pace.js';
+import { decodeSave, encodeSave, saveName } from './save-file.js';
+import { TimelineBar } from './timeline.js';
 import { ViewTransform } from './view.js';
 
 function byId<T extends HTMLElement>(id: string): T {
@@ -53,6 +55,8 @@ let settings: Settings = parseSettings(location.search);
 settings.threads = offeredThreads(settings.threads, usableCores());
 // A scene change waits for the next frame, so dragging a slider rebuilds once per frame at most.
 let pendingScene: Settings | null = null;
+// Likewise a seek: dragging the scrubber over many steps restores and steps once per frame.
+let pendingSeek: number | null = null;
 let forceStats = true;
 
 const controls = new Controls(settings, {
@@ -114,6 +118,7 @@ function withinBudget(s: Settings): Settings {
  */
 function rebuild(next: Settings): void {
   say('');
+  timeline.say('');
   let wanted = copySettings(next);
   try {
     sim.rebuild(wanted);
@@ -125,6 +130,12 @@ function rebuild(next: Settings): void {
     sim.rebuild(wanted);
   }
   settings = withinBudget(wanted);
+  shown();
+}
+
+/** After the world was replaced (a rebuild, a load): the page's own state starts over with it. */
+function shown(): void {
+  pendingSeek = null;
   frameLog.clear();
   pace.reset();
   paceLine.textContent = '';
@@ -135,6 +146,59 @@ function rebuild(next: Settings): void {
   saveUrl();
   showOverfill();
   forceStats = true;
+}
+
+/**
+ * Shows the world of a save as it was: its scene's settings (view and tools included), paused or
+ * running. A file that is no save, or a snapshot the engine refuses, changes nothing: the line
+ * under the timeline says why, in the engine's words.
+ */
+function loadSave(name: string, bytes: Uint8Array): void {
+  let next: Settings;
+  let paused: boolean;
+  try {
+    const save = decodeSave(bytes);
+    next = parseSettings(save.header.settings);
+    next.threads = offeredThreads(next.threads, usableCores());
+    const world = World.restore(save.snapshot);
+    if (world.stats.steps !== save.header.step) throw new RangeError(`the header says step ${save.header.step}, the snapshot is of step ${world.stats.steps}`);
+    sim.load(next, world, save.snapshot, save.header.mark);
+    paused = save.header.paused;
+  } catch (error) {
+    timeline.say(`Could not load ${name}: ${error instanceof Error ? error.message : String(error)}. Nothing changed.`, true);
+    return;
+  }
+  say('');
+  pendingScene = null;
+  settings = withinBudget(next);
+  settings.renderer = selectRenderer(settings.renderer);
+  shown();
+  sim.paused = paused;
+  showPaused();
+  refreshStats();
+  timeline.say(`Loaded ${name}: ${settings.scene} at step ${sim.step.toLocaleString('en-US')}.`);
+}
+
+function saveWorld(): void {
+  const { snapshot, mark } = sim.save();
+  const bytes = encodeSave({ sandboxSave: 1, settings: serializeSettings(settings), step: sim.step, paused: sim.paused, mark }, snapshot);
+  download(saveName(settings.scene, sim.step), 'application/octet-stream', bytes);
+}
+
+function seek(step: number): void {
+  sim.seek(step);
+  // The snapshot's broad-phase may be another: every one gives the same bits, so the page's stays.
+  sim.setBroadphase(settings.broadphase);
+  // The integrator is the step's own: going back before a switch switches back, and the form says so.
+  if (sim.world.integrator !== settings.integrator) {
+    settings.integrator = sim.world.integrator;
+    controls.show(settings, refused);
+    saveUrl();
+  }
+  // world.restore stopped the workers.
+  sim.setThreads(settings.threads, threadsFailed);
+  showPaused();
+  refreshStats();
 }
 
 /** The choices that are not the scene: kept when a URL's scene falls back to its defaults. */
@@ -218,6 +282,13 @@ byId('reset').addEventListener('click', () => {
   rebuild(controls.settings);
   refreshStats();
 });
+const timeline = new TimelineBar(sim, {
+  seek(step) {
+    pendingSeek = step;
+  },
+  save: saveWorld,
+  load: loadSave,
+});
 byId('download').addEventListener('click', () => {
   const format = byId<HTMLSelectElement>('format').value;
   const base = `maxgrid-${settings.scene}-n${settings.params.n}-seed${settings.seed}`;
@@ -249,6 +320,10 @@ declare global {
       route(): string;
       region(): { x: number; y: number; width: number; height: number };
       toCss(x: number, y: number): { x: number; y: number };
+      /** world.stateHash() and the world's step count, read at the same moment. */
+      state(): { hash: string; step: number; time: number; paused: boolean };
+      /** The scrubber's history: the steps it reaches, its snapshots and their bytes. */
+      history(): { oldest: number; head: number; count: number; bytes: number; spacing: number };
     };
   }
 }
@@ -265,6 +340,11 @@ window.__sandboxProbe = {
   route: () => sim.world.route.route,
   region: () => ({ ...sim.box }),
   toCss: (x, y) => ({ x: (x * view.scale + view.offsetX) / view.dpr, y: (y * view.scale + view.offsetY) / view.dpr }),
+  state: () => ({ hash: sim.world.stateHash(), step: sim.step, time: sim.time, paused: sim.paused }),
+  history: () => {
+    const h = sim.history;
+    return { oldest: h.oldest, head: h.head, count: h.count, bytes: h.bytes, spacing: h.spacing };
+  },
 };
 window.__sandboxFrames = {
   read: () => ({
@@ -292,6 +372,11 @@ function frame(now: number): void {
     pendingScene = null;
     rebuild(next);
   }
+  if (pendingSeek !== null) {
+    const step = pendingSeek;
+    pendingSeek = null;
+    seek(step);
+  }
   const stepStart = performance.now();
   const steps = sim.advance(elapsed);
   const drawStart = performance.now();
@@ -315,6 +400,7 @@ function frame(now: number): void {
   overlay.draw(sim.world, view, overlayOptions);
   frameLog.record(now, drawStart - stepStart, performance.now() - drawStart, steps);
   monitor.update(now, sim, forceStats);
+  timeline.update();
   forceStats = false;
 }
 requestAnimationFrame(frame);

@@ -7,6 +7,7 @@ import { Recorder } from './monitor/recorder.js';
 import { HitEvents } from './hit-events.js';
 import { TouchEvents } from './touch-events.js';
 import { buildSandboxShapeWorld, buildSandboxWorld, flatSegments, hitThreshold, layerMask, layerOf } from './scene-world.js';
+import { History, MIN_SPACING, type DragInput, type Mark } from './history.js';
 
 /** The drag spring on shapes: its frequency (Hz), damping ratio, and the most it accelerates a body, in gravities (or in scene sizes per second squared without gravity). */
 const DRAG_HERTZ = 4;
@@ -20,9 +21,54 @@ const MAX_STEPS_PER_FRAME = 4;
 /** ...and no more catching up once a frame has spent this long stepping. */
 export const STEP_BUDGET_MS = 40;
 
+/** The mean step time of the last steps recorded, in ms: what a snapshot's cost is weighed against. */
+function meanStepMs(recorder: Recorder): number {
+  const ring = recorder.series.step_ms;
+  const n = Math.min(ring.length, MIN_SPACING);
+  let sum = 0;
+  for (let i = ring.length - n; i < ring.length; i++) sum += ring.at(i);
+  return n > 0 ? sum / n : NaN;
+}
+
+/** A scene as the page draws it, and how to build its world. */
+interface SceneFrame {
+  segments: Float64Array;
+  region: { x: number; y: number; width: number; height: number };
+  gravity: { x: number; y: number };
+  bounded: boolean;
+  threshold: number;
+  build(): World;
+}
+
+function sceneFrame(settings: Settings): SceneFrame {
+  if (isShapeScene(settings.scene)) {
+    const scene = buildShapeScene(settings.scene, sceneParams(settings));
+    const v = scene.view;
+    const gravity = scene.gravity;
+    return {
+      segments: flatSegments(scene),
+      region: scene.bounds ? { x: 0, y: 0, width: scene.bounds.width, height: scene.bounds.height } : { x: v.minX, y: v.minY, width: v.maxX - v.minX, height: v.maxY - v.minY },
+      gravity,
+      bounded: scene.bounds !== null,
+      threshold: Math.max(8 * Math.hypot(gravity.x, gravity.y) * DT, (scene.world.lengthUnit ?? 1) * 0.5),
+      build: () => buildSandboxShapeWorld(scene, DT, settings, settings.substeps),
+    };
+  }
+  const scene = buildScene(settings.scene, sceneParams(settings));
+  return {
+    segments: flatSegments(scene),
+    region: { x: 0, y: 0, width: scene.bounds.width, height: scene.bounds.height },
+    gravity: scene.gravity,
+    bounded: true,
+    threshold: hitThreshold(scene, DT),
+    build: () => buildSandboxWorld(scene, DT, settings),
+  };
+}
+
 /**
  * The world plus everything that runs it: the fixed-step accumulator, the recorded series and the
- * pointer drag. A rebuild replaces the world; switching broad-phase or integrator does not.
+ * pointer drag, and the history the scrubber seeks in. A rebuild replaces the world; switching
+ * broad-phase or integrator, a seek and a load of a save do not.
  */
 export class Simulation {
   world!: World;
@@ -74,6 +120,15 @@ export class Simulation {
   /** The body the region follows across (the car), and where the region's left edge is from it. */
   private followHandle = -1;
   private followOffset = 0;
+  /** The scrubber's past (history.ts): every change to the world below keeps it one line of steps. */
+  readonly history = new History();
+  /**
+   * A circle a seek left kinematic, held at the step sought by a drag whose pointer is long gone:
+   * released (made dynamic) as the world leaves that step, so it does not float there for good.
+   */
+  private heldAfterSeek = -1;
+  /** Edited since the last snapshot: one is taken before the next step or seek, so edits between two steps cost one. */
+  private dirty = false;
 
   constructor(private readonly now: () => number = () => performance.now()) {}
 
@@ -83,29 +138,23 @@ export class Simulation {
    * to fit the funnel, a minimum radius above the maximum).
    */
   rebuild(settings: Settings): void {
-    let world: World;
-    let segments: Float64Array;
-    let region: { x: number; y: number; width: number; height: number };
-    let gravity: { x: number; y: number };
-    let threshold: number;
-    if (isShapeScene(settings.scene)) {
-      const scene = buildShapeScene(settings.scene, sceneParams(settings));
-      world = buildSandboxShapeWorld(scene, DT, settings, settings.substeps);
-      segments = flatSegments(scene);
-      const v = scene.view;
-      region = scene.bounds ? { x: 0, y: 0, width: scene.bounds.width, height: scene.bounds.height } : { x: v.minX, y: v.minY, width: v.maxX - v.minX, height: v.maxY - v.minY };
-      gravity = scene.gravity;
-      this.bounded = scene.bounds !== null;
-      threshold = Math.max(8 * Math.hypot(gravity.x, gravity.y) * DT, (scene.world.lengthUnit ?? 1) * 0.5);
-    } else {
-      const scene = buildScene(settings.scene, sceneParams(settings));
-      world = buildSandboxWorld(scene, DT, settings);
-      segments = flatSegments(scene);
-      region = { x: 0, y: 0, width: scene.bounds.width, height: scene.bounds.height };
-      gravity = scene.gravity;
-      this.bounded = true;
-      threshold = hitThreshold(scene, DT);
-    }
+    const frame = sceneFrame(settings);
+    this.adopt(settings, frame, frame.build(), null);
+  }
+
+  /**
+   * Shows `world` (World.restore of a save) as the scene of `settings`, where it was at `mark`:
+   * the scene gives what the world does not hold (its segments as drawn, the region, the hit
+   * threshold). `snapshot` is the world's bytes, the first entry of the new history. Throws,
+   * leaving the current world as it was, when the settings' scene does not build.
+   */
+  load(settings: Settings, world: World, snapshot: Uint8Array, mark: Mark): void {
+    this.adopt(settings, sceneFrame(settings), world, { snapshot, mark });
+  }
+
+  private adopt(settings: Settings, frame: SceneFrame, world: World, saved: { snapshot: Uint8Array; mark: Mark } | null): void {
+    const { segments, region, gravity, threshold } = frame;
+    this.bounded = frame.bounded;
     this.world?.stopWorkers();
     this.world = world;
     this.shapes = world.route.route === 'shapes';
@@ -122,28 +171,41 @@ export class Simulation {
     this.dragLimit = DRAG_MAX_G * (g > 0 ? g : Math.min(region.width, region.height) / 10);
     const v = this.world.views();
     this.colors.reset(settings.seed, v.slotCount, this.layers);
-    this.dynamicMass = 0;
     this.staticCircles = 0;
-    for (let s = 0; s < v.slotCount; s++) {
-      if (v.type[s] === BodyTypeCode.dynamic) this.dynamicMass += v.mass[s];
-      else if (v.type[s] === BodyTypeCode.static) this.staticCircles++;
-    }
+    for (let s = 0; s < v.slotCount; s++) if (v.type[s] === BodyTypeCode.static) this.staticCircles++;
+    this.countDynamicMass();
     this.recorder.clear();
     this.time = 0;
     this.accumulator = 0;
     this.droppedSteps = 0;
     this.dragHandle = -1;
+    this.heldAfterSeek = -1;
     this.pinAnchor = -1;
     const follow = isShapeScene(settings.scene) ? followedBody(settings.scene) : -1;
     this.followHandle = follow >= 0 && world.hasBody(follow) ? follow : -1;
-    if (this.followHandle >= 0) this.followOffset = region.x - v.x[world.slotOfHandle(this.followHandle)];
+    if (saved) {
+      // The region followed the car from where the scene put it: the same offset from it now.
+      if (this.followHandle >= 0) this.followOffset = saved.mark.boxX - v.x[world.slotOfHandle(this.followHandle)];
+      this.applyMark(saved.mark);
+      this.history.reset(world.stats.steps);
+      this.history.record(world.stats.steps, saved.snapshot, saved.mark);
+      this.dirty = false;
+    } else {
+      if (this.followHandle >= 0) this.followOffset = region.x - v.x[world.slotOfHandle(this.followHandle)];
+      // Taken before the first step or seek: a slider dragged through many worlds snapshots none of them.
+      this.history.reset(world.stats.steps);
+      this.dirty = true;
+    }
   }
 
   setBroadphase(name: BroadPhaseName): void {
     this.world.setBroadphase(name);
   }
 
+  /** Another integrator changes what the steps do: an edit. A seek brings back the one of its step. */
   setIntegrator(name: IntegratorName): void {
+    if (name === this.world.integrator) return;
+    this.beginEdit();
     this.world.setIntegrator(name);
   }
 
@@ -188,7 +250,142 @@ export class Simulation {
     return steps;
   }
 
+  /** One step forward; from a step the scrubber went back to, the steps after it are forgotten. */
   stepOnce(): void {
+    // The snapshot at or before this step, and the inputs up to it, still hold: only later ones go.
+    if (this.scrubbed) this.history.discardAfter(this.world.stats.steps);
+    if (this.heldAfterSeek >= 0) this.beginEdit();
+    this.flush();
+    const input = this.dragInput();
+    this.advanceOne();
+    const step = this.world.stats.steps;
+    this.history.stepped(step, input);
+    if (this.history.due(step)) {
+      const start = this.now();
+      const bytes = this.world.snapshot();
+      const ms = this.now() - start;
+      this.history.record(step, bytes, this.mark());
+      this.history.adapt(ms, meanStepMs(this.recorder));
+    }
+  }
+
+  /** The world's step count: the scrubber's position. */
+  get step(): number {
+    return this.world.stats.steps;
+  }
+
+  /** Whether the scrubber is back in time: steps after this one are kept to seek forward to. */
+  get scrubbed(): boolean {
+    return this.world.stats.steps < this.history.head;
+  }
+
+  /**
+   * Shows the world at `target` (clamped to the history's steps), paused: the latest snapshot at or
+   * before it, restored in place so handles stay valid, and stepped on to it with each step's drag
+   * input as logged. Forward within the stretch before the next snapshot it steps on from here.
+   * Worker threads stop (world.restore): setThreads starts them again.
+   */
+  seek(target: number): void {
+    if (this.dragHandle >= 0) this.endDrag();
+    this.flush();
+    const world = this.world;
+    const from = world.stats.steps;
+    const to = Math.min(this.history.head, Math.max(this.history.oldest, Math.round(target)));
+    this.paused = true;
+    this.accumulator = 0;
+    if (to === from) return;
+    let held = this.heldAfterSeek;
+    if (to < from || this.history.hasEntryBetween(from, to)) {
+      const entry = this.history.nearest(to);
+      world.restore(entry.bytes);
+      // The steps undone leave the graphs; a jump forward over a snapshot leaves a gap there.
+      this.recorder.dropLast(Math.max(0, from - entry.step));
+      this.applyMark(entry.mark);
+      held = this.heldAfterSeek;
+      this.heldAfterSeek = -1;
+      this.afterRestore();
+    }
+    // Flashes and rings are by step number: ones from the steps undone would never fade.
+    this.touches.reset(this.touches.enabled);
+    this.hits.reset(this.hits.enabled, this.hits.threshold);
+    this.touches.record(world);
+    this.hits.record(world);
+    while (world.stats.steps < to) {
+      const input = this.history.input(world.stats.steps + 1);
+      this.useInput(input);
+      this.advanceOne();
+      held = input ? input.handle : -1;
+    }
+    this.dragHandle = -1;
+    this.heldAfterSeek = this.shapes ? -1 : held;
+  }
+
+  /** The world's bytes and what the page knows besides, for a save. */
+  save(): { snapshot: Uint8Array; mark: Mark } {
+    return { snapshot: this.world.snapshot(), mark: this.mark() };
+  }
+
+  private mark(): Mark {
+    return { time: this.time, boxX: this.box.x, pinAnchor: this.pinAnchor, held: this.dragHandle >= 0 && !this.shapes ? this.dragHandle : this.heldAfterSeek };
+  }
+
+  private applyMark(mark: Mark): void {
+    this.time = mark.time;
+    this.box.x = mark.boxX;
+    this.pinAnchor = mark.pinAnchor;
+    this.heldAfterSeek = mark.held;
+  }
+
+  /** What the page derives from the bodies, read again from a restored world. */
+  private afterRestore(): void {
+    const world = this.world;
+    this.shapes = world.route.route === 'shapes';
+    this.colors.ensure(world.views().slotCount);
+    this.countDynamicMass();
+  }
+
+  /** Total mass of the dynamic bodies; a circle held by a drag is kinematic and left out. */
+  private countDynamicMass(): void {
+    const v = this.world.views();
+    this.dynamicMass = 0;
+    for (let s = 0; s < v.slotCount; s++) if (v.type[s] === BodyTypeCode.dynamic) this.dynamicMass += v.mass[s];
+  }
+
+  /**
+   * Before any change to the world other than a step: the steps after this one no longer follow
+   * from it, and a circle left held by a seek is let go. Its snapshot is taken lazily (flush).
+   */
+  private beginEdit(): void {
+    this.history.discardAfter(this.world.stats.steps);
+    this.dirty = true;
+    const held = this.heldAfterSeek;
+    this.heldAfterSeek = -1;
+    if (held >= 0 && this.world.hasBody(held) && this.world.getBody(held).type === 'kinematic') {
+      this.dragHandle = held;
+      this.endDrag();
+    }
+  }
+
+  private flush(): void {
+    if (!this.dirty) return;
+    this.dirty = false;
+    this.history.record(this.world.stats.steps, this.world.snapshot(), this.mark());
+  }
+
+  private dragInput(): DragInput | null {
+    return this.dragHandle >= 0 ? { handle: this.dragHandle, x: this.dragX, y: this.dragY, grabX: this.grabX, grabY: this.grabY } : null;
+  }
+
+  private useInput(input: DragInput | undefined): void {
+    this.dragHandle = input ? input.handle : -1;
+    if (!input) return;
+    this.dragX = input.x;
+    this.dragY = input.y;
+    this.grabX = input.grabX;
+    this.grabY = input.grabY;
+  }
+
+  private advanceOne(): void {
     const world = this.world;
     this.applyDrag();
     world.step(DT);
@@ -254,6 +451,7 @@ export class Simulation {
    * topples the stack rather than teleporting the box through it.
    */
   beginDrag(handle: number, x: number, y: number): void {
+    this.beginEdit();
     this.dragHandle = handle;
     this.dragX = x;
     this.dragY = y;
@@ -274,13 +472,18 @@ export class Simulation {
     this.dragX = x;
     this.dragY = y;
     // While paused nothing steps, so move a circle now for the user to see it follow.
-    if (this.paused && this.dragHandle >= 0 && !this.shapes) this.placeDragged(x, y);
+    if (this.paused && this.dragHandle >= 0 && !this.shapes) {
+      this.beginEdit();
+      this.placeDragged(x, y);
+    }
   }
 
   endDrag(): void {
     const h = this.dragHandle;
     this.dragHandle = -1;
+    // A shape's drag only pulled it, step by step, as the history logged; a circle changes type.
     if (h < 0 || !this.world.hasBody(h) || this.shapes) return;
+    this.beginEdit();
     const c = this.world.getCircle(h);
     this.world.setType(h, 'dynamic');
     this.dynamicMass += c.mass;
@@ -311,6 +514,7 @@ export class Simulation {
     const cx = this.bounded ? Math.min(this.box.x + this.boxWidth - r, Math.max(this.box.x + r, x)) : x;
     const cy = this.bounded ? Math.min(this.box.y + this.boxHeight - r, Math.max(this.box.y + r, y)) : y;
     const world = this.world;
+    this.beginEdit();
     let handle: number;
     if (kind === 'box') handle = world.createBox({ x: cx, y: cy, width: 1.4 * r, height: 1.4 * r });
     else if (kind === 'capsule') handle = world.createCapsule({ x: cx, y: cy, length: r, radius: r / 2 });
@@ -391,6 +595,7 @@ export class Simulation {
    * throws the engine's RangeError when the world refuses (a kinematic body: nothing to act on).
    */
   pin(handle: number, x: number, y: number): number {
+    this.beginEdit();
     const world = this.world;
     const b = world.getBody(handle);
     const c = Math.cos(b.angle);
@@ -442,6 +647,7 @@ export class Simulation {
 
   /** Destroys a joint (the Cut tool); its bodies wake and go their own ways. */
   cut(joint: number): void {
+    this.beginEdit();
     this.world.destroyJoint(joint);
   }
 

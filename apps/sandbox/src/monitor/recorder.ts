@@ -32,6 +32,11 @@ export class Recorder {
     s.contacts.push(contacts);
   }
 
+  /** Forgets the newest `n` steps: the scrubber went back over them. */
+  dropLast(n: number): void {
+    for (const c of COLUMNS) this.series[c].dropLast(n);
+  }
+
   clear(): void {
     for (const c of COLUMNS) this.series[c].clear();
   }

@@ -27,6 +27,13 @@ export class Ring {
     return this.size === 0 ? NaN : this.at(this.size - 1);
   }
 
+  /** Forgets the newest `n` values (all of them for n beyond the length). */
+  dropLast(n: number): void {
+    const k = Math.min(this.size, Math.max(0, Math.floor(n)));
+    this.head = (this.head - k + this.capacity) % this.capacity;
+    this.size -= k;
+  }
+
   clear(): void {
     this.head = 0;
     this.size = 0;

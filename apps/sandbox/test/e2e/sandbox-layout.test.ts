@@ -129,6 +129,45 @@ describe('2D sandbox: warnings and layout', () => {
     await page.close();
   });
 
+  it('at 1400 x 900 puts the timeline bar between the stage and the monitor, all in the window, with a load message too', async () => {
+    const { page, errors } = await openPage(browser, '/');
+    await page.setViewportSize({ width: 1400, height: 900 });
+    await stepsPass(page, 0);
+    const boxes = async () => {
+      const out: Record<string, { x: number; y: number; width: number; height: number }> = {};
+      for (const id of ['stage', 'timeline', 'step-back', 'scrubber', 'scrub-step', 'save', 'load']) {
+        const box = await page.locator(`#${id}`).boundingBox();
+        if (!box) throw new Error(`#${id} has no box`);
+        out[id] = box;
+      }
+      const monitor = await page.locator('.monitor').boundingBox();
+      if (!monitor) throw new Error('the monitor has no box');
+      out.monitor = monitor;
+      return out;
+    };
+    const check = async (label: string) => {
+      const b = await boxes();
+      expect(b.timeline.y, label).toBeGreaterThanOrEqual(b.stage.y + b.stage.height);
+      expect(b.monitor.y, label).toBeGreaterThanOrEqual(b.timeline.y + b.timeline.height);
+      expect(b.monitor.y + b.monitor.height, label).toBeLessThanOrEqual(900);
+      for (const id of ['step-back', 'scrubber', 'scrub-step', 'save', 'load']) {
+        expect(b[id].y, `${label} ${id}`).toBeGreaterThanOrEqual(b.timeline.y);
+        expect(b[id].y + b[id].height, `${label} ${id}`).toBeLessThanOrEqual(b.timeline.y + b.timeline.height);
+        expect(b[id].x + b[id].width, `${label} ${id}`).toBeLessThanOrEqual(1400);
+      }
+      // One row: the scrubber keeps most of the width.
+      expect(b.scrubber.width, label).toBeGreaterThan(b.timeline.width / 2);
+    };
+    await check('bar');
+    // A refused file's message shows under the bar, and the monitor still fits.
+    await page.locator('#load-file').setInputFiles({ name: 'junk.mxgs', mimeType: 'application/octet-stream', buffer: Buffer.from('junk') });
+    await expect.poll(() => page.locator('#timeline-status').isVisible(), POLL).toBe(true);
+    await check('with a message');
+    expect(await page.evaluate(() => window.scrollY)).toBe(0);
+    expect(errors).toEqual([]);
+    await page.close();
+  });
+
   it('draws the Max Grid overlay inside the box only', async () => {
     const { page, errors } = await openPage(browser, '/?n=500&grid=1&broadphase=maxgrid');
     // A taller window leaves room below the box, where the grid's last row would show.
