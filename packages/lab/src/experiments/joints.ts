@@ -286,32 +286,35 @@ function enginesOf(result: JointsResult): string[] {
   return ids.filter((id) => seen.has(id));
 }
 
-function scenesOf(result: JointsResult): string[] {
-  return [...new Set([...result.rows.map((r) => r.scene), ...result.skipped.map((s) => s.scene)])];
+/** A case's label: its scene and parameters, since a profile may run one scene at several sizes. */
+function caseOf(r: JointsRow): string {
+  return `${r.scene} (${Object.entries(r.params).map(([k, v]) => `${k} ${v}`).join(', ')})`;
+}
+
+/** Each case that ran, in order, then each scene that only has refusals. */
+function casesOf(result: JointsResult): string[] {
+  const ran = new Set(result.rows.map((r) => r.scene));
+  return [...new Set([...result.rows.map(caseOf), ...result.skipped.filter((s) => !ran.has(s.scene)).map((s) => s.scene)])];
 }
 
 export function jointsTables(result: JointsResult): Table[] {
   const engines = enginesOf(result);
-  const scenes = scenesOf(result);
+  const cases = casesOf(result);
   const baseline = String(result.meta.options.baseline);
   const steps = Number(result.meta.options.steps);
-  const row = (scene: string, engine: string) => result.rows.find((r) => r.scene === scene && r.engine === engine);
-  const first = (scene: string) => result.rows.find((r) => r.scene === scene);
-  const params = (scene: string) => {
-    const r = first(scene);
-    return r ? Object.entries(r.params).map(([k, v]) => `${k} ${v}`).join(', ') : '';
-  };
+  const row = (key: string, engine: string) => result.rows.find((r) => caseOf(r) === key && r.engine === engine);
+  const first = (key: string) => result.rows.find((r) => caseOf(r) === key);
   const times: Table = {
     title: `Joint scenes: median ms per step, and its ratio to ${baseline}'s (above 1: maxgrid is faster)`,
     headers: ['scene', 'bodies', 'joints', ...engines],
-    rows: scenes.map((scene) => {
-      const b = row(scene, baseline);
+    rows: cases.map((key) => {
+      const b = row(key, baseline);
       return [
-        `${scene} (${params(scene)})`,
-        String(first(scene)?.bodies ?? ''),
-        String(first(scene)?.joints ?? ''),
+        key,
+        String(first(key)?.bodies ?? ''),
+        String(first(key)?.joints ?? ''),
         ...engines.map((e) => {
-          const r = row(scene, e);
+          const r = row(key, e);
           if (!r) return 'not built';
           const ratio = e === baseline || !b ? '' : ` (${ratioText(r.ms.median / b.ms.median)})`;
           const cut = r.steps < steps ? `, ${r.steps} steps` : '';
@@ -324,17 +327,17 @@ export function jointsTables(result: JointsResult): Table[] {
   const sanity: Table = {
     title: 'Joint scenes: a physical figure after the run (and the largest revolute pin gap, m); "implausible" where the joints gave way',
     headers: ['scene', 'figure', 'plausible (pin gap)', 'after', ...engines],
-    rows: scenes
-      .filter((scene) => first(scene))
-      .map((scene) => {
-        const f = first(scene)!;
+    rows: cases
+      .filter((key) => first(key))
+      .map((key) => {
+        const f = first(key)!;
         return [
-          scene,
+          f.scene + (cases.filter((k) => first(k)?.scene === f.scene).length > 1 ? `, ${f.bodies} bodies` : ''),
           f.sanity.label,
           `${fmt(f.sanity.lower)} to ${fmt(f.sanity.upper)}${f.sanity.pinGapLimit === null ? '' : ` (≤ ${fmt(f.sanity.pinGapLimit)})`}`,
           `${fmt(f.seconds)} s`,
           ...engines.map((e) => {
-            const r = row(scene, e);
+            const r = row(key, e);
             if (!r) return '–';
             const gap = r.sanity.pinGapLimit === null ? '' : ` (${fmt(r.sanity.pinGap)})`;
             return `${fmt(r.sanity.value)}${gap}${r.sanity.ok ? '' : ' implausible'}`;
@@ -353,14 +356,15 @@ export function jointsTables(result: JointsResult): Table[] {
 export function jointsHeadline(result: JointsResult): string[] {
   const baseline = String(result.meta.options.baseline);
   const out: string[] = [];
-  for (const scene of scenesOf(result)) {
-    const b = result.rows.find((r) => r.scene === scene && r.engine === baseline);
+  for (const key of casesOf(result)) {
+    const b = result.rows.find((r) => caseOf(r) === key && r.engine === baseline);
     if (!b) continue;
-    const peers = result.rows.filter((r) => r.scene === scene && r.engine !== baseline).map((r) => `${r.engine} ${ratioText(r.ms.median / b.ms.median)}${r.sanity.ok ? '' : ' (implausible)'}`);
+    const scene = b.scene;
+    const peers = result.rows.filter((r) => caseOf(r) === key && r.engine !== baseline).map((r) => `${r.engine} ${ratioText(r.ms.median / b.ms.median)}${r.sanity.ok ? '' : ' (implausible)'}`);
     out.push(`${scene} (${b.bodies} bodies, ${b.joints} joints): ${baseline} ${fmt(b.ms.median)} ms a step; ${peers.length > 0 ? `${peers.join(', ')} as slow` : 'no peer has its joints'}.`);
   }
   const bad = result.rows.filter((r) => !r.sanity.ok);
-  out.push(bad.length === 0 ? 'Every engine that ran kept its joints within the plausible range.' : `Outside the plausible range: ${bad.map((r) => `${r.engine} on ${r.scene} (${r.sanity.label} ${fmt(r.sanity.value)}, pin gap ${fmt(r.sanity.pinGap)})`).join(', ')}.`, '');
+  out.push(bad.length === 0 ? 'Every engine that ran kept its joints within the plausible range.' : `Outside the plausible range: ${bad.map((r) => `${r.engine} on ${r.scene} of ${r.bodies} bodies (${r.sanity.label} ${fmt(r.sanity.value)}, pin gap ${fmt(r.sanity.pinGap)})`).join(', ')}.`, '');
   return out;
 }
 
