@@ -7,7 +7,7 @@ import { TYPED_KINDS, type StateValue, type TypedArray } from './state-graph.js'
  *          4   u16      format version (FORMAT_VERSION)
  *          6   u16      0 (reserved)
  *          8   u32      payload length in bytes
- *         12   u32      FNV-1a hash of the payload
+ *         12   u32      FNV-1a hash of the payload's 32-bit words
  *         16            payload: the writing engine's version, then the world's state, as tagged values
  *
  * Numbers are little-endian; typed arrays are their elements' bytes, little-endian on every host
@@ -100,24 +100,31 @@ class Writer {
    */
   runs(data: Uint8Array): void {
     const n = data.length;
+    // Word by word where the bytes allow it (every array of 4-byte or wider elements): a quarter
+    // of the steps. The runs are byte counts either way, so the reader does not know which.
+    const words = data.byteOffset % 4 === 0 && n % 4 === 0 ? new Uint32Array(data.buffer, data.byteOffset, n >> 2) : null;
+    const unit = words ? 4 : 1;
+    const count = words ? n >> 2 : n;
+    const zero = (k: number) => (words ? words[k] === 0 : data[k] === 0);
+    const runEnd = MIN_ZERO_RUN / unit;
     let at = 0;
-    while (at < n) {
+    while (at < count) {
       let zeros = at;
-      while (zeros < n && data[zeros] === 0) zeros++;
-      // A literal stretch ends at the first run of MIN_ZERO_RUN zeros, or at the end.
+      while (zeros < count && zero(zeros)) zeros++;
+      // A literal stretch ends at the first run of MIN_ZERO_RUN zero bytes, or at the end.
       let end = zeros;
       let run = 0;
-      while (end < n) {
-        run = data[end] === 0 ? run + 1 : 0;
+      while (end < count) {
+        run = zero(end) ? run + 1 : 0;
         end++;
-        if (run === MIN_ZERO_RUN) {
+        if (run === runEnd) {
           end -= run;
           break;
         }
       }
-      this.u32(zeros - at);
-      this.u32(end - zeros);
-      this.raw(data.subarray(zeros, end));
+      this.u32((zeros - at) * unit);
+      this.u32((end - zeros) * unit);
+      this.raw(data.subarray(zeros * unit, end * unit));
       at = end;
     }
   }
@@ -188,10 +195,22 @@ class Writer {
   }
 }
 
-/** FNV-1a over bytes [from, to): catches flipped, lost and reordered bytes of a stored image. */
+/**
+ * FNV-1a over the 32-bit little-endian words of bytes [from, to) (the last one zero-padded): any
+ * one changed word changes the result, since each step is a bijection of the running hash, so
+ * a flipped, lost or reordered byte of a stored image is caught; word by word, it reads a large
+ * world's snapshot in a quarter of the steps.
+ */
 function fnv1a(bytes: Uint8Array, from: number, to: number): number {
   let hash = 0x811c9dc5;
-  for (let i = from; i < to; i++) hash = Math.imul(hash ^ bytes[i], 0x01000193);
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  let i = from;
+  for (; i + 4 <= to; i += 4) hash = Math.imul(hash ^ view.getUint32(i, true), 0x01000193);
+  if (i < to) {
+    let last = 0;
+    for (let k = 0; i + k < to; k++) last |= bytes[i + k] << (8 * k);
+    hash = Math.imul(hash ^ last, 0x01000193);
+  }
   return hash >>> 0;
 }
 
