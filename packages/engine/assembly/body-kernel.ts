@@ -17,6 +17,20 @@ const DYNAMIC: u8 = 3;
 const MAX_BOUNCES = 16; // box-walls.ts
 
 /**
+ * limitSpeeds' scan (src/solver/speed-limit.ts): the first slot in [from, to) whose speed squared
+ * is not at most maxSq (NaN included), or `to`. Its type is left to the caller, which caps from
+ * there: a step's last stage reads two columns of every body, and here without the bounds checks.
+ */
+export function firstTooFast(vxs: usize, vys: usize, from: i32, to: i32, maxSq: f64): i32 {
+  for (let i = from; i < to; i++) {
+    const x = load<f64>(vxs + (<usize>i << 3));
+    const y = load<f64>(vys + (<usize>i << 3));
+    if (!(x * x + y * y <= maxSq)) return i;
+  }
+  return to;
+}
+
+/**
  * The plain loop of integrateSemiImplicitEuler, or with `explicit` of integrateExplicitEuler, over
  * slots [from, to).
  */

@@ -21,6 +21,7 @@ import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelM
  */
 
 interface BodyKernelExports {
+  firstTooFast(vxs: number, vys: number, from: number, to: number, maxSq: number): number;
   integrate(xs: number, ys: number, vxs: number, vys: number, types: number, from: number, to: number, dvx: number, dvy: number, dt: number, explicit: boolean): void;
   bounceOffBox(
     xs: number, ys: number, vxs: number, vys: number, rs: number, es: number, types: number, from: number, to: number,
@@ -211,6 +212,11 @@ export class BodyKernel {
 
   memoryBytes(): number {
     return this.ownBytes;
+  }
+
+  /** The first slot in [from, to) whose speed squared is not at most limits[0] (see limitSpeeds), or `to`. */
+  firstTooFast(from: number, to: number, limits: Float64Array): number {
+    return this.fn.firstTooFast(this.vxAt, this.vyAt, from, to, limits[0]);
   }
 
   integrateSemiImplicit(from: number, to: number, dvx: number, dvy: number, dt: number): void {
