@@ -288,7 +288,7 @@ export class JointSolver {
         continue;
       }
       rowOf[k] = at;
-      rows.set(r.subarray(j * JOINT_STRIDE, j * JOINT_STRIDE + HOT_FIELDS), at);
+      for (let f = 0, o = j * JOINT_STRIDE; f < HOT_FIELDS; f++) rows[at + f] = r[o + f];
       at += HOT_FIELDS;
     }
   }
@@ -300,7 +300,8 @@ export class JointSolver {
     // The distance joints' impulses, kept for the next step's warm start, back into their records.
     for (let k = 0; k < activeCount; k++) {
       const row = rowOf[k];
-      if (row >= 0) r.set(rows.subarray(row, row + HOT_FIELDS), active[k] * JOINT_STRIDE);
+      if (row < 0) continue;
+      for (let f = 0, o = active[k] * JOINT_STRIDE; f < HOT_FIELDS; f++) r[o + f] = rows[row + f];
     }
     this.springs.finish(r, states);
     for (let k = 0; k < activeCount; k++) {
