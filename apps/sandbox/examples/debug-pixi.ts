@@ -1,22 +1,10 @@
 import { Application, Graphics } from 'pixi.js';
-import { buildShapeWorld, ragdolls } from '@maxgrid/scenes';
-import { exposeForTests } from './test-hook.js';
-
-// Six ragdolls (capsules and circles on revolute joints) falling onto a static box: every part of
-// the debug picture shows, shapes, joints and contact normals, and the bodies move, then sleep.
-const scene = ragdolls({ count: 6, columns: 3 });
-const world = buildShapeWorld(scene);
+import { ragdollExample, runAtSixtyHertz } from './example-world.js';
 
 const canvas = document.getElementById('view') as HTMLCanvasElement;
-const width = canvas.clientWidth;
-const height = canvas.clientHeight;
-
-// One scale for both axes, so circles stay round, fitting the scene's view in the canvas. The
-// scenes are y down, like PixiJS's stage, so nothing is flipped.
-const { minX, minY, maxX, maxY } = scene.view;
-const scale = Math.min(width / (maxX - minX), height / (maxY - minY));
-const left = (minX + maxX) / 2 - width / 2 / scale;
-const top = (minY + maxY) / 2 - height / 2 / scale;
+const example = ragdollExample(canvas);
+const { world, width, height, scale, left, top } = example;
+// The scenes are y down, like PixiJS's stage, so nothing is flipped.
 
 const app = new Application();
 // autoStart off: the loop below renders after stepping, instead of PixiJS's ticker rendering on a
@@ -30,9 +18,7 @@ graphics.scale.set(scale);
 graphics.position.set(-left * scale, -top * scale);
 app.stage.addChild(graphics);
 
-const hook = exposeForTests(world, { scale, left, top });
-
-function draw(): void {
+function draw(): number {
   const { lineCount, vertices, colors } = world.debugRender();
   // Rebuilt every frame: every line may have moved, and a Graphics keeps no per-line handles.
   graphics.clear();
@@ -52,27 +38,7 @@ function draw(): void {
     graphics.stroke({ color: [r, g, b], alpha: a, width: 1, pixelLine: true });
   }
   app.render();
-  hook.drawnLines = lineCount;
+  return lineCount;
 }
 
-// A fixed step of 1/60 s whatever the display's refresh rate: the engine gives the same motion for
-// the same steps, and a 144 Hz screen must not run the world faster. Frames only decide how many
-// steps are due.
-const DT = 1 / 60;
-let last = performance.now();
-let due = 0;
-function frame(now: number): void {
-  // At most a tenth of a second at once: after a hidden tab comes back, catching up on minutes of
-  // steps would freeze the page.
-  due += Math.min(now - last, 100) / 1000;
-  last = now;
-  for (; due >= DT; due -= DT) {
-    if (hook.paused) continue;
-    world.step(DT);
-    hook.steps++;
-  }
-  draw();
-  hook.frames++;
-  requestAnimationFrame(frame);
-}
-requestAnimationFrame(frame);
+runAtSixtyHertz(example, draw);

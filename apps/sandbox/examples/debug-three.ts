@@ -1,21 +1,9 @@
 import { BufferAttribute, BufferGeometry, Color, LineBasicMaterial, LineSegments, LinearSRGBColorSpace, OrthographicCamera, Scene, Sphere, Vector3, WebGLRenderer } from 'three';
-import { buildShapeWorld, ragdolls } from '@maxgrid/scenes';
-import { exposeForTests } from './test-hook.js';
-
-// Six ragdolls (capsules and circles on revolute joints) falling onto a static box: every part of
-// the debug picture shows, shapes, joints and contact normals, and the bodies move, then sleep.
-const scene = ragdolls({ count: 6, columns: 3 });
-const world = buildShapeWorld(scene);
+import { ragdollExample, runAtSixtyHertz } from './example-world.js';
 
 const canvas = document.getElementById('view') as HTMLCanvasElement;
-const width = canvas.clientWidth;
-const height = canvas.clientHeight;
-
-// One scale for both axes, so circles stay round, fitting the scene's view in the canvas.
-const { minX, minY, maxX, maxY } = scene.view;
-const scale = Math.min(width / (maxX - minX), height / (maxY - minY));
-const left = (minX + maxX) / 2 - width / 2 / scale;
-const top = (minY + maxY) / 2 - height / 2 / scale;
+const example = ragdollExample(canvas);
+const { world, width, height, scale, left, top } = example;
 
 const renderer = new WebGLRenderer({ canvas, antialias: true });
 renderer.setPixelRatio(window.devicePixelRatio);
@@ -41,9 +29,7 @@ geometry.boundingSphere = new Sphere(new Vector3(), Infinity);
 const stage = new Scene();
 stage.add(new LineSegments(geometry, material));
 
-const hook = exposeForTests(world, { scale, left, top });
-
-function draw(): void {
+function draw(): number {
   const { lineCount, vertices, colors } = world.debugRender();
   // The buffers are uploaded as they are, two floats per position (z is 0 in the shader). They
   // are the same arrays every frame until the world outgrows them: then new attributes, and the
@@ -60,27 +46,7 @@ function draw(): void {
   // Only the lines of this frame: the arrays are longer than lineCount.
   geometry.setDrawRange(0, 2 * lineCount);
   renderer.render(stage, camera);
-  hook.drawnLines = lineCount;
+  return lineCount;
 }
 
-// A fixed step of 1/60 s whatever the display's refresh rate: the engine gives the same motion for
-// the same steps, and a 144 Hz screen must not run the world faster. Frames only decide how many
-// steps are due.
-const DT = 1 / 60;
-let last = performance.now();
-let due = 0;
-function frame(now: number): void {
-  // At most a tenth of a second at once: after a hidden tab comes back, catching up on minutes of
-  // steps would freeze the page.
-  due += Math.min(now - last, 100) / 1000;
-  last = now;
-  for (; due >= DT; due -= DT) {
-    if (hook.paused) continue;
-    world.step(DT);
-    hook.steps++;
-  }
-  draw();
-  hook.frames++;
-  requestAnimationFrame(frame);
-}
-requestAnimationFrame(frame);
+runAtSixtyHertz(example, draw);
