@@ -29,6 +29,19 @@ export async function launchBrowser(): Promise<Browser> {
   });
 }
 
+/**
+ * A browser whose first page, `path`, has been open for two seconds and closed: Vite may reload
+ * the first page it serves once it has optimised the dependencies (and warms its transform cache
+ * on it), which must happen before a test's page loads, not in the middle of it.
+ */
+export async function launchWarmedBrowser(path = '/?n=10'): Promise<Browser> {
+  const browser = await launchBrowser();
+  const { page } = await openPage(browser, path);
+  await page.waitForTimeout(2000);
+  await page.close();
+  return browser;
+}
+
 export function sandboxUrl(path = '/'): string {
   return inject('sandboxUrl') + path;
 }

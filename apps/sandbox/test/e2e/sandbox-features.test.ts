@@ -1,7 +1,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
 import { join } from 'node:path';
-import { ARTIFACTS, launchBrowser, openPage, stat } from './browser.js';
+import { ARTIFACTS, launchWarmedBrowser, openPage, stat } from './browser.js';
 
 // The engine's features in the 2D sandbox (issue 6): scenes with static shapes, the world-option
 // toggles, the query tools. Read like a user reads the page: labels, shown counts and pixels.
@@ -19,11 +19,7 @@ const BOX_RGB = [0x56, 0xd4, 0xdd];
 let browser: Browser;
 
 beforeAll(async () => {
-  browser = await launchBrowser();
-  // Let Vite finish optimising dependencies (it may reload the first page) before any test.
-  const { page } = await openPage(browser, '/?n=10');
-  await page.waitForTimeout(2000);
-  await page.close();
+  browser = await launchWarmedBrowser();
 });
 
 afterAll(async () => {

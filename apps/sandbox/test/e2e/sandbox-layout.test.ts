@@ -1,6 +1,6 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
-import { launchBrowser, openPage, overlayPixels, stat } from './browser.js';
+import { launchWarmedBrowser, openPage, overlayPixels, stat } from './browser.js';
 
 // What the page tells a user and where it puts it: the overfill warning, the pause button's name,
 // the controls at a common laptop size, and the grid overlay's extent.
@@ -10,11 +10,7 @@ const POLL = { timeout: 30_000, interval: 100 };
 let browser: Browser;
 
 beforeAll(async () => {
-  browser = await launchBrowser();
-  // Vite may reload the first page it serves after optimising dependencies; let that happen here.
-  const { page } = await openPage(browser, '/?n=10');
-  await page.waitForTimeout(2000);
-  await page.close();
+  browser = await launchWarmedBrowser();
 });
 
 afterAll(async () => {
