@@ -13,6 +13,8 @@
 // operations, and one pair alone left the processor waiting on that chain (about 24 ns a
 // constraint for the solve); the two chains interleaved keep it busy.
 
+export { pointDistanceWarmStart, pointDistanceSolve } from './point-distance-joints';
+
 // Body state fields (8 doubles a body) and constraint field offsets in doubles, per lane pair: the
 // TypeScript's offsets, each even, are 2 x the field's index, so a field of a pair is one v128.
 const BODY: i32 = 8;

@@ -130,6 +130,52 @@ describe('determinism with shapes', () => {
     );
   });
 
+  it('point distance joints give the same bits in the WebAssembly kernel as in TypeScript, colours overflowing included', () => {
+    const withKernel = (on: boolean, run: () => string): string => {
+      setSoftStepKernelEnabled(on);
+      try {
+        return run();
+      } finally {
+        setSoftStepKernelEnabled(true);
+      }
+    };
+    // A wheel: a hub with more spokes than the joints have colours (the rest solved one to a pair),
+    // rigid spokes and a rim of springs, hung from a static pivot and dragged by a kinematic body.
+    const wheel = (): string => {
+      const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.3 });
+      const pivot = world.createBody({ x: 0, y: -3, type: 'static' });
+      const driver = world.createCircle({ x: 4, y: 0, radius: 0.2, type: 'kinematic', vx: -1, vy: 0.5 });
+      const hub = world.createCircle({ x: 0, y: 0, radius: 0.3 });
+      const rim: number[] = [];
+      let cx = 1;
+      let cy = 0;
+      const spokes = 40;
+      // Points around by repeated small rotations (exact enough; no Math.sin in the state).
+      const c = 1 - (2 * Math.PI ** 2) / spokes ** 2;
+      const sn = (2 * Math.PI) / spokes - (2 * Math.PI) ** 3 / (6 * spokes ** 3);
+      for (let k = 0; k < spokes; k++) {
+        rim.push(world.createCircle({ x: 2 * cx, y: 2 * cy, radius: 0.12, density: 1 + (k % 3) }));
+        [cx, cy] = [c * cx - sn * cy, sn * cx + c * cy];
+      }
+      for (let k = 0; k < spokes; k++) {
+        world.createJoint({ kind: 'distance', bodyA: hub, bodyB: rim[k] });
+        world.createJoint({ kind: 'distance', bodyA: rim[k], bodyB: rim[(k + 1) % spokes], hertz: 15, dampingRatio: 0.3 });
+      }
+      world.createJoint({ kind: 'distance', bodyA: pivot, bodyB: hub, hertz: 4, dampingRatio: 0.1 });
+      world.createJoint({ kind: 'distance', bodyA: driver, bodyB: rim[0], hertz: 8, dampingRatio: 0.7 });
+      for (let s = 0; s < 120; s++) world.step(1 / 60);
+      return world.stateHash();
+    };
+    const scene = (name: string, params: Record<string, number>) => (): string => {
+      const world = buildShapeWorld(buildShapeScene(name, params));
+      for (let s = 0; s < 150; s++) world.step(1 / 60);
+      return world.stateHash();
+    };
+    for (const run of [wheel, scene('blobs', { count: 30 }), scene('blobs', { count: 4, hertz: 0 }), scene('jellies', { count: 6 })]) {
+      expect(withKernel(true, run)).toBe(withKernel(false, run));
+    }
+  });
+
   it('a warm step grows no buffer (allocation) on a shape scene', () => {
     const world = buildShapeWorld(buildShapeScene('pyramid', { base: 30 }), { sleeping: false, contactEvents: true });
     for (let s = 0; s < 60; s++) world.step(1 / 60);

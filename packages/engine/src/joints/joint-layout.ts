@@ -16,8 +16,7 @@ export const JOINT_KIND_NAMES = Object.keys(JointKind) as JointKindName[];
  * alternating runs against the build before).
  */
 export const J = {
-  // The first HOT_FIELDS: all that a distance joint's passes read and write, which the solver
-  // copies into compact rows for them (see JointSolver.prepare).
+  // The first 32: all that a distance joint's passes read and write.
   /** Offsets of the two bodies' solver states (see SoftStep); 0 is the fixed dummy body. */
   stateA: 0,
   stateB: 1,
@@ -108,5 +107,3 @@ export const J = {
 } as const;
 
 export const JOINT_STRIDE = 64;
-/** The record's first fields, which hold all a distance joint's passes touch (see J). */
-export const HOT_FIELDS = 32;

@@ -6,6 +6,7 @@ import { SoftStepKernel } from '../solver/soft-step-kernel.js';
 import { ContactSorter } from '../store/contact-sorter.js';
 import { ParallelStep } from '../parallel/parallel-step.js';
 import { SoftStep } from '../solver/soft-step.js';
+import { PointDistanceJoints } from '../solver/joints/point-distance-joints.js';
 import { StaticTree } from '../broadphase/static-tree.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
 import { PairSink } from '../store/pair-sink.js';
@@ -18,6 +19,7 @@ export const ENGINE_VERSION = '0.1.0';
 for (const ctor of [BodyKernel, GridKernel, SoftStepKernel, ContactSorter, ParallelStep]) hostResource(ctor);
 // The soft step gathers these afresh each step, into its kernel's memory where it has one.
 transientFields(SoftStep, ['states', 'constraints', 'pairs']);
+transientFields(PointDistanceJoints, ['rows', 'pairs']);
 // A broad-phase's chunk of candidates is handed on within the step that found them.
 transientFields(PairSink, ['a', 'b', 'consumerMs']);
 // Timings measure the machine, not the world: left out, a snapshot is the same bytes wherever it is taken.

@@ -1,6 +1,6 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
-import { HOT_FIELDS, J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind, type JointKindName } from '../joints/joint-layout.js';
+import { J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind, type JointKindName } from '../joints/joint-layout.js';
 import { ForceSprings } from './force-springs.js';
 import { GasPressure } from './gas-pressure.js';
 import type { IntegratorName } from '../integrate/integrator.js';
@@ -8,6 +8,8 @@ import type { JointStore } from '../joints/joint-store.js';
 import { BODY, makeSoft } from './solver-body.js';
 import type { JointKernel, JointStepContext } from './joints/joint-kernel.js';
 import { distanceJoint } from './joints/distance-joint.js';
+import { isPointDistanceJoint, PointDistanceJoints } from './joints/point-distance-joints.js';
+import type { SoftStepKernel } from './soft-step-kernel.js';
 import { revoluteJoint } from './joints/revolute-joint.js';
 import { prismaticJoint } from './joints/prismatic-joint.js';
 import { weldJoint } from './joints/weld-joint.js';
@@ -84,24 +86,21 @@ export interface JointSettings {
 /**
  * The joints' part of the soft step (SoftStep calls each stage where Box2D v3 does: joints before
  * contacts in the warm start, the solve and the relax pass, so that contacts have the last word).
- * Joints are solved one after another in slot order, which depends on the calls that made them
- * alone: the same bits with every broad-phase and thread count. A joint whose bodies both stand
- * still this step (static or asleep) is skipped and keeps its impulses.
+ * Joints are solved one after another in slot order, then the point distance joints colour by
+ * colour (PointDistanceJoints); both orders depend on the calls that made the joints alone: the
+ * same bits with every broad-phase and thread count. A joint whose bodies both stand still this
+ * step (static or asleep) is skipped and keeps its impulses.
  */
 export class JointSolver {
   private readonly step: JointStepContext = { h: 0, inverseH: 0, soft: new Float64Array(3), spinSoft: new Float64Array(3) };
   /** Live joints some body of which moves this step, in slot order. */
   private active = new Int32Array(0);
   private activeCount = 0;
-  /**
-   * The first HOT_FIELDS of each active distance joint's record, HOT_FIELDS doubles apart in the
-   * order of `active`; `rowOf[k]` is active joint k's row offset, or -1 for the other kinds. A
-   * lattice of them streams its passes through these instead of the records: 44,000 distance
-   * joints take 22 MB of records, more than the cache keeps, and a pass over half of each record,
-   * with gaps, ran at half the speed of one over a lattice that fits (71 against 34-37 ns a joint).
-   */
-  private rows = new Float64Array(0);
-  private rowOf = new Int32Array(0);
+  /** The point distance joints (ropes, jellies, blobs), solved apart in colours; their slots, in slot order. */
+  private readonly points = new PointDistanceJoints();
+  private pointSlots = new Int32Array(0);
+  private pointA = new Int32Array(0);
+  private pointB = new Int32Array(0);
   /** Live force-driven springs some body of which moves, in slot order. */
   private springSlots = new Int32Array(0);
   /** Live pressure joints, in slot order. */
@@ -139,7 +138,7 @@ export class JointSolver {
    * Once per step, after the bodies are gathered: `index` maps a body slot to its solver state (0:
    * fixed); `contactHertz` is the contacts' stiffness this step, which a rigid joint's is twice at most.
    */
-  prepare(bodies: BodyStore, index: Int32Array, slotOfState: Int32Array, stateCount: number, h: number, contactHertz: number, gx: number, gy: number, maxSpeed: number, maxAngular: number): void {
+  prepare(bodies: BodyStore, index: Int32Array, slotOfState: Int32Array, stateCount: number, h: number, contactHertz: number, gx: number, gy: number, maxSpeed: number, maxAngular: number, kernel: SoftStepKernel | null): void {
     const { store, step } = this;
     step.h = h;
     step.inverseH = 1 / h;
@@ -149,7 +148,9 @@ export class JointSolver {
       this.active = new Int32Array(Math.max(store.slotCount, 2 * this.active.length));
       this.springSlots = new Int32Array(this.active.length);
       this.pressureSlots = new Int32Array(this.active.length);
-      this.rowOf = new Int32Array(this.active.length);
+      this.pointSlots = new Int32Array(this.active.length);
+      this.pointA = new Int32Array(this.active.length);
+      this.pointB = new Int32Array(this.active.length);
     }
     this.limits[0] = maxSpeed;
     this.limits[1] = maxAngular;
@@ -157,6 +158,7 @@ export class JointSolver {
     let pressureCount = 0;
     const r = store.record;
     let n = 0;
+    let points = 0;
     for (let j = 0; j < store.slotCount; j++) {
       if (store.live[j] === 0) continue;
       const o = j * JOINT_STRIDE;
@@ -178,12 +180,18 @@ export class JointSolver {
         continue;
       }
       r[o + ACTIVE] = 1;
+      if (store.kind[j] === JointKind.distance && isPointDistanceJoint(r, o, bodies, a, b)) {
+        this.pointSlots[points] = j;
+        this.pointA[points] = ia;
+        this.pointB[points++] = ib;
+        continue;
+      }
+      this.prepareJoint(bodies, j, o, ia, ib);
       if (store.kind[j] === JointKind.spring) this.springSlots[springCount++] = j;
       else this.active[n++] = j;
-      this.prepareJoint(bodies, j, o, ia, ib);
     }
     this.activeCount = n;
-    this.packRows();
+    this.points.prepare(store, bodies, this.pointSlots, this.pointA, this.pointB, points, stateCount, h, step.soft, maxSpeed, kernel);
     this.springs.prepare(store, this.springSlots, springCount, stateCount, bodies, slotOfState, gx, gy);
     this.gas.prepare(store, this.pressureSlots, pressureCount, bodies, index);
   }
@@ -250,59 +258,32 @@ export class JointSolver {
     this.springs.after(states, this.integrator);
   }
 
+  /** Each sub-step: the other joints in slot order, then the point distance joints colour by colour. */
   warmStart(states: Float64Array): void {
-    const { store, active, activeCount, rows, rowOf } = this;
+    const { store, active, activeCount } = this;
     const r = store.record;
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
-      const row = rowOf[k];
-      if (row >= 0) distanceJoint.warmStart(rows, row, states);
-      else JOINT_KERNELS[store.kind[j]].warmStart(r, j * JOINT_STRIDE, states);
+      JOINT_KERNELS[store.kind[j]].warmStart(r, j * JOINT_STRIDE, states);
     }
+    this.points.warmStart(states);
   }
 
   solve(states: Float64Array, useBias: boolean): void {
-    const { store, active, activeCount, step, rows, rowOf } = this;
+    const { store, active, activeCount, step } = this;
     const r = store.record;
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
-      const row = rowOf[k];
-      if (row >= 0) distanceJoint.solve(rows, row, states, step, useBias);
-      else JOINT_KERNELS[store.kind[j]].solve(r, j * JOINT_STRIDE, states, step, useBias);
+      JOINT_KERNELS[store.kind[j]].solve(r, j * JOINT_STRIDE, states, step, useBias);
     }
-  }
-
-  /** Copies each active distance joint's hot fields into its row (see `rows`), after the preparation. */
-  private packRows(): void {
-    const { store, active, activeCount, rowOf } = this;
-    const r = store.record;
-    let count = 0;
-    for (let k = 0; k < activeCount; k++) if (store.kind[active[k]] === JointKind.distance) count++;
-    if (this.rows.length < count * HOT_FIELDS) this.rows = new Float64Array(Math.max(count * HOT_FIELDS, 2 * this.rows.length));
-    const rows = this.rows;
-    let at = 0;
-    for (let k = 0; k < activeCount; k++) {
-      const j = active[k];
-      if (store.kind[j] !== JointKind.distance) {
-        rowOf[k] = -1;
-        continue;
-      }
-      rowOf[k] = at;
-      for (let f = 0, o = j * JOINT_STRIDE; f < HOT_FIELDS; f++) rows[at + f] = r[o + f];
-      at += HOT_FIELDS;
-    }
+    this.points.solve(states, useBias);
   }
 
   /** After the sub-steps: each joint's force and torque on body B over the last sub-step. */
   finish(states: Float64Array): void {
-    const { store, active, activeCount, step, rows, rowOf } = this;
+    const { store, active, activeCount, step, points } = this;
     const r = store.record;
-    // The distance joints' impulses, kept for the next step's warm start, back into their records.
-    for (let k = 0; k < activeCount; k++) {
-      const row = rowOf[k];
-      if (row < 0) continue;
-      for (let f = 0, o = active[k] * JOINT_STRIDE; f < HOT_FIELDS; f++) r[o + f] = rows[row + f];
-    }
+    points.finish(r, step.inverseH);
     this.springs.finish(r, states);
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
@@ -315,6 +296,6 @@ export class JointSolver {
   }
 
   memoryBytes(): number {
-    return this.active.byteLength + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
+    return this.active.byteLength + 3 * this.pointSlots.byteLength + this.points.memoryBytes() + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
   }
 }

@@ -18,6 +18,8 @@ interface SoftStepExports {
   relax(states: number, constraints: number, pairs: number, lanes: number, inverseH: number): void;
   integrateVelocities(states: number, n: number, dvx: number, dvy: number): void;
   integratePositions(states: number, n: number, h: number, maxLinearSpeed: number, maxAngular: number): void;
+  pointDistanceWarmStart(states: number, rows: number, pairs: number, lanes: number): void;
+  pointDistanceSolve(states: number, rows: number, pairs: number, lanes: number, pass: number): void;
 }
 
 /** v128 loads are fastest on 16-byte boundaries. */
@@ -57,6 +59,10 @@ export class SoftStepKernel {
     return new SoftStepKernel(memory, instantiateKernel<SoftStepExports>(compiled, memory));
   }
 
+  /** The point distance joints' lanes and their bodies (see PointDistanceJoints). */
+  jointRows: Float64Array<ArrayBuffer>;
+  jointPairs: Int32Array<ArrayBuffer>;
+
   private constructor(
     private readonly memory: KernelMemory,
     private readonly fn: SoftStepExports,
@@ -65,19 +71,31 @@ export class SoftStepKernel {
     this.states = new Float64Array(buffer, 0, 0);
     this.constraints = new Float64Array(buffer, 0, 0);
     this.pairs = new Int32Array(buffer, 0, 0);
+    this.jointRows = new Float64Array(buffer, 0, 0);
+    this.jointPairs = new Int32Array(buffer, 0, 0);
   }
 
   /**
-   * Gives the three arrays at least these lengths, keeping their contents; views taken before
-   * are void after a call that grows any of them.
+   * Gives the three arrays at least these lengths, keeping their contents (and the joints'); views
+   * taken before are void after a call that grows any of them.
    */
   reserve(states: number, constraints: number, pairs: number): void {
     if (states <= this.states.length && constraints <= this.constraints.length && pairs <= this.pairs.length) return;
-    const old = [this.states, this.constraints, this.pairs];
-    const lengths = [Math.max(states, old[0].length), Math.max(constraints, old[1].length), Math.max(pairs, old[2].length)];
+    this.layout([states, constraints, pairs, 0, 0]);
+  }
+
+  /** The same for the joints' lanes (doubles) and their pairs of bodies (32-bit integers). */
+  reserveJoints(rows: number, pairs: number): void {
+    if (rows <= this.jointRows.length && pairs <= this.jointPairs.length) return;
+    this.layout([0, 0, 0, rows, pairs]);
+  }
+
+  private layout(wanted: number[]): void {
+    const old = [this.states, this.constraints, this.pairs, this.jointRows, this.jointPairs];
+    const lengths = old.map((view, r) => Math.max(wanted[r], view.length));
     const offsets: number[] = [];
     let end = 0;
-    for (let r = 0; r < 3; r++) {
+    for (let r = 0; r < old.length; r++) {
       offsets.push(end);
       end = Math.ceil((end + lengths[r] * old[r].BYTES_PER_ELEMENT) / ALIGN) * ALIGN;
     }
@@ -87,10 +105,12 @@ export class SoftStepKernel {
     const buffer = this.memory.buffer as ArrayBuffer;
     // Regions only move up: move the last first, so that none overwrites one not yet moved.
     const bytes = new Uint8Array(buffer);
-    for (let r = 2; r >= 0; r--) bytes.copyWithin(offsets[r], from[r][0], from[r][0] + from[r][1]);
+    for (let r = old.length - 1; r >= 0; r--) bytes.copyWithin(offsets[r], from[r][0], from[r][0] + from[r][1]);
     this.states = new Float64Array(buffer, offsets[0], lengths[0]);
     this.constraints = new Float64Array(buffer, offsets[1], lengths[1]);
     this.pairs = new Int32Array(buffer, offsets[2], lengths[2]);
+    this.jointRows = new Float64Array(buffer, offsets[3], lengths[3]);
+    this.jointPairs = new Int32Array(buffer, offsets[4], lengths[4]);
   }
 
   memoryBytes(): number {
@@ -116,5 +136,14 @@ export class SoftStepKernel {
 
   integratePositions(n: number, h: number, maxLinearSpeed: number, maxAngular: number): void {
     this.fn.integratePositions(this.states.byteOffset, n, h, maxLinearSpeed, maxAngular);
+  }
+
+  pointDistanceWarmStart(lanes: number): void {
+    this.fn.pointDistanceWarmStart(this.states.byteOffset, this.jointRows.byteOffset, this.jointPairs.byteOffset, lanes);
+  }
+
+  /** `pass`: the lane field offset of the softness to solve with (PointDistanceJoints' RELAX or 0). */
+  pointDistanceSolve(lanes: number, pass: number): void {
+    this.fn.pointDistanceSolve(this.states.byteOffset, this.jointRows.byteOffset, this.jointPairs.byteOffset, lanes, pass);
   }
 }

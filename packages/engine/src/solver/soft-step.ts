@@ -151,7 +151,11 @@ export class SoftStep {
     const h = dt / substeps;
     const inverseH = 1 / h;
     this.prepare(bodies, contacts, h, settings);
-    joints?.prepare(bodies, this.index, this.awake, this.awakeCount + 1, h, Math.min(settings.contactHertz, 0.25 / h), gx, gy, settings.maxLinearSpeed, MAX_ROTATION / dt);
+    if (joints !== null) {
+      joints.prepare(bodies, this.index, this.awake, this.awakeCount + 1, h, Math.min(settings.contactHertz, 0.25 / h), gx, gy, settings.maxLinearSpeed, MAX_ROTATION / dt, this.kernel);
+      // The joints' lanes share the kernel's memory, and growing them moves the other regions.
+      if (this.kernel !== null) this.reserve(0, 0, 0);
+    }
     const { kernel, laneCount, awakeCount, states } = this;
     // Velocity plus gravity alone, the kernel's case: the general loop's terms are then 0 and its factors 1.
     const plain = kernel !== null && bodies.customMotionCount === 0 && !bodies.forcesPending;
