@@ -28,6 +28,31 @@ describe('continuous collision with shapes', () => {
     }
   });
 
+  it('the sweep catches a fast circle or capsule grazing a segment\'s end, not only one aimed at its middle', () => {
+    // The segment runs from (10, -1) to (10, 1); each body's centre passes above its upper end by
+    // less than the body's reach, so only its rim meets the end, within the first step.
+    for (const [kind, reach] of [['circle', 0.5], ['capsule', 0.35]] as const) {
+      for (const fraction of [0, 0.3, 0.6, 0.9, 0.98]) {
+        const world = new World({ restitution: 0, friction: 0 });
+        world.createSegment({ x1: 10, y1: -1, x2: 10, y2: 1 });
+        // A box far off puts the circle on the shape route too.
+        world.createBox({ x: -100, y: 0, width: 1, height: 1, type: 'static' });
+        const y = 1 + fraction * reach;
+        const body =
+          kind === 'circle'
+            ? world.createCircle({ x: 5, y, radius: reach, vx: 300 })
+            : world.createCapsule({ x: 5, y, length: 0.5, radius: 0.1, angle: Math.PI / 2, vx: 300 });
+        world.step(DT);
+        // Passed by, it would end the step at x = 10; held at its impact, its rim on the end.
+        expect(world.getBody(body).x, `${kind} ${fraction}`).toBeLessThan(10);
+        world.step(DT);
+        // Then the end stops or deflects it (frictionless, without restitution).
+        const at = world.getBody(body);
+        expect(Math.hypot(at.vx - 300, at.vy), `${kind} ${fraction}`).toBeGreaterThan(10);
+      }
+    }
+  });
+
   it('without continuous collision the box tunnels (negative control)', () => {
     const world = new World({ restitution: 0.5, continuous: false });
     world.createBox({ x: 10, y: 0, width: 0.05, height: 10, type: 'static' });
