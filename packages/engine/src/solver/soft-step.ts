@@ -128,6 +128,8 @@ export class SoftStep {
   /** Constraint lanes in use: each colour padded with empty lanes to a multiple of QUAD. */
   private laneCount = 0;
   private colourOf = new Uint8Array(0);
+  /** Each contact's lane, by canonical position (-1: no moving body, not solved). */
+  private laneAt = new Int32Array(0);
   private order = new Int32Array(0);
   private used = new Uint32Array(0);
   private readonly colourStart = new Int32Array(COLOURS + 2);
@@ -269,20 +271,26 @@ export class SoftStep {
       const capacity = grownCapacity(this.constraints.length / PAIR, lanes >> 1);
       this.reserve(0, capacity * PAIR, 4 * capacity);
     }
-    const { constraints, pairs, order, states } = this;
+    const { constraints, pairs, order, states, laneAt } = this;
     for (let i = 0; i < lanes; i++) {
-      const k = order[i];
+      if (order[i] >= 0) continue;
+      // The empty lane of a colour's last pair: no points, on the dummy body.
       const c = at(i);
-      if (k < 0) {
-        // The empty lane of a colour's last pair: no points, on the dummy body.
-        pairs[2 * i] = 0;
-        pairs[2 * i + 1] = 0;
-        constraints[c + POINTS] = 0;
-        constraints[c + RESTITUTION] = 0;
-        constraints[c + ROLLING] = 0;
-        constraints[c + ROLLING_IMPULSE] = 0;
-        continue;
-      }
+      pairs[2 * i] = 0;
+      pairs[2 * i + 1] = 0;
+      constraints[c + POINTS] = 0;
+      constraints[c + RESTITUTION] = 0;
+      constraints[c + ROLLING] = 0;
+      constraints[c + ROLLING_IMPULSE] = 0;
+    }
+    // In canonical order, writing each contact into its lane: the contact list's columns are then
+    // read front to back once, where lane order would sweep them once per colour.
+    const contactOrder = contacts.order;
+    for (let n = 0; n < count; n++) {
+      const i = laneAt[n];
+      if (i < 0) continue;
+      const k = contactOrder[n];
+      const c = at(i);
       const a = contacts.bodyA[k];
       const b = contacts.bodyB[k];
       const ia = index[a];
@@ -368,8 +376,11 @@ export class SoftStep {
    * does (0.18). The order depends on the contact count alone, so the result on the contacts.
    */
   private colour(contacts: ContactList, count: number): void {
-    if (this.colourOf.length < count) this.colourOf = new Uint8Array(grownCapacity(this.colourOf.length, count));
-    const { index, colourOf, colourStart } = this;
+    if (this.colourOf.length < count) {
+      this.colourOf = new Uint8Array(grownCapacity(this.colourOf.length, count));
+      this.laneAt = new Int32Array(this.colourOf.length);
+    }
+    const { index, colourOf, colourStart, laneAt } = this;
     if (this.used.length < this.awakeCount + 1) this.used = new Uint32Array(grownCapacity(this.used.length, this.awakeCount + 1));
     const used = this.used;
     used.fill(0, 0, this.awakeCount + 1);
@@ -429,9 +440,13 @@ export class SoftStep {
     // Counting sort by colour, stable: each colour in canonical order; lanes hold contact slots.
     for (let n = 0; n < count; n++) {
       const colour = colourOf[n];
-      if (colour === NO_COLOUR) continue;
+      if (colour === NO_COLOUR) {
+        laneAt[n] = -1;
+        continue;
+      }
       const lane = colourStart[colour + 1];
       order[lane] = contactOrder[n];
+      laneAt[n] = lane;
       colourStart[colour + 1] = lane + (colour === COLOURS ? QUAD : 1);
     }
   }
@@ -938,13 +953,16 @@ export class SoftStep {
 
   /** Keeps the impulses on the contacts, for the next step's warm start and for events. */
   private store(contacts: ContactList): void {
-    const { constraints } = this;
-    const n = this.laneCount;
-    for (let i = 0; i < n; i++) {
+    const { constraints, laneAt } = this;
+    const contactOrder = contacts.order;
+    // In canonical order, as prepare reads them.
+    for (let n = 0; n < contacts.count; n++) {
+      const i = laneAt[n];
+      if (i < 0) continue;
       const c = at(i);
       const pointCount = constraints[c + POINTS];
       if (pointCount === 0) continue;
-      const k = constraints[c + CONTACT];
+      const k = contactOrder[n];
       contacts.rollingImpulse[k] = constraints[c + ROLLING_IMPULSE];
       for (let p = 0; p < pointCount; p++) {
         const q = c + P + p * POINT;
