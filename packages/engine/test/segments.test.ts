@@ -68,6 +68,22 @@ describe('static segments', () => {
     }
   });
 
+  it('a circle, a box and a capsule come to rest on a thick segment\'s face, its thickness from its core', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0 });
+    const thickness = 0.3;
+    // A wide floor (its bounding box holds every body) and a thick diagonal rib far from them all.
+    world.createSegment({ x1: -20, y1: 0, x2: 20, y2: 0, thickness });
+    world.createSegment({ x1: -20, y1: -10, x2: 20, y2: 30, thickness });
+    const circle = world.createCircle({ x: -4, y: -2, radius: 0.5 });
+    const box = world.createBox({ x: 0, y: -2, width: 1, height: 0.6 });
+    const capsule = world.createCapsule({ x: 4, y: -2, length: 1, radius: 0.2 });
+    for (let s = 0; s < 180; s++) world.step(1 / 60);
+    // At rest within the solver's slop of touching: each body's lowest point on the face at y = -thickness.
+    expect(world.getBody(circle).y).toBeCloseTo(-thickness - 0.5, 2);
+    expect(world.getBody(box).y).toBeCloseTo(-thickness - 0.3, 2);
+    expect(world.getBody(capsule).y).toBeCloseTo(-thickness - 0.2, 2);
+  });
+
   it('results do not depend on the broad-phase', () => {
     const hashes = BROADPHASE_NAMES.map((broadphase) => {
       const world = new World({ broadphase, gravity: { x: 0, y: 300 }, bounds: { width: 300, height: 300 } });

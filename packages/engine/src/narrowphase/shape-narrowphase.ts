@@ -141,10 +141,11 @@ export class ShapeNarrowPhase implements PairConsumer {
 
   /**
    * Pairs of each awake dynamic body with the static tree's entries its bounding box overlaps
-   * (static bodies as body pairs, segments as world pairs), and with each wall of the box its
-   * bounding circle reaches (the walls lie outside the box, so past a side is overlap).
+   * (static bodies as body pairs, segments within reach as world pairs), and with each wall of the
+   * box its bounding circle reaches (the walls lie outside the box, so past a side is overlap).
+   * `recycleDistance` is build's: how far a kept manifold's bodies may have drifted.
    */
-  gatherStatic(tree: StaticTree, shapes: ShapeStore, world: WorldShapes): void {
+  gatherStatic(tree: StaticTree, shapes: ShapeStore, world: WorldShapes, recycleDistance: number): void {
     const bodies = this.bodies;
     const { type, asleep, x, y, radius, category, mask, slotCount } = bodies;
     const segments = world.segments;
@@ -192,6 +193,7 @@ export class ShapeNarrowPhase implements PairConsumer {
               this.filtered++;
               continue;
             }
+            if (this.beyondSegment(segments, g, px, py, r, recycleDistance)) continue;
             this.pushWorld(i, entry);
           }
         }
@@ -244,6 +246,27 @@ export class ShapeNarrowPhase implements PairConsumer {
 
   memoryBytes(): number {
     return this.candidates.memoryBytes() + this.current.memoryBytes() + this.worldBody.byteLength * 2 + this.stamp.byteLength + this.wake.byteLength;
+  }
+
+  /**
+   * Whether a body whose bounding circle (speculative margin included) is at (px, py) with radius
+   * r lies too far from segment g for any contact, new or kept: farther than r, the segment's
+   * thickness and the distance a kept manifold may drift (see recyclable), widened by a millionth
+   * against rounding. A long diagonal segment's bounding box holds many bodies nowhere near it,
+   * and each would otherwise be a pair function's call.
+   */
+  private beyondSegment(segments: SegmentStore, g: number, px: number, py: number, r: number, recycleDistance: number): boolean {
+    const ax = segments.ax[g];
+    const ay = segments.ay[g];
+    const ex = segments.bx[g] - ax;
+    const ey = segments.by[g] - ay;
+    const length2 = ex * ex + ey * ey;
+    let t = length2 > 0 ? ((px - ax) * ex + (py - ay) * ey) / length2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    const dx = px - (ax + t * ex);
+    const dy = py - (ay + t * ey);
+    const reach = (r + segments.thickness[g] + recycleDistance) * (1 + 1e-6) + 1e-9;
+    return dx * dx + dy * dy > reach * reach;
   }
 
   private pushWorld(i: number, entry: number): void {

@@ -101,10 +101,11 @@ export class ShapeRoute {
     pairs.contactsDirect = false;
     const pairTests = broad.findPairs(bodies, pairs);
     pairs.flush();
-    narrow.gatherStatic(this.tree, this.shapes, this.world);
+    const recycleDistance = elastic ? 0 : 10 * settings.slop;
+    narrow.gatherStatic(this.tree, this.shapes, this.world, recycleDistance);
     const t2 = nowMs();
     // Only the soft step keeps manifolds between steps: the elastic pass works on fresh overlaps.
-    narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution, settings.sleeping.speed, elastic ? 0 : 10 * settings.slop, dt);
+    narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution, settings.sleeping.speed, recycleDistance, dt);
     const t3 = nowMs();
     const contacts = narrow.current;
     if (elastic) this.elastic.solve(bodies, contacts, settings.elastic);
