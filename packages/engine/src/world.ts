@@ -868,7 +868,7 @@ export class World {
       if (this.joints !== null) this.beginJointEvents();
       this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion, this.pipeline.events, this.pipeline.settings.solver.hitThreshold);
       limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);
-      if (this.joints !== null && this.joints.count > 0 && dt > 0) this.breakJoints();
+      if (this.joints !== null && this.joints.store.breakable > 0 && dt > 0) this.breakJoints();
     } else {
       this.pipeline.run(dt, this.staticVersion);
       if (this.turning) turnCircles(this.bodies, dt);

@@ -28,6 +28,8 @@ export class JointStore {
   firstEdge = new Int32Array(0);
   /** Joints whose bodies do not collide: the narrow-phase asks `joined` only while there are some. */
   nonColliding = 0;
+  /** Joints with a finite break force or torque: the step looks for broken joints only while there are some. */
+  breakable = 0;
   /** A pressure joint's ring of body slots, in order; its first two are also its bodies A and B. */
   private readonly rings = new Map<number, Int32Array>();
   /** Per body slot, how many rings it is in (slots beyond the array are in none). */
@@ -52,6 +54,7 @@ export class JointStore {
     if (!collide) this.nonColliding++;
     this.live[slot] = 1;
     this.record.set(definition, slot * JOINT_STRIDE);
+    if (isBreakable(definition, 0)) this.breakable++;
     this.link(2 * slot, a);
     this.link(2 * slot + 1, b);
     if (ring !== null) {
@@ -87,6 +90,7 @@ export class JointStore {
     this.unlink(2 * slot, this.bodyA[slot]);
     this.unlink(2 * slot + 1, this.bodyB[slot]);
     if (this.collide[slot] === 0) this.nonColliding--;
+    if (isBreakable(this.record, slot * JOINT_STRIDE)) this.breakable--;
     this.live[slot] = 0;
     this.record.fill(0, slot * JOINT_STRIDE, (slot + 1) * JOINT_STRIDE);
     this.count--;
@@ -184,3 +188,7 @@ export class JointStore {
 }
 
 export { J, JOINT_STRIDE };
+
+function isBreakable(r: Float64Array, o: number): boolean {
+  return r[o + J.breakForce] < Infinity || r[o + J.breakTorque] < Infinity;
+}

@@ -75,16 +75,24 @@ export class GasPressure {
       const o = this.joints[k] * JOINT_STRIDE;
       const from = start[k];
       const to = start[k + 1];
-      // Where each body is now, once: only velocities change below.
-      for (let i = from; i < to; i++) {
-        px[i] = baseX[i] + states[state[i] + DPX];
-        py[i] = baseY[i] + states[state[i] + DPY];
-      }
+      // Where each body is now, once (only velocities change below), and the shoelace sum.
+      const x0 = baseX[from] + states[state[from] + DPX];
+      const y0 = baseY[from] + states[state[from] + DPY];
+      px[from] = x0;
+      py[from] = y0;
       let twice = 0;
-      for (let i = from; i < to; i++) {
-        const j = i + 1 === to ? from : i + 1;
-        twice += px[i] * py[j] - px[j] * py[i];
+      let xi = x0;
+      let yi = y0;
+      for (let j = from + 1; j < to; j++) {
+        const xj = baseX[j] + states[state[j] + DPX];
+        const yj = baseY[j] + states[state[j] + DPY];
+        px[j] = xj;
+        py[j] = yj;
+        twice += xi * yj - xj * yi;
+        xi = xj;
+        yi = yj;
       }
+      twice += xi * y0 - x0 * yi;
       const rest = r[o + LENGTH];
       const area = Math.max(Math.abs(0.5 * twice), LEAST_AREA * rest);
       // The pressure, with the sense of the ring's winding folded in: (ey, -ex) points out of a

@@ -116,6 +116,7 @@ export class JointSolver {
 
   /** Wakes each sleeping body joined to a moving one, so that no joint pulls on a body the solve holds fixed. */
   wakeJoined(bodies: BodyStore): void {
+    if (bodies.sleepingCount === 0) return;
     const { store } = this;
     const { type, asleep } = bodies;
     for (let j = 0; j < store.slotCount; j++) {
