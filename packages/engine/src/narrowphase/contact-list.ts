@@ -22,6 +22,10 @@ export const WORLD = -1;
  * Keys: body slots, and shape handles (ShapeStore's, with generation; for a world shape its
  * segment handle or wall code), so that a reused slot never passes its impulses to a newcomer.
  */
+/** A contact's recycling record (ContactList.recycle): A's and B's rotations, and B's centre and rotation in A's frame. */
+export const Recycle = { ac: 0, as: 1, bc: 2, bs: 3, x: 4, y: 5, c: 6, s: 7 } as const;
+export const RECYCLE = 8;
+
 /**
  * Where the narrow-phase leaves a pair's poses and material for `add`, `rewrite` and `cache`
  * (ContactList.pose): in a typed array rather than as arguments, since V8 boxes each number passed
@@ -69,17 +73,12 @@ export class ContactList {
   /** Approach speed along the normal before the solve (positive when approaching), for hit events. */
   approachSpeed = new Float64Array(0);
   /**
-   * For recycling (see ShapeNarrowPhase): the two bodies' rotations when the manifold was last
-   * computed, B's centre and rotation relative to A then, and each point's separation then.
+   * For recycling (see ShapeNarrowPhase): per contact, RECYCLE doubles (see Recycle), the two
+   * bodies' rotations when the manifold was last computed and B's centre and rotation relative
+   * to A then, in one run of memory, since recycling reads them all of a contact at once.
    */
-  cacheAC = new Float64Array(0);
-  cacheAS = new Float64Array(0);
-  cacheBC = new Float64Array(0);
-  cacheBS = new Float64Array(0);
-  relativeX = new Float64Array(0);
-  relativeY = new Float64Array(0);
-  relativeC = new Float64Array(0);
-  relativeS = new Float64Array(0);
+  recycle = new Float64Array(0);
+  /** Each point's separation when the manifold was computed. */
   baseSeparation = new Float64Array(0);
   private capacity = 0;
   /** Slots handed out so far; those below it not in use are on the free list. */
@@ -276,17 +275,19 @@ export class ContactList {
     const by = pose[Pose.by];
     const bc = pose[Pose.bc];
     const bs = pose[Pose.bs];
-    this.cacheAC[k] = ac;
-    this.cacheAS[k] = as;
-    this.cacheBC[k] = bc;
-    this.cacheBS[k] = bs;
+    const r = this.recycle;
+    const o = k * RECYCLE;
+    r[o + Recycle.ac] = ac;
+    r[o + Recycle.as] = as;
+    r[o + Recycle.bc] = bc;
+    r[o + Recycle.bs] = bs;
     const dx = bx - ax;
     const dy = by - ay;
     // B's centre and rotation in A's frame.
-    this.relativeX[k] = ac * dx + as * dy;
-    this.relativeY[k] = -as * dx + ac * dy;
-    this.relativeC[k] = ac * bc + as * bs;
-    this.relativeS[k] = ac * bs - as * bc;
+    r[o + Recycle.x] = ac * dx + as * dy;
+    r[o + Recycle.y] = -as * dx + ac * dy;
+    r[o + Recycle.c] = ac * bc + as * bs;
+    r[o + Recycle.s] = ac * bs - as * bc;
   }
 
   memoryBytes(): number {
@@ -320,14 +321,7 @@ export class ContactList {
     this.tangentImpulse = grow(this.tangentImpulse, 2 * c);
     this.totalNormalImpulse = grow(this.totalNormalImpulse, 2 * c);
     this.approachSpeed = grow(this.approachSpeed, 2 * c);
-    this.cacheAC = grow(this.cacheAC, c);
-    this.cacheAS = grow(this.cacheAS, c);
-    this.cacheBC = grow(this.cacheBC, c);
-    this.cacheBS = grow(this.cacheBS, c);
-    this.relativeX = grow(this.relativeX, c);
-    this.relativeY = grow(this.relativeY, c);
-    this.relativeC = grow(this.relativeC, c);
-    this.relativeS = grow(this.relativeS, c);
+    this.recycle = grow(this.recycle, RECYCLE * c);
     this.baseSeparation = grow(this.baseSeparation, 2 * c);
     this.freeSlots = grow(this.freeSlots, c);
     this.listed = grow(this.listed, c);

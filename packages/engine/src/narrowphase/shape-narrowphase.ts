@@ -7,7 +7,7 @@ import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import { grownCapacity, grow } from '../util/grow.js';
 import type { StaticTree } from '../broadphase/static-tree.js';
-import { ContactList, Pose, WORLD } from './contact-list.js';
+import { ContactList, Pose, RECYCLE, Recycle, WORLD } from './contact-list.js';
 import { Manifold } from './manifold.js';
 import { WorldShape } from './world-shape.js';
 import { collide } from './dispatch.js';
@@ -490,8 +490,10 @@ export class ShapeNarrowPhase implements PairConsumer {
     const as = s[i];
     const bc = j === WORLD ? 1 : c[j];
     const bs = j === WORLD ? 0 : s[j];
-    const cosA = ac * prev.cacheAC[q] + as * prev.cacheAS[q];
-    const cosB = bc * prev.cacheBC[q] + bs * prev.cacheBS[q];
+    const r = prev.recycle;
+    const o = q * RECYCLE;
+    const cosA = ac * r[o + Recycle.ac] + as * r[o + Recycle.as];
+    const cosB = bc * r[o + Recycle.bc] + bs * r[o + Recycle.bs];
     if (!(Math.min(cosA, cosB) > RECYCLE_COS)) return false;
     const dx = (j === WORLD ? 0 : x[j]) - x[i];
     const dy = (j === WORLD ? 0 : y[j]) - y[i];
@@ -500,10 +502,10 @@ export class ShapeNarrowPhase implements PairConsumer {
     const rc = ac * bc + as * bs;
     const rs = ac * bs - as * bc;
     // The relative rotation's change since the cache: sin of the angle between rs/rc and the cached one.
-    const turn = rs * prev.relativeC[q] - rc * prev.relativeS[q];
+    const turn = rs * r[o + Recycle.c] - rc * r[o + Recycle.s];
     const extentA = bodies.type[i] === TypeCode.static ? 0 : radius[i] - this.margin;
     const extentB = j === WORLD || bodies.type[j] === TypeCode.static ? 0 : radius[j] - this.margin;
-    const moved = Math.sqrt((rx - prev.relativeX[q]) * (rx - prev.relativeX[q]) + (ry - prev.relativeY[q]) * (ry - prev.relativeY[q]));
+    const moved = Math.sqrt((rx - r[o + Recycle.x]) * (rx - r[o + Recycle.x]) + (ry - r[o + Recycle.y]) * (ry - r[o + Recycle.y]));
     return moved + Math.max(extentA, extentB) * Math.abs(turn) < this.recycleDistance;
   }
 
@@ -539,10 +541,12 @@ export class ShapeNarrowPhase implements PairConsumer {
     const bc = j === WORLD ? 1 : c[j];
     const bs = j === WORLD ? 0 : s[j];
     // Each body's turn since the cache: q q0^-1.
-    const dac = ac * list.cacheAC[q] + as * list.cacheAS[q];
-    const das = as * list.cacheAC[q] - ac * list.cacheAS[q];
-    const dbc = bc * list.cacheBC[q] + bs * list.cacheBS[q];
-    const dbs = bs * list.cacheBC[q] - bc * list.cacheBS[q];
+    const r = list.recycle;
+    const o = q * RECYCLE;
+    const dac = ac * r[o + Recycle.ac] + as * r[o + Recycle.as];
+    const das = as * r[o + Recycle.ac] - ac * r[o + Recycle.as];
+    const dbc = bc * r[o + Recycle.bc] + bs * r[o + Recycle.bs];
+    const dbs = bs * r[o + Recycle.bc] - bc * r[o + Recycle.bs];
     const pose = list.pose;
     pose[Pose.ax] = bodies.x[i];
     pose[Pose.ay] = bodies.y[i];
