@@ -11,6 +11,7 @@ import { PersistentSapBroadPhase } from './broadphase/sap-persistent.js';
 import { webAssembly } from './util/wasm.js';
 import { gridKernelUse, bodyKernelUse, softStepKernelUse, type WorldBackend } from './backend.js';
 import { ContactEvents, type ContactEventsView } from './store/contact-events.js';
+import { ContactPoint, POINT_STRIDE } from './narrowphase/contact-list.js';
 import { Queries, type RayHit } from './query/queries.js';
 import { Disturbances } from './solver/disturbances.js';
 import { limitSpeeds } from './solver/speed-limit.js';
@@ -1147,7 +1148,10 @@ export class World {
       const c = this.shapeRoute.narrow.current;
       for (let listed = 0; listed < c.count; listed++) {
         const k = c.order[listed];
-        for (let p = 0; p < c.pointCount[k]; p++) put(c.pointX[2 * k + p], c.pointY[2 * k + p], c.normalX[k], c.normalY[k], c.separation[2 * k + p]);
+        for (let p = 0; p < c.pointCount[k]; p++) {
+          const o = (2 * k + p) * POINT_STRIDE;
+          put(c.points[o + ContactPoint.x], c.points[o + ContactPoint.y], c.normalX[k], c.normalY[k], c.points[o + ContactPoint.separation]);
+        }
       }
     } else {
       const { x, y, radius } = this.bodies;

@@ -22,6 +22,32 @@ export const WORLD = -1;
  * Keys: body slots, and shape handles (ShapeStore's, with generation; for a world shape its
  * segment handle or wall code), so that a reused slot never passes its impulses to a newcomer.
  */
+/**
+ * A contact point's record (ContactList.points): its anchors from each centre of mass, its
+ * separation, the impulses the solver kept on it, the largest normal impulse of the step (whether
+ * it really collided: restitution, events), the approach speed before the solve (positive when
+ * approaching, for hit events), its world position, and its separation when the manifold was
+ * computed (for recycling).
+ */
+export const ContactPoint = {
+  anchorAX: 0,
+  anchorAY: 1,
+  anchorBX: 2,
+  anchorBY: 3,
+  separation: 4,
+  normalImpulse: 5,
+  tangentImpulse: 6,
+  totalNormalImpulse: 7,
+  approachSpeed: 8,
+  x: 9,
+  y: 10,
+  baseSeparation: 11,
+} as const;
+export const POINT_STRIDE = 12;
+
+// The fields as this module's own constants, which V8 folds into the code (see joint-layout.ts).
+const { anchorAX: AAX, anchorAY: AAY, anchorBX: ABX, anchorBY: ABY, separation: SEPARATION, normalImpulse: NORMAL_IMPULSE, tangentImpulse: TANGENT_IMPULSE, totalNormalImpulse: TOTAL_NORMAL_IMPULSE, approachSpeed: APPROACH_SPEED, x: PX, y: PY, baseSeparation: BASE_SEPARATION } = ContactPoint;
+
 /** A contact's recycling record (ContactList.recycle): A's and B's rotations, and B's centre and rotation in A's frame. */
 export const Recycle = { ac: 0, as: 1, bc: 2, bs: 3, x: 4, y: 5, c: 6, s: 7 } as const;
 export const RECYCLE = 8;
@@ -57,29 +83,19 @@ export class ContactList {
   restitution = new Float64Array(0);
   rollingResistance = new Float64Array(0);
   rollingImpulse = new Float64Array(0);
-  // Two entries per contact: point p of contact k at 2k + p.
-  anchorAX = new Float64Array(0);
-  anchorAY = new Float64Array(0);
-  anchorBX = new Float64Array(0);
-  anchorBY = new Float64Array(0);
-  pointX = new Float64Array(0);
-  pointY = new Float64Array(0);
-  separation = new Float64Array(0);
+  /**
+   * Two points per contact, point p of contact k at 2k + p: its fields (CONTACT_POINT, see
+   * ContactPoint) in one record of POINT_STRIDE doubles, since the solver's preparation and
+   * recycling read most of a point's fields at once; and its feature id.
+   */
+  points = new Float64Array(0);
   id = new Int32Array(0);
-  normalImpulse = new Float64Array(0);
-  tangentImpulse = new Float64Array(0);
-  /** The largest normal impulse the point took in the step: whether it really collided (restitution, events). */
-  totalNormalImpulse = new Float64Array(0);
-  /** Approach speed along the normal before the solve (positive when approaching), for hit events. */
-  approachSpeed = new Float64Array(0);
   /**
    * For recycling (see ShapeNarrowPhase): per contact, RECYCLE doubles (see Recycle), the two
    * bodies' rotations when the manifold was last computed and B's centre and rotation relative
    * to A then, in one run of memory, since recycling reads them all of a contact at once.
    */
   recycle = new Float64Array(0);
-  /** Each point's separation when the manifold was computed. */
-  baseSeparation = new Float64Array(0);
   private capacity = 0;
   /** Slots handed out so far; those below it not in use are on the free list. */
   private slotCount = 0;
@@ -150,8 +166,9 @@ export class ContactList {
     this.rollingImpulse[k] = 0;
     this.write(k, m);
     for (let p = 0; p < m.pointCount; p++) {
-      this.normalImpulse[2 * k + p] = 0;
-      this.tangentImpulse[2 * k + p] = 0;
+      const o = (2 * k + p) * POINT_STRIDE;
+      this.points[o + NORMAL_IMPULSE] = 0;
+      this.points[o + TANGENT_IMPULSE] = 0;
     }
     this.list(k);
     return k;
@@ -166,23 +183,25 @@ export class ContactList {
     const oldCount = this.pointCount[k];
     const id0 = this.id[2 * k];
     const id1 = this.id[2 * k + 1];
-    const normal0 = this.normalImpulse[2 * k];
-    const normal1 = this.normalImpulse[2 * k + 1];
-    const tangent0 = this.tangentImpulse[2 * k];
-    const tangent1 = this.tangentImpulse[2 * k + 1];
+    const pt = this.points;
+    const o0 = 2 * k * POINT_STRIDE;
+    const normal0 = pt[o0 + NORMAL_IMPULSE];
+    const normal1 = pt[o0 + POINT_STRIDE + NORMAL_IMPULSE];
+    const tangent0 = pt[o0 + TANGENT_IMPULSE];
+    const tangent1 = pt[o0 + POINT_STRIDE + TANGENT_IMPULSE];
     this.write(k, m);
     for (let p = 0; p < m.pointCount; p++) {
-      const at = 2 * k + p;
+      const o = (2 * k + p) * POINT_STRIDE;
       const id = m.id[p];
       if (oldCount > 0 && id0 === id) {
-        this.normalImpulse[at] = normal0;
-        this.tangentImpulse[at] = tangent0;
+        pt[o + NORMAL_IMPULSE] = normal0;
+        pt[o + TANGENT_IMPULSE] = tangent0;
       } else if (oldCount > 1 && id1 === id) {
-        this.normalImpulse[at] = normal1;
-        this.tangentImpulse[at] = tangent1;
+        pt[o + NORMAL_IMPULSE] = normal1;
+        pt[o + TANGENT_IMPULSE] = tangent1;
       } else {
-        this.normalImpulse[at] = 0;
-        this.tangentImpulse[at] = 0;
+        pt[o + NORMAL_IMPULSE] = 0;
+        pt[o + TANGENT_IMPULSE] = 0;
       }
     }
     this.list(k);
@@ -210,21 +229,22 @@ export class ContactList {
     const ny = this.normalY[k];
     const dcx = bx - ax;
     const dcy = by - ay;
+    const pt = this.points;
     for (let p = 0; p < n; p++) {
-      const at = 2 * k + p;
-      const rAx0 = this.anchorAX[at];
-      const rAy0 = this.anchorAY[at];
-      const rBx0 = this.anchorBX[at];
-      const rBy0 = this.anchorBY[at];
+      const o = (2 * k + p) * POINT_STRIDE;
+      const rAx0 = pt[o + AAX];
+      const rAy0 = pt[o + AAY];
+      const rBx0 = pt[o + ABX];
+      const rBy0 = pt[o + ABY];
       const rAx = dac * rAx0 - das * rAy0;
       const rAy = das * rAx0 + dac * rAy0;
       const rBx = dbc * rBx0 - dbs * rBy0;
       const rBy = dbs * rBx0 + dbc * rBy0;
-      this.separation[at] = this.baseSeparation[at] + (dcx + rBx - rAx) * nx + (dcy + rBy - rAy) * ny;
-      this.pointX[at] = ax + rAx;
-      this.pointY[at] = ay + rAy;
-      this.totalNormalImpulse[at] = 0;
-      this.approachSpeed[at] = 0;
+      pt[o + SEPARATION] = pt[o + BASE_SEPARATION] + (dcx + rBx - rAx) * nx + (dcy + rBy - rAy) * ny;
+      pt[o + PX] = ax + rAx;
+      pt[o + PY] = ay + rAy;
+      pt[o + TOTAL_NORMAL_IMPULSE] = 0;
+      pt[o + APPROACH_SPEED] = 0;
     }
     this.list(k);
   }
@@ -246,21 +266,23 @@ export class ContactList {
     this.pointCount[k] = n;
     this.normalX[k] = m.normalX;
     this.normalY[k] = m.normalY;
+    const pt = this.points;
     for (let p = 0; p < n; p++) {
       const at = 2 * k + p;
+      const o = at * POINT_STRIDE;
       const px = m.x[p];
       const py = m.y[p];
-      this.pointX[at] = px;
-      this.pointY[at] = py;
-      this.anchorAX[at] = px - ax;
-      this.anchorAY[at] = py - ay;
-      this.anchorBX[at] = px - bx;
-      this.anchorBY[at] = py - by;
-      this.separation[at] = m.separation[p];
-      this.baseSeparation[at] = m.separation[p];
+      pt[o + PX] = px;
+      pt[o + PY] = py;
+      pt[o + AAX] = px - ax;
+      pt[o + AAY] = py - ay;
+      pt[o + ABX] = px - bx;
+      pt[o + ABY] = py - by;
+      pt[o + SEPARATION] = m.separation[p];
+      pt[o + BASE_SEPARATION] = m.separation[p];
       this.id[at] = m.id[p];
-      this.totalNormalImpulse[at] = 0;
-      this.approachSpeed[at] = 0;
+      pt[o + TOTAL_NORMAL_IMPULSE] = 0;
+      pt[o + APPROACH_SPEED] = 0;
     }
   }
 
@@ -291,7 +313,7 @@ export class ContactList {
   }
 
   memoryBytes(): number {
-    return this.capacity * (4 * 4 + 8 * 2 + 1 + 8 * 14 + 4 + 4) + 2 * this.capacity * (8 * 12 + 4) + this.order.byteLength + this.previousOrder.byteLength;
+    return this.capacity * (4 * 4 + 8 * 2 + 1 + 8 * 14 + 4 + 4) + 2 * this.capacity * (8 * POINT_STRIDE + 4) + this.order.byteLength + this.previousOrder.byteLength;
   }
 
   private grow(needed: number): void {
@@ -309,20 +331,9 @@ export class ContactList {
     this.restitution = grow(this.restitution, c);
     this.rollingResistance = grow(this.rollingResistance, c);
     this.rollingImpulse = grow(this.rollingImpulse, c);
-    this.anchorAX = grow(this.anchorAX, 2 * c);
-    this.anchorAY = grow(this.anchorAY, 2 * c);
-    this.anchorBX = grow(this.anchorBX, 2 * c);
-    this.anchorBY = grow(this.anchorBY, 2 * c);
-    this.pointX = grow(this.pointX, 2 * c);
-    this.pointY = grow(this.pointY, 2 * c);
-    this.separation = grow(this.separation, 2 * c);
+    this.points = grow(this.points, 2 * POINT_STRIDE * c);
     this.id = grow(this.id, 2 * c);
-    this.normalImpulse = grow(this.normalImpulse, 2 * c);
-    this.tangentImpulse = grow(this.tangentImpulse, 2 * c);
-    this.totalNormalImpulse = grow(this.totalNormalImpulse, 2 * c);
-    this.approachSpeed = grow(this.approachSpeed, 2 * c);
     this.recycle = grow(this.recycle, RECYCLE * c);
-    this.baseSeparation = grow(this.baseSeparation, 2 * c);
     this.freeSlots = grow(this.freeSlots, c);
     this.listed = grow(this.listed, c);
     this.capacity = c;

@@ -1,6 +1,9 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
-import { ContactList, WORLD } from '../narrowphase/contact-list.js';
+import { ContactList, ContactPoint, POINT_STRIDE, WORLD } from '../narrowphase/contact-list.js';
+
+// The contact point record's fields as this module's own constants, which V8 folds into the code.
+const { anchorAX: PT_ANCHOR_AX, anchorAY: PT_ANCHOR_AY, anchorBX: PT_ANCHOR_BX, anchorBY: PT_ANCHOR_BY, approachSpeed: PT_APPROACH_SPEED, normalImpulse: PT_NORMAL_IMPULSE, separation: PT_SEPARATION, totalNormalImpulse: PT_TOTAL_NORMAL_IMPULSE } = ContactPoint;
 
 export interface ElasticSettings {
   restitutionThreshold: number;
@@ -60,16 +63,16 @@ export class ElasticPass {
       let n = contacts.pointCount[k];
       let at0 = 2 * k;
       // Points apart (a polygon face keeps its second point, see polygon-polygon.ts) take no part.
-      if (n === 2 && !(contacts.separation[at0 + 1] < 0)) n = 1;
-      else if (n === 2 && !(contacts.separation[at0] < 0)) {
+      if (n === 2 && !(contacts.points[(at0 + 1) * POINT_STRIDE + PT_SEPARATION] < 0)) n = 1;
+      else if (n === 2 && !(contacts.points[at0 * POINT_STRIDE + PT_SEPARATION] < 0)) {
         n = 1;
         at0++;
       }
-      if (!(contacts.separation[at0] < 0)) continue;
-      const r0ax = contacts.anchorAX[at0];
-      const r0ay = contacts.anchorAY[at0];
-      const r0bx = contacts.anchorBX[at0];
-      const r0by = contacts.anchorBY[at0];
+      if (!(contacts.points[at0 * POINT_STRIDE + PT_SEPARATION] < 0)) continue;
+      const r0ax = contacts.points[at0 * POINT_STRIDE + PT_ANCHOR_AX];
+      const r0ay = contacts.points[at0 * POINT_STRIDE + PT_ANCHOR_AY];
+      const r0bx = contacts.points[at0 * POINT_STRIDE + PT_ANCHOR_BX];
+      const r0by = contacts.points[at0 * POINT_STRIDE + PT_ANCHOR_BY];
       const rn0a = r0ax * ny - r0ay * nx;
       const rn0b = r0bx * ny - r0by * nx;
       const u0 = (vbx - wb * r0by - (vax - wa * r0ay)) * nx + (vby + wb * r0bx - (vay + wa * r0ax)) * ny;
@@ -85,18 +88,18 @@ export class ElasticPass {
       const k00 = mA + mB + iA * rn0a * rn0a + iB * rn0b * rn0b;
       if (n === 2) {
         const at1 = at0 + 1;
-        r1ax = contacts.anchorAX[at1];
-        r1ay = contacts.anchorAY[at1];
-        r1bx = contacts.anchorBX[at1];
-        r1by = contacts.anchorBY[at1];
+        r1ax = contacts.points[at1 * POINT_STRIDE + PT_ANCHOR_AX];
+        r1ay = contacts.points[at1 * POINT_STRIDE + PT_ANCHOR_AY];
+        r1bx = contacts.points[at1 * POINT_STRIDE + PT_ANCHOR_BX];
+        r1by = contacts.points[at1 * POINT_STRIDE + PT_ANCHOR_BY];
         rn1a = r1ax * ny - r1ay * nx;
         rn1b = r1bx * ny - r1by * nx;
         u1 = (vbx - wb * r1by - (vax - wa * r1ay)) * nx + (vby + wb * r1bx - (vay + wa * r1ax)) * ny;
       }
       const approach = Math.max(-u0, n === 2 ? -u1 : -Infinity);
       if (approach > 0) {
-        contacts.approachSpeed[at0] = -u0;
-        if (n === 2) contacts.approachSpeed[at0 + 1] = -u1;
+        contacts.points[at0 * POINT_STRIDE + PT_APPROACH_SPEED] = -u0;
+        if (n === 2) contacts.points[(at0 + 1) * POINT_STRIDE + PT_APPROACH_SPEED] = -u1;
         const e = approach < threshold ? 0 : contacts.restitution[k];
         const scale = 1 + e;
         if (n === 1) {
@@ -146,11 +149,11 @@ export class ElasticPass {
           vby += mB * py;
           wa -= iA * (p0 * rn0a + p1 * rn1a);
           wb += iB * (p0 * rn0b + p1 * rn1b);
-          contacts.normalImpulse[at0] = p0;
-          contacts.totalNormalImpulse[at0] = p0;
+          contacts.points[at0 * POINT_STRIDE + PT_NORMAL_IMPULSE] = p0;
+          contacts.points[at0 * POINT_STRIDE + PT_TOTAL_NORMAL_IMPULSE] = p0;
           if (n === 2) {
-            contacts.normalImpulse[at0 + 1] = p1;
-            contacts.totalNormalImpulse[at0 + 1] = p1;
+            contacts.points[(at0 + 1) * POINT_STRIDE + PT_NORMAL_IMPULSE] = p1;
+            contacts.points[(at0 + 1) * POINT_STRIDE + PT_TOTAL_NORMAL_IMPULSE] = p1;
           }
         }
         const friction = contacts.friction[k];
@@ -189,8 +192,8 @@ export class ElasticPass {
           angularVelocity[b] = wb;
         }
       }
-      let deepest = contacts.separation[at0];
-      if (n === 2 && contacts.separation[at0 + 1] < deepest) deepest = contacts.separation[at0 + 1];
+      let deepest = contacts.points[at0 * POINT_STRIDE + PT_SEPARATION];
+      if (n === 2 && contacts.points[(at0 + 1) * POINT_STRIDE + PT_SEPARATION] < deepest) deepest = contacts.points[(at0 + 1) * POINT_STRIDE + PT_SEPARATION];
       const excess = -deepest - slop;
       if (!(excess > 0)) continue;
       const push = (excess * correction) / (mA + mB);

@@ -1,11 +1,14 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
-import { ContactList, WORLD } from '../narrowphase/contact-list.js';
+import { ContactList, ContactPoint, POINT_STRIDE, WORLD } from '../narrowphase/contact-list.js';
 import { grownCapacity } from '../util/grow.js';
 import { SoftStepKernel } from './soft-step-kernel.js';
 import type { JointSolver } from './joint-solver.js';
 import { BODY, DPX, DPY, DQC, DQS, DYNAMIC, VX, VY, W, makeSoft } from './solver-body.js';
+
+// The contact point record's fields as this module's own constants, which V8 folds into the code.
+const { anchorAX: PT_ANCHOR_AX, anchorAY: PT_ANCHOR_AY, anchorBX: PT_ANCHOR_BX, anchorBY: PT_ANCHOR_BY, approachSpeed: PT_APPROACH_SPEED, normalImpulse: PT_NORMAL_IMPULSE, separation: PT_SEPARATION, tangentImpulse: PT_TANGENT_IMPULSE, totalNormalImpulse: PT_TOTAL_NORMAL_IMPULSE } = ContactPoint;
 
 /** The soft step's tuning, in the world's length units (see WorldOptions.lengthUnit). */
 export interface SoftSettings {
@@ -332,19 +335,19 @@ export class SoftStep {
       const tx = ny;
       const ty = -nx;
       for (let p = 0; p < pointCount; p++) {
-        const point = 2 * k + p;
+        const point = (2 * k + p) * POINT_STRIDE;
         const q = c + P + p * POINT;
-        const rAx = contacts.anchorAX[point];
-        const rAy = contacts.anchorAY[point];
-        const rBx = contacts.anchorBX[point];
-        const rBy = contacts.anchorBY[point];
+        const rAx = contacts.points[point + PT_ANCHOR_AX];
+        const rAy = contacts.points[point + PT_ANCHOR_AY];
+        const rBx = contacts.points[point + PT_ANCHOR_BX];
+        const rBy = contacts.points[point + PT_ANCHOR_BY];
         constraints[q + RAX] = rAx;
         constraints[q + RAY] = rAy;
         constraints[q + RBX] = rBx;
         constraints[q + RBY] = rBy;
-        constraints[q + BASE_SEPARATION] = contacts.separation[point] - ((rBx - rAx) * nx + (rBy - rAy) * ny);
-        constraints[q + NORMAL_IMPULSE] = contacts.normalImpulse[point];
-        constraints[q + TANGENT_IMPULSE] = contacts.tangentImpulse[point];
+        constraints[q + BASE_SEPARATION] = contacts.points[point + PT_SEPARATION] - ((rBx - rAx) * nx + (rBy - rAy) * ny);
+        constraints[q + NORMAL_IMPULSE] = contacts.points[point + PT_NORMAL_IMPULSE];
+        constraints[q + TANGENT_IMPULSE] = contacts.points[point + PT_TANGENT_IMPULSE];
         constraints[q + MAX_NORMAL_IMPULSE] = 0;
         const rnA = rAx * ny - rAy * nx;
         const rnB = rBx * ny - rBy * nx;
@@ -359,7 +362,7 @@ export class SoftStep {
         const vn = dvx * nx + dvy * ny;
         constraints[q + RELATIVE_VELOCITY] = vn;
         constraints[q + IMPACT_VELOCITY] = 0;
-        contacts.approachSpeed[point] = -vn;
+        contacts.points[point + PT_APPROACH_SPEED] = -vn;
       }
     }
   }
@@ -966,10 +969,10 @@ export class SoftStep {
       contacts.rollingImpulse[k] = constraints[c + ROLLING_IMPULSE];
       for (let p = 0; p < pointCount; p++) {
         const q = c + P + p * POINT;
-        const point = 2 * k + p;
-        contacts.normalImpulse[point] = constraints[q + NORMAL_IMPULSE];
-        contacts.tangentImpulse[point] = constraints[q + TANGENT_IMPULSE];
-        contacts.totalNormalImpulse[point] = constraints[q + MAX_NORMAL_IMPULSE];
+        const point = (2 * k + p) * POINT_STRIDE;
+        contacts.points[point + PT_NORMAL_IMPULSE] = constraints[q + NORMAL_IMPULSE];
+        contacts.points[point + PT_TANGENT_IMPULSE] = constraints[q + TANGENT_IMPULSE];
+        contacts.points[point + PT_TOTAL_NORMAL_IMPULSE] = constraints[q + MAX_NORMAL_IMPULSE];
       }
     }
   }
