@@ -1,6 +1,6 @@
 import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
-import { funnelAndFloor, type SceneBody, type ShapeScene } from './shape-scene.js';
+import { funnelAndFloor, liftAboveFunnel, type SceneBody, type ShapeScene } from './shape-scene.js';
 
 /** The parameters blobs takes, with their defaults and ranges (resolveParams checks them). */
 export const blobsParams = {
@@ -66,6 +66,8 @@ export function blobs(given?: Partial<Record<keyof typeof blobsParams, number>>)
   }
   const width = columns * pitch + 4;
   const segments = funnelAndFloor(width, 4 * p.radius, p.funnel === 1, p.funnel === 1);
+  const lift = p.funnel === 1 ? liftAboveFunnel(bodies, width, 4 * p.radius, particle, 0.5) : 0;
+  for (const body of bodies) body.y -= lift;
   const rows = Math.ceil(p.count / columns);
   return {
     name: 'blobs',
@@ -77,6 +79,6 @@ export function blobs(given?: Partial<Record<keyof typeof blobsParams, number>>)
     bodies,
     segments,
     joints,
-    view: { minX: -width, minY: -8 - rows * pitch, maxX: width, maxY: 9 },
+    view: { minX: -width, minY: -8 - rows * pitch - lift, maxX: width, maxY: 9 },
   };
 }

@@ -91,3 +91,25 @@ export function funnelAndFloor(width: number, outlet: number, funnel: boolean, f
   }
   return segments;
 }
+
+/**
+ * How far to move bodies poured from above up (towards -y) so that each, `reach` in radius, starts
+ * clear above the funnelAndFloor funnel's walls (`width` wide at the top, `outlet` at y = 0), with
+ * `gap` to spare: 0 where all already are. A grid of soft bodies as wide as the funnel has its
+ * lower corners below the walls' slopes, and a body that starts across a wall stays caught on it.
+ */
+export function liftAboveFunnel(bodies: readonly SceneBody[], width: number, outlet: number, reach: number, gap: number): number {
+  const half = width / 2;
+  const slope = half / (half - outlet / 2);
+  // A circle clears a wall y = slope (x - outlet/2) (the right one, mirrored for the left) when its
+  // centre is its reach and the wall's thickness, measured along the wall's normal, above it.
+  const rise = (reach + 0.1 + gap) * Math.sqrt(1 + slope * slope);
+  let lift = 0;
+  for (const body of bodies) {
+    const x = Math.abs(body.x);
+    if (x + reach <= outlet / 2) continue;
+    const wall = -slope * (Math.min(x, half) - outlet / 2);
+    lift = Math.max(lift, body.y - (wall - rise));
+  }
+  return lift;
+}

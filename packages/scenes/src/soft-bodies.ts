@@ -1,6 +1,6 @@
 import type { JointOptions } from '@maxgrid/engine';
 import { resolveParams, type ParamSpecs } from './params.js';
-import { funnelAndFloor, type SceneBody, type ShapeScene } from './shape-scene.js';
+import { funnelAndFloor, liftAboveFunnel, type SceneBody, type ShapeScene } from './shape-scene.js';
 
 /** The parameters jellies takes, with their defaults and ranges (resolveParams checks them). */
 export const jelliesParams = {
@@ -56,6 +56,8 @@ export function jellies(given?: Partial<Record<keyof typeof jelliesParams, numbe
   }
   const width = columns * (size + 1) + 4;
   const segments = funnelAndFloor(width, 3, p.funnel === 1, p.floor === 1);
+  const lift = p.funnel === 1 ? liftAboveFunnel(bodies, width, 3, radius, 0.5) : 0;
+  for (const body of bodies) body.y -= lift;
   const rows = Math.ceil(p.count / columns);
   return {
     name: 'jellies',
@@ -67,6 +69,6 @@ export function jellies(given?: Partial<Record<keyof typeof jelliesParams, numbe
     bodies,
     segments,
     joints,
-    view: { minX: -width, minY: -8 - rows * (size + 1), maxX: width, maxY: 9 },
+    view: { minX: -width, minY: -8 - rows * (size + 1) - lift, maxX: width, maxY: 9 },
   };
 }

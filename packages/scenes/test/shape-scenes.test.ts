@@ -45,6 +45,33 @@ describe('shape scenes', () => {
     }
   });
 
+  it('soft bodies poured into the funnel start clear above its walls, however many there are', () => {
+    for (const [name, params] of [
+      ['jellies', { count: 1 }],
+      ['jellies', { count: 20 }],
+      ['jellies', { count: 400 }],
+      ['jellies', { count: 90, side: 3, stretch: 2 }],
+      ['blobs', { count: 12 }],
+      ['blobs', { count: 625, segments: 3 }],
+      ['blobs', { count: 2000, radius: 0.5 }],
+    ] as const) {
+      const scene = buildShapeScene(name, params);
+      // The funnel: the first two segments, each from its top corner down to the outlet at y = 0.
+      for (const wall of scene.segments.slice(0, 2)) {
+        const ex = wall.x2 - wall.x1;
+        const ey = wall.y2 - wall.y1;
+        // Inside the funnel is the side of the wall that the point straight above the outlet lies on.
+        const inside = Math.sign(ex * (-1000 - wall.y1) - ey * (0 - wall.x1));
+        for (const body of scene.bodies) {
+          const t = Math.max(0, Math.min(1, ((body.x - wall.x1) * ex + (body.y - wall.y1) * ey) / (ex * ex + ey * ey)));
+          const gap = Math.hypot(body.x - (wall.x1 + t * ex), body.y - (wall.y1 + t * ey)) - (body.shapes[0] as { radius: number }).radius - (wall.thickness ?? 0);
+          expect(gap, `${name} ${JSON.stringify(params)}`).toBeGreaterThan(0);
+          if (t > 0 && t < 1) expect(Math.sign(ex * (body.y - wall.y1) - ey * (body.x - wall.x1)), `${name} ${JSON.stringify(params)}`).toBe(inside);
+        }
+      }
+    }
+  });
+
   it('every shape scene builds in the engine and steps', () => {
     const small: Record<string, Record<string, number>> = { pyramid: { base: 10 }, 'many-pyramids': { rows: 2, columns: 2 }, 'uniform-polygons': { n: 200 }, 'polygon-box': { n: 200 }, tumbler: { grid: 10 } };
     for (const name of SHAPE_SCENE_NAMES) {
