@@ -5,6 +5,9 @@ import { turn } from '../math/trig.js';
 import { needsGeneralMotion } from './motion.js';
 import type { IntegratorName } from './integrator.js';
 
+/** The turn of a step, for `turn` (see there). */
+const angle = new Float64Array(1);
+
 /**
  * Integration of bodies that turn, for the shape route's elastic pass (the soft step integrates
  * within its sub-steps): positions and velocities as the world's integrator says (the report's
@@ -55,7 +58,10 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
         angularVelocity[i] = w;
       }
     }
-    if (w !== 0) turn(c, s, i, w * dt);
+    if (w !== 0) {
+      angle[0] = w * dt;
+      turn(c, s, i, angle);
+    }
   }
 }
 
@@ -101,7 +107,8 @@ function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, e
       angularVelocity[i] = 0;
       continue;
     }
-    turn(c, s, i, w * dt);
+    angle[0] = w * dt;
+    turn(c, s, i, angle);
   }
 }
 
@@ -121,6 +128,9 @@ export function turnCircles(bodies: BodyStore, dt: number): void {
       w = (flags[i] & BodyFlag.fixedRotation) !== 0 ? 0 : (w + invInertia[i] * torque[i] * dt) / (1 + dt * angularDamping[i]);
       angularVelocity[i] = w;
     }
-    if (w !== 0) turn(c, s, i, w * dt);
+    if (w !== 0) {
+      angle[0] = w * dt;
+      turn(c, s, i, angle);
+    }
   }
 }

@@ -163,13 +163,15 @@ export function atan2Into(io: Float64Array, at: number): void {
 const SMALL_TURN = 0.125;
 
 /**
- * Turns the rotation (c[i], s[i]) by `angle` exactly: by cos(angle) and sin(angle) from the short
+ * Turns the rotation (c[i], s[i]) by the angle in angleIO[0] (an array, since V8 boxes a number
+ * passed to a call it does not inline, one allocation per body and step) exactly: by cos(angle) and sin(angle) from the short
  * Taylor series (to angle^11 and angle^10) where |angle| < 1/8, as a step's turn nearly always is,
  * and from cosSin otherwise. The product is renormalised by one Newton step towards 1/length
  * (1.5 - length^2/2), exact to round-off for a length within 1e-8 of 1, which round-off keeps it:
  * a rotation turned a million times stays a rotation, and costs no square root or division.
  */
-export function turn(c: Float64Array, s: Float64Array, i: number, angle: number): void {
+export function turn(c: Float64Array, s: Float64Array, i: number, angleIO: Float64Array): void {
+  const angle = angleIO[0];
   let ca: number;
   let sa: number;
   if (angle < SMALL_TURN && angle > -SMALL_TURN) {

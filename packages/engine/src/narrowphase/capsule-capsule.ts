@@ -23,7 +23,16 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
   const q2y = b.y[1];
   const radius = a.radius + b.radius;
   const reach = radius + margin;
-  closest.compute(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y);
+  const g = closest.segments;
+  g[0] = p1x;
+  g[1] = p1y;
+  g[2] = q1x;
+  g[3] = q1y;
+  g[4] = p2x;
+  g[5] = p2y;
+  g[6] = q2x;
+  g[7] = q2y;
+  closest.compute();
   if (closest.distanceSquared >= reach * reach) return;
   const d1x = q1x - p1x;
   const d1y = q1y - p1y;
@@ -62,7 +71,8 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
       const sHigh = lower === 0 ? sq : sp;
       const tLow = fLow < 0 ? (0 - fLow) / (fHigh - fLow) : 0;
       const tHigh = fHigh > length1 ? (length1 - fLow) / (fHigh - fLow) : 1;
-      m.setNormal(nx, ny);
+      m.normalX = nx;
+      m.normalY = ny;
       for (let k = 0; k < 2; k++) {
         const t = k === 0 ? tLow : tHigh;
         const f = fLow + t * (fHigh - fLow);
@@ -70,7 +80,10 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
         if (separation >= margin) continue;
         // On A's line at f, moved out to midway between the surfaces.
         const along = a.radius + separation / 2;
-        m.addPoint(p1x + f * u1x + along * nx, p1y + f * u1y + along * ny, separation, k);
+        m.x[m.pointCount] = p1x + f * u1x + along * nx;
+        m.y[m.pointCount] = p1y + f * u1y + along * ny;
+        m.separation[m.pointCount] = separation;
+        m.id[m.pointCount++] = k;
       }
       if (m.pointCount > 0) return;
     }
@@ -94,6 +107,10 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
   }
   const separation = dist - radius;
   const along = a.radius + separation / 2;
-  m.setNormal(nx, ny);
-  m.addPoint(closest.x1 + along * nx, closest.y1 + along * ny, separation, 2);
+  m.normalX = nx;
+  m.normalY = ny;
+  m.x[m.pointCount] = closest.x1 + along * nx;
+  m.y[m.pointCount] = closest.y1 + along * ny;
+  m.separation[m.pointCount] = separation;
+  m.id[m.pointCount++] = 2;
 }

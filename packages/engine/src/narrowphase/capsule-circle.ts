@@ -29,6 +29,10 @@ export function collideCapsuleCircle(a: WorldShape, b: WorldShape, margin: numbe
   const ny = dist > 0 ? dy / dist : a.ny[0];
   const separation = dist - a.radius - b.radius;
   const along = a.radius + separation / 2;
-  m.setNormal(nx, ny);
-  m.addPoint(qx + along * nx, qy + along * ny, separation, 0);
+  m.normalX = nx;
+  m.normalY = ny;
+  m.x[m.pointCount] = qx + along * nx;
+  m.y[m.pointCount] = qy + along * ny;
+  m.separation[m.pointCount] = separation;
+  m.id[m.pointCount++] = 0;
 }

@@ -31,6 +31,10 @@ export function collideCircles(a: WorldShape, b: WorldShape, margin: number, _sl
   const ny = dist > 0 ? dy / dist : 0;
   const separation = dist - a.radius - b.radius;
   const along = a.radius + separation / 2;
-  m.setNormal(nx, ny);
-  m.addPoint(a.x[0] + along * nx, a.y[0] + along * ny, separation, 0);
+  m.normalX = nx;
+  m.normalY = ny;
+  m.x[m.pointCount] = a.x[0] + along * nx;
+  m.y[m.pointCount] = a.y[0] + along * ny;
+  m.separation[m.pointCount] = separation;
+  m.id[m.pointCount++] = 0;
 }

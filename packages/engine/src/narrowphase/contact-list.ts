@@ -57,11 +57,11 @@ export const RECYCLE = 8;
  * (ContactList.pose): in a typed array rather than as arguments, since V8 boxes each number passed
  * to a call it does not inline, an allocation apiece, per pair and step.
  */
-export const Pose = { ax: 0, ay: 1, ac: 2, as: 3, bx: 4, by: 5, bc: 6, bs: 7, friction: 8, restitution: 9, rolling: 10 } as const;
+export const Pose = { ax: 0, ay: 1, ac: 2, as: 3, bx: 4, by: 5, bc: 6, bs: 7, friction: 8, restitution: 9, rolling: 10, keyA: 11, keyB: 12 } as const;
 
 export class ContactList {
-  /** The pair's poses, A's then B's (x, y, cosine, sine), and its friction, restitution and rolling resistance: see Pose. */
-  readonly pose = new Float64Array(11);
+  /** The pair's poses, A's then B's (x, y, cosine, sine), its friction, restitution and rolling resistance, and its shapes' keys: see Pose. */
+  readonly pose = new Float64Array(13);
   /** Contacts this step: order[0, count). */
   count = 0;
   /** This step's contact slots, in canonical order. */
@@ -136,18 +136,12 @@ export class ContactList {
 
   /**
    * A new contact with its manifold, listed next; points get their anchors from the two centres
-   * of mass in `pose`, with its material, and start with no impulse. Returns its slot.
+   * of mass in `pose`, with its material and keys, and start with no impulse. Returns its slot.
    */
-  add(
-    bodyA: number,
-    bodyB: number,
-    shapeA: number,
-    shapeB: number,
-    keyA: number,
-    keyB: number,
-    m: Manifold,
-  ): number {
+  add(bodyA: number, bodyB: number, shapeA: number, shapeB: number, m: Manifold): number {
     const pose = this.pose;
+    const keyA = pose[Pose.keyA];
+    const keyB = pose[Pose.keyB];
     let k: number;
     if (this.freeCount > 0) k = this.freeSlots[--this.freeCount];
     else {

@@ -7,6 +7,11 @@
  * the caller's margin: speculative points up to that distance apart let the solver stop bodies
  * before they meet (a polygon face keeps its second point even beyond the margin, see
  * polygon-polygon.ts).
+ *
+ * Pair functions write the normal and each point (at pointCount, then counted) into the fields
+ * themselves rather than through setters: a pair function is too large for V8 to inline every
+ * call it makes, and each number passed to a call it does not inline is boxed, an allocation per
+ * pair and step.
  */
 export class Manifold {
   pointCount = 0;
@@ -19,19 +24,6 @@ export class Manifold {
 
   clear(): void {
     this.pointCount = 0;
-  }
-
-  setNormal(nx: number, ny: number): void {
-    this.normalX = nx;
-    this.normalY = ny;
-  }
-
-  addPoint(x: number, y: number, separation: number, id: number): void {
-    const k = this.pointCount++;
-    this.x[k] = x;
-    this.y[k] = y;
-    this.separation[k] = separation;
-    this.id[k] = id;
   }
 
   /** Turns a manifold of (B, A) into one of (A, B): the normal reverses, points and ids stay. */

@@ -44,8 +44,12 @@ export function collidePolygonCircle(a: WorldShape, b: WorldShape, margin: numbe
     const ny = dy / dist;
     const separation = dist - radius;
     const along = a.radius + separation / 2;
-    m.setNormal(nx, ny);
-    m.addPoint(vx + along * nx, vy + along * ny, separation, 16 + (u1 < 0 ? edge : next));
+    m.normalX = nx;
+    m.normalY = ny;
+    m.x[m.pointCount] = vx + along * nx;
+    m.y[m.pointCount] = vy + along * ny;
+    m.separation[m.pointCount] = separation;
+    m.id[m.pointCount++] = 16 + (u1 < 0 ? edge : next);
     return;
   }
   const nx = a.nx[edge];
@@ -53,6 +57,10 @@ export function collidePolygonCircle(a: WorldShape, b: WorldShape, margin: numbe
   const separation = most - radius;
   // The point midway between the circle's surface and the polygon's.
   const back = b.radius + separation / 2;
-  m.setNormal(nx, ny);
-  m.addPoint(cx - back * nx, cy - back * ny, separation, edge);
+  m.normalX = nx;
+  m.normalY = ny;
+  m.x[m.pointCount] = cx - back * nx;
+  m.y[m.pointCount] = cy - back * ny;
+  m.separation[m.pointCount] = separation;
+  m.id[m.pointCount++] = edge;
 }

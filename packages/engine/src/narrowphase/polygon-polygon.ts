@@ -34,11 +34,14 @@ export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, sl
   m.clear();
   const radius = a.radius + b.radius;
   const limit = margin + radius;
-  const separationA = maxSeparation(a, b, limit);
-  const edgeA = found.edge;
+  found[2] = limit;
+  maxSeparation(a, b);
+  const separationA = found[0];
+  const edgeA = found[1];
   if (separationA > limit) return;
-  const separationB = maxSeparation(b, a, limit);
-  const edgeB = found.edge;
+  maxSeparation(b, a);
+  const separationB = found[0];
+  const edgeB = found[1];
   if (separationB > limit) return;
   const flip = separationB > separationA;
   const ref = flip ? b : a;
@@ -72,7 +75,16 @@ export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, sl
   const r1 = ref.radius;
   const r2 = inc.radius;
   if (separation > 0.1 * slop) {
-    edges.compute(v11x, v11y, v12x, v12y, v21x, v21y, v22x, v22y);
+    const g = edges.segments;
+    g[0] = v11x;
+    g[1] = v11y;
+    g[2] = v12x;
+    g[3] = v12y;
+    g[4] = v21x;
+    g[5] = v21y;
+    g[6] = v22x;
+    g[7] = v22y;
+    edges.compute();
     const f1 = edges.fraction1;
     const f2 = edges.fraction2;
     if ((f1 === 0 || f1 === 1) && (f2 === 0 || f2 === 1)) {
@@ -93,8 +105,12 @@ export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, sl
         ux = -ux;
         uy = -uy;
       }
-      m.setNormal(ux, uy);
-      m.addPoint(px, py, gap, id);
+      m.normalX = ux;
+      m.normalY = uy;
+      m.x[m.pointCount] = px;
+      m.y[m.pointCount] = py;
+      m.separation[m.pointCount] = gap;
+      m.id[m.pointCount++] = id;
       return;
     }
   }
@@ -133,26 +149,46 @@ export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, sl
   // polygon is the reference, as Box2D does: when a near tie flips the reference between steps,
   // points made by the same two features keep their ids and so their warm-started impulses.
   if (flip) {
-    m.setNormal(-nx, -ny);
-    m.addPoint(vHighX - highBack * nx, vHighY - highBack * ny, sepHigh, i21 * 8 + i12);
-    m.addPoint(vLowX - lowBack * nx, vLowY - lowBack * ny, sepLow, i22 * 8 + i11);
+    m.normalX = -nx;
+    m.normalY = -ny;
+    m.x[m.pointCount] = vHighX - highBack * nx;
+    m.y[m.pointCount] = vHighY - highBack * ny;
+    m.separation[m.pointCount] = sepHigh;
+    m.id[m.pointCount++] = i21 * 8 + i12;
+    m.x[m.pointCount] = vLowX - lowBack * nx;
+    m.y[m.pointCount] = vLowY - lowBack * ny;
+    m.separation[m.pointCount] = sepLow;
+    m.id[m.pointCount++] = i22 * 8 + i11;
   } else {
-    m.setNormal(nx, ny);
-    m.addPoint(vLowX - lowBack * nx, vLowY - lowBack * ny, sepLow, i11 * 8 + i22);
-    m.addPoint(vHighX - highBack * nx, vHighY - highBack * ny, sepHigh, i12 * 8 + i21);
+    m.normalX = nx;
+    m.normalY = ny;
+    m.x[m.pointCount] = vLowX - lowBack * nx;
+    m.y[m.pointCount] = vLowY - lowBack * ny;
+    m.separation[m.pointCount] = sepLow;
+    m.id[m.pointCount++] = i11 * 8 + i22;
+    m.x[m.pointCount] = vHighX - highBack * nx;
+    m.y[m.pointCount] = vHighY - highBack * ny;
+    m.separation[m.pointCount] = sepHigh;
+    m.id[m.pointCount++] = i12 * 8 + i21;
   }
 }
 
-const found = { edge: 0 };
+/**
+ * maxSeparation's answer, the separation and its edge, and its limit (found[2]): in a typed
+ * array, since V8 boxes a number passed to or returned from a call it does not inline, an
+ * allocation per pair.
+ */
+const found = new Float64Array(3);
 const edges = new SegmentDistance();
 
 /**
- * The largest, over p's edges, of how far q's deepest point lies outside that edge; the edge in
- * `found`. Stops at the first edge beyond `limit`, which settles that the two are apart (most
- * pairs the broad-phase hands on are), and leaves an edge as soon as one of q's points lies no
- * further out than the best so far.
+ * The largest, over p's edges, of how far q's deepest point lies outside that edge, into found[0],
+ * and that edge, into found[1]. Stops at the first edge beyond the limit (found[2]), which settles
+ * that the two are apart (most pairs the broad-phase hands on are), and leaves an edge as soon as
+ * one of q's points lies no further out than the best so far.
  */
-function maxSeparation(p: WorldShape, q: WorldShape, limit: number): number {
+function maxSeparation(p: WorldShape, q: WorldShape): void {
+  const limit = found[2];
   let best = -Infinity;
   let bestEdge = 0;
   const qn = q.count;
@@ -176,6 +212,6 @@ function maxSeparation(p: WorldShape, q: WorldShape, limit: number): number {
       if (best > limit) break;
     }
   }
-  found.edge = bestEdge;
-  return best;
+  found[0] = best;
+  found[1] = bestEdge;
 }

@@ -29,14 +29,18 @@ export interface WorldShapes {
   wallThickness: number;
 }
 
+const wallBounds = new Float64Array(4);
+
 /** Fills `out` with wall w (BoxWall numbering: x = 0, x = width, y = 0, y = height) of the box. */
 export function boxWall(world: WorldShapes, w: number, out: WorldShape): WorldShape {
   const { width, height } = world.box!;
   const t = world.wallThickness;
-  if (w === 0) return out.rectangle(-t, -t, 0, height + t);
-  if (w === 1) return out.rectangle(width, -t, width + t, height + t);
-  if (w === 2) return out.rectangle(-t, -t, width + t, 0);
-  return out.rectangle(-t, height, width + t, height + t);
+  const b = wallBounds;
+  b[0] = w === 1 ? width : -t;
+  b[1] = w === 3 ? height : -t;
+  b[2] = w === 0 ? 0 : width + t;
+  b[3] = w === 2 ? 0 : height + t;
+  return out.rectangle(b);
 }
 
 /**
@@ -334,16 +338,17 @@ export class ShapeNarrowPhase implements PairConsumer {
           const reach = shapes.extent[sa] + shapes.extent[sb] + margin;
           if ((bx - ax) * (bx - ax) + (by - ay) * (by - ay) >= reach * reach) continue;
         }
-        const keyA = record[ra + ShapeField.handle];
-        const keyB = record[rb + ShapeField.handle];
-        const q = sensing ? -1 : this.find(p, i, j, keyA, keyB);
+        // The shapes' keys, through `pose` (see Pose): handles are doubles, boxed when passed to a call.
+        const pose = list.pose;
+        pose[Pose.keyA] = record[ra + ShapeField.handle];
+        pose[Pose.keyB] = record[rb + ShapeField.handle];
+        const q = sensing ? -1 : this.find(p, i, j);
         if (q >= 0 && this.recycleDistance > 0 && this.recyclable(q, i, j)) {
           this.recycleFrom(q, i, j);
           touching = true;
           continue;
         }
         this.shapePairs++;
-        const pose = list.pose;
         pose[Pose.ax] = x[i];
         pose[Pose.ay] = y[i];
         pose[Pose.ac] = c[i];
@@ -376,7 +381,7 @@ export class ShapeNarrowPhase implements PairConsumer {
         pose[Pose.restitution] = restitution;
         pose[Pose.rolling] = rolling;
         if (q >= 0) list.rewrite(q, m);
-        else k = list.add(i, j, sa, sb, keyA, keyB, m);
+        else k = list.add(i, j, sa, sb, m);
         list.cache(k);
       }
     }
@@ -399,7 +404,7 @@ export class ShapeNarrowPhase implements PairConsumer {
     const g = isWall ? entry - WALL_ENTRY : entry - SEGMENT_ENTRY;
     const b = isWall
       ? boxWall(world, g, this.shapeB)
-      : this.shapeB.capsule(segments.ax[g], segments.ay[g], segments.bx[g], segments.by[g], segments.thickness[g]);
+      : this.shapeB.segment(segments, g);
     const keyB = isWall ? -1 - g : segments.handleOf(g);
     const otherFriction = isWall ? wallFriction : segments.friction[g];
     const otherRestitution = isWall ? wallRestitution : segments.restitution[g];
@@ -409,14 +414,15 @@ export class ShapeNarrowPhase implements PairConsumer {
     for (let sa = firstShape[i]; sa >= 0; sa = shapes.next[sa]) {
       if ((shapes.category[sa] & otherMask) === 0 || (otherCategory & shapes.mask[sa]) === 0) continue;
       if (shapes.sensor[sa]) continue;
-      const keyA = shapes.handleOf(sa);
-      const q = this.find(p, i, WORLD, keyA, keyB);
+      const pose = list.pose;
+      pose[Pose.keyA] = shapes.record[sa * SHAPE_STRIDE + ShapeField.handle];
+      pose[Pose.keyB] = keyB;
+      const q = this.find(p, i, WORLD);
       if (q >= 0 && this.recycleDistance > 0 && this.recyclable(q, i, WORLD)) {
         this.recycleFrom(q, i, WORLD);
         continue;
       }
       this.shapePairs++;
-      const pose = list.pose;
       pose[Pose.ax] = x[i];
       pose[Pose.ay] = y[i];
       pose[Pose.ac] = c[i];
@@ -437,7 +443,7 @@ export class ShapeNarrowPhase implements PairConsumer {
       pose[Pose.restitution] = restitution;
       pose[Pose.rolling] = rolling;
       if (q >= 0) list.rewrite(q, m);
-      else k = list.add(i, WORLD, sa, entry, keyA, keyB, m);
+      else k = list.add(i, WORLD, sa, entry, m);
       list.cache(k);
     }
     return p;
@@ -459,8 +465,10 @@ export class ShapeNarrowPhase implements PairConsumer {
   }
 
   /** The slot of last step's contact of the same two shapes (from p on in its order), or -1. */
-  private find(p: number, i: number, j: number, keyA: number, keyB: number): number {
+  private find(p: number, i: number, j: number): number {
     const list = this.current;
+    const keyA = list.pose[Pose.keyA];
+    const keyB = list.pose[Pose.keyB];
     const { previousOrder, previousCount, bodyA, bodyB } = list;
     for (let n = p; n < previousCount; n++) {
       const k = previousOrder[n];

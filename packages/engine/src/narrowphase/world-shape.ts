@@ -1,5 +1,6 @@
 import { MAX_POLYGON_VERTICES, ShapeKind, type ShapeKindCode } from '../shapes/geometry.js';
 import type { ShapeStore } from '../store/shape-store.js';
+import type { SegmentStore } from '../store/segment-store.js';
 import { SHAPE_STRIDE, SHAPE_VERTICES, ShapeField, VERTEX } from '../store/shape-store.js';
 
 /**
@@ -68,8 +69,17 @@ export class WorldShape {
     return this;
   }
 
-  /** A capsule of radius r around the segment (ax, ay)-(bx, by); a zero-length one is a circle. */
-  capsule(ax: number, ay: number, bx: number, by: number, r: number): this {
+  /**
+   * Static segment g: a capsule of its thickness around it, a circle where it has no length. Read
+   * from the store here rather than passed in, since V8 boxes each number passed to a call it does
+   * not inline, five allocations per pair.
+   */
+  segment(segments: SegmentStore, g: number): this {
+    const ax = segments.ax[g];
+    const ay = segments.ay[g];
+    const bx = segments.bx[g];
+    const by = segments.by[g];
+    const r = segments.thickness[g];
     const ex = bx - ax;
     const ey = by - ay;
     const length = Math.sqrt(ex * ex + ey * ey);
@@ -88,8 +98,12 @@ export class WorldShape {
     return this;
   }
 
-  /** The axis-aligned rectangle [minX, maxX] x [minY, maxY]. */
-  rectangle(minX: number, minY: number, maxX: number, maxY: number): this {
+  /** The axis-aligned rectangle [minX, maxX] x [minY, maxY], from bounds[0..3] (for the reason in `segment`). */
+  rectangle(bounds: Float64Array): this {
+    const minX = bounds[0];
+    const minY = bounds[1];
+    const maxX = bounds[2];
+    const maxY = bounds[3];
     this.kind = ShapeKind.polygon;
     this.count = 4;
     this.radius = 0;

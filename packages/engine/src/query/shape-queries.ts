@@ -8,6 +8,7 @@ import { rayCapsule } from './ray-capsule.js';
 const placed = new WorldShape();
 const probe = new WorldShape();
 const distance = new ShapeDistance();
+const box = new Float64Array(4);
 
 /** Where the last rayShape hit entered: the outward unit normal there. */
 export const rayNormal = { x: 0, y: 0 };
@@ -22,7 +23,11 @@ export function shapeContains(shapes: ShapeStore, slot: number, px: number, py: 
 /** Whether the shape overlaps the box [minX, maxX] x [minY, maxY] (touching included). */
 export function shapeOverlapsBox(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, minX: number, minY: number, maxX: number, maxY: number): boolean {
   placed.fromStore(shapes, slot, px, py, c, s);
-  probe.rectangle(minX, minY, maxX, maxY);
+  box[0] = minX;
+  box[1] = minY;
+  box[2] = maxX;
+  box[3] = maxY;
+  probe.rectangle(box);
   return distance.compute(placed, probe).distance <= placed.radius;
 }
 

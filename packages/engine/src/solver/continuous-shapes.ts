@@ -143,7 +143,7 @@ export class ContinuousShapes {
             const g = entry - SEGMENT_ENTRY;
             const seg = world.segments;
             if ((bodies.category[i] & seg.mask[g]) === 0 || (seg.category[g] & bodies.mask[i]) === 0) continue;
-            other.capsule(seg.ax[g], seg.ay[g], seg.bx[g], seg.by[g], seg.thickness[g]);
+            other.segment(seg, g);
             restitution = seg.restitution[g];
           }
           if (this.outOfReach(slop + 0.25 * slop)) continue;
@@ -194,7 +194,16 @@ export class ContinuousShapes {
     if (other.count > 2) return false;
     const sweep = this.sweep;
     const last = other.count - 1;
-    segmentDistance.compute(sweep.x0, sweep.y0, sweep.x1, sweep.y1, other.x[0], other.y[0], other.x[last], other.y[last]);
+    const g = segmentDistance.segments;
+    g[0] = sweep.x0;
+    g[1] = sweep.y0;
+    g[2] = sweep.x1;
+    g[3] = sweep.y1;
+    g[4] = other.x[0];
+    g[5] = other.y[0];
+    g[6] = other.x[last];
+    g[7] = other.y[last];
+    segmentDistance.compute();
     const limit = (sweep.reach + other.radius + target) * (1 + 1e-6) + 1e-9;
     return segmentDistance.distanceSquared > limit * limit;
   }
