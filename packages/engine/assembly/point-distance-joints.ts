@@ -5,11 +5,7 @@
 // loop gives it one after the other. Every expression keeps the TypeScript's order of operations,
 // and a lane writes a body back only when it is dynamic.
 
-// Body state fields in bytes (8 doubles a body): velocity, then the motion since the step began.
-const BODY: i32 = 8;
-const VX: i32 = 0;
-const DPX: i32 = 24;
-const DYNAMIC: i32 = 56;
+import { DPX, DYNAMIC, VX, bodyAt, field, firsts, seconds } from './lanes';
 
 // Lane fields in doubles, per pair of lanes (each field of a pair is one v128).
 const LANE_PAIR: i32 = 30;
@@ -25,23 +21,6 @@ const IMPULSE: i32 = 16;
 const BIAS: i32 = 18;
 const SCALE: i32 = 20;
 const KEEP: i32 = 22;
-
-@inline function field(c: usize, f: i32): v128 {
-  return v128.load(c + (<usize>f << 3));
-}
-
-@inline function bodyAt(states: usize, index: i32): usize {
-  return states + (<usize>(index * BODY) << 3);
-}
-
-/** The first of each of two (field, next field) pairs: lane 0 from a, lane 1 from b. */
-@inline function firsts(a: v128, b: v128): v128 {
-  return v128.shuffle<f64>(a, b, 0, 2);
-}
-
-@inline function seconds(a: v128, b: v128): v128 {
-  return v128.shuffle<f64>(a, b, 1, 3);
-}
 
 /** Lane `lane` of (vx, vy) into body s's velocity, where s is dynamic. */
 @inline function scatter(s: usize, lane: i32, vx: v128, vy: v128): void {

@@ -15,18 +15,10 @@
 
 export { pointDistanceWarmStart, pointDistanceSolve } from './point-distance-joints';
 
-// Body state fields (8 doubles a body) and constraint field offsets in doubles, per lane pair: the
-// TypeScript's offsets, each even, are 2 x the field's index, so a field of a pair is one v128.
-const BODY: i32 = 8;
-const VX: i32 = 0;
-const VY: i32 = 8;
-const W: i32 = 16;
-const DPX: i32 = 24;
-const DPY: i32 = 32;
-const DQC: i32 = 40;
-const DQS: i32 = 48;
-const DYNAMIC: i32 = 56;
+import { DPX, DPY, DQC, DQS, DYNAMIC, VX, VY, W, bodyAt, field, firsts, gather, put, seconds } from './lanes';
 
+// Constraint field offsets in doubles, per lane pair: the TypeScript's offsets, each even, are
+// 2 x the field's index, so a field of a pair is one v128.
 const PAIR: i32 = 80;
 const NX: i32 = 0;
 const NY: i32 = 2;
@@ -56,33 +48,6 @@ const NORMAL_MASS: i32 = 16;
 const TANGENT_MASS: i32 = 18;
 const IMPACT_VELOCITY: i32 = 22;
 const POINT: i32 = 24;
-
-@inline function field(c: usize, f: i32): v128 {
-  return v128.load(c + (<usize>f << 3));
-}
-
-@inline function put(c: usize, f: i32, v: v128): void {
-  v128.store(c + (<usize>f << 3), v);
-}
-
-/** Two bodies' field at byte offset `at`, one per lane. */
-@inline function gather(s0: usize, s1: usize, at: i32): v128 {
-  return f64x2.replace_lane(f64x2.splat(load<f64>(s0 + <usize>at)), 1, load<f64>(s1 + <usize>at));
-}
-
-/** The first of each of two (field, next field) pairs: lane 0 from a, lane 1 from b. */
-@inline function firsts(a: v128, b: v128): v128 {
-  return v128.shuffle<f64>(a, b, 0, 2);
-}
-
-/** The second of each. */
-@inline function seconds(a: v128, b: v128): v128 {
-  return v128.shuffle<f64>(a, b, 1, 3);
-}
-
-@inline function bodyAt(states: usize, index: i32): usize {
-  return states + (<usize>(index * BODY) << 3);
-}
 
 @inline function scatter(s: usize, lane: i32, vx: v128, vy: v128, w: v128): void {
   if (load<f64>(s + <usize>DYNAMIC) != 1) return;

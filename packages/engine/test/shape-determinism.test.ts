@@ -4,6 +4,16 @@ import { World, BROADPHASE_NAMES } from '../src/index.js';
 import { setSoftStepKernelEnabled } from '../src/solver/soft-step-kernel.js';
 import { buildShapeScene, buildShapeWorld } from '@maxgrid/scenes';
 
+/** What `run` returns with the soft step's WebAssembly kernel on or off (back on after). */
+function withKernel(on: boolean, run: () => string): string {
+  setSoftStepKernelEnabled(on);
+  try {
+    return run();
+  } finally {
+    setSoftStepKernelEnabled(true);
+  }
+}
+
 interface Spec {
   solver: 'soft' | 'elastic';
   gravity: number;
@@ -102,14 +112,6 @@ describe('determinism with shapes', () => {
   });
 
   it('the soft step gives the same bits with its WebAssembly SIMD passes as with its TypeScript ones', () => {
-    const withKernel = (on: boolean, run: () => string): string => {
-      setSoftStepKernelEnabled(on);
-      try {
-        return run();
-      } finally {
-        setSoftStepKernelEnabled(true);
-      }
-    };
     const pyramid = (): string => {
       const world = buildShapeWorld(buildShapeScene('pyramid', { base: 30 }));
       for (let s = 0; s < 120; s++) world.step(1 / 60);
@@ -131,14 +133,6 @@ describe('determinism with shapes', () => {
   });
 
   it('point distance joints give the same bits in the WebAssembly kernel as in TypeScript, colours overflowing included', () => {
-    const withKernel = (on: boolean, run: () => string): string => {
-      setSoftStepKernelEnabled(on);
-      try {
-        return run();
-      } finally {
-        setSoftStepKernelEnabled(true);
-      }
-    };
     // A wheel: a hub with more spokes than the joints have colours (the rest solved one to a pair),
     // rigid spokes and a rim of springs, hung from a static pivot and dragged by a kinematic body.
     const wheel = (): string => {

@@ -73,6 +73,9 @@ export function boxBody(x: number, y: number, width: number, height: number, ext
   return { x, y, ...extra, shapes: [{ kind: 'box', width, height, ...material } as SceneShape] };
 }
 
+/** The half-width of funnelAndFloor's walls. */
+const WALL_THICKNESS = 0.1;
+
 /**
  * Static walls for soft bodies poured from above: a funnel of `width` whose outlet, `outlet` wide,
  * is at y = 0, and below it a floor at y = 8 with walls at its ends (circles roll, and a soft body
@@ -80,14 +83,15 @@ export function boxBody(x: number, y: number, width: number, height: number, ext
  */
 export function funnelAndFloor(width: number, outlet: number, funnel: boolean, floor: boolean): ShapeScene['segments'] {
   const segments: ShapeScene['segments'] = [];
+  const thickness = WALL_THICKNESS;
   if (funnel) {
-    segments.push({ x1: -width / 2, y1: -width / 2, x2: -outlet / 2, y2: 0, thickness: 0.1 });
-    segments.push({ x1: width / 2, y1: -width / 2, x2: outlet / 2, y2: 0, thickness: 0.1 });
+    segments.push({ x1: -width / 2, y1: -width / 2, x2: -outlet / 2, y2: 0, thickness });
+    segments.push({ x1: width / 2, y1: -width / 2, x2: outlet / 2, y2: 0, thickness });
   }
   if (floor) {
-    segments.push({ x1: -width, y1: 8, x2: width, y2: 8, thickness: 0.1 });
-    segments.push({ x1: -width, y1: 8, x2: -width, y2: -4, thickness: 0.1 });
-    segments.push({ x1: width, y1: 8, x2: width, y2: -4, thickness: 0.1 });
+    segments.push({ x1: -width, y1: 8, x2: width, y2: 8, thickness });
+    segments.push({ x1: -width, y1: 8, x2: -width, y2: -4, thickness });
+    segments.push({ x1: width, y1: 8, x2: width, y2: -4, thickness });
   }
   return segments;
 }
@@ -103,7 +107,7 @@ export function liftAboveFunnel(bodies: readonly SceneBody[], width: number, out
   const slope = half / (half - outlet / 2);
   // A circle clears a wall y = slope (x - outlet/2) (the right one, mirrored for the left) when its
   // centre is its reach and the wall's thickness, measured along the wall's normal, above it.
-  const rise = (reach + 0.1 + gap) * Math.sqrt(1 + slope * slope);
+  const rise = (reach + WALL_THICKNESS + gap) * Math.sqrt(1 + slope * slope);
   let lift = 0;
   for (const body of bodies) {
     const x = Math.abs(body.x);

@@ -23,16 +23,7 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
   const q2y = b.y[1];
   const radius = a.radius + b.radius;
   const reach = radius + margin;
-  const g = closest.segments;
-  g[0] = p1x;
-  g[1] = p1y;
-  g[2] = q1x;
-  g[3] = q1y;
-  g[4] = p2x;
-  g[5] = p2y;
-  g[6] = q2x;
-  g[7] = q2y;
-  closest.compute();
+  closest.computeEdges(a, 0, 1, b, 0, 1);
   if (closest.distanceSquared >= reach * reach) return;
   const d1x = q1x - p1x;
   const d1y = q1y - p1y;

@@ -75,16 +75,7 @@ export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, sl
   const r1 = ref.radius;
   const r2 = inc.radius;
   if (separation > 0.1 * slop) {
-    const g = edges.segments;
-    g[0] = v11x;
-    g[1] = v11y;
-    g[2] = v12x;
-    g[3] = v12y;
-    g[4] = v21x;
-    g[5] = v21y;
-    g[6] = v22x;
-    g[7] = v22y;
-    edges.compute();
+    edges.computeEdges(ref, i11, i12, inc, i21, i22);
     const f1 = edges.fraction1;
     const f2 = edges.fraction2;
     if ((f1 === 0 || f1 === 1) && (f2 === 0 || f2 === 1)) {
@@ -148,29 +139,20 @@ export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, sl
   // A point's id names the feature of A, then that of B (an edge by its first vertex), whichever
   // polygon is the reference, as Box2D does: when a near tie flips the reference between steps,
   // points made by the same two features keep their ids and so their warm-started impulses.
-  if (flip) {
-    m.normalX = -nx;
-    m.normalY = -ny;
-    m.x[m.pointCount] = vHighX - highBack * nx;
-    m.y[m.pointCount] = vHighY - highBack * ny;
-    m.separation[m.pointCount] = sepHigh;
-    m.id[m.pointCount++] = i21 * 8 + i12;
-    m.x[m.pointCount] = vLowX - lowBack * nx;
-    m.y[m.pointCount] = vLowY - lowBack * ny;
-    m.separation[m.pointCount] = sepLow;
-    m.id[m.pointCount++] = i22 * 8 + i11;
-  } else {
-    m.normalX = nx;
-    m.normalY = ny;
-    m.x[m.pointCount] = vLowX - lowBack * nx;
-    m.y[m.pointCount] = vLowY - lowBack * ny;
-    m.separation[m.pointCount] = sepLow;
-    m.id[m.pointCount++] = i11 * 8 + i22;
-    m.x[m.pointCount] = vHighX - highBack * nx;
-    m.y[m.pointCount] = vHighY - highBack * ny;
-    m.separation[m.pointCount] = sepHigh;
-    m.id[m.pointCount++] = i12 * 8 + i21;
-  }
+  // The low end first, or the high end first where B holds the reference face.
+  const low = flip ? 1 : 0;
+  const high = 1 - low;
+  m.normalX = flip ? -nx : nx;
+  m.normalY = flip ? -ny : ny;
+  m.x[low] = vLowX - lowBack * nx;
+  m.y[low] = vLowY - lowBack * ny;
+  m.separation[low] = sepLow;
+  m.id[low] = flip ? i22 * 8 + i11 : i11 * 8 + i22;
+  m.x[high] = vHighX - highBack * nx;
+  m.y[high] = vHighY - highBack * ny;
+  m.separation[high] = sepHigh;
+  m.id[high] = flip ? i21 * 8 + i12 : i12 * 8 + i21;
+  m.pointCount = 2;
 }
 
 /**

@@ -1,3 +1,5 @@
+import type { WorldShape } from './world-shape.js';
+
 /**
  * Closest points between segment 1, p1 + s (q1 - p1), and segment 2, p2 + t (q2 - p2), with s and
  * t in [0, 1] (Ericson, Real-Time Collision Detection, 5.1.9): written to `closest` as the two
@@ -14,6 +16,20 @@ export class SegmentDistance {
   fraction1 = 0;
   fraction2 = 0;
   distanceSquared = 0;
+
+  /** Between the edge (a[i1], a[j1]) of one shape and (b[i2], b[j2]) of another: their points by index, so no number is passed. */
+  computeEdges(a: WorldShape, i1: number, j1: number, b: WorldShape, i2: number, j2: number): this {
+    const g = this.segments;
+    g[0] = a.x[i1];
+    g[1] = a.y[i1];
+    g[2] = a.x[j1];
+    g[3] = a.y[j1];
+    g[4] = b.x[i2];
+    g[5] = b.y[i2];
+    g[6] = b.x[j2];
+    g[7] = b.y[j2];
+    return this.compute();
+  }
 
   compute(): this {
     const g = this.segments;

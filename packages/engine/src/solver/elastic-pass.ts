@@ -68,11 +68,14 @@ export class ElasticPass {
         n = 1;
         at0++;
       }
-      if (!(contacts.points[at0 * POINT_STRIDE + PT_SEPARATION] < 0)) continue;
-      const r0ax = contacts.points[at0 * POINT_STRIDE + PT_ANCHOR_AX];
-      const r0ay = contacts.points[at0 * POINT_STRIDE + PT_ANCHOR_AY];
-      const r0bx = contacts.points[at0 * POINT_STRIDE + PT_ANCHOR_BX];
-      const r0by = contacts.points[at0 * POINT_STRIDE + PT_ANCHOR_BY];
+      // Each point's record: the first point taking part, and the one after it.
+      const o0 = at0 * POINT_STRIDE;
+      const o1 = o0 + POINT_STRIDE;
+      if (!(contacts.points[o0 + PT_SEPARATION] < 0)) continue;
+      const r0ax = contacts.points[o0 + PT_ANCHOR_AX];
+      const r0ay = contacts.points[o0 + PT_ANCHOR_AY];
+      const r0bx = contacts.points[o0 + PT_ANCHOR_BX];
+      const r0by = contacts.points[o0 + PT_ANCHOR_BY];
       const rn0a = r0ax * ny - r0ay * nx;
       const rn0b = r0bx * ny - r0by * nx;
       const u0 = (vbx - wb * r0by - (vax - wa * r0ay)) * nx + (vby + wb * r0bx - (vay + wa * r0ax)) * ny;
@@ -87,19 +90,18 @@ export class ElasticPass {
       let u1 = 0;
       const k00 = mA + mB + iA * rn0a * rn0a + iB * rn0b * rn0b;
       if (n === 2) {
-        const at1 = at0 + 1;
-        r1ax = contacts.points[at1 * POINT_STRIDE + PT_ANCHOR_AX];
-        r1ay = contacts.points[at1 * POINT_STRIDE + PT_ANCHOR_AY];
-        r1bx = contacts.points[at1 * POINT_STRIDE + PT_ANCHOR_BX];
-        r1by = contacts.points[at1 * POINT_STRIDE + PT_ANCHOR_BY];
+        r1ax = contacts.points[o1 + PT_ANCHOR_AX];
+        r1ay = contacts.points[o1 + PT_ANCHOR_AY];
+        r1bx = contacts.points[o1 + PT_ANCHOR_BX];
+        r1by = contacts.points[o1 + PT_ANCHOR_BY];
         rn1a = r1ax * ny - r1ay * nx;
         rn1b = r1bx * ny - r1by * nx;
         u1 = (vbx - wb * r1by - (vax - wa * r1ay)) * nx + (vby + wb * r1bx - (vay + wa * r1ax)) * ny;
       }
       const approach = Math.max(-u0, n === 2 ? -u1 : -Infinity);
       if (approach > 0) {
-        contacts.points[at0 * POINT_STRIDE + PT_APPROACH_SPEED] = -u0;
-        if (n === 2) contacts.points[(at0 + 1) * POINT_STRIDE + PT_APPROACH_SPEED] = -u1;
+        contacts.points[o0 + PT_APPROACH_SPEED] = -u0;
+        if (n === 2) contacts.points[o1 + PT_APPROACH_SPEED] = -u1;
         const e = approach < threshold ? 0 : contacts.restitution[k];
         const scale = 1 + e;
         if (n === 1) {
@@ -149,11 +151,11 @@ export class ElasticPass {
           vby += mB * py;
           wa -= iA * (p0 * rn0a + p1 * rn1a);
           wb += iB * (p0 * rn0b + p1 * rn1b);
-          contacts.points[at0 * POINT_STRIDE + PT_NORMAL_IMPULSE] = p0;
-          contacts.points[at0 * POINT_STRIDE + PT_TOTAL_NORMAL_IMPULSE] = p0;
+          contacts.points[o0 + PT_NORMAL_IMPULSE] = p0;
+          contacts.points[o0 + PT_TOTAL_NORMAL_IMPULSE] = p0;
           if (n === 2) {
-            contacts.points[(at0 + 1) * POINT_STRIDE + PT_NORMAL_IMPULSE] = p1;
-            contacts.points[(at0 + 1) * POINT_STRIDE + PT_TOTAL_NORMAL_IMPULSE] = p1;
+            contacts.points[o1 + PT_NORMAL_IMPULSE] = p1;
+            contacts.points[o1 + PT_TOTAL_NORMAL_IMPULSE] = p1;
           }
         }
         const friction = contacts.friction[k];
@@ -192,8 +194,8 @@ export class ElasticPass {
           angularVelocity[b] = wb;
         }
       }
-      let deepest = contacts.points[at0 * POINT_STRIDE + PT_SEPARATION];
-      if (n === 2 && contacts.points[(at0 + 1) * POINT_STRIDE + PT_SEPARATION] < deepest) deepest = contacts.points[(at0 + 1) * POINT_STRIDE + PT_SEPARATION];
+      let deepest = contacts.points[o0 + PT_SEPARATION];
+      if (n === 2 && contacts.points[o1 + PT_SEPARATION] < deepest) deepest = contacts.points[o1 + PT_SEPARATION];
       const excess = -deepest - slop;
       if (!(excess > 0)) continue;
       const push = (excess * correction) / (mA + mB);

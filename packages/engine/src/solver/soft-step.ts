@@ -159,7 +159,7 @@ export class SoftStep {
     if (joints !== null) {
       joints.prepare(bodies, this.index, this.awake, this.awakeCount + 1, h, Math.min(settings.contactHertz, 0.25 / h), gx, gy, settings.maxLinearSpeed, MAX_ROTATION / dt, this.kernel);
       // The joints' lanes share the kernel's memory, and growing them moves the other regions.
-      if (this.kernel !== null) this.reserve(0, 0, 0);
+      this.adoptKernelViews();
     }
     const { kernel, laneCount, awakeCount, states } = this;
     // Velocity plus gravity alone, the kernel's case: the general loop's terms are then 0 and its factors 1.
@@ -205,14 +205,21 @@ export class SoftStep {
     const kernel = this.kernel;
     if (kernel !== null) {
       kernel.reserve(states, constraints, pairs);
-      this.states = kernel.states;
-      this.constraints = kernel.constraints;
-      this.pairs = kernel.pairs;
+      this.adoptKernelViews();
       return;
     }
     if (this.states.length < states) this.states = new Float64Array(states);
     if (this.constraints.length < constraints) this.constraints = new Float64Array(constraints);
     if (this.pairs.length < pairs) this.pairs = new Int32Array(pairs);
+  }
+
+  /** The kernel's current views of its regions, which any growth of its memory replaces. */
+  private adoptKernelViews(): void {
+    const kernel = this.kernel;
+    if (kernel === null) return;
+    this.states = kernel.states;
+    this.constraints = kernel.constraints;
+    this.pairs = kernel.pairs;
   }
 
   private gatherBodies(bodies: BodyStore): void {

@@ -1,6 +1,6 @@
 import { J, JOINT_STRIDE } from '../../joints/joint-layout.js';
 import { grownCapacity } from '../../util/grow.js';
-import { BODY, DPX, DPY, DYNAMIC, VX, VY } from '../solver-body.js';
+import { BODY, DPX, DPY, DYNAMIC, VX, VY, makeSoft } from '../solver-body.js';
 import type { SoftStepKernel } from '../soft-step-kernel.js';
 import type { BodyStore } from '../../store/body-store.js';
 import type { JointStore } from '../../joints/joint-store.js';
@@ -29,6 +29,9 @@ const SCALE = 20;
 const KEEP = 22;
 const RELAX = 6;
 export const LANE_PAIR = 30;
+
+/** A spring joint's softness over the sub-step (makeSoft's bias rate, mass scale, impulse scale). */
+const spring = new Float64Array(3);
 
 /** Colours 0..COLOURS-1 hold joints that share no moving body; OVERFLOW, the rest, a pair each. */
 const COLOURS = 31;
@@ -148,14 +151,10 @@ export class PointDistanceJoints {
         rows[c + RELAX + SCALE] = 1;
         rows[c + RELAX + KEEP] = 0;
       } else {
-        // Box2D's b2MakeSoft of the joint's spring (see makeSoft).
-        const omega = 2 * Math.PI * r[o + HERTZ];
-        const a1 = 2 * r[o + DAMPING_RATIO] + h * omega;
-        const a2 = h * omega * a1;
-        const a3 = 1 / (1 + a2);
-        rows[c + BIAS] = rows[c + RELAX + BIAS] = omega / a1;
-        rows[c + SCALE] = rows[c + RELAX + SCALE] = a2 * a3;
-        rows[c + KEEP] = rows[c + RELAX + KEEP] = a3;
+        makeSoft(r[o + HERTZ], r[o + DAMPING_RATIO], h, spring);
+        rows[c + BIAS] = rows[c + RELAX + BIAS] = spring[0];
+        rows[c + SCALE] = rows[c + RELAX + SCALE] = spring[1];
+        rows[c + KEEP] = rows[c + RELAX + KEEP] = spring[2];
       }
     }
   }
@@ -209,33 +208,23 @@ export class PointDistanceJoints {
 
   /** Each sub-step: the kept impulses along the current axes. */
   warmStart(states: Float64Array): void {
-    if (this.kernel !== null) {
-      this.kernel.pointDistanceWarmStart(this.laneCount);
-      return;
-    }
-    const { rows, pairs, slotOfLane } = this;
-    for (let i = 0; i < this.laneCount; i++) {
-      if (slotOfLane[i] < 0) continue;
-      const c = (i >> 1) * LANE_PAIR + (i & 1);
-      const sa = pairs[2 * i] * BODY;
-      const sb = pairs[2 * i + 1] * BODY;
-      const dx = states[sb + DPX] - states[sa + DPX] + rows[c + DCX];
-      const dy = states[sb + DPY] - states[sa + DPY] + rows[c + DCY];
-      const length = Math.sqrt(dx * dx + dy * dy);
-      const ax = length > 0 ? dx / length : rows[c + AX];
-      const ay = length > 0 ? dy / length : rows[c + AY];
-      apply(states, sa, sb, rows[c + MA], rows[c + MB], rows[c + IMPULSE] * ax, rows[c + IMPULSE] * ay);
-    }
+    if (this.kernel !== null) this.kernel.pointDistanceWarmStart(this.laneCount);
+    else this.sweep(states, 0, true);
   }
 
   /** Each sub-step, twice: with each joint's push back to its length (useBias), then in the relax pass. */
   solve(states: Float64Array, useBias: boolean): void {
-    if (this.kernel !== null) {
-      this.kernel.pointDistanceSolve(this.laneCount, useBias ? 0 : RELAX);
-      return;
-    }
+    if (this.kernel !== null) this.kernel.pointDistanceSolve(this.laneCount, useBias ? 0 : RELAX);
+    else this.sweep(states, useBias ? 0 : RELAX, false);
+  }
+
+  /**
+   * The kernel's sweep (assembly/point-distance-joints.ts) one lane at a time: the warm start
+   * (`warm`), or a solve with the softness at `pass`. Lanes of a pair share no moving body, so
+   * this order gives each the bits the kernel gives it side by side.
+   */
+  private sweep(states: Float64Array, pass: number, warm: boolean): void {
     const { rows, pairs, slotOfLane } = this;
-    const pass = useBias ? 0 : RELAX;
     for (let i = 0; i < this.laneCount; i++) {
       if (slotOfLane[i] < 0) continue;
       const c = (i >> 1) * LANE_PAIR + (i & 1);
@@ -246,12 +235,25 @@ export class PointDistanceJoints {
       const length = Math.sqrt(dx * dx + dy * dy);
       const ax = length > 0 ? dx / length : rows[c + AX];
       const ay = length > 0 ? dy / length : rows[c + AY];
-      const C = length - rows[c + LENGTH];
-      const speed = (states[sb + VX] - states[sa + VX]) * ax + (states[sb + VY] - states[sa + VY]) * ay;
-      const accumulated = rows[c + IMPULSE];
-      const impulse = -rows[c + pass + SCALE] * rows[c + MASS] * (speed + rows[c + pass + BIAS] * C) - rows[c + pass + KEEP] * accumulated;
-      rows[c + IMPULSE] = accumulated + impulse;
-      apply(states, sa, sb, rows[c + MA], rows[c + MB], impulse * ax, impulse * ay);
+      let impulse = rows[c + IMPULSE];
+      if (!warm) {
+        const C = length - rows[c + LENGTH];
+        const speed = (states[sb + VX] - states[sa + VX]) * ax + (states[sb + VY] - states[sa + VY]) * ay;
+        const accumulated = impulse;
+        impulse = -rows[c + pass + SCALE] * rows[c + MASS] * (speed + rows[c + pass + BIAS] * C) - rows[c + pass + KEEP] * accumulated;
+        rows[c + IMPULSE] = accumulated + impulse;
+      }
+      // B pushed away from A; like the kernel, only dynamic bodies are written.
+      const px = impulse * ax;
+      const py = impulse * ay;
+      if (states[sa + DYNAMIC] === 1) {
+        states[sa + VX] = states[sa + VX] - rows[c + MA] * px;
+        states[sa + VY] = states[sa + VY] - rows[c + MA] * py;
+      }
+      if (states[sb + DYNAMIC] === 1) {
+        states[sb + VX] = states[sb + VX] + rows[c + MB] * px;
+        states[sb + VY] = states[sb + VY] + rows[c + MB] * py;
+      }
     }
   }
 
@@ -279,17 +281,5 @@ export class PointDistanceJoints {
 
   memoryBytes(): number {
     return (this.kernel === null ? this.rows.byteLength + this.pairs.byteLength : 0) + 2 * this.slotOfLane.byteLength + this.colourOf.byteLength + this.used.byteLength;
-  }
-}
-
-/** The impulse (px, py) pushing B away from A, into their velocities; the kernel, too, writes dynamic bodies only. */
-function apply(states: Float64Array, sa: number, sb: number, mA: number, mB: number, px: number, py: number): void {
-  if (states[sa + DYNAMIC] === 1) {
-    states[sa + VX] = states[sa + VX] - mA * px;
-    states[sa + VY] = states[sa + VY] - mA * py;
-  }
-  if (states[sb + DYNAMIC] === 1) {
-    states[sb + VX] = states[sb + VX] + mB * px;
-    states[sb + VY] = states[sb + VY] + mB * py;
   }
 }
