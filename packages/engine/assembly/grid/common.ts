@@ -13,19 +13,27 @@ export function jumpWindow(columns: i32, cells: i32): i32 {
  * The TypeScript path's cell of a coordinate: `(p - origin) * inverse`, floored and clamped into
  * [0, count), so that a body outside the grid's extent lands in an edge cell (see
  * CellGrid.layout: clamping keeps touching bodies in neighbouring cells) and no index leaves the
- * arrays. Flooring by adding 2^52 to a whole number below 2^52 leaves it in the low bits of the
- * double; NaN clamps to 0.
+ * arrays. Adding 2^52 to a whole number t in [0, 2^52) gives the double whose bits are those of
+ * 2^52 plus t; any other t (negative, larger, infinite or NaN) gives bits below or far above. So
+ * one unsigned comparison of the bits less 2^52's finds every body inside the extent, and the rest
+ * (NaN clamps to 0) take clampedCell. Clamping the double on every call instead cost about 6 % of
+ * the 64,000-circle broad-phase.
  * Why not `<i32>`: V8 compiles WebAssembly's f64-to-i32 conversions with range checks, and this
  * way computing cells for 500,000 bodies took 1.3 ms against 3.2 (trunc_sat) and 1.7-2.2 (trapping).
  */
 // @ts-ignore: decorator
 @inline
 export function cellOf(p: f64, origin: f64, inverse: f64, count: i32): i32 {
-  let t = floor((p - origin) * inverse);
-  t = t > 0 ? t : 0;
-  const last = <f64>(count - 1);
-  t = t < last ? t : last;
-  return <i32>reinterpret<i64>(t + 4503599627370496.0);
+  const t = floor((p - origin) * inverse);
+  const offset = reinterpret<i64>(t + 4503599627370496.0) - 0x4330000000000000;
+  return <u64>offset < <u64>count ? <i32>offset : clampedCell(t, count);
+}
+
+/** cellOf's edge cell for a floored offset t outside [0, count). */
+// @ts-ignore: decorator
+@inline
+function clampedCell(t: f64, count: i32): i32 {
+  return t >= <f64>count ? count - 1 : 0;
 }
 
 /** The k-th body to bin: slot k, or the k-th of a slot list. */
