@@ -246,13 +246,15 @@ export class CellGrid {
     if (found > kernel.pairCapacity) return -1;
     const pairs = kernel.pairs;
     const base = 2 * this.pairRegion * kernel.pairCapacity;
+    // Read before the loop, so that nothing follows it (see ShapeNarrowPhase.collidePairs).
+    const examined = kernel.examined;
     if (touching) {
       // The kernel tested the pairs for touching already (see assembly `scan`): these are contacts.
       out.pushContacts(pairs, base, base + 2 * found, kernel.candidates);
     } else {
       for (let p = base; p < base + 2 * found; p += 2) out.push(pairs[p], pairs[p + 1]);
     }
-    return kernel.examined;
+    return examined;
   }
 
   /** Grows a shared grid's pair buffers to hold `pairs` pairs each, between stages; true when they grew. */

@@ -119,11 +119,13 @@ export class ContactList {
   /** Frees the slots of last step's contacts that this step did not list. */
   finish(): void {
     const { previousOrder, listed, epoch } = this;
-    for (let n = 0; n < this.previousCount; n++) {
+    const count = this.previousCount;
+    // Before the loop, so that nothing follows it (see ShapeNarrowPhase.collidePairs).
+    this.previousCount = 0;
+    for (let n = 0; n < count; n++) {
       const k = previousOrder[n];
       if (listed[k] !== epoch) this.freeSlots[this.freeCount++] = k;
     }
-    this.previousCount = 0;
   }
 
   /** Drops every contact (a world whose contacts no longer mean anything, say after a reset). */

@@ -44,12 +44,6 @@ export function boxWall(world: WorldShapes, w: number, out: WorldShape): WorldSh
 }
 
 /**
- * Pairs ahead whose shape records build touches before it tests the current pair: a software
- * prefetch, so that the cache misses of later pairs overlap the arithmetic of this one.
- */
-const AHEAD = 4;
-
-/**
  * The narrow-phase of worlds with shapes, in two passes.
  *
  * `consume` (the broad-phase's consumer) keeps the candidate body pairs that could touch: at
@@ -98,8 +92,6 @@ export class ShapeNarrowPhase implements PairConsumer {
   recycled = 0;
   /** Per body slot, 1 where its contacts are recomputed whatever they did (see noteFastBodies). */
   private fastBody = new Uint8Array(0);
-  /** What build's look-ahead read (see AHEAD); kept so that the reads are not optimised away. */
-  touched = 0;
 
   constructor(private readonly bodies: BodyStore) {}
 
@@ -226,15 +218,25 @@ export class ShapeNarrowPhase implements PairConsumer {
     list.begin();
     const bodies = this.bodies;
     this.candidates.sortCanonical(bodies.slotCount);
+    this.shapePairs = 0;
+    this.collidePairs(shapes, world, margin, slop, wallFriction, wallRestitution);
+    list.finish();
+  }
+
+  /**
+   * build's loop: the candidate body pairs in canonical order, each body's world pairs after its
+   * body pairs. Its own function, with nothing after the loop: V8 compiles a loop this long on
+   * the first step (on-stack replacement) before anything after it has run, and a property read
+   * there without feedback then left that code at every step of the 5,050-box pyramid.
+   */
+  private collidePairs(shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number): void {
     const { lo, hi, count } = this.candidates;
     let w = 0;
     let p = 0;
-    this.shapePairs = 0;
-    const record = shapes.record;
-    const firstShape = bodies.rigid!.firstShape;
-    let touched = 0;
+    // No software prefetch of the shape records of pairs ahead: JavaScript has no prefetch, and
+    // loads kept alive by summing them make a chain the core waits on, which cost more than the
+    // misses they hid (see docs/engine.md, "Performance with shapes").
     for (let k = 0; k <= count; k++) {
-      if (k + AHEAD < count) touched += record[firstShape[hi[k + AHEAD]] * SHAPE_STRIDE] + record[firstShape[lo[k + AHEAD]] * SHAPE_STRIDE];
       const i = k < count ? lo[k] : Infinity;
       // World pairs of bodies below i come first, after those bodies' body pairs.
       while (w < this.worldCount && this.worldBody[w] < i) {
@@ -244,8 +246,6 @@ export class ShapeNarrowPhase implements PairConsumer {
       if (k === count) break;
       p = this.collideBodies(i, hi[k], shapes, margin, slop, p);
     }
-    this.touched = touched;
-    list.finish();
   }
 
   memoryBytes(): number {

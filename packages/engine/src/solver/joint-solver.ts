@@ -83,6 +83,9 @@ export interface JointSettings {
   dampingRatio: number;
 }
 
+/** Where listJoints counts the joints it lists: general, point distance, spring and pressure joints. */
+const Listed = { active: 0, points: 1, springs: 2, pressure: 3 } as const;
+
 /**
  * The joints' part of the soft step (SoftStep calls each stage where Box2D v3 does: joints before
  * contacts in the warm start, the solve and the relax pass, so that contacts have the last word).
@@ -109,6 +112,8 @@ export class JointSolver {
   private readonly springs = new ForceSprings();
   /** The speed limits, linear and angular, for boundImpulses. */
   private readonly limits = new Float64Array(2);
+  /** How many joints listJoints listed of each kind of solve (see Listed). */
+  private readonly listed = new Int32Array(4);
   /** How the springs are integrated: the world's integrator. */
   integrator: IntegratorName = 'semi-implicit-euler';
 
@@ -155,11 +160,26 @@ export class JointSolver {
     }
     this.limits[0] = maxSpeed;
     this.limits[1] = maxAngular;
-    let springCount = 0;
-    let pressureCount = 0;
+    this.listJoints(bodies, index);
+    const listed = this.listed;
+    this.activeCount = listed[Listed.active];
+    this.points.prepare(store, bodies, this.pointSlots, this.pointA, this.pointB, listed[Listed.points], stateCount, h, step.soft, maxSpeed, kernel);
+    this.springs.prepare(store, this.springSlots, listed[Listed.springs], stateCount, bodies, slotOfState, gx, gy);
+    this.gas.prepare(store, this.pressureSlots, listed[Listed.pressure], bodies, index);
+  }
+
+  /**
+   * prepare's pass over the joints: clears their forces, notes which are active, and lists them by
+   * how they are solved (counts in `listed`), preparing the general ones. Its own function with
+   * nothing after its loop, the counts kept in `listed` as it goes: V8 compiles a loop this long
+   * during the first step (on-stack replacement), before the code after it has run, and an
+   * operation there without feedback then left that code at every step.
+   */
+  private listJoints(bodies: BodyStore, index: Int32Array): void {
+    const store = this.store;
     const r = store.record;
-    let n = 0;
-    let points = 0;
+    const listed = this.listed;
+    listed.fill(0);
     for (let j = 0; j < store.slotCount; j++) {
       if (store.live[j] === 0) continue;
       const o = j * JOINT_STRIDE;
@@ -173,7 +193,7 @@ export class JointSolver {
       if (store.kind[j] === JointKind.pressure) {
         // The whole ring wakes together (wakeJoined), so its first two bodies speak for it.
         r[o + ACTIVE] = ia === 0 && ib === 0 ? 0 : 1;
-        if (ia !== 0 || ib !== 0) this.pressureSlots[pressureCount++] = j;
+        if (ia !== 0 || ib !== 0) this.pressureSlots[listed[Listed.pressure]++] = j;
         continue;
       }
       if (ia === 0 && ib === 0) {
@@ -182,19 +202,16 @@ export class JointSolver {
       }
       r[o + ACTIVE] = 1;
       if (store.kind[j] === JointKind.distance && isPointDistanceJoint(r, o, bodies, a, b)) {
+        const points = listed[Listed.points]++;
         this.pointSlots[points] = j;
         this.pointA[points] = ia;
-        this.pointB[points++] = ib;
+        this.pointB[points] = ib;
         continue;
       }
       this.prepareJoint(bodies, j, o, ia, ib);
-      if (store.kind[j] === JointKind.spring) this.springSlots[springCount++] = j;
-      else this.active[n++] = j;
+      if (store.kind[j] === JointKind.spring) this.springSlots[listed[Listed.springs]++] = j;
+      else this.active[listed[Listed.active]++] = j;
     }
-    this.activeCount = n;
-    this.points.prepare(store, bodies, this.pointSlots, this.pointA, this.pointB, points, stateCount, h, step.soft, maxSpeed, kernel);
-    this.springs.prepare(store, this.springSlots, springCount, stateCount, bodies, slotOfState, gx, gy);
-    this.gas.prepare(store, this.pressureSlots, pressureCount, bodies, index);
   }
 
   /**

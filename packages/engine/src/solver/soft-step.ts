@@ -390,10 +390,9 @@ export class SoftStep {
       this.colourOf = new Uint8Array(grownCapacity(this.colourOf.length, count));
       this.laneAt = new Int32Array(this.colourOf.length);
     }
-    const { index, colourOf, colourStart, laneAt } = this;
+    const colourStart = this.colourStart;
     if (this.used.length < this.awakeCount + 1) this.used = new Uint32Array(grownCapacity(this.used.length, this.awakeCount + 1));
-    const used = this.used;
-    used.fill(0, 0, this.awakeCount + 1);
+    this.used.fill(0, 0, this.awakeCount + 1);
     colourStart.fill(0);
     let stride = 1;
     for (let p = 0; p < STRIDE_PRIMES.length; p++) {
@@ -402,6 +401,29 @@ export class SoftStep {
         break;
       }
     }
+    this.greedyColours(contacts, count, stride);
+    // Lanes per colour: each colour rounded up to whole quads (the kernel's two pairs of lanes);
+    // the contacts with no colour left (more neighbours than colours) may share bodies, so each
+    // takes a quad of its own, and they come after all the colours.
+    let lanes = 0;
+    for (let c = 0; c <= COLOURS; c++) {
+      const size = colourStart[c + 1];
+      colourStart[c + 1] = lanes;
+      lanes += c === COLOURS ? QUAD * size : (size + QUAD - 1) & -QUAD;
+    }
+    this.laneCount = lanes;
+    if (this.order.length < lanes) this.order = new Int32Array(grownCapacity(this.order.length, lanes));
+    this.order.fill(-1, 0, lanes);
+    this.sortByColour(contacts.order, count);
+  }
+
+  // The colouring's two long loops are functions of their own with nothing after the loop: V8
+  // compiles a loop this long during the first step (on-stack replacement), before the code after
+  // it has run, and an operation there without feedback then left that code at every step.
+
+  /** colour's greedy pass: each contact's colour in colourOf, colour sizes in colourStart. */
+  private greedyColours(contacts: ContactList, count: number, stride: number): void {
+    const { index, colourOf, colourStart, used } = this;
     const contactOrder = contacts.order;
     for (let visit = 0, n = 0; visit < count; visit++, n = (n + stride) % count) {
       const k = contactOrder[n];
@@ -434,20 +456,12 @@ export class SoftStep {
       colourOf[n] = colour;
       if (colour !== NO_COLOUR) colourStart[colour + 1]++;
     }
-    // Lanes per colour: each colour rounded up to whole quads (the kernel's two pairs of lanes);
-    // the contacts with no colour left (more neighbours than colours) may share bodies, so each
-    // takes a quad of its own, and they come after all the colours.
-    let lanes = 0;
-    for (let c = 0; c <= COLOURS; c++) {
-      const size = colourStart[c + 1];
-      colourStart[c + 1] = lanes;
-      lanes += c === COLOURS ? QUAD * size : (size + QUAD - 1) & -QUAD;
-    }
-    this.laneCount = lanes;
-    if (this.order.length < lanes) this.order = new Int32Array(grownCapacity(this.order.length, lanes));
-    const order = this.order;
-    order.fill(-1, 0, lanes);
-    // Counting sort by colour, stable: each colour in canonical order; lanes hold contact slots.
+  }
+
+  /** colour's counting sort of the contacts into lanes, colour by colour (colourStart holds each colour's first lane). */
+  private sortByColour(contactOrder: Int32Array, count: number): void {
+    const { colourOf, colourStart, laneAt, order } = this;
+    // Stable: each colour in canonical order; lanes hold contact slots.
     for (let n = 0; n < count; n++) {
       const colour = colourOf[n];
       if (colour === NO_COLOUR) {

@@ -50,18 +50,9 @@ export class ContactSorter {
   sort(lo: Int32Array, hi: Int32Array, count: number, slotCount: number): void {
     // Counts per slot only for the counting passes (see sortContacts): few contacts need none.
     this.reserve(count, count * 8 < slotCount ? 0 : slotCount + 1);
-    const inLo = this.lo;
-    const inHi = this.hi;
-    // Element by element: set(subarray()) would allocate two views per step.
-    for (let k = 0; k < count; k++) {
-      inLo[k] = lo[k];
-      inHi[k] = hi[k];
-    }
+    copyPairs(lo, hi, this.lo, this.hi, count);
     this.fn.sortContacts(this.loAt, this.hiAt, this.tloAt, this.thiAt, count, slotCount, this.countsAt, 0);
-    for (let k = 0; k < count; k++) {
-      lo[k] = inLo[k];
-      hi[k] = inHi[k];
-    }
+    copyPairs(this.lo, this.hi, lo, hi, count);
   }
 
   memoryBytes(): number {
@@ -85,5 +76,18 @@ export class ContactSorter {
     const buffer = this.memory.buffer as ArrayBuffer;
     this.lo = new Int32Array(buffer, this.loAt, this.pairCapacity);
     this.hi = new Int32Array(buffer, this.hiAt, this.pairCapacity);
+  }
+}
+
+/**
+ * The first `count` pairs of (fromLo, fromHi) into (toLo, toHi), element by element: set(subarray())
+ * would allocate two views per step. A function of its own with nothing after its loop: V8 compiles
+ * a loop this long during the first step (on-stack replacement), before the code after it has run,
+ * and an operation there without feedback then left that code at every step.
+ */
+function copyPairs(fromLo: Int32Array, fromHi: Int32Array, toLo: Int32Array, toHi: Int32Array, count: number): void {
+  for (let k = 0; k < count; k++) {
+    toLo[k] = fromLo[k];
+    toHi[k] = fromHi[k];
   }
 }
