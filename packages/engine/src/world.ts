@@ -735,11 +735,7 @@ export class World {
     this.disturbances.note(this.bodies, s);
     if (this.shapes.engaged) {
       const store = this.shapes.store;
-      for (let k = this.bodies.rigid!.firstShape[s]; k >= 0; k = store.next[k]) {
-        store.category[k] = c;
-        store.mask[k] = m;
-      }
-      store.version++;
+      for (let k = this.bodies.rigid!.firstShape[s]; k >= 0; k = store.next[k]) store.setFilter(k, c, m);
     }
     this.bodies.setFilter(s, c, m);
     this.bodies.wake(s);

@@ -171,6 +171,37 @@ describe('bodies and shapes', () => {
   });
 });
 
+describe('collision layers on shapes', () => {
+  // A unit box over a static ground whose top is at y = 4.5: resting, its centre is at 4.
+  const drop = (box: { category?: number; mask?: number }, ground: { mask?: number }, filter: [number, number] | null) => {
+    const world = new World({ gravity: { x: 0, y: 10 }, restitution: 0 });
+    world.createBox({ x: 0, y: 5, width: 20, height: 1, type: 'static', ...ground });
+    const h = world.createBox({ x: 0, y: 0, width: 1, height: 1, ...box });
+    if (filter) world.setCollisionFilter(h, filter[0], filter[1]);
+    for (let i = 0; i < 180; i++) world.step(1 / 60);
+    return world.getBody(h).y;
+  };
+
+  it.each([
+    ['made with mask 0', { mask: 0 }, {}],
+    ["made in a category the ground's mask leaves out", { category: 2 }, { mask: ~2 >>> 0 }],
+  ])('a box %s falls through the ground, and lands on it once setCollisionFilter opens the layers', (_, box, ground) => {
+    expect(drop(box, ground, null)).toBeGreaterThan(30);
+    expect(Math.abs(drop(box, ground, [1, 0xffffffff]) - 4)).toBeLessThan(0.02);
+  });
+
+  it('setCollisionFilter closes the layers of every shape of a compound body', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, restitution: 0 });
+    world.createBox({ x: 0, y: 5, width: 20, height: 1, type: 'static' });
+    const table = world.createBody({ x: 0, y: 0 });
+    world.addShape(table, { kind: 'box', width: 3, height: 0.2 });
+    world.addShape(table, { kind: 'box', width: 0.2, height: 1, offsetX: 1.4, offsetY: 0.6 });
+    world.setCollisionFilter(table, 1, 0);
+    for (let i = 0; i < 180; i++) world.step(1 / 60);
+    expect(world.getBody(table).y).toBeGreaterThan(30);
+  });
+});
+
 describe('contact points', () => {
   it('a box resting on the ground has two points at its bottom corners, the normal along the vertical', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0 });

@@ -158,6 +158,15 @@ export class ShapeStore {
     return g;
   }
 
+  /** Sets shape `slot`'s collision layers, in its columns and in its record, which the narrow-phase reads. */
+  setFilter(slot: number, category: number, mask: number): void {
+    this.category[slot] = category;
+    this.mask[slot] = mask;
+    this.record[slot * STRIDE + ShapeField.category] = category;
+    this.record[slot * STRIDE + ShapeField.mask] = mask;
+    this.version++;
+  }
+
   /** Links shape `slot` to `next` in its body's chain (-1 ends it). */
   setNext(slot: number, next: number): void {
     this.next[slot] = next;
