@@ -33,6 +33,7 @@ import {
   OFFSET_KEYS,
   resolveBody,
   resolveGeometry,
+  checkReach,
   resolveMaterial,
   type BodyOptions,
   type BoxOptions,
@@ -325,7 +326,9 @@ export class World {
     material.restitution = body.restitution;
     this.assertInBox(body.x, body.y, body.radius);
     if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
-    if (!this.shapes.engaged && (material.friction > 0 || material.rollingResistance > 0 || material.sensor || spin.flags & BodyFlag.bullet)) this.engage();
+    const shaped = this.shapes.engaged || material.friction > 0 || material.rollingResistance > 0 || material.sensor || (spin.flags & BodyFlag.bullet) !== 0;
+    if (shaped) checkReach('circle', o, scratchGeometry.setCircle(0, 0, body.radius));
+    if (!this.shapes.engaged && shaped) this.engage();
     if (this.shapes.engaged) {
       material.density = body.mass / (Math.PI * body.radius * body.radius);
       return this.createShaped({ ...spin, vx: body.vx, vy: body.vy, gravityScale: body.gravityScale, linearDamping: body.linearDamping }, material);
@@ -391,12 +394,20 @@ export class World {
     const geometry = resolveGeometry(kind, o, new Geometry());
     const shape = resolveMaterial(o, this.materialDefaults(), geometry);
     if (!this.shapes.store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} shapes at once`);
-    this.engage();
+    // Everything checked before the world takes the shape route, so that a refused shape leaves
+    // it as it was. Until then the body is a circle centred on its origin, which becomes its
+    // first shape with the mass it has (BodyShapes.engage).
     const b = this.bodies;
-    const rigid = b.rigid!;
-    if (b.type[slot] === TypeCode.dynamic) this.checkMass(handle, this.shapes.massWith(slot, shape));
-    else this.checkMass(handle, this.shapes.massWith(slot, shape), true);
-    this.assertShapeInBox(shape.geometry, b.x[slot], b.y[slot], rigid.c[slot], rigid.s[slot], rigid.localCenterX[slot], rigid.localCenterY[slot]);
+    const rigid = b.rigid;
+    const engaged = this.shapes.engaged;
+    const mass = this.shapes.massWith(slot, shape) + (engaged ? 0 : b.mass[slot]);
+    this.checkMass(handle, mass, b.type[slot] !== TypeCode.dynamic);
+    const c = rigid ? rigid.c[slot] : 1;
+    const sn = rigid ? rigid.s[slot] : 0;
+    const lx = rigid && engaged ? rigid.localCenterX[slot] : 0;
+    const ly = rigid && engaged ? rigid.localCenterY[slot] : 0;
+    this.assertShapeInBox(shape.geometry, b.x[slot], b.y[slot], c, sn, lx, ly);
+    this.engage();
     const s = this.shapes.add(slot, shape);
     if (shape.sensor) this.useEvents();
     this.shapesChanged(slot);
@@ -640,7 +651,7 @@ export class World {
 
   /** Adds a force (mass x length / s^2) to a dynamic body for the next step only; wakes it. */
   applyForce(handle: number, fx: number, fy: number): void {
-    const s = this.dynamicSlot(handle, 'a force', fx, fy);
+    const s = this.dynamicSlot(handle, 'a force', 'fx', fx, 'fy', fy);
     const b = this.bodies;
     const totalX = b.forceX[s] + fx;
     const totalY = b.forceY[s] + fy;
@@ -656,7 +667,7 @@ export class World {
 
   /** Adds a torque (mass x length^2 / s^2) to a dynamic body for the next step only; wakes it. */
   applyTorque(handle: number, torque: number): void {
-    const s = this.dynamicSlot(handle, 'a torque', torque, 0);
+    const s = this.dynamicSlot(handle, 'a torque', 'torque', torque, null, 0);
     const rigid = this.useRigid();
     const total = rigid.torque[s] + torque;
     if (!(Math.abs(total * rigid.invInertia[s]) <= MAX_MAGNITUDE)) {
@@ -670,7 +681,7 @@ export class World {
 
   /** Changes a dynamic body's velocity by impulse / mass at once; wakes it. */
   applyImpulse(handle: number, ix: number, iy: number): void {
-    const s = this.dynamicSlot(handle, 'an impulse', ix, iy);
+    const s = this.dynamicSlot(handle, 'an impulse', 'ix', ix, 'iy', iy);
     const b = this.bodies;
     const vx = b.vx[s] + ix * b.invMass[s];
     const vy = b.vy[s] + iy * b.invMass[s];
@@ -684,7 +695,7 @@ export class World {
 
   /** Changes a dynamic body's angular velocity by impulse / inertia at once; wakes it. */
   applyAngularImpulse(handle: number, impulse: number): void {
-    const s = this.dynamicSlot(handle, 'an angular impulse', impulse, 0);
+    const s = this.dynamicSlot(handle, 'an angular impulse', 'impulse', impulse, null, 0);
     const rigid = this.useRigid();
     const w = rigid.angularVelocity[s] + impulse * rigid.invInertia[s];
     if (!(Math.abs(w) <= MAX_MAGNITUDE)) throw new RangeError(`an angular impulse ${impulse} on body ${handle} would make its angular velocity ${w} exceed ${MAX_MAGNITUDE} (inertia ${rigid.inertia[s]})`);
@@ -1578,12 +1589,13 @@ export class World {
     this.geometryVersion++;
   }
 
-  private dynamicSlot(handle: number, what: string, ax: number, ay: number): number {
+  /** The slot of a dynamic body taking `what`: the value in `xField` (and `yField`, if any), checked finite by name. */
+  private dynamicSlot(handle: number, what: string, xField: string, ax: number, yField: string | null, ay: number): number {
     const s = this.slot(handle);
-    finiteNumber('x component', ax);
-    finiteNumber('y component', ay);
+    finiteNumber(xField, ax);
+    if (yField !== null) finiteNumber(yField, ay);
     if (this.bodies.type[s] !== TypeCode.dynamic) {
-      throw new RangeError(`body ${handle} is ${typeName(this.bodies.type[s])}: only dynamic bodies take ${what}, got (${ax}, ${ay})`);
+      throw new RangeError(`body ${handle} is ${typeName(this.bodies.type[s])}: only dynamic bodies take ${what}, got ${yField === null ? ax : `(${ax}, ${ay})`}`);
     }
     return s;
   }

@@ -18,6 +18,9 @@ function snapshot(world: World) {
     integrator: world.integrator,
     gravity: world.gravity,
     circles: world.handles().map((h) => world.getCircle(h)),
+    route: world.route,
+    shapeCount: world.shapeCount,
+    radii: Array.from(world.views().radius.subarray(0, world.bodyCount)),
   };
 }
 
@@ -120,8 +123,10 @@ describe('bad input is rejected with a named error and leaves the world unchange
   });
 
   it('forces, impulses, filters and queries with bad values', () => {
-    rejects((w, h) => w.applyForce(h, NaN, 0), TypeError, 'x component', 'NaN');
-    rejects((w, h) => w.applyImpulse(h, 0, Infinity), TypeError, 'y component', 'Infinity');
+    rejects((w, h) => w.applyForce(h, NaN, 0), TypeError, 'fx', 'NaN');
+    rejects((w, h) => w.applyImpulse(h, 0, Infinity), TypeError, 'iy', 'Infinity');
+    rejects((w, h) => w.applyTorque(h, NaN), TypeError, 'torque', 'NaN');
+    rejects((w, h) => w.applyAngularImpulse(h, '1' as never), TypeError, 'impulse', '"1"');
     rejects((w, h) => w.setCollisionFilter(h, 1, -2), RangeError, 'mask', '-2');
     rejects((w, h) => w.setGravityScale(h, NaN), TypeError, 'gravityScale', 'NaN');
     rejects((w, h) => w.setLinearDamping(h, -1), RangeError, 'linearDamping', '-1');
@@ -129,6 +134,42 @@ describe('bad input is rejected with a named error and leaves the world unchange
     rejects((w) => w.queryPoint(NaN, 0), TypeError, 'x', 'NaN');
     rejects((w) => w.rayCast(0, 0, 1, Infinity), TypeError, 'y2', 'Infinity');
     rejects((w) => w.queryPoint(0, 0, { mask: -1 }), RangeError, 'mask', '-1');
+  });
+
+  it('friction, rolling resistance and contact damping beyond 1e100, whose products would overflow', () => {
+    rejects((w) => w.createCircle({ x: 20, y: 20, radius: 3, friction: 1e155 }), RangeError, 'friction', '1e+155');
+    rejects((w) => w.createBox({ x: 20, y: 20, width: 3, height: 3, rollingResistance: 1e200 }), RangeError, 'rollingResistance', '1e+200');
+    rejects((w) => w.createSegment({ x1: 0, y1: 90, x2: 100, y2: 90, friction: 1e101 }), RangeError, 'friction', '1e+101');
+    expect(() => new World({ friction: 1e155 })).toThrow(/friction must be at most 1e\+100.*1e\+155/);
+    expect(() => new World({ contactDampingRatio: 1e308 })).toThrow(/contactDampingRatio must be at most 1e\+100.*1e\+308/);
+  });
+
+  it('a shape refused by addShape leaves a circle world on the circle route, its body as it was', () => {
+    // Outside the box, and too heavy: both are checked before the world takes the shape route.
+    rejects((w, h) => w.addShape(h, { kind: 'circle', radius: 1, offsetX: 160 }), RangeError, 'outside', '');
+    rejects((w, h) => w.addShape(h, { kind: 'box', width: 10, height: 10, density: 1e99 }), RangeError, 'mass', 'e+');
+  });
+
+  it('shapes reaching beyond 1e50 from their body, whose inertia would overflow; a circle that size on the circle route', () => {
+    const world = new World();
+    world.createBox({ x: 0, y: 0, width: 1e50, height: 1e50, mass: 1 });
+    const state = (w: World) => ({ hash: w.stateHash(), bodies: w.bodyCount, shapes: w.shapeCount, route: w.route });
+    const before = state(world);
+    expect(() => world.createBox({ x: 0, y: 0, width: 1e78, height: 1e78, mass: 1 })).toThrow(/width 1e\+78, height 1e\+78 reaches .* beyond 1e\+50/);
+    expect(() => world.createCapsule({ x: 0, y: 0, length: 1e80, radius: 1 })).toThrow(/length 1e\+80/);
+    expect(() => world.createCircle({ x: 0, y: 0, radius: 1e80, density: 1e-160, friction: 0.5 })).toThrow(/radius 1e\+80/);
+    const body = world.createBody({ x: 0, y: 0 });
+    const between = state(world);
+    expect(() => world.addShape(body, { kind: 'circle', radius: 1, offsetX: 2e50 })).toThrow(/offsetX 2e\+50/);
+    expect(state(world)).toEqual(between);
+    world.destroyBody(body);
+    expect(state(world)).toEqual(before);
+    for (const h of world.handles()) expect(Number.isFinite(world.getBody(h).inertia)).toBe(true);
+    // Without friction a circle stays on the circle route, where its disc's inertia is m r^2 / 2.
+    const circles = new World();
+    const big = circles.createCircle({ x: 0, y: 0, radius: 1e80, density: 1e-160 });
+    expect(circles.route.route).toBe('circles');
+    expect(circles.getBody(big).mass).toBeCloseTo(Math.PI, 12);
   });
 
   it('forces and impulses on a static body', () => {

@@ -4,7 +4,7 @@ import { BodyFlag } from '../store/rigid-columns.js';
 import type { NewShape } from '../store/shape-store.js';
 import { cosSin } from '../math/trig.js';
 import { areaProperties, checkPolygon, emptyAreaProperties, Geometry, MAX_POLYGON_VERTICES } from './geometry.js';
-import { boundedNonNegative, boundedNumber, boundedPositive, describeValue, finiteNumber, nonNegativeNumber, plainObject, knownKeys } from '../util/validate.js';
+import { boundedNonNegative, boundedNumber, boundedPositive, describeValue, finiteNumber, nonNegativeNumber, plainObject, knownKeys, staticVelocity, MAX_SHAPE_REACH } from '../util/validate.js';
 import { bodyType, flag, layerBits, restitutionNumber, type Vector } from '../options.js';
 
 /** Where a body starts and how it moves. Angles in radians; see docs/engine.md for their sense. */
@@ -139,20 +139,13 @@ export function resolveBody(o: Record<string, unknown>): ResolvedBody {
   };
 }
 
-/** A static body takes no velocity: 0 is accepted, anything else refused by name. */
-function staticVelocity(field: string, value: unknown): number {
-  const v = finiteNumber(field, value);
-  if (v !== 0) throw new RangeError(`${field} of a static body must be 0, got ${v}; make it kinematic to move it`);
-  return 0;
-}
-
 export function resolveMaterial(o: Record<string, unknown>, defaults: MaterialDefaults, geometry: Geometry): NewShape {
   return {
     geometry,
     density: o.density === undefined ? 1 : boundedNonNegative('density', o.density),
-    friction: o.friction === undefined ? defaults.friction : nonNegativeNumber('friction', o.friction),
+    friction: o.friction === undefined ? defaults.friction : boundedNonNegative('friction', o.friction),
     restitution: o.restitution === undefined ? defaults.restitution : restitutionNumber('restitution', o.restitution),
-    rollingResistance: o.rollingResistance === undefined ? 0 : nonNegativeNumber('rollingResistance', o.rollingResistance),
+    rollingResistance: o.rollingResistance === undefined ? 0 : boundedNonNegative('rollingResistance', o.rollingResistance),
     category: o.category === undefined ? 1 : layerBits('category', o.category),
     mask: o.mask === undefined ? 0xffffffff : layerBits('mask', o.mask),
     sensor: o.sensor === undefined ? false : flag('sensor', o.sensor),
@@ -183,7 +176,8 @@ export function resolveGeometry(kind: string, o: Record<string, unknown>, out: G
   const offsetAngle = o.offsetAngle === undefined ? 0 : finiteNumber('offsetAngle', o.offsetAngle);
   if (kind === 'circle') {
     const radius = boundedPositive('radius', o.radius);
-    return out.setCircle(offsetX, offsetY, radius);
+    checkReach(kind, o, out.setCircle(offsetX, offsetY, radius));
+    return out;
   }
   if (kind === 'capsule') {
     const length = boundedPositive('length', o.length);
@@ -218,7 +212,19 @@ export function resolveGeometry(kind: string, o: Record<string, unknown>, out: G
     cosSin(offsetAngle, rotation);
     out.transform(rotation[0], rotation[1], offsetX, offsetY);
   }
+  checkReach(kind, o, out);
   return out;
+}
+
+/** A RangeError naming the shape's sizes where it reaches farther than MAX_SHAPE_REACH from its body's origin. */
+export function checkReach(kind: string, o: Record<string, unknown>, g: Geometry): void {
+  let far = 0;
+  for (let i = 0; i < g.count; i++) far = Math.max(far, Math.sqrt(g.x[i] * g.x[i] + g.y[i] * g.y[i]));
+  const reach = far + g.radius;
+  if (reach <= MAX_SHAPE_REACH) return;
+  const sizes = ['width', 'height', 'length', 'radius', 'offsetX', 'offsetY'].filter((k) => o[k] !== undefined).map((k) => `${k} ${describeValue(o[k])}`);
+  if (o.vertices !== undefined) sizes.push('its vertices');
+  throw new RangeError(`a ${kind} shape with ${sizes.join(', ')} reaches ${reach} from its body's origin, beyond ${MAX_SHAPE_REACH} (so that its rotational inertia stays finite)`);
 }
 
 /** Reads and checks `vertices` into px, py in counter-clockwise order (either winding is accepted). */

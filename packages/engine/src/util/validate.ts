@@ -28,6 +28,11 @@ export function finiteNumber(field: string, value: unknown): number {
  * infinity or a NaN from finite input.
  */
 export const MAX_MAGNITUDE = 1e100;
+/**
+ * How far a shape may reach from its body's origin. Its second moment of area grows as the fourth
+ * power of its size, so this keeps that, times any density, within the largest double.
+ */
+export const MAX_SHAPE_REACH = 1e50;
 /** The longest step: a million seconds. */
 export const MAX_DT = 1e6;
 /** The most a restitution may multiply an approach speed by. */
@@ -108,4 +113,11 @@ export { show as describeValue };
 function describeInstance(value: object): string {
   const name = (value as { constructor?: { name?: unknown } }).constructor?.name;
   return typeof name === 'string' && name !== 'Object' ? `a ${name}` : 'an object with a prototype of its own';
+}
+
+/** A static body takes no velocity: 0 is accepted, anything else refused by name. */
+export function staticVelocity(field: string, value: unknown): number {
+  const v = finiteNumber(field, value);
+  if (v !== 0) throw new RangeError(`${field} of a static body must be 0, got ${v}; make it kinematic to move it`);
+  return 0;
 }
