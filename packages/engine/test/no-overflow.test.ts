@@ -156,4 +156,23 @@ describe('no NaN or infinity from finite input', () => {
       expect(fastest, JSON.stringify(options)).toBeLessThanOrEqual(cap * (1 + 1e-12));
     }
   });
+
+  it('joints whose anchors lie as far as allowed from their bodies stay finite (their 2 x 2 systems scaled)', () => {
+    for (const kind of ['revolute', 'weld'] as const) {
+      for (const far of [1e20, 1e77, 1e100]) {
+        const world = new World({ gravity: { x: 0, y: 10 } });
+        const a = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+        const b = world.createBox({ x: 2, y: 0, width: 1, height: 1 });
+        world.createJoint({ kind, bodyA: a, bodyB: b, anchorA: { x: far, y: far }, anchorB: { x: -far, y: -far } });
+        for (let s = 0; s < 60; s++) {
+          world.step(1 / 60);
+          try {
+            assertFinite(world, null, { op: 'step', dt: 1 / 60 });
+          } catch (e) {
+            throw new Error(`${kind} joint, anchors ${far} out, step ${s + 1}: ${(e as Error).message}`);
+          }
+        }
+      }
+    }
+  });
 });

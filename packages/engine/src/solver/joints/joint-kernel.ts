@@ -177,9 +177,24 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   const k12 = -rAy * rAx * iA - rBy * rBx * iB;
   const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
   let det = k11 * k22 - k12 * k12;
-  det = det !== 0 ? 1 / det : 0;
-  const bx = det * (k22 * cx - k12 * cy);
-  const by = det * (k11 * cy - k12 * cx);
+  let bx: number;
+  let by: number;
+  if (det - det === 0) {
+    det = det !== 0 ? 1 / det : 0;
+    bx = det * (k22 * cx - k12 * cy);
+    by = det * (k11 * cy - k12 * cx);
+  } else {
+    // Anchors far from the centres square past the largest double in the determinant: solve the
+    // same system scaled by its largest entry, which leaves the result unchanged.
+    const scale = Math.max(Math.abs(k11), Math.abs(k12), Math.abs(k22));
+    const a = k11 / scale;
+    const b = k12 / scale;
+    const d = k22 / scale;
+    const scaled = a * d - b * b;
+    const inverse = scaled !== 0 ? 1 / (scaled * scale) : 0;
+    bx = inverse * (d * cx - b * cy);
+    by = inverse * (a * cy - b * cx);
+  }
   const px = -massScale * bx - impulseScale * r[o + LINEAR_IMPULSE_X];
   const py = -massScale * by - impulseScale * r[o + LINEAR_IMPULSE_Y];
   r[o + LINEAR_IMPULSE_X] += px;
