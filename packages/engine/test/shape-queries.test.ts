@@ -29,6 +29,15 @@ describe('queries with shapes', () => {
     expect(world.queryAABB(-100, -100, 100, 100)).toEqual([box, capsule, triangle, table]);
   });
 
+  it('boxes far larger than the shapes (up to 1e300 across) hold every one of them, and one beside them none', () => {
+    for (const e of [1e17, 1e18, 1e50, 1e100, 1e154, 1e300]) {
+      expect(world.queryAABB(-e, -e, e, e), String(e)).toEqual([box, capsule, triangle, table]);
+      expect(world.queryAABB(30, -e, e, e), String(e)).toEqual([]);
+      // The table's right leg reaches x = 21.1; this box starts just inside it.
+      expect(world.queryAABB(21.05, -e, e, e), String(e)).toEqual([table]);
+    }
+  });
+
   it('rays: the first shape entered, its entry point and outward normal', () => {
     const hit = world.rayCast(-10, 0, 30, 0)!;
     expect(hit.handle).toBe(box);

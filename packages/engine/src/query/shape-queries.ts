@@ -20,9 +20,26 @@ export function shapeContains(shapes: ShapeStore, slot: number, px: number, py: 
   return distance.compute(placed, probe).distance <= placed.radius;
 }
 
-/** Whether the shape overlaps the box [minX, maxX] x [minY, maxY] (touching included). */
+/**
+ * Whether the shape overlaps the box [minX, maxX] x [minY, maxY] (touching included). A shape
+ * whose bounding box lies inside the query box, or wholly apart from it, is decided by that box
+ * alone: the distance to a box far larger than the shape loses the shape in its rounding.
+ */
 export function shapeOverlapsBox(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, minX: number, minY: number, maxX: number, maxY: number): boolean {
-  placed.fromStore(shapes, slot, px, py, c, s);
+  const g = placed.fromStore(shapes, slot, px, py, c, s);
+  let loX = Infinity;
+  let loY = Infinity;
+  let hiX = -Infinity;
+  let hiY = -Infinity;
+  for (let i = 0; i < g.count; i++) {
+    loX = Math.min(loX, g.x[i]);
+    loY = Math.min(loY, g.y[i]);
+    hiX = Math.max(hiX, g.x[i]);
+    hiY = Math.max(hiY, g.y[i]);
+  }
+  const r = g.radius;
+  if (loX - r >= minX && hiX + r <= maxX && loY - r >= minY && hiY + r <= maxY) return true;
+  if (hiX + r < minX || loX - r > maxX || hiY + r < minY || loY - r > maxY) return false;
   box[0] = minX;
   box[1] = minY;
   box[2] = maxX;
