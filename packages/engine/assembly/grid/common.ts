@@ -16,8 +16,8 @@ export function jumpWindow(columns: i32, cells: i32): i32 {
  * arrays. Adding 2^52 to a whole number t in [0, 2^52) gives the double whose bits are those of
  * 2^52 plus t; any other t (negative, larger, infinite or NaN) gives bits below or far above. So
  * one unsigned comparison of the bits less 2^52's finds every body inside the extent, and the rest
- * (NaN clamps to 0) take clampedCell. Clamping the double on every call instead cost about 6 % of
- * the 64,000-circle broad-phase.
+ * (NaN clamps to 0) take clampedCell: cheaper than clamping the double on every call, which is in
+ * the broad-phase's innermost loops (docs/engine.md, "Numbers").
  * Why not `<i32>`: V8 compiles WebAssembly's f64-to-i32 conversions with range checks, and this
  * way computing cells for 500,000 bodies took 1.3 ms against 3.2 (trunc_sat) and 1.7-2.2 (trapping).
  */
