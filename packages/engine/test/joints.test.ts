@@ -621,3 +621,22 @@ describe('pressure joints: gas in a ring of bodies', () => {
     expect(w.stateHash()).toBe(before);
   });
 });
+
+describe('joint axes', () => {
+  it('an axis too short to square (1e-200) has its direction: the same bits as the unit axis', () => {
+    const run = (axis: { x: number; y: number }) => {
+      const world = new World({ gravity: { x: 3, y: 10 } });
+      const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+      const slider = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+      world.createJoint({ kind: 'prismatic', bodyA: ground, bodyB: slider, axis, lowerTranslation: -1, upperTranslation: 2 });
+      for (let i = 0; i < 120; i++) world.step(1 / 60);
+      return { hash: world.stateHash(), x: world.getBody(slider).x, y: world.getBody(slider).y };
+    };
+    const unit = run({ x: 1, y: 0 });
+    // Gravity pulls along +x, so the slider reaches its upper limit; across the axis it stays put.
+    expect(unit.x).toBeCloseTo(2, 1);
+    expect(Math.abs(unit.y)).toBeLessThan(0.01);
+    expect(run({ x: 1e-200, y: 0 })).toEqual(unit);
+    expect(run({ x: 3e-170, y: 0 })).toEqual(unit);
+  });
+});

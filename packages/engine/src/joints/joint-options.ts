@@ -211,11 +211,19 @@ function threshold(field: string, value: unknown): number {
   return n;
 }
 
-/** A unit axis from a non-zero vector. */
+/**
+ * A unit axis from a non-zero vector. One whose squared length underflows to 0 (or overflows) is
+ * first divided by its larger component, so that any vector but (0, 0) has a direction.
+ */
 function unitAxis(field: string, value: unknown, fallback: Vector): Vector {
-  const v = value === undefined ? fallback : vector(field, value);
-  const length = Math.sqrt(v.x * v.x + v.y * v.y);
-  if (!(length > 0) || !Number.isFinite(length)) throw new RangeError(`${field} must be a non-zero vector, got ${describeValue(value)}`);
+  let v = value === undefined ? fallback : vector(field, value);
+  const largest = Math.max(Math.abs(v.x), Math.abs(v.y));
+  if (!(largest > 0)) throw new RangeError(`${field} must be a non-zero vector, got ${describeValue(value)}`);
+  let length = Math.sqrt(v.x * v.x + v.y * v.y);
+  if (!(length > 0) || !Number.isFinite(length)) {
+    v = { x: v.x / largest, y: v.y / largest };
+    length = Math.sqrt(v.x * v.x + v.y * v.y);
+  }
   return { x: v.x / length, y: v.y / length };
 }
 
