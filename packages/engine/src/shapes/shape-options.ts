@@ -4,7 +4,7 @@ import { BodyFlag } from '../store/rigid-columns.js';
 import type { NewShape } from '../store/shape-store.js';
 import { cosSin } from '../math/trig.js';
 import { areaProperties, checkPolygon, emptyAreaProperties, Geometry, MAX_POLYGON_VERTICES } from './geometry.js';
-import { boundedNonNegative, boundedNumber, boundedPositive, describeValue, finiteNumber, nonNegativeNumber, plainObject, knownKeys, staticVelocity, MAX_SHAPE_REACH } from '../util/validate.js';
+import { boundedNonNegative, boundedNumber, boundedPositive, describeValue, finiteNumber, nonNegativeNumber, plainObject, knownKeys, MAX_SHAPE_REACH } from '../util/validate.js';
 import { bodyType, flag, layerBits, restitutionNumber, type Vector } from '../options.js';
 
 /** Where a body starts and how it moves. Angles in radians; see docs/engine.md for their sense. */
@@ -139,6 +139,13 @@ export function resolveBody(o: Record<string, unknown>): ResolvedBody {
   };
 }
 
+/** A static body takes no velocity: 0 is accepted, anything else refused by name. */
+function staticVelocity(field: string, value: unknown): number {
+  const v = finiteNumber(field, value);
+  if (v !== 0) throw new RangeError(`${field} of a static body must be 0, got ${v}; make it kinematic to move it`);
+  return 0;
+}
+
 export function resolveMaterial(o: Record<string, unknown>, defaults: MaterialDefaults, geometry: Geometry): NewShape {
   return {
     geometry,
@@ -218,9 +225,7 @@ export function resolveGeometry(kind: string, o: Record<string, unknown>, out: G
 
 /** A RangeError naming the shape's sizes where it reaches farther than MAX_SHAPE_REACH from its body's origin. */
 export function checkReach(kind: string, o: Record<string, unknown>, g: Geometry): void {
-  let far = 0;
-  for (let i = 0; i < g.count; i++) far = Math.max(far, Math.sqrt(g.x[i] * g.x[i] + g.y[i] * g.y[i]));
-  const reach = far + g.radius;
+  const reach = g.extentFrom(0, 0);
   if (reach <= MAX_SHAPE_REACH) return;
   const sizes = ['width', 'height', 'length', 'radius', 'offsetX', 'offsetY'].filter((k) => o[k] !== undefined).map((k) => `${k} ${describeValue(o[k])}`);
   if (o.vertices !== undefined) sizes.push('its vertices');

@@ -114,10 +114,3 @@ function describeInstance(value: object): string {
   const name = (value as { constructor?: { name?: unknown } }).constructor?.name;
   return typeof name === 'string' && name !== 'Object' ? `a ${name}` : 'an object with a prototype of its own';
 }
-
-/** A static body takes no velocity: 0 is accepted, anything else refused by name. */
-export function staticVelocity(field: string, value: unknown): number {
-  const v = finiteNumber(field, value);
-  if (v !== 0) throw new RangeError(`${field} of a static body must be 0, got ${v}; make it kinematic to move it`);
-  return 0;
-}

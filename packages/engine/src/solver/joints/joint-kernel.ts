@@ -179,7 +179,7 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   let det = k11 * k22 - k12 * k12;
   let bx: number;
   let by: number;
-  if (det - det === 0) {
+  if (Number.isFinite(det)) {
     det = det !== 0 ? 1 / det : 0;
     bx = det * (k22 * cx - k12 * cy);
     by = det * (k11 * cy - k12 * cx);
