@@ -80,6 +80,25 @@ describe('bodies and shapes', () => {
     expect(after.mass).toBeCloseTo(2, 12);
   });
 
+
+  it('a shape far from its body origin keeps its area and inertia (no cancellation in the moments)', () => {
+    // A 10 x 10 square's polar moment about its centre is m (w^2 + h^2) / 12; a rounded one and a
+    // right triangle too, whatever their distance from the origin that places them.
+    for (const offset of [0, 1e4, 1e8, 1e9, 1e12]) {
+      const world = new World();
+      const square = world.createBody({ x: 0, y: 0 });
+      world.addShape(square, { kind: 'polygon', vertices: [{ x: offset, y: 0 }, { x: offset + 10, y: 0 }, { x: offset + 10, y: 10 }, { x: offset, y: 10 }] });
+      expect(world.getBody(square).mass).toBe(100);
+      expect(world.getBody(square).inertia).toBeCloseTo((100 * 200) / 12, 9);
+      const box = world.createBody({ x: 0, y: 0 });
+      world.addShape(box, { kind: 'box', width: 1, height: 2, offsetX: offset, offsetY: -offset });
+      expect(world.getBody(box).inertia).toBeCloseTo((2 * 5) / 12, 12);
+      const triangle = world.createBody({ x: 0, y: 0 });
+      world.addShape(triangle, { kind: 'polygon', vertices: [{ x: offset, y: offset }, { x: offset + 1, y: offset }, { x: offset + 1, y: offset + 1 }] });
+      expect(world.getBody(triangle).mass).toBeCloseTo(0.5, 12);
+      expect(world.getBody(triangle).inertia).toBeCloseTo((0.5 * 2) / 18, 12);
+    }
+  });
   it('an offset circle shape sits off the origin, and the body turns about its centre of mass', () => {
     const world = new World();
     const h = world.createBody({ x: 0, y: 0, angularVelocity: 1 });

@@ -135,33 +135,42 @@ export function emptyAreaProperties(): AreaProperties {
   return { area: 0, cx: 0, cy: 0, inertia: 0 };
 }
 
-/** Area, first moment and polar moment about the frame's origin, accumulated over pieces. */
+/**
+ * Area, first moment and polar moment about a reference point, accumulated over pieces. The
+ * reference is a point of the shape: moments taken about the frame's origin would cancel
+ * catastrophically in the shift to the centroid for a shape far from that origin (a 10 x 10
+ * square 1e9 away would get inertia 0).
+ */
 class Moments {
   area = 0;
   mx = 0;
   my = 0;
   polar = 0;
+  private refX = 0;
+  private refY = 0;
 
-  clear(): void {
+  clear(refX: number, refY: number): void {
     this.area = 0;
     this.mx = 0;
     this.my = 0;
     this.polar = 0;
+    this.refX = refX;
+    this.refY = refY;
   }
 
   /** A counter-clockwise convex polygon, as triangles fanned from its first vertex. */
   addPolygon(xs: ArrayLike<number>, ys: ArrayLike<number>, count: number): void {
-    const rx = xs[0];
-    const ry = ys[0];
+    const rx = xs[0] - this.refX;
+    const ry = ys[0] - this.refY;
     let area = 0;
     let mx = 0;
     let my = 0;
     let polar = 0;
     for (let i = 1; i + 1 < count; i++) {
-      const e1x = xs[i] - rx;
-      const e1y = ys[i] - ry;
-      const e2x = xs[i + 1] - rx;
-      const e2y = ys[i + 1] - ry;
+      const e1x = xs[i] - xs[0];
+      const e1y = ys[i] - ys[0];
+      const e2x = xs[i + 1] - xs[0];
+      const e2y = ys[i + 1] - ys[0];
       const d = e1x * e2y - e1y * e2x;
       const triangle = d / 2;
       area += triangle;
@@ -170,7 +179,7 @@ class Moments {
       // The triangle's polar moment about its vertex at the reference point.
       polar += (d / 12) * (e1x * e1x + e1x * e2x + e2x * e2x + e1y * e1y + e1y * e2y + e2y * e2y);
     }
-    // Moved from the reference point to the origin: polar about r, plus the parallel-axis terms.
+    // Moved from the first vertex to the reference point: polar about r, plus the parallel-axis terms.
     this.area += area;
     this.mx += mx + area * rx;
     this.my += my + area * ry;
@@ -178,7 +187,9 @@ class Moments {
   }
 
   /** A disc sector of radius r and angle theta with its apex at (ax, ay), bisected by the unit (bx, by). */
-  addSector(ax: number, ay: number, bx: number, by: number, r: number, theta: number, halfSin: number): void {
+  addSector(px: number, py: number, bx: number, by: number, r: number, theta: number, halfSin: number): void {
+    const ax = px - this.refX;
+    const ay = py - this.refY;
     const area = (theta * r * r) / 2;
     // The centroid lies 4 r sin(theta/2) / (3 theta) from the apex along the bisector (2r/3 as theta -> 0).
     const d = theta > 1e-12 ? (4 * r * halfSin) / (3 * theta) : (2 * r) / 3;
@@ -191,7 +202,9 @@ class Moments {
     this.polar += (area * r * r) / 2 + area * (ax * ax + ay * ay + 2 * (ax * qx + ay * qy));
   }
 
-  addDisc(cx: number, cy: number, r: number): void {
+  addDisc(px: number, py: number, r: number): void {
+    const cx = px - this.refX;
+    const cy = py - this.refY;
     const area = Math.PI * r * r;
     this.area += area;
     this.mx += area * cx;
@@ -200,10 +213,12 @@ class Moments {
   }
 
   write(out: AreaProperties): AreaProperties {
+    const cx = this.area > 0 ? this.mx / this.area : 0;
+    const cy = this.area > 0 ? this.my / this.area : 0;
     out.area = this.area;
-    out.cx = this.area > 0 ? this.mx / this.area : 0;
-    out.cy = this.area > 0 ? this.my / this.area : 0;
-    out.inertia = this.polar - this.area * (out.cx * out.cx + out.cy * out.cy);
+    out.cx = this.refX + cx;
+    out.cy = this.refY + cy;
+    out.inertia = this.polar - this.area * (cx * cx + cy * cy);
     return out;
   }
 }
@@ -219,7 +234,7 @@ const quadY = new Float64Array(4);
  * inertia match the shape that collides.
  */
 export function areaProperties(g: Geometry, out: AreaProperties): AreaProperties {
-  moments.clear();
+  moments.clear(g.x[0], g.y[0]);
   const r = g.radius;
   if (g.kind === ShapeKind.circle) {
     moments.addDisc(g.x[0], g.y[0], r);
@@ -321,11 +336,10 @@ export function checkPolygon(xs: Float64Array, ys: Float64Array, count: number):
       if (dx * dx + dy * dy <= tolerance * tolerance) return { problem: 'duplicate', index: j, other: i };
     }
   }
+  // From the first point, not the frame's origin: products of far coordinates would round away
+  // the area of a polygon far from its body's origin.
   let twiceArea = 0;
-  for (let i = 0; i < count; i++) {
-    const j = i + 1 === count ? 0 : i + 1;
-    twiceArea += xs[i] * ys[j] - xs[j] * ys[i];
-  }
+  for (let i = 1; i + 1 < count; i++) twiceArea += (xs[i] - xs[0]) * (ys[i + 1] - ys[0]) - (xs[i + 1] - xs[0]) * (ys[i] - ys[0]);
   if (!(Math.abs(twiceArea) > tolerance * size)) return { problem: 'area' };
   const reversed = twiceArea < 0;
   if (reversed) {
