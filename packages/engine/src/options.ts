@@ -270,7 +270,7 @@ const CIRCLE_KEYS = [
 ];
 
 export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
-  const options = plainObject('World options', input ?? {});
+  const options = plainObject('World options', input === undefined ? {} : input);
   knownKeys('World options', options, WORLD_KEYS);
   let bounds: ResolvedWorldOptions['bounds'] = null;
   if (options.bounds !== undefined && options.bounds !== null) {

@@ -351,12 +351,15 @@ export class World {
 
   /**
    * A body with no shapes yet, at (x, y) with `angle`: add them with addShape. A dynamic body
-   * without shapes has mass 1 and does not turn until it gets some.
+   * without shapes has mass 1 and does not turn until it gets some. In a world with `bounds`, the
+   * box holds such a body by its origin: (x, y) must lie in it, and the body stops at a side it
+   * reaches.
    */
   createBody(options: BodyOptions): number {
     const o = plainObject('body options', options);
     knownKeys('body options', o, BODY_KEYS);
     const body = resolveBody(o);
+    this.assertPointInBox(body.x, body.y);
     if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
     this.engage();
     return this.createShaped(body, null);
@@ -766,7 +769,11 @@ export class World {
     else if (this.bodies.type[s] === TypeCode.dynamic) this.bodies.fallAsleep(s);
   }
 
-  /** Changes a body's motion type at run time (the report's mutable object types, 3.2). */
+  /**
+   * Changes a body's motion type at run time (the report's mutable object types, 3.2). Its joints
+   * stay: one whose bodies are then both static or kinematic does nothing (createJoint refuses
+   * such a pair) until one of them is dynamic again.
+   */
   setType(handle: number, type: BodyType): void {
     const s = this.slot(handle);
     const code = TypeCode[bodyType(type)];
@@ -1564,7 +1571,8 @@ export class World {
     const cx = x + (c * lx - s * ly);
     const cy = y + (s * lx + c * ly);
     if (this.shapes.engaged) {
-      if (this.bounds && rigid!.firstShape[slot] >= 0) {
+      if (rigid!.firstShape[slot] < 0) this.assertPointInBox(cx, cy);
+      else if (this.bounds) {
         bodyBounds(this.shapes.store, rigid!.firstShape[slot], cx, cy, c, s, box4);
         this.assertBoundsInBox(box4);
       }
@@ -1628,6 +1636,14 @@ export class World {
       throw new RangeError(
         `circle at (${x}, ${y}) with radius ${r} is outside the box 0..${box.width} x 0..${box.height}`,
       );
+    }
+  }
+
+  /** A body without shapes: the box holds its origin (see ShapeRoute.containPoint). */
+  private assertPointInBox(x: number, y: number): void {
+    const box = this.bounds;
+    if (box && !(x >= 0 && x <= box.width && y >= 0 && y <= box.height)) {
+      throw new RangeError(`a body without shapes at (${x}, ${y}) is outside the box 0..${box.width} x 0..${box.height}`);
     }
   }
 

@@ -96,4 +96,20 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
     refuses(boxed, () => boxed.setTransform(h, 9, 5, 0), RangeError, /outside the box/);
     refuses(boxed, () => boxed.addShape(h, { kind: 'circle', radius: 1, offsetX: 5 }), RangeError, /outside the box/);
   });
+
+  it('a body without shapes is held by its origin in a boxed world', () => {
+    const boxed = new World({ bounds: { width: 10, height: 10 }, gravity: { x: 0, y: 10 } });
+    refuses(boxed, () => boxed.createBody({ x: -1, y: 5 }), RangeError, /without shapes at \(-1, 5\) is outside the box/);
+    refuses(boxed, () => boxed.createBody({ x: 5, y: 10.5 }), RangeError, /at \(5, 10.5\) is outside the box/);
+    const point = boxed.createBody({ x: 5, y: 5, vx: -3 });
+    refuses(boxed, () => boxed.setTransform(point, 5, 11, 0), RangeError, /at \(5, 11\) is outside the box/);
+    refuses(boxed, () => boxed.setPosition(point, 10.25, 5), RangeError, /at \(10.25, 5\) is outside the box/);
+    // Falling and drifting left, it stops in the corner instead of leaving the box for good.
+    for (let i = 0; i < 180; i++) boxed.step(1 / 60);
+    const b = boxed.getBody(point);
+    expect([b.x, b.y, b.vx, b.vy]).toEqual([0, 10, 0, 0]);
+    // So a shape can be given to it there.
+    boxed.addShape(point, { kind: 'box', width: 1, height: 1, offsetX: 0.5, offsetY: -0.5 });
+    expect(boxed.bodyCount).toBe(1);
+  });
 });

@@ -232,6 +232,8 @@ describe('bad input is rejected with a named error and leaves the world unchange
     expect(() => new World(Object.create({ broadPhase: 'naive', gravity: { x: 0, y: 1 } }) as never)).toThrow(/World options must be a plain object/);
     rejects((w) => w.createCircle(Object.create({ x: 1, y: 1, radius: 1 }) as never), TypeError, 'circle options', 'plain object');
     expect(new World(Object.assign(Object.create(null), { gravity: { x: 0, y: 1 } })).bodyCount).toBe(0);
+    expect(() => new World(null as never)).toThrow(/World options must be an object, got null/);
+    expect(new World(undefined).bodyCount).toBe(0);
   });
 
   it('awake must be a boolean, a string shown as a string', () => {

@@ -193,10 +193,29 @@ export class ShapeRoute {
       const py = y[i];
       const r = radius[i];
       if (px - r >= 0 && px + r <= width && py - r >= 0 && py + r <= height) continue;
+      if (rigid.firstShape[i] < 0) {
+        this.containPoint(i, width, height);
+        continue;
+      }
       bodyBounds(shapes, rigid.firstShape[i], px, py, rigid.c[i], rigid.s[i], bounds);
-      if (!(bounds[0] <= bounds[2])) continue;
       x[i] = px + containShift(bounds[0], bounds[2], width);
       y[i] = py + containShift(bounds[1], bounds[3], height);
+    }
+  }
+
+  /**
+   * A body without shapes meets no wall, so the box holds its centre instead: it stops at the
+   * side it crossed, keeping the velocity along that side (a later shape then fits inside).
+   */
+  private containPoint(i: number, width: number, height: number): void {
+    const { x, y, vx, vy } = this.bodies;
+    if (x[i] < 0 || x[i] > width) {
+      x[i] = x[i] < 0 ? 0 : width;
+      vx[i] = 0;
+    }
+    if (y[i] < 0 || y[i] > height) {
+      y[i] = y[i] < 0 ? 0 : height;
+      vy[i] = 0;
     }
   }
 }
