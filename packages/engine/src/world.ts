@@ -264,7 +264,9 @@ export class World {
   /**
    * A new world from `snapshot()`'s bytes, stepping to the same bits as the world they came from
    * (without worker threads: start them again). A corrupt, cut, or future-format snapshot, or one
-   * an engine with another state layout wrote, is a RangeError saying so; nothing is built.
+   * an engine with another state layout wrote, is a RangeError saying so; nothing is built. So is
+   * one whose hash holds but whose bodies hold a value no step reaches (a NaN or infinite
+   * coordinate, velocity, mass or force, a negative mass, a rotation that is not a unit vector).
    */
   static restore(snapshot: Uint8Array): World {
     const read = readSnapshot(snapshot);
@@ -279,6 +281,7 @@ export class World {
     const capacity = numberField(field(state, 'bodies', 'capacity'));
     if (capacity > 0) world.bodies.reserve(capacity);
     writeOnto(world, read);
+    world.checkRestoredBodies();
     // Columns a parallel step had moved onto shared memory come back to this thread's own.
     if (world.bodies.shared) world.bodies.setShared(false);
     if (world.pipeline.contacts.shared) world.pipeline.contacts.setShared(false);
@@ -1636,6 +1639,30 @@ export class World {
       throw new RangeError(
         `circle at (${x}, ${y}) with radius ${r} is outside the box 0..${box.width} x 0..${box.height}`,
       );
+    }
+  }
+
+  /**
+   * The snapshot's hash catches damage, not a payload rewritten with a consistent hash: before a
+   * restored world is handed out, every live body's state must be one that steps could reach, so
+   * that no NaN or infinity enters a step through a snapshot.
+   */
+  private checkRestoredBodies(): void {
+    const b = this.bodies;
+    const rigid = b.rigid;
+    const columns: [string, Float64Array][] = [['x', b.x], ['y', b.y], ['vx', b.vx], ['vy', b.vy], ['radius', b.radius], ['mass', b.mass], ['invMass', b.invMass], ['forceX', b.forceX], ['forceY', b.forceY]];
+    if (rigid) columns.push(['cos', rigid.c], ['sin', rigid.s], ['angularVelocity', rigid.angularVelocity], ['inertia', rigid.inertia], ['invInertia', rigid.invInertia], ['torque', rigid.torque]);
+    for (let slot = 0; slot < b.slotCount; slot++) {
+      if (b.type[slot] === TypeCode.free) continue;
+      for (const [name, column] of columns) {
+        const v = column[slot];
+        if (!Number.isFinite(v) || ((name === 'mass' || name === 'invMass' || name === 'radius' || name === 'inertia' || name === 'invInertia') && v < 0)) {
+          throw new RangeError(`snapshot is corrupt: body ${b.handleOf(slot)} has ${name} ${v}, which no step reaches`);
+        }
+      }
+      if (rigid && !(Math.abs(rigid.c[slot] * rigid.c[slot] + rigid.s[slot] * rigid.s[slot] - 1) <= 1e-6)) {
+        throw new RangeError(`snapshot is corrupt: body ${b.handleOf(slot)}'s rotation (${rigid.c[slot]}, ${rigid.s[slot]}) is not a unit vector`);
+      }
     }
   }
 

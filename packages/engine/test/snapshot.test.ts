@@ -215,6 +215,25 @@ describe('snapshots', () => {
     );
   });
 
+  /** The byte offset of the one place `value` is stored, as a little-endian double. */
+  function findDouble(bytes: Uint8Array, value: number): number {
+    const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+    const found: number[] = [];
+    for (let i = 16; i + 8 <= bytes.length; i++) if (view.getFloat64(i, true) === value) found.push(i);
+    expect(found).toHaveLength(1);
+    return found[0];
+  }
+
+  /** Rewrites the format's hash: FNV-1a over the payload's little-endian 32-bit words, the last zero-padded. */
+  function rehash(bytes: Uint8Array): void {
+    let hash = 0x811c9dc5;
+    const padded = new Uint8Array(Math.ceil((bytes.length - 16) / 4) * 4);
+    padded.set(bytes.subarray(16));
+    const words = new DataView(padded.buffer);
+    for (let i = 0; i < padded.length; i += 4) hash = Math.imul(hash ^ words.getUint32(i, true), 0x01000193);
+    new DataView(bytes.buffer, bytes.byteOffset).setUint32(12, hash >>> 0, true);
+  }
+
   describe('refused snapshots say why and build nothing', () => {
     const source = stepped(CASES.find(([n]) => n === 'bridge')![1], 5);
     const bytes = source.snapshot();
@@ -270,14 +289,36 @@ describe('snapshots', () => {
       const view = new DataView(forged.buffer);
       // The engine version string's length, made to run past the payload.
       view.setUint32(16, 0x7fffffff, true);
-      // The format's hash: FNV-1a over the payload's little-endian 32-bit words, the last zero-padded.
-      let hash = 0x811c9dc5;
-      const padded = new Uint8Array(Math.ceil((forged.length - 16) / 4) * 4);
-      padded.set(forged.subarray(16));
-      const words = new DataView(padded.buffer);
-      for (let i = 0; i < padded.length; i += 4) hash = Math.imul(hash ^ words.getUint32(i, true), 0x01000193);
-      view.setUint32(12, hash >>> 0, true);
+      rehash(forged);
       expectRefusedInPlace(forged, /snapshot is corrupt: a value at byte 20 runs past the payload's end/);
+    });
+
+    it('a body state no step reaches, under a consistent hash, is refused by name', () => {
+      // A world whose one body holds distinctive values; each is found in the bytes and replaced.
+      const world = new World({ gravity: { x: 0, y: 10 }, solver: 'soft' });
+      const h = world.createBox({ x: 1.2345678901, y: 2, width: 1, height: 1, vx: 3.2109876543, angularVelocity: 0.7654321098 });
+      const clean = world.snapshot();
+      const cases: [number, number, RegExp][] = [
+        [1.2345678901, Number.NaN, new RegExp(`body ${h} has x NaN`)],
+        [3.2109876543, Number.POSITIVE_INFINITY, new RegExp(`body ${h} has vx Infinity`)],
+        [0.7654321098, Number.NEGATIVE_INFINITY, new RegExp(`body ${h} has angularVelocity -Infinity`)],
+      ];
+      for (const [value, bad, message] of cases) {
+        const at = findDouble(clean, value);
+        const forged = clean.slice();
+        new DataView(forged.buffer).setFloat64(at, bad, true);
+        rehash(forged);
+        expect(() => World.restore(forged)).toThrow(RangeError);
+        expect(() => World.restore(forged)).toThrow(message);
+        const before = world.stateHash();
+        expect(() => world.restore(forged)).toThrow(message);
+        expect(world.stateHash()).toBe(before);
+      }
+      // The same rewriting with a value a step could reach restores.
+      const fine = clean.slice();
+      new DataView(fine.buffer).setFloat64(findDouble(clean, 1.2345678901), 5, true);
+      rehash(fine);
+      expect(World.restore(fine).getBody(h).x).toBe(5);
     });
   });
 });
