@@ -1,6 +1,6 @@
 import { webAssembly } from './util/wasm.js';
 import { gridKernelEnabled, kernelModule as gridKernelModule } from './broadphase/grid-kernel-module.js';
-import { bodyKernelEnabled } from './store/body-kernel.js';
+import { bodyKernelEnabled, kernelModule as bodyKernelModule } from './store/body-kernel.js';
 import { softStepKernelEnabled } from './solver/soft-step-kernel.js';
 
 /** Whether one of the engine's WebAssembly kernels runs in this world, and why, or why not. */
@@ -37,11 +37,13 @@ export function gridKernelUse(broadphase: string, gridInUse: boolean): KernelUse
   return { running: true, why: `the ${broadphase} broad-phase bins and scans in WebAssembly` };
 }
 
-export function bodyKernelUse(inUse: boolean): KernelUse {
+export function bodyKernelUse(inUse: boolean, bodyCount: number): KernelUse {
   if (inUse) return { running: true, why: 'the body columns live in kernel memory: motion in a box and the contact buffers run in WebAssembly' };
   if (webAssembly() === null) return { running: false, why: NO_WASM };
   if (!bodyKernelEnabled()) return { running: false, why: 'switched off (setBodyKernelEnabled)' };
-  return { running: false, why: 'the body kernel did not compile in this runtime' };
+  if (bodyKernelModule(false) === null) return { running: false, why: 'the body kernel did not compile in this runtime' };
+  if (bodyCount === 0) return { running: false, why: 'no bodies yet: the columns move into kernel memory with the first' };
+  return { running: false, why: 'the body columns were laid out without it: switched off when they last grew, or its memory could not be had (they fall back to plain typed arrays)' };
 }
 
 export function softStepKernelUse(route: 'circles' | 'shapes', solver: string, inUse: boolean): KernelUse {

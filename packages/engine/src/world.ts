@@ -219,7 +219,7 @@ export class World {
       lastStepThreads: this.pipeline.stats.threads,
       webAssembly: webAssembly() !== null,
       gridKernel: gridKernelUse(name, grid),
-      bodyKernel: bodyKernelUse(this.bodies.kernel !== null),
+      bodyKernel: bodyKernelUse(this.bodies.kernel !== null, this.bodies.slotCount),
       softStepKernel: softStepKernelUse(route.route, route.solver, route.route === 'shapes' && route.solver === 'soft' && this.shapeRoute!.soft.usesKernel),
     };
   }
@@ -898,7 +898,7 @@ export class World {
 
   /**
    * Joins two bodies (see JointOptions for each kind: 'distance', 'revolute', 'prismatic', 'weld',
-   * 'wheel', 'target'); returns the joint's handle. Anchors are in each body's own frame, from its
+   * 'wheel', 'target', 'spring', 'pressure'); returns the joint's handle. Anchors are in each body's own frame, from its
    * origin, as shapes are. The world moves to the soft step (joints need it: a world made with
    * solver 'elastic' refuses them). Both bodies wake. Joined bodies do not collide unless
    * collideConnected is set; they sleep and wake as one island.
@@ -1202,8 +1202,8 @@ export class World {
   }
 
   /**
-   * Handles of the circles containing the point (boundary included), ascending. Pass `out` to
-   * reuse an array: it is emptied, filled and returned.
+   * Handles of the bodies with a shape (or circle) containing the point, boundary included,
+   * ascending. Pass `out` to reuse an array: it is emptied, filled and returned.
    */
   queryPoint(x: number, y: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: number[]): number[] {
     const mask = queryMask(options);
@@ -1212,7 +1212,7 @@ export class World {
     return this.queries.point(this.geometryVersion, x, y, mask, queryOutput(out));
   }
 
-  /** Handles of the circles overlapping the box (touching included), ascending; `out` as in queryPoint. */
+  /** Handles of the bodies with a shape (or circle) overlapping the box, touching included, ascending; `out` as in queryPoint. */
   queryAABB(minX: number, minY: number, maxX: number, maxY: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: number[]): number[] {
     const mask = queryMask(options);
     finiteNumber('minX', minX);
@@ -1224,8 +1224,8 @@ export class World {
   }
 
   /**
-   * The first circle the segment from (x1, y1) to (x2, y2) enters, or null. Circles containing
-   * (x1, y1) are ignored. Pass `out` to reuse a hit object: it is filled and returned.
+   * The first body the segment from (x1, y1) to (x2, y2) enters, by its shapes (or circle), or
+   * null. Shapes containing (x1, y1) are ignored. Pass `out` to reuse a hit object: it is filled and returned.
    */
   rayCast(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: RayHit): RayHit | null {
     const mask = queryMask(options);
@@ -1234,7 +1234,7 @@ export class World {
   }
 
   /**
-   * Every circle the segment enters, nearest first. Pass `out` to reuse an array: the hit objects
+   * Every body the segment enters, by its shapes (or circle), nearest first. Pass `out` to reuse an array: the hit objects
    * it holds are overwritten in place, it is cut to the number of hits and returned.
    */
   rayCastAll(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: RayHit[]): RayHit[] {

@@ -19,6 +19,13 @@ describe('world.backend says what steps the world', () => {
     expect(b.softStepKernel).toEqual({ running: false, why: 'the circle route has no soft step' });
   });
 
+  it('an empty world says its body kernel waits for bodies, and runs it with the first', () => {
+    const world = new World();
+    expect(world.backend.bodyKernel).toEqual({ running: false, why: expect.stringMatching(/^no bodies yet/) });
+    world.createCircle({ x: 0, y: 0, radius: 1 });
+    expect(world.backend.bodyKernel.running).toBe(true);
+  });
+
   it('a sweep uses no grid; shapes run the soft step in SIMD', () => {
     const sweep = new World({ broadphase: 'sap' });
     expect(sweep.backend.gridKernel).toEqual({ running: false, why: 'the broad-phase (sap) does not use a grid now' });
