@@ -81,6 +81,8 @@ function circleIntegrator(name: IntegratorName): CircleIntegratorName {
   return name === 'rk4' ? 'semi-implicit-euler' : name;
 }
 const box4 = new Float64Array(4);
+// Scratch outside the world, so that a call refused after using it leaves the snapshot's bytes as they were.
+const massScratch = emptyAreaProperties();
 const scratchGeometry = new Geometry();
 const EMPTY = new Float64Array(0);
 
@@ -425,9 +427,8 @@ export class World {
     const s = this.shapeSlot(shapeHandle);
     const slot = this.shapes.store.body[s];
     const rigid = this.bodies.rigid!;
-    if (this.bodies.type[slot] === TypeCode.dynamic && rigid.shapeCount[slot] > 1 && !(this.shapes.massWithout(slot, s) > 0)) {
-      this.requireMass(this.bodies.handleOf(slot), this.shapes.massWithout(slot, s));
-    }
+    // The shapes left must give a mass addShape would accept (the last one leaves a shapeless body of mass 1).
+    if (rigid.shapeCount[slot] > 1) this.checkMass(this.bodies.handleOf(slot), this.shapes.massWithout(slot, s), this.bodies.type[slot] !== TypeCode.dynamic);
     this.disturbances.note(this.bodies, slot);
     this.shapes.remove(s);
     this.shapesChanged(slot);
@@ -674,11 +675,11 @@ export class World {
   /** Adds a torque (mass x length^2 / s^2) to a dynamic body for the next step only; wakes it. */
   applyTorque(handle: number, torque: number): void {
     const s = this.dynamicSlot(handle, 'a torque', 'torque', torque, null, 0);
-    const rigid = this.useRigid();
-    const total = rigid.torque[s] + torque;
-    if (!(Math.abs(total * rigid.invInertia[s]) <= MAX_MAGNITUDE)) {
-      throw new RangeError(`a torque ${torque} on body ${handle} would make its angular acceleration exceed ${MAX_MAGNITUDE} (pending torque ${total}, inertia ${rigid.inertia[s]})`);
+    const total = (this.bodies.rigid?.torque[s] ?? 0) + torque;
+    if (!(Math.abs(total * this.inverseInertia(s)) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`a torque ${torque} on body ${handle} would make its angular acceleration exceed ${MAX_MAGNITUDE} (pending torque ${total}, inertia ${this.inertiaOf(s)})`);
     }
+    const rigid = this.useRigid();
     rigid.torque[s] = total;
     this.bodies.forcesPending = true;
     this.turning = true;
@@ -702,10 +703,9 @@ export class World {
   /** Changes a dynamic body's angular velocity by impulse / inertia at once; wakes it. */
   applyAngularImpulse(handle: number, impulse: number): void {
     const s = this.dynamicSlot(handle, 'an angular impulse', 'impulse', impulse, null, 0);
-    const rigid = this.useRigid();
-    const w = rigid.angularVelocity[s] + impulse * rigid.invInertia[s];
-    if (!(Math.abs(w) <= MAX_MAGNITUDE)) throw new RangeError(`an angular impulse ${impulse} on body ${handle} would make its angular velocity ${w} exceed ${MAX_MAGNITUDE} (inertia ${rigid.inertia[s]})`);
-    rigid.angularVelocity[s] = w;
+    const w = (this.bodies.rigid?.angularVelocity[s] ?? 0) + impulse * this.inverseInertia(s);
+    if (!(Math.abs(w) <= MAX_MAGNITUDE)) throw new RangeError(`an angular impulse ${impulse} on body ${handle} would make its angular velocity ${w} exceed ${MAX_MAGNITUDE} (inertia ${this.inertiaOf(s)})`);
+    this.useRigid().angularVelocity[s] = w;
     if (w !== 0) this.turning = true;
     this.bodies.wake(s);
   }
@@ -781,7 +781,7 @@ export class World {
     const s = this.slot(handle);
     const code = TypeCode[bodyType(type)];
     const rigid = this.bodies.rigid;
-    if (code === TypeCode.dynamic && this.shapes.engaged && rigid!.shapeCount[s] > 0 && !(this.shapes.massWith(s, null) > 0)) this.requireMass(handle, 0);
+    if (code === TypeCode.dynamic && this.shapes.engaged && rigid!.shapeCount[s] > 0) this.checkMass(handle, this.shapes.massWith(s, null));
     this.disturbances.note(this.bodies, s);
     if (this.bodies.type[s] === TypeCode.static || code === TypeCode.static) this.staticVersion++;
     this.bodies.setTypeCode(s, code);
@@ -884,6 +884,10 @@ export class World {
     this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
     if (this.shapeRoute) {
       if (this.joints !== null) this.beginJointEvents();
+      // Before the solve too: a velocity set since the last step (created, set or given by an
+      // impulse, up to 1e100) would otherwise enter the sub-steps' warm start and solve uncapped,
+      // where a long lever arm (a shape's reach up to 1e50) grows it past the largest double.
+      limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);
       this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion, this.pipeline.events, this.pipeline.settings.solver.hitThreshold);
       limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);
       if (this.joints !== null && this.joints.store.breakable > 0 && dt > 0) this.breakJoints();
@@ -1478,12 +1482,29 @@ export class World {
     if (!this.pipeline.events) this.pipeline.events = new ContactEvents();
   }
 
+  /** A body's rotational inertia, before the rotation columns exist too (see circleInertia). */
+  private inertiaOf(slot: number): number {
+    return this.bodies.rigid ? this.bodies.rigid.inertia[slot] : this.circleInertia(slot);
+  }
+
+  /** A circle of the circle route's: a uniform disc's m r^2 / 2, which it gets when the rotation columns are made. */
+  private circleInertia(slot: number): number {
+    const b = this.bodies;
+    return (b.mass[slot] * b.radius[slot] * b.radius[slot]) / 2;
+  }
+
+  private inverseInertia(slot: number): number {
+    if (this.bodies.rigid) return this.bodies.rigid.invInertia[slot];
+    const inertia = this.inertiaOf(slot);
+    return inertia > 0 ? 1 / inertia : 0;
+  }
+
   /** The rotational columns, with each circle made so far given a disc's inertia. */
   private useRigid() {
     if (this.bodies.rigid) return this.bodies.rigid;
     const b = this.bodies;
     const rigid = b.useRigid();
-    for (let s = 0; s < b.slotCount; s++) if (b.type[s] !== TypeCode.free) b.setMass(s, b.mass[s], (b.mass[s] * b.radius[s] * b.radius[s]) / 2);
+    for (let s = 0; s < b.slotCount; s++) if (b.type[s] !== TypeCode.free) b.setMass(s, b.mass[s], this.circleInertia(s));
     return rigid;
   }
 
@@ -1499,7 +1520,7 @@ export class World {
     const geometry = resolveGeometry(kind, o, new Geometry());
     const shape = resolveMaterial(o, this.materialDefaults(), geometry);
     applyMassOption(o, shape);
-    const mass = shape.density * areaProperties(geometry, this.massScratch).area;
+    const mass = shape.density * areaProperties(geometry, massScratch).area;
     this.checkMass(-1, mass, body.type !== TypeCode.dynamic);
     this.assertShapeInBox(geometry, body.x, body.y, body.c, body.s, 0, 0);
     if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
@@ -1557,8 +1578,6 @@ export class World {
       throw new RangeError(`${which}'s shapes would give it mass ${mass}, outside [${1 / MAX_MAGNITUDE}, ${MAX_MAGNITUDE}] (so that no step can overflow); change their size or density`);
     }
   }
-
-  private readonly massScratch = emptyAreaProperties();
 
   private requireMass(handle: number, mass: number): never {
     const which = handle >= 0 ? `body ${handle}` : 'a dynamic body';

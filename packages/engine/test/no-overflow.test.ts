@@ -175,4 +175,43 @@ describe('no NaN or infinity from finite input', () => {
       }
     }
   });
+
+  it('a velocity set above the speed limit between steps is capped before the solve, where a long lever arm would grow it', () => {
+    for (const dt of [1 / 60, 1, 1e6]) {
+      // Found by the random calls above: a small circle inside a vast one that moves at 1e100.
+      const world = new World({ restitution: 0 });
+      world.createCircle({ x: 5, y: 5, radius: 0.10816306050644718, mass: 0.051303625256859234 });
+      world.createCircle({ x: 24.900679227530844, y: 36.49328857177978, vx: -1e100, radius: 1e50, mass: 16.42229057277295, friction: 0.5 });
+      for (let s = 0; s < 5; s++) {
+        world.step(dt);
+        try {
+          assertFinite(world, null, { op: 'step', dt });
+        } catch (e) {
+          throw new Error(`dt ${dt}, step ${s + 1}: ${(e as Error).message}`);
+        }
+      }
+    }
+  });
+
+  it('a spring too stiff for the step, on the lightest body allowed, beside a rigid joint, stays finite under every integrator', () => {
+    for (const integrator of ['semi-implicit-euler', 'explicit-euler', 'rk4'] as const) {
+      for (const kind of ['weld', 'revolute', 'prismatic', 'wheel', 'distance'] as const) {
+        for (const dt of [1 / 60, 1e5]) {
+          const world = new World({ integrator, gravity: { x: 0, y: 10 } });
+          const a = world.createBox({ x: 0, y: 0, width: 1, height: 1, density: 1e-99 });
+          const b = world.createBox({ x: 2, y: 0, width: 1, height: 1 });
+          world.createJoint({ kind: 'spring', bodyA: a, bodyB: b, stiffness: 1e100, length: 0 });
+          world.createJoint({ kind, bodyA: a, bodyB: b });
+          for (let s = 0; s < 20; s++) {
+            world.step(dt);
+            try {
+              assertFinite(world, null, { op: 'step', dt });
+            } catch (e) {
+              throw new Error(`${integrator}, spring and ${kind} joint, dt ${dt}, step ${s + 1}: ${(e as Error).message}`);
+            }
+          }
+        }
+      }
+    }
+  });
 });

@@ -3,6 +3,8 @@ import { World } from '../src/index.js';
 
 /** Runs `call`, expects `kind` with a message matching `message`, and checks the world did not change. */
 function refuses(world: World, call: () => unknown, kind: typeof TypeError | typeof RangeError, message: RegExp): void {
+  // The snapshot's bytes too: they hold every field of the world, scratch and lazily made columns included.
+  const bytes = world.snapshot();
   const before = { hash: world.stateHash(), bodies: world.bodyCount, shapes: world.shapeCount };
   let thrown: unknown;
   try {
@@ -13,6 +15,7 @@ function refuses(world: World, call: () => unknown, kind: typeof TypeError | typ
   expect(thrown).toBeInstanceOf(kind);
   expect((thrown as Error).message).toMatch(message);
   expect({ hash: world.stateHash(), bodies: world.bodyCount, shapes: world.shapeCount }).toEqual(before);
+  expect(Buffer.from(world.snapshot()).equals(Buffer.from(bytes))).toBe(true);
 }
 
 const square = [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1, y: 1 }, { x: 0, y: 1 }];
@@ -58,6 +61,11 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
     const s = world.addShape(h, { kind: 'circle', radius: 1 });
     world.addShape(h, { kind: 'box', width: 1, height: 1, density: 0, sensor: true });
     refuses(world, () => world.destroyShape(s), RangeError, /needs mass: its shapes would give it mass 0/);
+    // Nor may removing a shape leave a mass the shapes could not have been given.
+    const light = world.createBox({ x: 6, y: 0, width: 1, height: 1 });
+    world.addShape(light, { kind: 'circle', radius: 0.5, density: 1e-300 });
+    refuses(world, () => world.destroyShape(world.getBody(light).shapes[0]), RangeError, new RegExp(`body ${light}'s shapes would give it mass 7.85\\d*e-301, outside \\[1e-100, 1e\\+100\\]`));
+    world.destroyBody(light);
     // Static and kinematic bodies need no mass.
     const k = world.createBox({ x: 0, y: 9, width: 1, height: 1, density: 0, type: 'kinematic' });
     refuses(world, () => world.setType(k, 'dynamic'), RangeError, /needs mass/);
@@ -75,6 +83,18 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
     refuses(world, () => world.getShape(0), RangeError, /is a body or segment handle, not a shape handle/);
     refuses(world, () => world.getBody(s), RangeError, /is a shape handle, not a body handle/);
     refuses(world, () => world.addShape(world.handles()[0], { kind: 'triangle' } as never), RangeError, /kind must be one of/);
+  });
+
+  it('a refused torque or angular impulse on a circle of the circle route makes no rotation columns', () => {
+    const circles = new World();
+    const h = circles.createCircle({ x: 0, y: 0, radius: 1 });
+    refuses(circles, () => circles.applyTorque(h, 1e300), RangeError, /angular acceleration exceed 1e\+100 \(pending torque 1e\+300, inertia 1.5707963267948966\)/);
+    refuses(circles, () => circles.applyAngularImpulse(h, 1e300), RangeError, /angular velocity 6.36\d*e\+299 exceed/);
+    refuses(circles, () => circles.createBox({ x: 0, y: 0, width: 3, height: 3, density: 1e-300 }), RangeError, /mass 9e-300, outside/);
+    expect(circles.views().c.length).toBe(0);
+    // Accepted, the same calls spin it as I w = impulse says.
+    circles.applyAngularImpulse(h, Math.PI / 2);
+    expect(circles.getBody(h).angularVelocity).toBeCloseTo(1, 12);
   });
 
   it('transforms and spins that would break the state', () => {

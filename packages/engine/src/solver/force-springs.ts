@@ -78,12 +78,13 @@ export class ForceSprings {
   before(r: Float64Array, states: Float64Array, step: { h: number }, integrator: IntegratorName, limits: Float64Array): void {
     if (this.count === 0) return;
     if (integrator === 'rk4') this.rungeKutta(r, states, step, limits);
-    else this.euler(r, states, step, integrator === 'explicit-euler');
+    else this.euler(r, states, step, integrator === 'explicit-euler', limits[0]);
   }
 
   /** After the solver moved the bodies: explicit Euler's impulse, Runge-Kutta's position correction. */
-  after(states: Float64Array, integrator: IntegratorName): void {
+  after(states: Float64Array, integrator: IntegratorName, limits: Float64Array): void {
     if (this.count === 0 || integrator === 'semi-implicit-euler') return;
+    const maxSpeed = limits[0];
     const b = this.buffers;
     for (let m = 0; m < this.memberCount; m++) {
       const s = this.members[m] * BODY;
@@ -92,8 +93,8 @@ export class ForceSprings {
         states[s + DPX] += b[at + CORRECT_X];
         states[s + DPY] += b[at + CORRECT_Y];
       } else if (states[s + DYNAMIC] === 1) {
-        states[s + VX] += b[at + AX];
-        states[s + VY] += b[at + AY];
+        states[s + VX] = held(states[s + VX] + b[at + AX], maxSpeed);
+        states[s + VY] = held(states[s + VY] + b[at + AY], maxSpeed);
       }
     }
   }
@@ -123,7 +124,7 @@ export class ForceSprings {
   }
 
   /** One evaluation at the sub-step's start: semi-implicit applies it now, explicit after the move. */
-  private euler(r: Float64Array, states: Float64Array, step: { h: number }, explicit: boolean): void {
+  private euler(r: Float64Array, states: Float64Array, step: { h: number }, explicit: boolean, maxSpeed: number): void {
     const h = step.h;
     const b = this.buffers;
     const n = this.memberCount;
@@ -145,8 +146,8 @@ export class ForceSprings {
         b[at + AX] = dvx;
         b[at + AY] = dvy;
       } else if (states[s + DYNAMIC] === 1) {
-        states[s + VX] += dvx;
-        states[s + VY] += dvy;
+        states[s + VX] = held(states[s + VX] + dvx, maxSpeed);
+        states[s + VY] = held(states[s + VY] + dvy, maxSpeed);
       }
     }
   }
@@ -199,8 +200,8 @@ export class ForceSprings {
           b[at + PY] = b[at + Y0] + ahead * ky;
           const svx = b[at + VX0] + ahead * kvx;
           const svy = b[at + VY0] + ahead * kvy;
-          b[at + SVX] = svx > maxSpeed ? maxSpeed : svx < -maxSpeed ? -maxSpeed : svx;
-          b[at + SVY] = svy > maxSpeed ? maxSpeed : svy < -maxSpeed ? -maxSpeed : svy;
+          b[at + SVX] = held(svx, maxSpeed);
+          b[at + SVY] = held(svy, maxSpeed);
         }
       }
     }
@@ -214,8 +215,8 @@ export class ForceSprings {
       let vy = b[at + VY0];
       if (states[s + DYNAMIC] === 1) {
         // The sub-step adds gravity's h g itself, as for every body.
-        vx += sixth * b[at + SUM_VX] - h * b[at + GX];
-        vy += sixth * b[at + SUM_VY] - h * b[at + GY];
+        vx = held(vx + sixth * b[at + SUM_VX] - h * b[at + GX], maxSpeed);
+        vy = held(vy + sixth * b[at + SUM_VY] - h * b[at + GY], maxSpeed);
         states[s + VX] = vx;
         states[s + VY] = vy;
         vx += h * b[at + GX];
@@ -225,8 +226,8 @@ export class ForceSprings {
       const most = h * maxSpeed;
       const cx = dx - h * vx;
       const cy = dy - h * vy;
-      b[at + CORRECT_X] = cx > most ? most : cx < -most ? -most : cx;
-      b[at + CORRECT_Y] = cy > most ? most : cy < -most ? -most : cy;
+      b[at + CORRECT_X] = held(cx, most);
+      b[at + CORRECT_Y] = held(cy, most);
     }
   }
 
@@ -325,3 +326,12 @@ const SUM_VY = 16;
 const CORRECT_X = 17;
 const CORRECT_Y = 18;
 const MEMBER = 19;
+
+/**
+ * A velocity component held within the soft step's speed limit. A spring too stiff for the step
+ * (or on a body too light for it) gives an increment the joints solved next would overflow on;
+ * held here, the spring blows up within the limit, as every other body does.
+ */
+function held(v: number, most: number): number {
+  return v > most ? most : v < -most ? -most : v;
+}

@@ -273,7 +273,7 @@ export class JointSolver {
 
   /** Each sub-step, once the bodies moved. */
   springsAfter(states: Float64Array): void {
-    this.springs.after(states, this.integrator);
+    this.springs.after(states, this.integrator, this.limits);
   }
 
   /** Each sub-step: the other joints in slot order, then the point distance joints colour by colour. */
