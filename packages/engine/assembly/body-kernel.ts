@@ -7,9 +7,9 @@
 // results are the same bits; the TypeScript stays the general path.
 //
 // Why: these loops touch 4 to 7 columns per body, and in V8's optimized code each typed-array
-// access re-checks its array's map, base and length. Uniform scene, 64,000 bodies, kernel on
-// against off (docs/engine.md): integrate and walls 0.27-0.28 ms against 0.52 + 0.42, the whole
-// step 3.41-3.47 ms against 4.26-4.29.
+// access re-checks its array's map, base and length, so the kernel runs integration and the walls
+// in a fraction of the TypeScript loops' time and shortens the whole step (uniform scene, kernel
+// on against off: docs/engine.md, Numbers).
 
 // TypeCode in src/store/body-types.ts.
 const KINEMATIC: u8 = 2;
@@ -92,7 +92,7 @@ export function bounceOffBox(
  * update reads only that body, so the result is the two passes' bits.
  * A body whose centre lies at least `maxRadius` (the largest radius of any body) from every wall
  * cannot touch one, so its radius is not read: most bodies are far from the walls, and skipping
- * that column's reads took this pass at 1M bodies from 5.8-9.8 to 4.8-6.7 ms (docs/engine.md).
+ * that column's reads shortens this pass (measured at 1M bodies: docs/engine.md, Numbers).
  */
 export function moveInBox(
   xs: usize, ys: usize, vxs: usize, vys: usize, rs: usize, es: usize, types: usize, from: i32, to: i32,

@@ -6,15 +6,14 @@
 //
 // Why WebAssembly for these two loops: in V8's optimized code every typed-array access inside a
 // loop re-checks the array's map, base pointer and length (nothing is hoisted; seen with
-// --print-opt-code), which made them about 2x the same loops in C; here the memory base stays in
-// a register and bounds are checked by guard pages.
-// Measured at 64,000 bodies: bin 1.6-1.7 ms in TS, 0.9 in WebAssembly; scan 2.6-3.1 ms against
-// 1.8-2.1 (C: bin 0.7-0.8, scan 1.6-1.9); the scan then lost its loop-exit mispredictions (see
-// pushOverlaps) and takes 1.06-1.16. SIMD is not used: the scan examines about 2.1 pairs per
+// --print-opt-code), which leaves them well behind the same loops in C; here the memory base
+// stays in a register and bounds are checked by guard pages, and both loops run close to C
+// (measured against TypeScript and C: docs/engine.md, Numbers). The scan also avoids loop-exit
+// mispredictions (see pushOverlaps). SIMD is not used: the scan examines about 2.1 pairs per
 // body (137,000 per step at 64,000 bodies) in ranges of 0 to 3 bodies, so branches rather than
 // arithmetic bound it. Tried: one f64x2 test for each range's two-body head, with the scalar tests
-// only when a lane hits. The scan alone took 0.95-0.96x as long (64k and 1M, same pairs), about
-// 2 % of a step, not worth a module that fails to compile where SIMD is missing.
+// only when a lane hits. It saved a few per cent of the scan alone and less of a step, not worth
+// a module that fails to compile where SIMD is missing.
 //
 // The entry module only gathers the kernel's exports; the code lives in assembly/grid/.
 

@@ -4,11 +4,11 @@ import { cellOf, countOne, jumpWindow, putBody, scatterOne, slotAt } from './com
 
 // Bodies of the last `bin` or `binBanded` whose cell lies far from the previous body's: more than
 // two rows and more than 1/64 of all cells away. It says how scattered the bodies lie in memory
-// against space, which decides the next bin's kind. Two rows alone was too strict: a world created
-// row by row counts 32 % of its bodies as jumps after 1 s of motion and 79 % after 10 s (1M
-// bodies), yet its plain bin stayed the faster (ad-hoc probe alternating both kinds step by step,
-// medians: 29.0 ms against 42.6 at 1 s, 35.7 against 40.8 at 10 s). With the 1/64 window those
-// figures are 0 % and 0.6 %, and a shuffled world's 97 %.
+// against space, which decides the next bin's kind. Two rows alone would be too strict: by that
+// test a world created row by row counts 32 % of its bodies as jumps after 1 s of motion and 79 %
+// after 10 s (1M bodies), yet its plain bin stays the faster (ad-hoc probe alternating both kinds
+// step by step: docs/engine.md, Numbers). With the 1/64 window those figures are 0 % and 0.6 %,
+// and a shuffled world's 97 %.
 let jumpsFound: i32 = 0;
 
 /** The last bin's jumps (see jumpsFound). */
@@ -65,15 +65,15 @@ export function bin(
  *
  * Why: a plain counting sort of a shuffled world counts each body in a random one of millions of
  * cells and writes it to a random place in 28 MB of sorted columns (at 1M bodies): nearly every
- * access misses the caches and the TLB. `uniform` at 1M, this bin alone on prepared inputs: 59 ms
- * shuffled against 16.7 created row by row; banded, 38-42 and 25. Inside a stepping world, which
- * evicts the grid between bins, the gain is smaller: 67.2 ms plain against 53.4 banded, 56.3
- * against 45.9 a second later (ad-hoc probe alternating both kinds step by step, medians of 8).
+ * access misses the caches and the TLB. On `uniform` at 1M, banding speeds up the shuffled bin and
+ * slows the one created row by row; inside a stepping world, which evicts the grid between bins,
+ * the gain is smaller (this bin alone on prepared inputs, and an ad-hoc probe alternating both
+ * kinds step by step: docs/engine.md, Numbers).
  * Tried, and not better: the bin in the last step's cell order (a gather as random as the
- * scatter, 56 ms); buffering 8 bodies per band before writing them out (the band pass rose from 18
- * to 47 ms); a second level, 16 bands each partitioned into fine bands of this size, whose scatter
- * has 64 streams instead of 896 (in the stepping world within the noise of this one: 51.4 / 42.5
- * / 54.2 ms against 50.4 / 50.5 / 59.0). GridKernel.wantsBanded says when to use it.
+ * scatter); buffering 8 bodies per band before writing them out (the band pass grew slower); a
+ * second level, 16 bands each partitioned into fine bands of this size, whose scatter has 64
+ * streams instead of 896 (in the stepping world within the noise of this one).
+ * GridKernel.wantsBanded says when to use it.
  *
  * `bandStart` holds (cells >> bandShift) + 2 int32. `scratch` holds `scratchCapacity` bodies (32
  * bytes each). Returns 0, or, when a band holds more bodies than that, the most any band holds,

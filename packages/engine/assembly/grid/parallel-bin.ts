@@ -5,13 +5,13 @@ import { cellOf, countOne, jumpWindow, scatterOne } from './common';
 // formulas and order as `bin`, so the layout is the serial one.
 //
 // Every thread's count and scatter must find the bodies of its band among all n. Reading all n
-// per thread made those two passes barely faster on two threads than on one (1M bodies: count
-// 2.5 ms against 2.8). So the cells pass also notes each chunk's smallest and largest cell, and
-// the others skip chunks that miss their band and test nothing in chunks wholly inside it. Where
-// bodies lie in space as they lie in memory (created row by row, as scenes and spawners do) each
-// thread then reads about n / threads bodies; in a shuffled world every chunk spans every band
-// and the passes read all n, as before: such worlds take the banded passes instead (bandCounts,
-// partition and sortBand, run by src/parallel/banded-bin.ts).
+// per thread would leave those two passes barely faster on two threads than on one (measured at
+// 1M bodies: docs/engine.md, Numbers). So the cells pass also notes each chunk's smallest and
+// largest cell, and the others skip chunks that miss their band and test nothing in chunks wholly
+// inside it. Where bodies lie in space as they lie in memory (created row by row, as scenes and
+// spawners do) each thread then reads about n / threads bodies; in a shuffled world every chunk
+// spans every band and the passes still read all n: such worlds take the banded passes instead
+// (bandCounts, partition and sortBand, run by src/parallel/banded-bin.ts).
 
 /** Bodies per chunk of `chunkCells`: its entries are 2 int32 (smallest, largest cell) per chunk. */
 const CHUNK_SHIFT = 10;

@@ -27,8 +27,8 @@ export function candidates(): i32 {
  * bodies: NarrowPhase would pass each pair to the circle test alone), each overlapping pair also
  * takes that test here, on the copies in cell order the scan has just read, and only touching
  * pairs are written, as (lo, hi): the narrow-phase's contacts, the same bits, without reading
- * seven body columns at two random slots per pair (1M bodies: 86 ns per pair). `candidates()`
- * then says how many pairs overlapped.
+ * seven body columns at two random slots per pair (their cost at 1M bodies: docs/engine.md).
+ * `candidates()` then says how many pairs overlapped.
  */
 export function scan(
   cellStart: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
@@ -101,10 +101,10 @@ export function scanWindow(
  * `m < to`, and a loop takes the rest. Why: on `uniform` a body's ranges hold 0, 1 or 2 bodies
  * (same row: 50, 44, 6 %; row below: 12, 36, 36 %, 13 % hold 3), so a loop's exit was
  * mispredicted about once per range, while only 2.3 % of the pairs examined overlap, so the one
- * branch left per pair is nearly always predicted. Measured (64,000 bodies, scan alone, same
- * pairs): 1.69-1.79 ms with the plain loop, 1.06-1.16 with a head of 2; 1.11 with 1 on the same
- * row and 2 below, 1.10-1.13 with 2 and 3, 1.28 with 2 and 4; fully branch-free tests (select, a
- * scratch slot for the stores) 1.44-1.53, slower than this. At 1M: 27.9 ms to 16.9. Reading up
+ * branch left per pair is nearly always predicted. Measured (scan alone, same pairs, 64,000 and 1M
+ * bodies: docs/engine.md, Numbers): a head of 2 is much faster than the plain loop; 1 on the same
+ * row and 2 below, or 2 and 3, are no better, 2 and 4 is slower, and fully branch-free tests
+ * (select, a scratch slot for the stores) are slower than this. Reading up
  * to RANGE_HEAD - 1 entries past an array's end stays inside the memory, whose pair buffer comes
  * last, and what is read there is masked off.
  */

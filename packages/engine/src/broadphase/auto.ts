@@ -37,17 +37,18 @@ const RECHOOSE_EVERY = 30;
  * Pairs a grid may examine per body before auto turns to the persistent sweep. A grid holds at
  * most 4n + 64 cells over its extent, which it fits to all but a few bodies (extent-fit.ts), so
  * a few far-away bodies or a huge empty box cost nothing; but two crowds of 10,000 a million
- * units apart still share cells a million units wide, and examined 5,000 pairs per body, 99 ms a
- * step on maxgrid and hgrid against 9 ms on sap-persistent, whose sweep does not depend on the
- * extent. Sparse scenes examine about 2 pairs per body; crowded `mixed` on hgrid stays under 10.
+ * units apart still share cells a million units wide, and examined 5,000 pairs per body, stepping
+ * far slower on maxgrid and hgrid than on sap-persistent, whose sweep does not depend on the extent
+ * (docs/engine.md, Numbers). Sparse scenes examine about 2 pairs per body; crowded `mixed` on
+ * hgrid stays under 10.
  */
 export const EXAMINED_PER_BODY_FOR_SWEEP = 64;
 
 /**
  * How many times fewer pairs the sweep must examine than the grid it replaced, or auto goes back to
- * the grid. A sweep pair costs about twice a grid pair (3,000 circles bursting from one spot, the
- * second step: 2.24 million pairs swept in 108 ms, 2.29 million on maxgrid in 55 ms), and the
- * margin leaves borderline cases on the grid. Two crowds far apart give a factor of about 125.
+ * the grid. A sweep pair costs more than a grid pair (3,000 circles bursting from one spot, the
+ * second step, about 2.3 million pairs on each: docs/engine.md, Numbers), and the margin covers
+ * that and leaves borderline cases on the grid. Two crowds far apart give a factor of about 125.
  */
 const SWEEP_MARGIN = 8;
 

@@ -6,13 +6,11 @@
  * step's threads): from `minBodies` bodies on, when the last bin found more than a quarter of them
  * scattered (see assembly `jumps`), in bands of about `bodiesPerBand` bodies at uniform density.
  * Tests lower both to reach the banded bin with few bodies; not part of the public API.
- * Measured (the bin alone on prepared inputs, `uniform`, shuffled / created row by row): 65,536
- * bodies 1.47 / 0.73 ms plain, 1.60 / 1.29 banded; 250,000: 10.1 / 4.4 plain, 7.0 / 5.5 banded;
- * 1M: 59 / 16.7 plain, 38-42 / 25 banded. Inside a stepping world, which evicts the grid between
- * bins, the shuffled bin gains less (plain against banded, alternating step by step): 100,000
- * bodies 3.1 against 3.1-3.4 ms, 250,000 13.8 against 12.2, 500,000 32.3 against 28.1, 1M 67.2
- * against 53.4. On 2 threads at 1M, whole steps: 81.0 and 74.9 ms plain, 51.9 and 51.8 banded.
- * So it pays only where bodies are scattered, and only above L2-sized grids.
+ * Measured on `uniform`, the bin alone on prepared inputs and whole steps on one thread and two
+ * (docs/engine.md, Numbers): on bodies created row by row the banded bin is the slower at every
+ * size; on shuffled bodies it gains nothing up to about 100,000 and wins from 250,000 on, by less
+ * inside a stepping world, which evicts the grid between bins. So it pays only where bodies are
+ * scattered, and only above L2-sized grids.
  */
 export const bandedBin = { minBodies: 1 << 17, bodiesPerBand: 4096 };
 

@@ -11,8 +11,8 @@ import { SegmentDistance } from './segment-distance.js';
  * few dozen multiply-adds, and clipping the facing edge against that face yields the two-point
  * manifold with stable feature ids that stacking needs. MPR answers "do they overlap", and its
  * portal gives neither an exact depth nor the contact features without more iterations; GJK/EPA
- * reaches the same depth iteratively and still needs the clipping step for two points. For the
- * boxes of the lab's pyramid this takes about 100 ns a pair (docs/engine.md).
+ * reaches the same depth iteratively and still needs the clipping step for two points. What a
+ * pair costs on the boxes of the lab's pyramid is in docs/engine.md, Numbers.
  *
  * 1. For each polygon, the edge along whose normal the other polygon lies farthest out: the
  *    larger of the two is the separation of their cores. Beyond the margin plus both radii, no

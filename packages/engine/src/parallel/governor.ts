@@ -1,4 +1,4 @@
-/** Steps on the threads before the first try of the calling thread alone: the threaded path compiles and warms up over its first dozen steps (30 ms, then 10, 4, 1.3 at 40,000 circles). */
+/** Steps on the threads before the first try of the calling thread alone: the threaded path compiles and warms up over its first dozen steps, which cost many times a settled step (docs/engine.md, Numbers). */
 const FIRST_TRY = 16;
 /** Steps between tries of the mode not in use, after a switch; four times as many after each try that loses. */
 const MIN_INTERVAL = 8;
@@ -19,9 +19,9 @@ const DRIFT = 1.5;
 /**
  * Whether a world with worker threads steps on them or on the calling thread alone, chosen step by
  * step from what the steps cost. On a machine whose cores are busy with other work, a parallel
- * step waits at each of its stages for a worker the scheduler has not run yet (40,000 circles on
- * 2 threads of a 2-core machine under 4 busy processes: 21 ms a step, against 2.2 on one thread);
- * spinning cannot help a thread that is not running. So the governor times every step and, now
+ * step waits at each of its stages for a worker the scheduler has not run yet, and can take many
+ * times as long as the calling thread alone (docs/engine.md, Numbers); spinning cannot help a
+ * thread that is not running. So the governor times every step and, now
  * and then, runs three steps the other way: when the slower of the last two beats the lower
  * quartile of the recent steps, it switches. A try that loses makes the interval to the next four
  * times longer (8, 32, 128, 512, then 1,024 steps), sixteen times after a clear loss (a first

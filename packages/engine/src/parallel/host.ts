@@ -123,13 +123,12 @@ export async function hardwareThreads(): Promise<number> {
 
 /**
  * How long a thread that finished its share polls for the next command before it sleeps, in
- * microseconds. Commands inside a step follow each other within about a millisecond, and waking
- * a sleeping worker (Atomics.waitAsync) costs each stage: 1M bodies on 2 threads spent 0.85-1.1 ms
- * a step (five stages) between the threads' work and the next stage with a 2,000-poll spin, and
- * 0.10-0.14 ms with long polling; whole-step medians, polling on and off in paired rounds, stayed
- * within the host's noise (43.0/44.3, 43.9/44.3, 44.7/48.8, 46.8/43.0 ms). Polling holds a core, though, so where threads
- * outnumber cores (or the count is unknown) it stays a short count of polls: 3 threads on 2 cores
- * at 20k bodies stepped in 20.6 ms with 20,000 polls, 4.2 with 2,000.
+ * microseconds. Commands inside a step usually follow each other within that time, and waking a
+ * sleeping worker (Atomics.waitAsync) costs each stage: long polling cuts the time between the
+ * threads' work and the next stage to a fraction of what a short spin leaves, while whole steps,
+ * polling on and off in paired rounds, stay within the host's noise (docs/engine.md, Numbers).
+ * Polling holds a core, though, so where threads outnumber cores (or the count is unknown) it
+ * stays a short count of polls: there, long polling makes steps several times slower.
  */
 export function spinBudget(threads: number, cores: number): number {
   return cores > 0 && threads <= cores ? SPIN_MICROSECONDS : 0;

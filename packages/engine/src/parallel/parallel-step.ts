@@ -27,9 +27,8 @@ import { finiteNumber } from '../util/validate.js';
 
 /**
  * Worlds with fewer live bodies step on one thread by default: each parallel stage costs a
- * handoff, and below this the handoffs cost more than the shared work saves (measured on 2 cores,
- * uniform scene: 20k bodies 2.3 ms on one thread against 2.9 ms on two; 64k 6.1 against 5.2 ms;
- * 1M 1.5-1.7x faster on two).
+ * handoff, and below this the handoffs cost more than the shared work saves (measured on the
+ * uniform scene, one thread against two: docs/engine.md, Numbers).
  */
 export const DEFAULT_MIN_BODIES = 32_768;
 

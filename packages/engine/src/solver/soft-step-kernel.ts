@@ -8,7 +8,7 @@ import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelM
  * give the same bits as SoftStep's TypeScript loops, which serve wherever WebAssembly or its SIMD
  * is missing, and every other stage of the step works on the same arrays either way.
  *
- * Why: the passes are most of a pile's step (Box2D's pyramid, 5,050 boxes: 8 of its 14 ms), and
+ * Why: the passes are most of a pile's step (Box2D's pyramid, 5,050 boxes: docs/engine.md), and
  * they are arithmetic on two independent constraints at a time, which V8's JIT cannot vectorise.
  */
 
