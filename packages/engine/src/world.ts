@@ -1371,6 +1371,16 @@ export class World {
       out[0] = b.x[slot] + c * lx - sn * ly;
       out[1] = b.y[slot] + sn * lx + c * ly;
     },
+    localPoint: (slot, wx, wy, out) => {
+      const b = this.bodies;
+      const rigid = b.rigid;
+      const c = rigid ? rigid.c[slot] : 1;
+      const sn = rigid ? rigid.s[slot] : 0;
+      const dx = wx - b.x[slot];
+      const dy = wy - b.y[slot];
+      out[0] = c * dx + sn * dy + (rigid ? rigid.localCenterX[slot] : 0);
+      out[1] = -sn * dx + c * dy + (rigid ? rigid.localCenterY[slot] : 0);
+    },
     angle: (slot) => {
       const rigid = this.bodies.rigid;
       return rigid ? atan2(rigid.s[slot], rigid.c[slot]) : 0;

@@ -197,6 +197,21 @@ describe('joints', () => {
     expect(Math.abs(soft.getBody(beam2).angle - sag)).toBeLessThan(1e-3);
   });
 
+  it('a weld with an anchor left out keeps the pose it was made in', () => {
+    for (const omit of ['both', 'anchorA', 'anchorB'] as const) {
+      const world = new World({ gravity: { x: 0, y: 0 } });
+      const a = world.createBox({ x: 0, y: 0, width: 2, height: 2, angle: -0.2 });
+      const b = world.createBox({ x: 1.5, y: 0.5, width: 2, height: 1, angle: 0.3 });
+      const given = { anchorA: { x: 0.75, y: 0.25 }, anchorB: { x: -0.75, y: 0.1 } };
+      world.createJoint({ kind: 'weld', bodyA: a, bodyB: b, ...(omit === 'anchorA' ? { anchorB: given.anchorB } : omit === 'anchorB' ? { anchorA: given.anchorA } : {}) });
+      run(world, 60);
+      const pa = world.getBody(a);
+      const pb = world.getBody(b);
+      expect([pa.x, pa.y, pa.angle], omit).toEqual([expect.closeTo(0, 9), expect.closeTo(0, 9), expect.closeTo(-0.2, 9)]);
+      expect([pb.x, pb.y, pb.angle], omit).toEqual([expect.closeTo(1.5, 9), expect.closeTo(0.5, 9), expect.closeTo(0.3, 9)]);
+    }
+  });
+
   it('a target joint pulls its body to the target and holds it there', () => {
     const world = new World({ gravity: { x: 0, y: 10 } });
     const box = world.createBox({ x: 0, y: 0, width: 1, height: 1, density: 1 });

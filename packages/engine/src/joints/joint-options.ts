@@ -73,7 +73,11 @@ export interface PrismaticJointOptions extends JointBaseOptions {
   dampingRatio?: number | undefined;
 }
 
-/** Glues B to A in its pose when made. Rigid by default; either frequency makes that part a spring. */
+/**
+ * Glues B to A in its pose when made. Rigid by default; either frequency makes that part a
+ * spring. An anchor left out is the other anchor's point in its own body (both left out: A's
+ * centre), so that the bodies stay where they are.
+ */
 export interface WeldJointOptions extends JointBaseOptions {
   kind: 'weld';
   referenceAngle?: number | undefined;
@@ -173,6 +177,8 @@ export interface JointWorld {
   localCenter(slot: number, out: Float64Array): void;
   /** A point given in body `slot`'s frame, in the world. */
   worldPoint(slot: number, x: number, y: number, out: Float64Array): void;
+  /** A point given in the world, in body `slot`'s frame (worldPoint's inverse). */
+  localPoint(slot: number, x: number, y: number, out: Float64Array): void;
   /** Body `slot`'s angle (its rotation's, by the engine's own atan2). */
   angle(slot: number): number;
   isDynamic(slot: number): boolean;
@@ -309,9 +315,20 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     return { kind: JointKind.spring, bodyA: a, bodyB: b, collide, definition: r, ring: null };
   }
   world.localCenter(a, point);
-  const anchorA = o.anchorA === undefined ? { x: point[0], y: point[1] } : vector('anchorA', o.anchorA);
+  let anchorA = o.anchorA === undefined ? { x: point[0], y: point[1] } : vector('anchorA', o.anchorA);
   world.localCenter(b, point);
-  const anchorB = o.anchorB === undefined ? { x: point[0], y: point[1] } : vector('anchorB', o.anchorB);
+  let anchorB = o.anchorB === undefined ? { x: point[0], y: point[1] } : vector('anchorB', o.anchorB);
+  // A weld keeps the pose it is made in: an anchor left out is the other one's point, as it lies
+  // in its own body then (both centres would pull the bodies onto each other).
+  if (kind === 'weld' && o.anchorB === undefined) {
+    world.worldPoint(a, anchorA.x, anchorA.y, pointB);
+    world.localPoint(b, pointB[0], pointB[1], point);
+    anchorB = { x: point[0], y: point[1] };
+  } else if (kind === 'weld' && o.anchorA === undefined) {
+    world.worldPoint(b, anchorB.x, anchorB.y, pointB);
+    world.localPoint(a, pointB[0], pointB[1], point);
+    anchorA = { x: point[0], y: point[1] };
+  }
   r[J.anchorAX] = anchorA.x;
   r[J.anchorAY] = anchorA.y;
   r[J.anchorBX] = anchorB.x;
