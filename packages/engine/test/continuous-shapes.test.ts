@@ -53,6 +53,27 @@ describe('continuous collision with shapes', () => {
     }
   });
 
+  it('a long plank arriving tilted does not swing its far end, then its centre, through the wall it first touched', () => {
+    // Put back where its corner met the wall, the plank turns about that corner in the next
+    // step; the contact held that corner only, so the sweep of its core must hold the rest.
+    for (const dt of [1 / 60, 1 / 120]) {
+      for (const wall of ['box', 'segment'] as const) {
+        for (const angle of [0.3, 0.5, 0.8, 1]) {
+          for (const speed of [50, 100, 200, 400]) {
+            const world = new World({ friction: 0.3, restitution: 0 });
+            if (wall === 'box') world.createBox({ x: 0, y: 0.1, width: 200, height: 0.2, type: 'static' });
+            else world.createSegment({ x1: -100, y1: 0, x2: 100, y2: 0, thickness: 0.1 });
+            const plank = world.createBox({ x: 0.123, y: -3, vy: speed, angle, width: 1, height: 0.1 });
+            for (let s = 0; s < 2 / dt; s++) {
+              world.step(dt);
+              expect(world.getBody(plank).centerY, `${wall}, angle ${angle}, ${speed} m/s, dt ${dt}, step ${s + 1}`).toBeLessThan(0.1);
+            }
+          }
+        }
+      }
+    }
+  });
+
   it('without continuous collision the box tunnels (negative control)', () => {
     const world = new World({ restitution: 0.5, continuous: false });
     world.createBox({ x: 10, y: 0, width: 0.05, height: 10, type: 'static' });

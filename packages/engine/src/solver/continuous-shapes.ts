@@ -8,10 +8,17 @@ import { WorldShape } from '../narrowphase/world-shape.js';
 import { SegmentDistance } from '../narrowphase/segment-distance.js';
 import { SEGMENT_ENTRY, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
 import { grownCapacity } from '../util/grow.js';
-import { impact, sweepRotation, timeOfImpact, type Sweep } from './time-of-impact.js';
+import { impact, sweepRotation, timeOfImpact, TOUCHING, type Sweep } from './time-of-impact.js';
 
 /** A body moving less than this fraction of its smallest extent in a step is left to the contacts (Box2D's safety factor). */
 const SAFETY = 0.5;
+/**
+ * A fast shape that starts the step touching something is swept again as a disc of this fraction
+ * of its body's smallest extent at its centroid (Box2D v3's core fraction): the contact found at
+ * the step's start holds only the points then near, and a long body turning about one of them
+ * could carry its far end, and then its centre, through a thin wall within the step.
+ */
+const CORE = 0.25;
 
 const rotation = new Float64Array(2);
 const other = new WorldShape();
@@ -147,7 +154,7 @@ export class ContinuousShapes {
             restitution = seg.restitution[g];
           }
           if (this.outOfReach(slop + 0.25 * slop)) continue;
-          best = this.earliest(shapes, rigid.firstShape[i], best, slop, restitution);
+          best = this.earliest(shapes, rigid.firstShape[i], best, slop, restitution, CORE * minExtent[i]);
         }
         if (bullet && queries) {
           this.found.length = 0;
@@ -159,7 +166,7 @@ export class ContinuousShapes {
             for (let t = rigid.firstShape[j]; t >= 0; t = shapes.next[t]) {
               if (shapes.sensor[t]) continue;
               other.fromStore(shapes, t, x[j], y[j], c[j], s[j]);
-              best = this.earliest(shapes, rigid.firstShape[i], best, slop, shapes.restitution[t]);
+              best = this.earliest(shapes, rigid.firstShape[i], best, slop, shapes.restitution[t], CORE * minExtent[i]);
             }
           }
         }
@@ -209,10 +216,11 @@ export class ContinuousShapes {
   }
 
   /** The earliest impact of the body's shapes with `other` before `best`, noting where it happened. */
-  private earliest(shapes: ShapeStore, first: number, best: number, slop: number, otherRestitution: number): number {
+  private earliest(shapes: ShapeStore, first: number, best: number, slop: number, otherRestitution: number, core: number): number {
     for (let t = first; t >= 0; t = shapes.next[t]) {
       if (shapes.sensor[t]) continue;
-      const toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop);
+      let toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop);
+      if (toi === TOUCHING) toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, core);
       if (toi >= 0 && toi < best) {
         best = toi;
         this.hitNx = impact.nx;

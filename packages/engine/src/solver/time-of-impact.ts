@@ -37,15 +37,20 @@ export function sweepRotation(sweep: Sweep, t: number, out: Float64Array): void 
 
 const rotation = new Float64Array(2);
 
+/** timeOfImpact's answer when the shapes are already within the target at the sweep's start. */
+export const TOUCHING = -2;
+
 /**
  * The first fraction t in (0, 1) of the sweep at which shape `slot` comes within `target` of the
  * fixed shape `other`, by conservative advancement: at each trial pose, the distance between the
  * shapes (GJK on their cores, less both radii) is divided by a bound on how fast any point of the
  * moving shape can approach along the line between the closest points, and t advances by that
- * much, which can never step past the impact. -1 when there is no impact in the step, or when the
- * shapes are already that close at its start (a resting contact, which the contact solver owns).
+ * much, which can never step past the impact. -1 when there is no impact in the step; TOUCHING
+ * when the shapes are already that close at its start (a contact, which the contact solver owns).
+ * With `core` >= 0 the moving shape is a disc of that radius at the shape's centroid instead
+ * (Box2D v3's fallback for a fast shape that starts the step touching something).
  */
-export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, other: WorldShape, target: number, tolerance: number): number {
+export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, other: WorldShape, target: number, tolerance: number, core = -1): number {
   const dx = sweep.x1 - sweep.x0;
   const dy = sweep.y1 - sweep.y0;
   // The total turn from the chord between the two rotations: 2 asin(chord / 2) <= (pi / 2) chord,
@@ -56,12 +61,20 @@ export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, oth
   let t = 0;
   for (let iteration = 0; iteration < 64; iteration++) {
     sweepRotation(sweep, t, rotation);
-    moving.fromStore(shapes, slot, sweep.x0 + t * dx, sweep.y0 + t * dy, rotation[0], rotation[1]);
+    const px = sweep.x0 + t * dx;
+    const py = sweep.y0 + t * dy;
+    if (core < 0) moving.fromStore(shapes, slot, px, py, rotation[0], rotation[1]);
+    else {
+      const cx = shapes.centroidX[slot];
+      const cy = shapes.centroidY[slot];
+      moving.circle(px + rotation[0] * cx - rotation[1] * cy, py + rotation[1] * cx + rotation[0] * cy, core);
+    }
     distance.compute(moving, other);
     const gap = distance.distance - moving.radius - other.radius;
     const d = distance.distance;
     if (gap < target + tolerance) {
-      if (t === 0 || !(d > 0)) return -1;
+      if (t === 0) return TOUCHING;
+      if (!(d > 0)) return -1;
       impact.nx = (distance.x2 - distance.x1) / d;
       impact.ny = (distance.y2 - distance.y1) / d;
       impact.x = distance.x1 + impact.nx * (moving.radius + gap / 2);
