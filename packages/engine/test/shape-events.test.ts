@@ -56,6 +56,28 @@ describe('events with shapes', () => {
     expect(shapeBegins).toBe(2);
   });
 
+  it('a compound body landing on two of its shapes makes one hit per thing it hits, and a hit per shape pair', () => {
+    // A table whose two legs land at once: on a static box, on a segment, on the box's floor.
+    for (const ground of ['box', 'segment', 'wall'] as const) {
+      const world = new World({ bounds: ground === 'wall' ? { width: 20, height: 10 } : null, gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, hitEventThreshold: 1 });
+      if (ground === 'box') world.createBox({ x: 10, y: 11, width: 20, height: 2, type: 'static' });
+      if (ground === 'segment') world.createSegment({ x1: 0, y1: 10, x2: 20, y2: 10 });
+      const table = world.createBody({ x: 10, y: 8, vy: 6 });
+      world.addShape(table, { kind: 'box', width: 0.2, height: 1, offsetX: -1 });
+      world.addShape(table, { kind: 'box', width: 0.2, height: 1, offsetX: 1 });
+      let hits = 0;
+      let shapeHits = 0;
+      for (let s = 0; s < 60; s++) {
+        world.step(DT);
+        const e = world.contactEvents();
+        hits += ground === 'box' ? e.hitCount : ground === 'segment' ? e.segmentHitCount : e.wallHitCount;
+        shapeHits += e.shapeHitCount;
+      }
+      expect(hits, ground).toBe(1);
+      if (ground !== 'wall') expect(shapeHits, ground).toBe(2);
+    }
+  });
+
   it('segments and the box walls report touches and hits with shapes', () => {
     const world = new World({ bounds: { width: 20, height: 20 }, gravity: { x: 0, y: 10 }, restitution: 0, friction: 0.5, hitEventThreshold: 1 });
     world.createSegment({ x1: 0, y1: 10, x2: 10, y2: 10 });

@@ -115,6 +115,20 @@ class HitList {
     this.speed[this.count++] = speed;
   }
 
+  /**
+   * A hit between a and b, merged with one already noted this step between the same two (a
+   * compound body's shapes each meeting the other), keeping the faster approach. A body's hits
+   * are noted together (contacts come in canonical order), so the search stops at another a.
+   */
+  note(a: number, b: number, speed: number): void {
+    for (let k = this.count - 1; k >= 0 && this.a[k] === a; k--) {
+      if (this.b[k] !== b) continue;
+      if (speed > this.speed[k]) this.speed[k] = speed;
+      return;
+    }
+    this.push(a, b, speed);
+  }
+
   memoryBytes(): number {
     return this.a.byteLength * 3;
   }
@@ -397,13 +411,13 @@ export class ContactEvents implements ContactEventsView {
       }
       if (fastest > 0 && fastest >= hitThreshold) {
         if (b === WORLD) {
-          if (sb >= WALL_ENTRY) this.wallHits.push(bodies.handleOf(a), sb - WALL_ENTRY, fastest);
+          if (sb >= WALL_ENTRY) this.wallHits.note(bodies.handleOf(a), sb - WALL_ENTRY, fastest);
           else {
-            this.segmentHits.push(bodies.handleOf(a), segments.handleOf(sb - SEGMENT_ENTRY), fastest);
+            this.segmentHits.note(bodies.handleOf(a), segments.handleOf(sb - SEGMENT_ENTRY), fastest);
             this.shapeHits.push(shapes.handleOf(sa), segments.handleOf(sb - SEGMENT_ENTRY), fastest);
           }
         } else {
-          this.hits.push(bodies.handleOf(a), bodies.handleOf(b), fastest);
+          this.hits.note(bodies.handleOf(a), bodies.handleOf(b), fastest);
           this.shapeHits.push(shapes.handleOf(sa), shapes.handleOf(sb), fastest);
         }
       }
