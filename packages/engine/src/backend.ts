@@ -37,12 +37,12 @@ export function gridKernelUse(broadphase: string, gridInUse: boolean): KernelUse
   return { running: true, why: `the ${broadphase} broad-phase bins and scans in WebAssembly` };
 }
 
-export function bodyKernelUse(inUse: boolean, bodyCount: number): KernelUse {
+export function bodyKernelUse(inUse: boolean, slotCount: number): KernelUse {
   if (inUse) return { running: true, why: 'the body columns live in kernel memory: motion in a box and the contact buffers run in WebAssembly' };
   if (webAssembly() === null) return { running: false, why: NO_WASM };
   if (!bodyKernelEnabled()) return { running: false, why: 'switched off (setBodyKernelEnabled)' };
   if (bodyKernelModule(false) === null) return { running: false, why: 'the body kernel did not compile in this runtime' };
-  if (bodyCount === 0) return { running: false, why: 'no bodies yet: the columns move into kernel memory with the first' };
+  if (slotCount === 0) return { running: false, why: 'no bodies yet: the columns move into kernel memory with the first' };
   return { running: false, why: 'the body columns were laid out without it: switched off when they last grew, or its memory could not be had (they fall back to plain typed arrays)' };
 }
 

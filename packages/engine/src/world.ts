@@ -884,10 +884,6 @@ export class World {
     this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
     if (this.shapeRoute) {
       if (this.joints !== null) this.beginJointEvents();
-      // Before the solve too: a velocity set since the last step (created, set or given by an
-      // impulse, up to 1e100) would otherwise enter the sub-steps' warm start and solve uncapped,
-      // where a long lever arm (a shape's reach up to 1e50) grows it past the largest double.
-      limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);
       this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion, this.pipeline.events, this.pipeline.settings.solver.hitThreshold);
       limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);
       if (this.joints !== null && this.joints.store.breakable > 0 && dt > 0) this.breakJoints();

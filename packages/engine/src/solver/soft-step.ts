@@ -6,6 +6,7 @@ import { grownCapacity } from '../util/grow.js';
 import { SoftStepKernel } from './soft-step-kernel.js';
 import type { JointSolver } from './joint-solver.js';
 import { BODY, DPX, DPY, DQC, DQS, DYNAMIC, VX, VY, W, makeSoft } from './solver-body.js';
+import { capSpeed } from './speed-limit.js';
 
 // The contact point record's fields as this module's own constants, which V8 folds into the code.
 const { anchorAX: PT_ANCHOR_AX, anchorAY: PT_ANCHOR_AY, anchorBX: PT_ANCHOR_BX, anchorBY: PT_ANCHOR_BY, approachSpeed: PT_APPROACH_SPEED, normalImpulse: PT_NORMAL_IMPULSE, separation: PT_SEPARATION, tangentImpulse: PT_TANGENT_IMPULSE, totalNormalImpulse: PT_TOTAL_NORMAL_IMPULSE } = ContactPoint;
@@ -30,6 +31,9 @@ export interface SoftSettings {
 // pairs, field by field, the two of a pair side by side (lane 0, lane 1), so that a SIMD kernel
 // loads a field of both with one instruction: field F of constraint i is at
 // (i >> 1) * PAIR + (i & 1) + F, which is why every field offset below is even.
+/** gatherBodies' capped velocity. */
+const capped = new Float64Array(2);
+
 const NX = 0;
 const NY = 2;
 const FRICTION = 4;
@@ -151,7 +155,7 @@ export class SoftStep {
 
   solve(bodies: BodyStore, contacts: ContactList, gx: number, gy: number, dt: number, settings: SoftSettings, joints: JointSolver | null): void {
     if (dt === 0) return;
-    this.gatherBodies(bodies);
+    this.gatherBodies(bodies, settings.maxLinearSpeed);
     const substeps = settings.substeps;
     const h = dt / substeps;
     const inverseH = 1 / h;
@@ -222,7 +226,13 @@ export class SoftStep {
     this.pairs = kernel.pairs;
   }
 
-  private gatherBodies(bodies: BodyStore): void {
+  /**
+   * The awake bodies' solver states. A dynamic body set faster than the speed limit since the
+   * last step (created, set or given an impulse, up to 1e100) enters at the limit: the warm start
+   * and solve would otherwise grow that speed through a long lever arm (a shape's reach, up to
+   * 1e50) past the largest double, before integratePositions caps it.
+   */
+  private gatherBodies(bodies: BodyStore, maxLinearSpeed: number): void {
     const { type, asleep, slotCount, vx, vy } = bodies;
     const rigid = bodies.rigid!;
     if (this.index.length < slotCount) {
@@ -246,11 +256,20 @@ export class SoftStep {
     // Body 0: static, sleeping, or the world's shapes.
     states.fill(0, 0, BODY);
     states[DQC] = 1;
+    const maxSq = maxLinearSpeed * maxLinearSpeed;
     for (let k = 0; k < n; k++) {
       const slot = awake[k];
       const b = (k + 1) * BODY;
-      states[b + VX] = vx[slot];
-      states[b + VY] = vy[slot];
+      const x = vx[slot];
+      const y = vy[slot];
+      if (!(x * x + y * y <= maxSq) && type[slot] === TypeCode.dynamic) {
+        capSpeed(x, y, maxLinearSpeed, capped);
+        states[b + VX] = capped[0];
+        states[b + VY] = capped[1];
+      } else {
+        states[b + VX] = x;
+        states[b + VY] = y;
+      }
       states[b + W] = (rigid.flags[slot] & BodyFlag.fixedRotation) !== 0 ? 0 : rigid.angularVelocity[slot];
       states[b + DPX] = 0;
       states[b + DPY] = 0;

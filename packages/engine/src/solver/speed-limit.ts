@@ -1,6 +1,28 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 
+/** limitSpeeds' square of the speed limit, passed to the kernel in an array rather than boxed. */
+const limit = new Float64Array(1);
+
+const capped = new Float64Array(2);
+
+/**
+ * The velocity (x, y), faster than `maxSpeed`, slowed to it in its direction, into out[0], out[1].
+ * By the larger component first, so that a speed whose square would overflow scales too.
+ */
+export function capSpeed(x: number, y: number, maxSpeed: number, out: Float64Array): void {
+  const m = Math.max(Math.abs(x), Math.abs(y));
+  x = (x / m) * maxSpeed;
+  y = (y / m) * maxSpeed;
+  const k = maxSpeed / Math.sqrt(x * x + y * y);
+  if (k < 1) {
+    x *= k;
+    y *= k;
+  }
+  out[0] = x;
+  out[1] = y;
+}
+
 /**
  * Caps every moving dynamic body's speed at `maxSpeed` (keeping its direction) and its spin at
  * `maxSpin`, the last stage of every step. A world's inputs are bounded (util/validate.ts), so a
@@ -8,9 +30,6 @@ import { TypeCode } from '../store/body-types.js';
  * bounded too: a restitution above 1 saturates at the top speed instead of running to infinity,
  * and no NaN follows. Returns how many bodies it slowed. Touches only what it slows.
  */
-/** limitSpeeds' square of the speed limit, passed to the kernel in an array rather than boxed. */
-const limit = new Float64Array(1);
-
 export function limitSpeeds(bodies: BodyStore, maxSpeed: number, maxSpin: number): number {
   const { vx, vy, type, asleep, slotCount } = bodies;
   const spin = bodies.rigid?.angularVelocity ?? null;
@@ -25,22 +44,14 @@ export function limitSpeeds(bodies: BodyStore, maxSpeed: number, maxSpin: number
     from = kernel.firstTooFast(0, slotCount, limit);
   }
   for (let i = from; i < slotCount; i++) {
-    let x = vx[i];
-    let y = vy[i];
+    const x = vx[i];
+    const y = vy[i];
     // The speed first, the body's type only for the rare one too fast: this runs over every body
     // of every step, and two reads a body are half the four.
     if (!(x * x + y * y <= maxSq) && type[i] === TypeCode.dynamic && !asleep[i]) {
-      // By the larger component first, so that a speed whose square would overflow scales too.
-      const m = Math.max(Math.abs(x), Math.abs(y));
-      x = (x / m) * maxSpeed;
-      y = (y / m) * maxSpeed;
-      const k = maxSpeed / Math.sqrt(x * x + y * y);
-      if (k < 1) {
-        x *= k;
-        y *= k;
-      }
-      vx[i] = x;
-      vy[i] = y;
+      capSpeed(x, y, maxSpeed, capped);
+      vx[i] = capped[0];
+      vy[i] = capped[1];
       slowed++;
     }
     if (spin !== null && Math.abs(spin[i]) > maxSpin && type[i] === TypeCode.dynamic && !asleep[i]) {
