@@ -22,10 +22,10 @@ describe('the API reference in the sandbox', () => {
   });
 
   it("is one click from the sandbox's header, at /api/, and leads to World's page", async () => {
-    const { page, errors } = await openPage(browser, '/');
+    const { page, errors } = await openPage(browser, '/', 'dev');
     const link = page.locator('header nav a', { hasText: 'API reference' });
     await expect(link.count()).resolves.toBe(1);
-    await Promise.all([page.waitForURL(sandboxUrl('/api/')), link.click()]);
+    await Promise.all([page.waitForURL(sandboxUrl('/api/', 'dev')), link.click()]);
     await expect(page.title()).resolves.toBe('maxgrid API reference');
     for (const name of ['@maxgrid/engine', '@maxgrid/scenes']) {
       await expect(page.locator('.col-content a', { hasText: name }).count(), name).resolves.toBeGreaterThan(0);
@@ -46,7 +46,7 @@ describe('the API reference in the sandbox', () => {
   });
 
   it('answers /api without the slash with a redirect to it, so that the pages find their assets', async () => {
-    const response = await fetch(sandboxUrl('/api'), { redirect: 'manual' });
+    const response = await fetch(sandboxUrl('/api', 'dev'), { redirect: 'manual' });
     expect(response.status).toBe(301);
     expect(response.headers.get('location')).toBe('/api/');
   });

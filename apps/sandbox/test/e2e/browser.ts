@@ -30,31 +30,34 @@ export async function launchBrowser(): Promise<Browser> {
 }
 
 /**
- * A browser whose first page, `path`, has been open for two seconds and closed: Vite may reload
- * the first page it serves once it has optimised the dependencies (and warms its transform cache
- * on it), which must happen before a test's page loads, not in the middle of it.
+ * A browser whose first page on the dev server, `path`, has been open for two seconds and closed:
+ * Vite may reload the first page it serves once it has optimised the dependencies (and warms its
+ * transform cache on it), which must happen before a test's page loads, not in the middle of it.
  */
 export async function launchWarmedBrowser(path = '/?n=10'): Promise<Browser> {
   const browser = await launchBrowser();
-  const { page } = await openPage(browser, path);
+  const { page } = await openPage(browser, path, 'dev');
   await page.waitForTimeout(2000);
   await page.close();
   return browser;
 }
 
-export function sandboxUrl(path = '/'): string {
-  return inject('sandboxUrl') + path;
+/** Where the global setup serves the sandbox: its production build, or the dev server of `npm start`. */
+export type Server = 'build' | 'dev';
+
+export function sandboxUrl(path = '/', server: Server = 'build'): string {
+  return inject(server === 'dev' ? 'devUrl' : 'sandboxUrl') + path;
 }
 
 /** Opens a page and records console errors and uncaught exceptions, for "no console errors" checks. */
-export async function openPage(browser: Browser, path = '/'): Promise<{ page: Page; errors: string[] }> {
+export async function openPage(browser: Browser, path = '/', server: Server = 'build'): Promise<{ page: Page; errors: string[] }> {
   const page = await browser.newPage({ viewport: { width: 1400, height: 900 }, acceptDownloads: true });
   const errors: string[] = [];
   page.on('console', (message: ConsoleMessage) => {
     if (message.type() === 'error') errors.push(message.text());
   });
   page.on('pageerror', (error) => errors.push(String(error)));
-  await page.goto(sandboxUrl(path), { waitUntil: 'load' });
+  await page.goto(sandboxUrl(path, server), { waitUntil: 'load' });
   return { page, errors };
 }
 

@@ -28,7 +28,7 @@ async function firefoxHashes(wasm: boolean): Promise<Hashes> {
   const page = await browser.newPage();
   try {
     // A same-origin document that loads none of the engine: WebAssembly is removed before it does.
-    await page.goto(sandboxUrl('/package.json'));
+    await page.goto(sandboxUrl('/package.json', 'dev'));
     // A string, not a function: Vitest rewrites import() in this file's functions for Node.
     const json = (await page.evaluate(`(async () => {
       ${wasm ? '' : 'delete globalThis.WebAssembly;'}

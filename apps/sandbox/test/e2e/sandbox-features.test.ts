@@ -1,7 +1,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
 import { join } from 'node:path';
-import { ARTIFACTS, launchWarmedBrowser, openPage, stat } from './browser.js';
+import { ARTIFACTS, launchBrowser, openPage, stat } from './browser.js';
 
 // The engine's features in the 2D sandbox (issue 6): scenes with static shapes, the world-option
 // toggles, the query tools. Read like a user reads the page: labels, shown counts and pixels.
@@ -19,7 +19,7 @@ const BOX_RGB = [0x56, 0xd4, 0xdd];
 let browser: Browser;
 
 beforeAll(async () => {
-  browser = await launchWarmedBrowser();
+  browser = await launchBrowser();
 });
 
 afterAll(async () => {

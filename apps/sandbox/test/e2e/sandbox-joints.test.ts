@@ -2,7 +2,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
 import { join } from 'node:path';
 import { JOINT_RGB } from '../../src/colors.js';
-import { ARTIFACTS, colourfulPixels, launchWarmedBrowser, openPage, pixelsNear, stat } from './browser.js';
+import { ARTIFACTS, colourfulPixels, launchBrowser, openPage, pixelsNear, stat } from './browser.js';
 
 // The sandbox with joints: every joint scene steps and draws its joints in both renderers, the Cut
 // tool destroys the joint clicked (and only it), and the Pin tool pins a body to the world where
@@ -22,7 +22,7 @@ const JOINT_SCENES: Record<string, string> = {
 let browser: Browser;
 
 beforeAll(async () => {
-  browser = await launchWarmedBrowser('/?scene=chain&links=5');
+  browser = await launchBrowser();
 });
 
 afterAll(async () => {

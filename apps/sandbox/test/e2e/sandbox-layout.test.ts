@@ -1,6 +1,6 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
-import { launchWarmedBrowser, openPage, overlayPixels, stat } from './browser.js';
+import { launchBrowser, openPage, overlayPixels, stat } from './browser.js';
 
 // What the page tells a user and where it puts it: the overfill warning, the pause button's name,
 // the controls at a common laptop size, and the grid overlay's extent.
@@ -10,7 +10,7 @@ const POLL = { timeout: 30_000, interval: 100 };
 let browser: Browser;
 
 beforeAll(async () => {
-  browser = await launchWarmedBrowser();
+  browser = await launchBrowser();
 });
 
 afterAll(async () => {

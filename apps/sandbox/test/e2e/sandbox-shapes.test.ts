@@ -1,7 +1,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
 import { join } from 'node:path';
-import { ARTIFACTS, colourfulPixels, launchWarmedBrowser, openPage, overlayPixels, stat } from './browser.js';
+import { ARTIFACTS, colourfulPixels, launchBrowser, openPage, overlayPixels, stat } from './browser.js';
 
 // The sandbox with shapes: every scene draws without console errors in both renderers, shapes are
 // drawn turned, the drag spring pulls a box out of a stack, clicks add shapes, and the contact
@@ -25,7 +25,7 @@ const SMALL: Record<string, string> = {
 let browser: Browser;
 
 beforeAll(async () => {
-  browser = await launchWarmedBrowser('/?scene=pyramid&base=4');
+  browser = await launchBrowser();
 });
 
 afterAll(async () => {

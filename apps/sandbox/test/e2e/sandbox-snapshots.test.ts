@@ -4,7 +4,7 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { World } from '@maxgrid/engine';
 import { buildScene, buildShapeScene } from '@maxgrid/scenes';
-import { ARTIFACTS, launchWarmedBrowser, openPage } from './browser.js';
+import { ARTIFACTS, launchBrowser, openPage } from './browser.js';
 import { decodeSave } from '../../src/save-file.js';
 import { isShapeScene, parseSettings, sceneParams } from '../../src/settings.js';
 import { buildSandboxShapeWorld, buildSandboxWorld } from '../../src/scene-world.js';
@@ -22,7 +22,7 @@ const POLL = { timeout: 30_000, interval: 50 };
 let browser: Browser;
 
 beforeAll(async () => {
-  browser = await launchWarmedBrowser();
+  browser = await launchBrowser();
 });
 
 afterAll(async () => {

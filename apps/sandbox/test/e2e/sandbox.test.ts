@@ -2,7 +2,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Browser, Page } from 'playwright-core';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { ARTIFACTS, colourfulPixels, launchWarmedBrowser, openPage, overlayPixels, stat } from './browser.js';
+import { ARTIFACTS, colourfulPixels, launchBrowser, openPage, overlayPixels, stat } from './browser.js';
 
 // The 2D sandbox, driven like a user would: through labelled controls, the visible statistics and
 // the pixels on screen. Small scenes keep each test quick on a two-core machine.
@@ -15,7 +15,7 @@ const SLIDERS = ['Gravity', 'Elasticity', 'Quantity', 'Size', 'Size noise', 'Vel
 let browser: Browser;
 
 beforeAll(async () => {
-  browser = await launchWarmedBrowser();
+  browser = await launchBrowser();
 });
 
 afterAll(async () => {
