@@ -214,4 +214,31 @@ describe('no NaN or infinity from finite input', () => {
       }
     }
   });
+
+  it('capsules whose cores round to a point (too short for where they lie) meet as circles, finite', () => {
+    const cases = [
+      { x: 1e17, y: 1e17, length: 3 },
+      { x: 1, y: 1, length: 1e-17 },
+    ];
+    for (const solver of ['soft', 'elastic'] as const) {
+      for (const { x, y, length } of cases) {
+        for (const offset of [0, 0.5]) {
+          const world = new World({ solver, gravity: { x: 0, y: 0 } });
+          const a = world.createCapsule({ x, y, length, radius: 0.6 });
+          world.createCapsule({ x: x + offset, y, length, radius: 0.6 });
+          // and one of them against a capsule with a core of its own, across it
+          world.createCapsule({ x, y: y + 0.3, length: 2, radius: 0.2, angle: 1 });
+          for (let s = 0; s < 10; s++) {
+            world.step(1 / 60);
+            try {
+              assertFinite(world, null, { op: 'step', dt: 1 / 60 });
+            } catch (e) {
+              throw new Error(`${solver}, capsules of length ${length} at ${x} offset ${offset}, step ${s + 1}: ${(e as Error).message}`);
+            }
+          }
+          if (x === 1) expect(world.getBody(a).x, `${solver}: pushed apart`).not.toBe(x);
+        }
+      }
+    }
+  });
 });

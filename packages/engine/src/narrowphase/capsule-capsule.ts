@@ -28,13 +28,15 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
   const d1x = q1x - p1x;
   const d1y = q1y - p1y;
   const length1 = Math.sqrt(d1x * d1x + d1y * d1y);
-  const u1x = d1x / length1;
-  const u1y = d1y / length1;
+  // A core too short for its place (length 1e-17 at 1, or 3 at 1e17) rounds to one point: that
+  // capsule is a circle, with no direction of its own, and neither its clip nor its normal below.
+  const u1x = length1 > 0 ? d1x / length1 : 0;
+  const u1y = length1 > 0 ? d1y / length1 : 0;
   const d2x = q2x - p2x;
   const d2y = q2y - p2y;
   const length2 = Math.sqrt(d2x * d2x + d2y * d2y);
-  const u2x = d2x / length2;
-  const u2y = d2y / length2;
+  const u2x = length2 > 0 ? d2x / length2 : 0;
+  const u2y = length2 > 0 ? d2y / length2 : 0;
   // Where B's ends fall along A, and A's along B.
   const fp2 = (p2x - p1x) * u1x + (p2y - p1y) * u1y;
   const fq2 = (q2x - p1x) * u1x + (q2y - p1y) * u1y;
@@ -42,7 +44,7 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
   const fq1 = (q1x - p2x) * u2x + (q1y - p2y) * u2y;
   const outsideA = (fp2 <= 0 && fq2 <= 0) || (fp2 >= length1 && fq2 >= length1);
   const outsideB = (fp1 <= 0 && fq1 <= 0) || (fp1 >= length2 && fq1 >= length2);
-  if (!outsideA && !outsideB && fq2 !== fp2) {
+  if (length1 > 0 && length2 > 0 && !outsideA && !outsideB && fq2 !== fp2) {
     let nx = u1y;
     let ny = -u1x;
     let sp = (p2x - p1x) * nx + (p2y - p1y) * ny;
@@ -88,9 +90,10 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
     nx = dx / dist;
     ny = dy / dist;
   } else {
-    // Crossing segments: push along A's normal, towards B's centre.
-    nx = u1y;
-    ny = -u1x;
+    // Crossing segments: push along A's normal (B's, where A's core is a point; +x where both
+    // are, as for concentric circles), towards B's centre.
+    nx = length1 > 0 ? u1y : length2 > 0 ? u2y : 1;
+    ny = length1 > 0 ? -u1x : length2 > 0 ? -u2x : 0;
     if ((p2x + q2x) / 2 * nx + (p2y + q2y) / 2 * ny < (p1x + q1x) / 2 * nx + (p1y + q1y) / 2 * ny) {
       nx = -nx;
       ny = -ny;
