@@ -197,9 +197,14 @@ export class ShapeRoute {
         this.containPoint(i, width, height);
         continue;
       }
-      bodyBounds(shapes, rigid.firstShape[i], px, py, rigid.c[i], rigid.s[i], bounds);
-      x[i] = px + containShift(bounds[0], bounds[2], width);
-      y[i] = py + containShift(bounds[1], bounds[3], height);
+      // A body thrown far past a wall in one step (1e18 out of a box 100 wide) is first brought to
+      // it: at that distance its own extent and the box's size would round away in the shift, and
+      // leave it on or through the opposite wall.
+      const qx = px < -width || px > 2 * width ? (px < 0 ? 0 : width) : px;
+      const qy = py < -height || py > 2 * height ? (py < 0 ? 0 : height) : py;
+      bodyBounds(shapes, rigid.firstShape[i], qx, qy, rigid.c[i], rigid.s[i], bounds);
+      x[i] = qx + containShift(bounds[0], bounds[2], width);
+      y[i] = qy + containShift(bounds[1], bounds[3], height);
     }
   }
 
