@@ -68,6 +68,25 @@ describe('static segments', () => {
     }
   });
 
+  it('a capsule dropped tilted onto a long thin segment comes to rest lying on it, still', () => {
+    // The floor's line is the one to clip against: with one point the capsule rocks on it.
+    for (const angle of [0.4, 1.2, -0.9]) {
+      const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.3, restitution: 0 });
+      world.createSegment({ x1: -200, y1: 0, x2: 200, y2: 0, thickness: 0.001 });
+      const capsule = world.createCapsule({ x: 0.37, y: -1, angle, length: 0.6, radius: 0.1 });
+      for (let s = 0; s < 180; s++) world.step(1 / 60);
+      const rest = world.getBody(capsule);
+      expect(rest.centerY, `angle ${angle}`).toBeCloseTo(-0.101, 2);
+      expect(Math.abs(Math.sin(rest.angle)), `angle ${angle}`).toBeLessThan(1e-3);
+      for (let s = 0; s < 60; s++) {
+        world.step(1 / 60);
+        const b = world.getBody(capsule);
+        expect(Math.abs(b.angularVelocity), `angle ${angle}, step ${s}`).toBeLessThan(1e-3);
+        expect(Math.abs(b.vy), `angle ${angle}, step ${s}`).toBeLessThan(1e-3);
+      }
+    }
+  });
+
   it('a circle, a box and a capsule come to rest on a thick segment\'s face, its thickness from its core', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0 });
     const thickness = 0.3;

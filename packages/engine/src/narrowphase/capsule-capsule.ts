@@ -5,11 +5,12 @@ import { SegmentDistance } from './segment-distance.js';
 const closest = new SegmentDistance();
 
 /**
- * Two capsules. When each segment's span overlaps the other's along it and B's segment lies on
- * one side of A's line (capsules lying along each other, as in a stack), B's segment is clipped to
- * A's span and gives up to two points with A's normal: one point would let a capsule resting on
- * another rock about it. Otherwise (crossing, or meeting end to side) one point, along the line
- * between the segments' closest points.
+ * Two capsules (a static segment is one, its thickness the radius). When each segment's span
+ * overlaps the other's along it and one segment lies wholly on one side of the other's line
+ * (capsules lying along each other, as in a stack, or a capsule on a floor), that one is clipped
+ * to the other's span and gives two points with the other's normal, as Box2D v3 does: one point
+ * would let a capsule resting on another rock about it. Otherwise (crossing, or meeting end to
+ * side) one point, along the line between the segments' closest points.
  */
 export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _slop: number, m: Manifold): void {
   m.clear();
@@ -44,41 +45,28 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
   const fq1 = (q1x - p2x) * u2x + (q1y - p2y) * u2y;
   const outsideA = (fp2 <= 0 && fq2 <= 0) || (fp2 >= length1 && fq2 >= length1);
   const outsideB = (fp1 <= 0 && fq1 <= 0) || (fp1 >= length2 && fq1 >= length2);
-  if (length1 > 0 && length2 > 0 && !outsideA && !outsideB && fq2 !== fp2) {
-    let nx = u1y;
-    let ny = -u1x;
-    let sp = (p2x - p1x) * nx + (p2y - p1y) * ny;
-    let sq = (q2x - p1x) * nx + (q2y - p1y) * ny;
-    if (sp * sq >= 0) {
-      if (sp + sq < 0) {
-        nx = -nx;
-        ny = -ny;
-        sp = -sp;
-        sq = -sq;
-      }
-      // Clip B's segment to A's span [0, length1] along A.
-      const lower = fp2 < fq2 ? 0 : 1;
-      const fLow = lower === 0 ? fp2 : fq2;
-      const fHigh = lower === 0 ? fq2 : fp2;
-      const sLow = lower === 0 ? sp : sq;
-      const sHigh = lower === 0 ? sq : sp;
-      const tLow = fLow < 0 ? (0 - fLow) / (fHigh - fLow) : 0;
-      const tHigh = fHigh > length1 ? (length1 - fLow) / (fHigh - fLow) : 1;
-      m.normalX = nx;
-      m.normalY = ny;
-      for (let k = 0; k < 2; k++) {
-        const t = k === 0 ? tLow : tHigh;
-        const f = fLow + t * (fHigh - fLow);
-        const separation = sLow + t * (sHigh - sLow) - radius;
-        if (separation >= margin) continue;
-        // On A's line at f, moved out to midway between the surfaces.
-        const along = a.radius + separation / 2;
-        m.x[m.pointCount] = p1x + f * u1x + along * nx;
-        m.y[m.pointCount] = p1y + f * u1y + along * ny;
-        m.separation[m.pointCount] = separation;
-        m.id[m.pointCount++] = k;
-      }
+  if (length1 > 0 && length2 > 0 && !outsideA && !outsideB) {
+    // The reference segment is one the other lies wholly to one side of: A's where it can be,
+    // else B's. A capsule lying on a long segment (a floor) crosses the floor's line only where
+    // the floor is B: there B's line is the one to clip against, or the capsule rocks on one point.
+    const nx = u1y;
+    const ny = -u1x;
+    const sp = (p2x - p1x) * nx + (p2y - p1y) * ny;
+    const sq = (q2x - p1x) * nx + (q2y - p1y) * ny;
+    if (fq2 !== fp2 && sp * sq >= 0) {
+      const flip = sp + sq < 0 ? -1 : 1;
+      clipOnto(m, p1x, p1y, u1x, u1y, length1, fp2, fq2, flip * sp, flip * sq, flip * nx, flip * ny, a.radius, radius, margin, 1, 0);
       if (m.pointCount > 0) return;
+    } else if (fq1 !== fp1) {
+      const mx = u2y;
+      const my = -u2x;
+      const rp = (p1x - p2x) * mx + (p1y - p2y) * my;
+      const rq = (q1x - p2x) * mx + (q1y - p2y) * my;
+      if (rp * rq >= 0) {
+        const flip = rp + rq < 0 ? -1 : 1;
+        clipOnto(m, p2x, p2y, u2x, u2y, length2, fp1, fq1, flip * rp, flip * rq, flip * mx, flip * my, b.radius, radius, margin, -1, 3);
+        if (m.pointCount > 0) return;
+      }
     }
   }
   const dx = closest.x2 - closest.x1;
@@ -107,4 +95,42 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
   m.y[m.pointCount] = closest.y1 + along * ny;
   m.separation[m.pointCount] = separation;
   m.id[m.pointCount++] = 2;
+}
+
+/**
+ * The two-point contact of a capsule lying along a reference segment (from (ox, oy) along the
+ * unit (ux, uy) for `length`): the other segment, whose ends lie at fP and fQ along it and sP and
+ * sQ out along its normal (nx, ny), is clipped to the reference's span; an end closer than
+ * the margin gives a point midway between the surfaces, and so does the other end then
+ * (refRadius is the reference capsule's).
+ * `sign` is 1 where the reference is A, -1 where it is B (the normal then turns to run from A
+ * to B); ids start at idBase.
+ */
+function clipOnto(m: Manifold, ox: number, oy: number, ux: number, uy: number, length: number, fP: number, fQ: number, sP: number, sQ: number, nx: number, ny: number, refRadius: number, radius: number, margin: number, sign: number, idBase: number): void {
+  const lower = fP < fQ ? 0 : 1;
+  const fLow = lower === 0 ? fP : fQ;
+  const fHigh = lower === 0 ? fQ : fP;
+  const sLow = lower === 0 ? sP : sQ;
+  const sHigh = lower === 0 ? sQ : sP;
+  const tLow = fLow < 0 ? (0 - fLow) / (fHigh - fLow) : 0;
+  const tHigh = fHigh > length ? (length - fLow) / (fHigh - fLow) : 1;
+  const separationLow = sLow + tLow * (sHigh - sLow) - radius;
+  const separationHigh = sLow + tHigh * (sHigh - sLow) - radius;
+  // Both points or none, as collidePolygons keeps them: a capsule striking a wall with one end
+  // turns about it, and without a speculative point at its other end the solve swings that
+  // one through.
+  if (separationLow >= margin && separationHigh >= margin) return;
+  m.normalX = sign * nx;
+  m.normalY = sign * ny;
+  for (let k = 0; k < 2; k++) {
+    const t = k === 0 ? tLow : tHigh;
+    const f = fLow + t * (fHigh - fLow);
+    const separation = k === 0 ? separationLow : separationHigh;
+    // On the reference line at f, moved out to midway between the surfaces.
+    const along = refRadius + separation / 2;
+    m.x[m.pointCount] = ox + f * ux + along * nx;
+    m.y[m.pointCount] = oy + f * uy + along * ny;
+    m.separation[m.pointCount] = separation;
+    m.id[m.pointCount++] = idBase + k;
+  }
 }
