@@ -1526,7 +1526,9 @@ export class World {
     const geometry = resolveGeometry(kind, o, new Geometry());
     const shape = resolveMaterial(o, this.materialDefaults(), geometry);
     applyMassOption(o, shape);
-    const mass = shape.density * areaProperties(geometry, massScratch).area;
+    // A mass given is checked as given: the density it becomes, times the area again, can round
+    // a mass at a bound (1e100 on a 3 x 3 box) one unit past it.
+    const mass = o.mass !== undefined ? (o.mass as number) : shape.density * areaProperties(geometry, massScratch).area;
     this.checkMass(-1, mass, body.type !== TypeCode.dynamic);
     this.assertShapeInBox(geometry, body.x, body.y, body.c, body.s, 0, 0);
     if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);

@@ -54,6 +54,21 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
     refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, type: 'static', vx: 3 }), RangeError, /vx of a static body must be 0/);
   });
 
+  it('a mass given at either bound is accepted for any size, though its density times the area rounds past it', () => {
+    const w = new World();
+    for (const mass of [1e100, 1e-100]) {
+      for (const size of [1e-5, 0.1, 0.3, 0.7, 1, 3, 7, 1e5]) {
+        const made = [
+          w.createBox({ x: 0, y: 0, width: size, height: size, mass }),
+          w.createCapsule({ x: 0, y: 0, length: size, radius: size / 3, mass }),
+          w.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: size, y: 0 }, { x: 0, y: size }], mass }),
+          w.createCircle({ x: 0, y: 0, radius: size, mass }),
+        ];
+        for (const h of made) expect(w.getBody(h).mass / mass, `size ${size}`).toBeCloseTo(1, 12);
+      }
+    }
+  });
+
   it('a dynamic body whose shapes have no mass', () => {
     refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, density: 0 }), RangeError, /needs mass/);
     const h = world.createBody({ x: 3, y: 0 });
