@@ -157,23 +157,72 @@ describe('no NaN or infinity from finite input', () => {
     }
   });
 
-  it('joints whose anchors lie as far as allowed from their bodies stay finite (their 2 x 2 systems scaled)', () => {
-    for (const kind of ['revolute', 'weld'] as const) {
-      for (const far of [1e20, 1e77, 1e100]) {
-        const world = new World({ gravity: { x: 0, y: 10 } });
-        const a = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
-        const b = world.createBox({ x: 2, y: 0, width: 1, height: 1 });
-        world.createJoint({ kind, bodyA: a, bodyB: b, anchorA: { x: far, y: far }, anchorB: { x: -far, y: -far } });
-        for (let s = 0; s < 60; s++) {
-          world.step(1 / 60);
-          try {
-            assertFinite(world, null, { op: 'step', dt: 1 / 60 });
-          } catch (e) {
-            throw new Error(`${kind} joint, anchors ${far} out, step ${s + 1}: ${(e as Error).message}`);
+  it('joints of every kind whose anchors lie as far as allowed, on the smallest, lightest and heaviest bodies, stay finite', () => {
+    // Found by an audit: a wheel anchored 1e45 from a unit box, whose effective masses (prepared
+    // from the lever arms at the step's start) went stale as the box turned, and a target joint
+    // whose 2 x 2 determinant squared past the largest double.
+    const kinds = ['distance', 'revolute', 'prismatic', 'weld', 'wheel', 'target'] as const;
+    for (const kind of kinds) {
+      for (const size of [1e-20, 1, 1e6]) {
+        for (const mass of [1e-100, 1, 1e100]) {
+          for (const far of [1e15, 1e45, 1e50]) {
+            const world = new World({ gravity: { x: 0, y: 10 } });
+            const a = world.createBox({ x: 0, y: 0, width: size, height: size, mass, angularVelocity: 1 });
+            const b = world.createBox({ x: 2 * size, y: 0, width: size, height: size, mass });
+            const anchor = { x: 0.6 * far, y: 0.8 * far };
+            if (kind === 'target') world.createJoint({ kind, body: b, target: { x: 0, y: 0 }, anchor });
+            else world.createJoint({ kind, bodyA: a, bodyB: b, anchorB: anchor });
+            for (let s = 0; s < 20; s++) {
+              world.step(1 / 60);
+              try {
+                assertFinite(world, null, { op: 'step', dt: 1 / 60 });
+              } catch (e) {
+                throw new Error(`${kind} joint, bodies ${size} wide of mass ${mass}, anchor ${far} out, step ${s + 1}: ${(e as Error).message}`);
+              }
+            }
           }
         }
       }
     }
+  });
+
+  it('a body spun at up to 1e100 rad/s between steps enters the soft step at its angular limit, joints and all', () => {
+    // Found by the audit: two boxes 1e-20 wide on a wheel joint, one spun at 1e100, whose spin
+    // the joint's first impulses grew past the largest double before the sub-step capped it.
+    for (const kind of ['wheel', 'revolute', 'prismatic', 'weld'] as const) {
+      for (const spin of [1e3, 1e50, 1e100]) {
+        const world = new World();
+        const a = world.createBox({ x: 0, y: 0, width: 1e-20, height: 1e-20, mass: 1, angularVelocity: spin });
+        const b = world.createBox({ x: 2e-20, y: 0, width: 1e-20, height: 1e-20, mass: 1 });
+        world.createJoint({ kind, bodyA: a, bodyB: b });
+        for (let s = 0; s < 10; s++) {
+          world.step(1 / 60);
+          try {
+            assertFinite(world, null, { op: 'step', dt: 1 / 60 });
+          } catch (e) {
+            throw new Error(`${kind} joint, spin ${spin}, step ${s + 1}: ${(e as Error).message}`);
+          }
+        }
+      }
+    }
+  });
+
+  it('a joint anchor farther from its body than a shape may reach (1e50) is refused by name, the world unchanged', () => {
+    const world = new World();
+    const a = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+    const b = world.createBox({ x: 2, y: 0, width: 1, height: 1 });
+    const before = world.snapshot();
+    const far = { x: 0, y: 2e50 };
+    expect(() => world.createJoint({ kind: 'revolute', bodyA: a, bodyB: b, anchorA: far })).toThrow(/anchorA \(0, 2e\+50\) lies 2e\+50 from its body's origin, beyond 1e\+50/);
+    expect(() => world.createJoint({ kind: 'wheel', bodyA: a, bodyB: b, anchorB: far })).toThrow(RangeError);
+    expect(() => world.createJoint({ kind: 'target', body: b, target: { x: 0, y: 0 }, anchor: far })).toThrow(/^anchor \(0, 2e\+50\)/);
+    expect(Buffer.from(world.snapshot()).equals(Buffer.from(before))).toBe(true);
+    // A weld's anchor left out is the other's point in its body: far off where the bodies are far apart.
+    const distant = world.createBox({ x: 1e60, y: 0, width: 1, height: 1 });
+    const withDistant = world.snapshot();
+    expect(() => world.createJoint({ kind: 'weld', bodyA: a, bodyB: distant })).toThrow(/anchorB \(anchorA's point in body B\) \(-1e\+60, 0\)/);
+    expect(Buffer.from(world.snapshot()).equals(Buffer.from(withDistant))).toBe(true);
+    expect(world.jointCount).toBe(0);
   });
 
   it('a velocity set above the speed limit between steps is capped before the solve, where a long lever arm would grow it', () => {

@@ -1,6 +1,6 @@
 import type { Vector } from '../options.js';
 import { flag, vector } from '../options.js';
-import { MAX_MAGNITUDE, boundedNonNegative, boundedNumber, describeValue, finiteNumber, knownKeys, plainObject } from '../util/validate.js';
+import { MAX_MAGNITUDE, MAX_SHAPE_REACH, boundedNonNegative, boundedNumber, describeValue, finiteNumber, knownKeys, plainObject } from '../util/validate.js';
 import { J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind, type JointKindName } from './joint-layout.js';
 
 /** What every joint between two bodies takes. Anchors are in each body's own frame, from its origin. */
@@ -281,6 +281,7 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     const target = vector('target', o.target);
     world.localCenter(b, point);
     const anchor = o.anchor === undefined ? { x: point[0], y: point[1] } : vector('anchor', o.anchor);
+    withinReach('anchor', anchor);
     r[J.anchorBX] = anchor.x;
     r[J.anchorBY] = anchor.y;
     r[J.targetX] = target.x;
@@ -329,6 +330,8 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     world.localPoint(a, pointB[0], pointB[1], point);
     anchorA = { x: point[0], y: point[1] };
   }
+  withinReach(o.anchorA === undefined && kind === 'weld' ? "anchorA (anchorB's point in body A)" : 'anchorA', anchorA);
+  withinReach(o.anchorB === undefined && kind === 'weld' ? "anchorB (anchorA's point in body B)" : 'anchorB', anchorB);
   r[J.anchorAX] = anchorA.x;
   r[J.anchorAY] = anchorA.y;
   r[J.anchorBX] = anchorB.x;
@@ -383,4 +386,15 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
   r[J.axisY] = axis.y;
   range('lowerTranslation', 'upperTranslation', o.lowerTranslation, o.upperTranslation, r);
   return { kind: wheel ? JointKind.wheel : JointKind.prismatic, bodyA: a, bodyB: b, collide, definition: r, ring: null };
+}
+
+/**
+ * A RangeError naming the anchor where it lies farther than MAX_SHAPE_REACH from its body's
+ * origin, the bound shapes have: a joint's lever arm times a body's inverse inertia then stays
+ * far from the largest double in the solve's products.
+ */
+function withinReach(field: string, anchor: Vector): void {
+  const reach = Math.sqrt(anchor.x * anchor.x + anchor.y * anchor.y);
+  if (reach <= MAX_SHAPE_REACH) return;
+  throw new RangeError(`${field} (${anchor.x}, ${anchor.y}) lies ${reach} from its body's origin, beyond ${MAX_SHAPE_REACH} (as a shape may reach, so that the joint's lever arms stay finite)`);
 }

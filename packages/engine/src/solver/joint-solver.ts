@@ -5,7 +5,7 @@ import { ForceSprings } from './force-springs.js';
 import { GasPressure } from './gas-pressure.js';
 import type { IntegratorName } from '../integrate/integrator.js';
 import type { JointStore } from '../joints/joint-store.js';
-import { BODY, makeSoft } from './solver-body.js';
+import { BODY, DYNAMIC, VX, VY, W, makeSoft } from './solver-body.js';
 import type { JointKernel, JointStepContext } from './joints/joint-kernel.js';
 import { distanceJoint } from './joints/distance-joint.js';
 import { isPointDistanceJoint, PointDistanceJoints } from './joints/point-distance-joints.js';
@@ -68,6 +68,50 @@ function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64
   }
 }
 
+/** How many radii of gyration from a body's centre make a lever arm far (see farArms). */
+const FAR_ARM = 1e6;
+
+/**
+ * Whether joint o's lever arms on either body (its anchors' and the centres' distances, bounding
+ * every arm a kind forms) reach more than FAR_ARM of that body's radii of gyration, sqrt(I / m).
+ * The effective masses are prepared once per step, from the arms at its start; such a body,
+ * turned within the step, swings the arm through many times its own size, and the stale mass
+ * then answers a velocity error with an impulse that multiplies it: from a unit box anchored 1e45
+ * out, past the largest double within one sub-step. Those joints' bodies are held within the
+ * speed limits after each of their impulses (holdWithinLimits); no ordinary joint comes near.
+ */
+function farArms(r: Float64Array, o: number): boolean {
+  const arm = Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]) + Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]) + Math.sqrt(r[o + DELTA_CENTER_X] * r[o + DELTA_CENTER_X] + r[o + DELTA_CENTER_Y] * r[o + DELTA_CENTER_Y]);
+  const arm2 = arm * arm;
+  const far2 = FAR_ARM * FAR_ARM;
+  return arm2 * r[o + INV_INERTIA_A] > far2 * r[o + INV_MASS_A] || arm2 * r[o + INV_INERTIA_B] > far2 * r[o + INV_MASS_B];
+}
+
+/** Caps joint o's dynamic bodies at the speed limits (limits[0] linear, limits[1] angular): see farArms. */
+function holdWithinLimits(states: Float64Array, r: Float64Array, o: number, limits: Float64Array): void {
+  holdBody(states, r[o + STATE_A], limits);
+  holdBody(states, r[o + STATE_B], limits);
+}
+
+function holdBody(states: Float64Array, s: number, limits: Float64Array): void {
+  if (states[s + DYNAMIC] !== 1) return;
+  const maxSpeed = limits[0];
+  const maxAngular = limits[1];
+  const vx = states[s + VX];
+  const vy = states[s + VY];
+  const w = states[s + W];
+  if (vx * vx + vy * vy > maxSpeed * maxSpeed) {
+    // Scaled in two steps, so that a speed whose square overflows still comes back finite.
+    const largest = Math.max(Math.abs(vx), Math.abs(vy));
+    const ux = vx / largest;
+    const uy = vy / largest;
+    const ratio = maxSpeed / Math.sqrt(ux * ux + uy * uy);
+    states[s + VX] = ux * ratio;
+    states[s + VY] = uy * ratio;
+  }
+  if (w * w > maxAngular * maxAngular) states[s + W] = w > 0 ? maxAngular : -maxAngular;
+}
+
 /** Wakes every sleeping body of a ring of which some body moves. */
 function wakeRing(bodies: BodyStore, ring: Int32Array): void {
   const { type, asleep } = bodies;
@@ -98,6 +142,8 @@ export class JointSolver {
   private readonly step: JointStepContext = { h: 0, inverseH: 0, soft: new Float64Array(3), spinSoft: new Float64Array(3) };
   /** Live joints some body of which moves this step, in slot order. */
   private active = new Int32Array(0);
+  /** Per active joint, 1 where its lever arms are far (see farArms). */
+  private farArms = new Uint8Array(0);
   private activeCount = 0;
   /** The point distance joints (ropes, jellies, blobs), solved apart in colours; their slots, in slot order. */
   private readonly points = new PointDistanceJoints();
@@ -152,6 +198,7 @@ export class JointSolver {
     makeSoft(SPIN_HERTZ, SPIN_DAMPING, h, step.spinSoft);
     if (this.active.length < store.slotCount) {
       this.active = new Int32Array(Math.max(store.slotCount, 2 * this.active.length));
+      this.farArms = new Uint8Array(this.active.length);
       this.springSlots = new Int32Array(this.active.length);
       this.pressureSlots = new Int32Array(this.active.length);
       this.pointSlots = new Int32Array(this.active.length);
@@ -210,7 +257,10 @@ export class JointSolver {
       }
       this.prepareJoint(bodies, j, o, ia, ib);
       if (store.kind[j] === JointKind.spring) this.springSlots[listed[Listed.springs]++] = j;
-      else this.active[listed[Listed.active]++] = j;
+      else {
+        this.farArms[listed[Listed.active]] = farArms(r, o) ? 1 : 0;
+        this.active[listed[Listed.active]++] = j;
+      }
     }
   }
 
@@ -278,21 +328,25 @@ export class JointSolver {
 
   /** Each sub-step: the other joints in slot order, then the point distance joints colour by colour. */
   warmStart(states: Float64Array): void {
-    const { store, active, activeCount } = this;
+    const { store, active, activeCount, limits, farArms } = this;
     const r = store.record;
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
-      JOINT_KERNELS[store.kind[j]].warmStart(r, j * JOINT_STRIDE, states);
+      const o = j * JOINT_STRIDE;
+      JOINT_KERNELS[store.kind[j]].warmStart(r, o, states);
+      if (farArms[k] === 1) holdWithinLimits(states, r, o, limits);
     }
     this.points.warmStart(states);
   }
 
   solve(states: Float64Array, useBias: boolean): void {
-    const { store, active, activeCount, step } = this;
+    const { store, active, activeCount, step, limits, farArms } = this;
     const r = store.record;
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
-      JOINT_KERNELS[store.kind[j]].solve(r, j * JOINT_STRIDE, states, step, useBias);
+      const o = j * JOINT_STRIDE;
+      JOINT_KERNELS[store.kind[j]].solve(r, o, states, step, useBias);
+      if (farArms[k] === 1) holdWithinLimits(states, r, o, limits);
     }
     this.points.solve(states, useBias);
   }

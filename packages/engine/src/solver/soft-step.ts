@@ -155,7 +155,7 @@ export class SoftStep {
 
   solve(bodies: BodyStore, contacts: ContactList, gx: number, gy: number, dt: number, settings: SoftSettings, joints: JointSolver | null): void {
     if (dt === 0) return;
-    this.gatherBodies(bodies, settings.maxLinearSpeed);
+    this.gatherBodies(bodies, settings.maxLinearSpeed, MAX_ROTATION / dt);
     const substeps = settings.substeps;
     const h = dt / substeps;
     const inverseH = 1 / h;
@@ -227,12 +227,13 @@ export class SoftStep {
   }
 
   /**
-   * The awake bodies' solver states. A dynamic body set faster than the speed limit since the
-   * last step (created, set or given an impulse, up to 1e100) enters at the limit: the warm start
-   * and solve would otherwise grow that speed through a long lever arm (a shape's reach, up to
-   * 1e50) past the largest double, before integratePositions caps it.
+   * The awake bodies' solver states. A dynamic body set faster than the speed limits since the
+   * last step (created, set or given an impulse, up to 1e100; spun up to 1e100 rad/s) enters at
+   * them: the warm start and solve would otherwise grow that speed through a long lever arm (a
+   * shape's reach or a joint's anchor, up to 1e50) past the largest double, before
+   * integratePositions caps it.
    */
-  private gatherBodies(bodies: BodyStore, maxLinearSpeed: number): void {
+  private gatherBodies(bodies: BodyStore, maxLinearSpeed: number, maxAngular: number): void {
     const { type, asleep, slotCount, vx, vy } = bodies;
     const rigid = bodies.rigid!;
     if (this.index.length < slotCount) {
@@ -257,6 +258,7 @@ export class SoftStep {
     states.fill(0, 0, BODY);
     states[DQC] = 1;
     const maxSq = maxLinearSpeed * maxLinearSpeed;
+    const maxAngularSq = maxAngular * maxAngular;
     for (let k = 0; k < n; k++) {
       const slot = awake[k];
       const b = (k + 1) * BODY;
@@ -276,6 +278,13 @@ export class SoftStep {
       states[b + DQC] = 1;
       states[b + DQS] = 0;
       states[b + DYNAMIC] = type[slot] === TypeCode.dynamic ? 1 : 0;
+    }
+    // Its own loop, reading the spin back as a double: merged into the one above, where it is
+    // 0 or a column's value, V8 kept it tagged and boxed it for every body.
+    for (let k = 1; k <= n; k++) {
+      const b = k * BODY;
+      const w = states[b + W];
+      if (w * w > maxAngularSq && states[b + DYNAMIC] === 1) states[b + W] = w > 0 ? maxAngular : -maxAngular;
     }
   }
 

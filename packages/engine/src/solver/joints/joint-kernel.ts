@@ -184,16 +184,9 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
     bx = det * (k22 * cx - k12 * cy);
     by = det * (k11 * cy - k12 * cx);
   } else {
-    // Anchors far from the centres square past the largest double in the determinant: solve the
-    // same system scaled by its largest entry, which leaves the result unchanged.
-    const scale = Math.max(Math.abs(k11), Math.abs(k12), Math.abs(k22));
-    const a = k11 / scale;
-    const b = k12 / scale;
-    const d = k22 / scale;
-    const scaled = a * d - b * b;
-    const inverse = scaled !== 0 ? 1 / (scaled * scale) : 0;
-    bx = inverse * (d * cx - b * cy);
-    by = inverse * (a * cy - b * cx);
+    const block = solveScaledBlock(k11, k12, k22, cx, cy);
+    bx = block[0];
+    by = block[1];
   }
   const px = -massScale * bx - impulseScale * r[o + LINEAR_IMPULSE_X];
   const py = -massScale * by - impulseScale * r[o + LINEAR_IMPULSE_Y];
@@ -205,6 +198,33 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   states[sb + VX] = vBx + mB * px;
   states[sb + VY] = vBy + mB * py;
   states[sb + W] = wB + iB * (rBx * py - rBy * px);
+}
+
+const scaledBlock = new Float64Array(2);
+
+/**
+ * The solution of the symmetric 2x2 system [k11 k12; k12 k22] b = c, for a block whose
+ * determinant is not finite: anchors far from the centres (or a body's inverse inertia near its
+ * bound) square past the largest double there. The same system scaled by its largest entry has
+ * the same solution. Into a reused array: b = (out[0], out[1]). Called on that rare path only,
+ * beside each joint's own finite-determinant arithmetic, whose bits it leaves as they were.
+ */
+export function solveScaledBlock(k11: number, k12: number, k22: number, c1: number, c2: number): Float64Array {
+  const scale = Math.max(Math.abs(k11), Math.abs(k12), Math.abs(k22));
+  if (!(scale < Infinity)) {
+    // An entry past the largest double: the block is stiffer than any impulse can move.
+    scaledBlock[0] = 0;
+    scaledBlock[1] = 0;
+    return scaledBlock;
+  }
+  const a = k11 / scale;
+  const b = k12 / scale;
+  const d = k22 / scale;
+  const scaled = a * d - b * b;
+  const inverse = scaled !== 0 ? 1 / (scaled * scale) : 0;
+  scaledBlock[0] = inverse * (d * c1 - b * c2);
+  scaledBlock[1] = inverse * (a * c2 - b * c1);
+  return scaledBlock;
 }
 
 /** Where a frame keeps the anchors from each centre of mass, in the world now. */

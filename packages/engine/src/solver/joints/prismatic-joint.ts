@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
-import { measureAngle, prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
+import { measureAngle, prepareSpringLimitMotor, solveScaledBlock, type JointKernel } from './joint-kernel.js';
 import { axialLimits, axialSpeed, axialSpring, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame } from './axis-frame.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
@@ -75,9 +75,17 @@ export const prismaticJoint: JointKernel = {
     // Neither body turns: the angle needs no impulse, and the block stays solvable.
     if (k22 === 0) k22 = 1;
     let det = k11 * k22 - k12 * k12;
-    det = det !== 0 ? 1 / det : 0;
-    const b1 = det * (k22 * c1 - k12 * c2);
-    const b2 = det * (k11 * c2 - k12 * c1);
+    let b1: number;
+    let b2: number;
+    if (Number.isFinite(det)) {
+      det = det !== 0 ? 1 / det : 0;
+      b1 = det * (k22 * c1 - k12 * c2);
+      b2 = det * (k11 * c2 - k12 * c1);
+    } else {
+      const block = solveScaledBlock(k11, k12, k22, c1, c2);
+      b1 = block[0];
+      b2 = block[1];
+    }
     const across = -massScale * b1 - impulseScale * r[o + AXIAL_IMPULSE];
     const angular = -massScale * b2 - impulseScale * r[o + ANGULAR_IMPULSE];
     r[o + AXIAL_IMPULSE] += across;
