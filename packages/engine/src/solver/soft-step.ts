@@ -74,6 +74,28 @@ function at(i: number): number {
   return (i >> 1) * PAIR + (i & 1);
 }
 
+/** How many radii of gyration from a body's centre a contact's lever arm may reach (see armScale). */
+const FAR_ARM = 1e6;
+
+/**
+ * 1, or the factor that brings a contact's lever arm (rx, ry) on a body of inverse mass invMass
+ * and inverse inertia invInertia down to FAR_ARM of the body's radii of gyration, sqrt(I / m).
+ * The passes turn an impulse p at the arm r into a spin change invInertia * (r x p), which rounds
+ * by about 1e-16 |r| |p|; the contact's own effective mass knows nothing of that error, and the
+ * next point answers it with an impulse some 1e-16 (r / gyration)^2 times p. Past 1e8 radii that
+ * grows from point to point to infinity within one pass: a deep contact's midpoint, half its
+ * depth from a small body's centre (a 1 x 0.001 box 1e47 inside a spinning box 1e49 wide), took
+ * both to NaN in one step. Within FAR_ARM the factor is below 1e-4. No arm of a lone shape
+ * comes near (a box's corner is under 2 radii out); a compound body with a shape of next to no
+ * mass far out can, and only there is the arm, and the torque its friction and push exert,
+ * shortened, along the same line.
+ */
+function armScale(rx: number, ry: number, invMass: number, invInertia: number): number {
+  const r2 = rx * rx + ry * ry;
+  if (!(r2 * invInertia > FAR_ARM * FAR_ARM * invMass)) return 1;
+  return (FAR_ARM * Math.sqrt(invMass / invInertia)) / Math.sqrt(r2);
+}
+
 /** Colours of the constraint graph, as Box2D's B2_GRAPH_COLOR_COUNT less its overflow; contacts that find none come last. */
 const COLOURS = 23;
 /** Contacts between two moving bodies use the lower colours only, leaving the top ones to static contacts. */
@@ -372,10 +394,12 @@ export class SoftStep {
       for (let p = 0; p < pointCount; p++) {
         const point = (2 * k + p) * POINT_STRIDE;
         const q = c + P + p * POINT;
-        const rAx = contacts.points[point + PT_ANCHOR_AX];
-        const rAy = contacts.points[point + PT_ANCHOR_AY];
-        const rBx = contacts.points[point + PT_ANCHOR_BX];
-        const rBy = contacts.points[point + PT_ANCHOR_BY];
+        const shortA = armScale(contacts.points[point + PT_ANCHOR_AX], contacts.points[point + PT_ANCHOR_AY], mA, iA);
+        const shortB = armScale(contacts.points[point + PT_ANCHOR_BX], contacts.points[point + PT_ANCHOR_BY], mB, iB);
+        const rAx = contacts.points[point + PT_ANCHOR_AX] * shortA;
+        const rAy = contacts.points[point + PT_ANCHOR_AY] * shortA;
+        const rBx = contacts.points[point + PT_ANCHOR_BX] * shortB;
+        const rBy = contacts.points[point + PT_ANCHOR_BY] * shortB;
         constraints[q + RAX] = rAx;
         constraints[q + RAY] = rAy;
         constraints[q + RBX] = rBx;
