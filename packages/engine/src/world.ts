@@ -419,6 +419,7 @@ export class World {
     const s = this.shapes.add(slot, shape);
     if (shape.sensor) this.useEvents();
     this.shapesChanged(slot);
+    this.noteShape(s);
     return this.shapes.store.handleOf(s);
   }
 
@@ -1565,6 +1566,7 @@ export class World {
     if (shape?.sensor) this.useEvents();
     if (body.flags & BodyFlag.bullet) this.shapeRoute!.bullets++;
     this.shapesChanged(slot);
+    if (shape) this.disturbances.note(b, slot);
     return b.handleOf(slot);
   }
 
@@ -1573,6 +1575,38 @@ export class World {
     if (this.bodies.type[slot] === TypeCode.static) this.staticVersion++;
     this.geometryVersion++;
     this.bodies.wake(slot);
+  }
+
+  /**
+   * Notes shape s's bounding circle for the next step's wakeTouching: a static or kinematic body
+   * never moves into a sleeper, so nothing else would wake one that a new shape now overlaps or
+   * supports. The shape's own circle, not its body's: a post added to a long ground wakes the
+   * pile it touches, not every pile on the ground.
+   */
+  private noteShape(s: number): void {
+    const b = this.bodies;
+    if (b.sleepingCount === 0) return;
+    const store = this.shapes.store;
+    const slot = store.body[s];
+    const rigid = b.rigid!;
+    const n = store.vertexCount[s];
+    let mx = 0;
+    let my = 0;
+    for (let i = 0, at = s * SHAPE_STRIDE + SHAPE_VERTICES; i < n; i++, at += VERTEX) {
+      mx += store.record[at];
+      my += store.record[at + 1];
+    }
+    mx /= n;
+    my /= n;
+    let far = 0;
+    for (let i = 0, at = s * SHAPE_STRIDE + SHAPE_VERTICES; i < n; i++, at += VERTEX) {
+      const dx = store.record[at] - mx;
+      const dy = store.record[at + 1] - my;
+      far = Math.max(far, dx * dx + dy * dy);
+    }
+    const c = rigid.c[slot];
+    const sn = rigid.s[slot];
+    this.disturbances.noteCircle(b, b.x[slot] + c * mx - sn * my, b.y[slot] + sn * mx + c * my, Math.sqrt(far) + store.radius[s]);
   }
 
   /** A dynamic body's mass must be > 0; any body's within [1 / MAX_MAGNITUDE, MAX_MAGNITUDE] where it has one, so that no step overflows. */

@@ -63,6 +63,29 @@ describe('island sleeping with shapes', () => {
     expect(right.every((h) => !world.isAwake(h))).toBe(true);
   });
 
+  it('a static shape added into a sleeping pile wakes that pile, whether a new body or a shape on the ground', () => {
+    for (const how of ['addShape', 'addCircle', 'createBox', 'createCapsule'] as const) {
+      const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, sleeping: true });
+      const ground = world.createBox({ x: 0, y: 1, width: 100, height: 2, type: 'static' });
+      const left = [0, 1, 2].map((k) => world.createBox({ x: -10, y: -0.5 - k, width: 1, height: 1 }));
+      const right = [0, 1, 2].map((k) => world.createBox({ x: 10, y: -0.5 - k, width: 1, height: 1 }));
+      for (let s = 0; s < 300; s++) world.step(DT);
+      expect(sleeping(world), how).toBe(6);
+      // A post pushed into the left pile's middle box, from the side (0.2 of overlap).
+      if (how === 'addShape') world.addShape(ground, { kind: 'box', width: 0.4, height: 1, offsetX: -10.5, offsetY: -2.5 });
+      else if (how === 'addCircle') world.addShape(ground, { kind: 'circle', radius: 0.2, offsetX: -10.6, offsetY: -2.5 });
+      else if (how === 'createBox') world.createBox({ x: -10.5, y: -1.5, width: 0.4, height: 1, type: 'static' });
+      else world.createCapsule({ x: -10.5, y: -1.5, length: 0.6, radius: 0.1, angle: Math.PI / 2, type: 'static' });
+      const before = world.getBody(left[1]).x;
+      world.step(DT);
+      expect(left.every((h) => world.isAwake(h)), how).toBe(true);
+      expect(right.every((h) => !world.isAwake(h)), how).toBe(true);
+      for (let s = 0; s < 30; s++) world.step(DT);
+      // and the post pushes the box it overlaps away, to the right
+      expect(world.getBody(left[1]).x, how).toBeGreaterThan(before + 0.01);
+    }
+  });
+
   it('a body resting on a moving kinematic platform stays awake', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.8, restitution: 0, sleeping: true });
     world.createBox({ x: 0, y: 0, width: 10, height: 1, type: 'kinematic', vx: 0.5 });

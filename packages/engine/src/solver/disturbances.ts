@@ -23,12 +23,17 @@ export class Disturbances {
 
   /** Notes body `slot`'s circle as it is now, if anything sleeps. */
   note(bodies: BodyStore, slot: number): void {
+    this.noteCircle(bodies, bodies.x[slot], bodies.y[slot], bodies.radius[slot]);
+  }
+
+  /** Notes the circle at (x, y) of radius r, if anything sleeps. */
+  noteCircle(bodies: BodyStore, x: number, y: number, r: number): void {
     if (bodies.sleepingCount === 0) return;
     if (3 * (this.count + 1) > this.circles.length) this.circles = grow(this.circles, grownCapacity(this.circles.length, 3 * (this.count + 1)));
     const at = 3 * this.count++;
-    this.circles[at] = bodies.x[slot];
-    this.circles[at + 1] = bodies.y[slot];
-    this.circles[at + 2] = bodies.radius[slot];
+    this.circles[at] = x;
+    this.circles[at + 1] = y;
+    this.circles[at + 2] = r;
   }
 
   /** Wakes the sleepers touching a noted circle, then forgets the circles. */
