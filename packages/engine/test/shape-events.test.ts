@@ -118,4 +118,25 @@ describe('events with shapes', () => {
     // It fell straight through: free fall, untouched by the sensor.
     expect(world.getBody(box).vy).toBeCloseTo(10 * 2, 6);
   });
+  it('an overlap ends when its visitor falls asleep, on a static sensor and a kinematic one alike, and begins again when it wakes', () => {
+    for (const type of ['static', 'kinematic'] as const) {
+      const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, sleeping: true });
+      world.createBox({ x: 0, y: 1, width: 20, height: 2, type: 'static' });
+      world.createBox({ x: 0, y: -1, width: 4, height: 2, type, sensor: true });
+      const box = world.createBox({ x: 0, y: -0.5, width: 1, height: 1 });
+      const log: string[] = [];
+      for (let s = 0; s < 300; s++) {
+        world.step(DT);
+        const e = world.contactEvents();
+        for (let k = 0; k < e.sensorBeginCount; k++) log.push(`begin ${s}`);
+        for (let k = 0; k < e.sensorEndCount; k++) log.push(`end ${s}`);
+      }
+      expect(world.isAwake(box), type).toBe(false);
+      expect(log.map((l) => l.split(' ')[0]), type).toEqual(['begin', 'end']);
+      world.applyImpulse(box, 0.01, 0);
+      world.step(DT);
+      const e = world.contactEvents();
+      expect(e.sensorBeginCount, `${type}: again inside once awake`).toBe(1);
+    }
+  });
 });

@@ -361,7 +361,10 @@ export class ShapeNarrowPhase implements PairConsumer {
         const b = this.shapeB.fromPose(shapes, sb, pose, Pose.bx);
         const m = this.manifold;
         if (sensing) {
-          // A sensor reports overlap (any point closer than 0) and takes no contact.
+          // A sensor reports overlap (any point closer than 0) and takes no contact. A sleeping
+          // visitor's overlap ends, as it does with a static sensor, whose pair with a sleeper is
+          // never tested: a moving kinematic sensor would otherwise keep it.
+          if (bodies.asleep[sensorA === 1 ? j : i]) continue;
           collide(a, b, 0, slop, m);
           if (m.pointCount > 0 && (m.separation[0] < 0 || (m.pointCount === 2 && m.separation[1] < 0))) {
             if (sensorA === 1) this.noteSensor(sa, sb);
