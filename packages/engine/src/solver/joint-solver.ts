@@ -5,7 +5,7 @@ import { ForceSprings } from './force-springs.js';
 import { GasPressure } from './gas-pressure.js';
 import type { IntegratorName } from '../integrate/integrator.js';
 import type { JointStore } from '../joints/joint-store.js';
-import { BODY, DYNAMIC, VX, VY, W, makeSoft } from './solver-body.js';
+import { BODY, DYNAMIC, holdState, makeSoft } from './solver-body.js';
 import type { JointKernel, JointStepContext } from './joints/joint-kernel.js';
 import { distanceJoint } from './joints/distance-joint.js';
 import { isPointDistanceJoint, PointDistanceJoints } from './joints/point-distance-joints.js';
@@ -94,22 +94,7 @@ function holdWithinLimits(states: Float64Array, r: Float64Array, o: number, limi
 }
 
 function holdBody(states: Float64Array, s: number, limits: Float64Array): void {
-  if (states[s + DYNAMIC] !== 1) return;
-  const maxSpeed = limits[0];
-  const maxAngular = limits[1];
-  const vx = states[s + VX];
-  const vy = states[s + VY];
-  const w = states[s + W];
-  if (vx * vx + vy * vy > maxSpeed * maxSpeed) {
-    // Scaled in two steps, so that a speed whose square overflows still comes back finite.
-    const largest = Math.max(Math.abs(vx), Math.abs(vy));
-    const ux = vx / largest;
-    const uy = vy / largest;
-    const ratio = maxSpeed / Math.sqrt(ux * ux + uy * uy);
-    states[s + VX] = ux * ratio;
-    states[s + VY] = uy * ratio;
-  }
-  if (w * w > maxAngular * maxAngular) states[s + W] = w > 0 ? maxAngular : -maxAngular;
+  if (states[s + DYNAMIC] === 1) holdState(states, s, limits[0], limits[1]);
 }
 
 /** Wakes every sleeping body of a ring of which some body moves. */

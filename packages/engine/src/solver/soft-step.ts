@@ -5,7 +5,7 @@ import { ContactList, ContactPoint, POINT_STRIDE, WORLD } from '../narrowphase/c
 import { grownCapacity } from '../util/grow.js';
 import { SoftStepKernel } from './soft-step-kernel.js';
 import type { JointSolver } from './joint-solver.js';
-import { BODY, DPX, DPY, DQC, DQS, DYNAMIC, VX, VY, W, makeSoft } from './solver-body.js';
+import { BODY, DPX, DPY, DQC, DQS, DYNAMIC, VX, VY, W, holdState, makeSoft } from './solver-body.js';
 import { capSpeed } from './speed-limit.js';
 
 // The contact point record's fields as this module's own constants, which V8 folds into the code.
@@ -830,24 +830,7 @@ export class SoftStep {
   /** The speed limits integratePositions applies, without moving the bodies. */
   private limitVelocities(maxLinearSpeed: number, maxAngular: number): void {
     const { awakeCount, states } = this;
-    const maxSpeedSq = maxLinearSpeed * maxLinearSpeed;
-    for (let k = 0; k < awakeCount; k++) {
-      const b = (k + 1) * BODY;
-      const vx = states[b + VX];
-      const vy = states[b + VY];
-      const w = states[b + W];
-      const speedSq = vx * vx + vy * vy;
-      if (speedSq > maxSpeedSq) {
-        // Scaled in two steps, so that a speed whose square overflows still comes back finite.
-        const largest = Math.max(Math.abs(vx), Math.abs(vy));
-        const ux = vx / largest;
-        const uy = vy / largest;
-        const ratio = maxLinearSpeed / Math.sqrt(ux * ux + uy * uy);
-        states[b + VX] = ux * ratio;
-        states[b + VY] = uy * ratio;
-      }
-      if (w * w > maxAngular * maxAngular) states[b + W] = w > 0 ? maxAngular : -maxAngular;
-    }
+    for (let k = 0; k < awakeCount; k++) holdState(states, (k + 1) * BODY, maxLinearSpeed, maxAngular);
   }
 
   /** A fixed rotation's spin is 0 throughout (gatherBodies, integrateVelocities), and its inertia infinite. */

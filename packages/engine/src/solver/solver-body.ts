@@ -28,3 +28,23 @@ export function makeSoft(hertz: number, zeta: number, h: number, out: Float64Arr
   out[at + 1] = a2 * a3;
   out[at + 2] = a3;
 }
+
+/**
+ * Caps the state row at s within the speed limits, keeping the velocity's direction: an impulse
+ * a long lever arm multiplied enters the next pass within them. Scaled in two steps, so that a
+ * speed whose square overflows still comes back finite.
+ */
+export function holdState(states: Float64Array, s: number, maxSpeed: number, maxAngular: number): void {
+  const vx = states[s + VX];
+  const vy = states[s + VY];
+  const w = states[s + W];
+  if (vx * vx + vy * vy > maxSpeed * maxSpeed) {
+    const largest = Math.max(Math.abs(vx), Math.abs(vy));
+    const ux = vx / largest;
+    const uy = vy / largest;
+    const ratio = maxSpeed / Math.sqrt(ux * ux + uy * uy);
+    states[s + VX] = ux * ratio;
+    states[s + VY] = uy * ratio;
+  }
+  if (w * w > maxAngular * maxAngular) states[s + W] = w > 0 ? maxAngular : -maxAngular;
+}
