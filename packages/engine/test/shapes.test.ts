@@ -240,6 +240,39 @@ describe('contact points', () => {
     }
   });
 
+  it('a rounded core exactly as long as the face it meets lands on two points, level, and a frictionless impact on it gives no spin', () => {
+    // Parallel edges of the same length, ends lined up: their nearest points are their vertices
+    // exactly, in doubles, as for two corners meeting; one point there tipped them.
+    const tops = [
+      { what: 'capsule 1 on a box 1 wide', width: 1, make: (w: World) => w.createCapsule({ x: 0, y: -0.7, length: 1, radius: 0.2 }) },
+      { what: 'capsule 2 on a box 2 wide', width: 2, make: (w: World) => w.createCapsule({ x: 0, y: -0.7, length: 2, radius: 0.2 }) },
+      { what: 'rounded box, core 1, on a box 1 wide', width: 1, make: (w: World) => w.createBox({ x: 0, y: -0.7, width: 1.2, height: 1.2, radius: 0.1 }) },
+    ];
+    for (const { what, width, make } of tops) {
+      const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0 });
+      world.createBox({ x: 0, y: 0.5, width, height: 1, type: 'static' });
+      const top = make(world);
+      let tilt = 0;
+      for (let s = 0; s < 300; s++) {
+        world.step(1 / 60);
+        tilt = Math.max(tilt, Math.abs(world.getBody(top).angle));
+        if (world.stats.contacts > 0) expect(world.contactPoints().count, `${what}, step ${s}`).toBe(2);
+      }
+      expect(tilt, what).toBeLessThan(2e-3);
+      expect(Math.abs(world.getBody(top).x), what).toBeLessThan(2e-3);
+    }
+    // A 3 kg box at 4 m/s meets a 1 kg upright capsule as long as its face at -2 m/s, e = 0.3:
+    // v = (3 * 4 + 1 * -2 - 1 * 0.3 * 6) / 4 = 2.05 and 2.05 + 0.3 * 6 = 3.85, neither turning.
+    const world = new World({ restitution: 0.3, friction: 0 });
+    const box = world.createBox({ x: 0, y: 0.1, width: 1, height: 1, mass: 3, vx: 4 });
+    const capsule = world.createCapsule({ x: 0.75, y: 0.1, length: 1, radius: 0.2, angle: Math.PI / 2, mass: 1, vx: -2 });
+    for (let s = 0; s < 10; s++) world.step(1 / 60);
+    expect(world.getBody(box).vx).toBeCloseTo(2.05, 9);
+    expect(world.getBody(capsule).vx).toBeCloseTo(3.85, 9);
+    expect(Math.abs(world.getBody(capsule).angularVelocity)).toBeLessThan(1e-9);
+    expect(Math.abs(world.getBody(box).angularVelocity)).toBeLessThan(1e-9);
+  });
+
   it('touching circles have one point midway between their surfaces, the normal from the first to the second', () => {
     const world = new World();
     world.createCircle({ x: 0, y: 0, radius: 1 });

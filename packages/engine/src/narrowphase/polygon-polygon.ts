@@ -21,8 +21,8 @@ import { SegmentDistance } from './segment-distance.js';
  *    that near ties keep their choice and the ids stay stable from step to step); the incident
  *    edge is the other polygon's edge facing it most directly.
  * 3. Cores apart by more than a tenth of the slop whose nearest features are two vertices (corners
- *    meeting, or rounded corners, where the face normal would be wrong): one point along the line
- *    between them.
+ *    meeting, or rounded corners, where the face normal would be wrong), the incident one more than
+ *    that beyond the reference edge's end (see beyondEnd): one point along the line between them.
  * 4. Otherwise the incident edge is clipped to the reference face's span: two points, each
  *    midway between the surfaces. Both are kept even when one lies beyond the margin, as Box2D
  *    keeps them: a box meeting a thin wall corner first at speed turns about that corner, and
@@ -30,6 +30,21 @@ import { SegmentDistance } from './segment-distance.js';
  *
  * A capsule is a two-point polygon here, its two edges the two sides of its segment.
  */
+/**
+ * Whether the line (dx, dy) from the reference edge's nearest vertex (v11 where f1 is 0, v12
+ * where it is 1) to the incident vertex leaves that edge's end by more than a tenth of the slop,
+ * along the edge: a true corner meeting. Parallel edges of the same length whose ends line up
+ * (a capsule of length 1 on a box 1 wide, a box with a rounded core as wide as the face below)
+ * have their nearest points at the vertices too, exactly, in doubles, with the line between them
+ * along the normal: they meet face to face, and take two clipped points, or they rock on one.
+ */
+function beyondEnd(v11x: number, v11y: number, v12x: number, v12y: number, dx: number, dy: number, f1: number, slop: number): boolean {
+  const tx = v12x - v11x;
+  const ty = v12y - v11y;
+  const along = (dx * tx + dy * ty) / Math.sqrt(tx * tx + ty * ty);
+  return f1 === 0 ? along < -0.1 * slop : along > 0.1 * slop;
+}
+
 export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, slop: number, m: Manifold): void {
   m.clear();
   const radius = a.radius + b.radius;
@@ -78,7 +93,7 @@ export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, sl
     edges.computeEdges(ref, i11, i12, inc, i21, i22);
     const f1 = edges.fraction1;
     const f2 = edges.fraction2;
-    if ((f1 === 0 || f1 === 1) && (f2 === 0 || f2 === 1)) {
+    if ((f1 === 0 || f1 === 1) && (f2 === 0 || f2 === 1) && beyondEnd(v11x, v11y, v12x, v12y, edges.x2 - edges.x1, edges.y2 - edges.y1, f1, slop)) {
       // Vertex against vertex.
       const distance = Math.sqrt(edges.distanceSquared);
       const gap = distance - radius;
