@@ -572,7 +572,7 @@ export class World {
       vy: b.vy[s],
       angularVelocity: rigid ? rigid.angularVelocity[s] : 0,
       mass: b.mass[s],
-      inertia: rigid ? rigid.inertia[s] : (b.mass[s] * b.radius[s] * b.radius[s]) / 2,
+      inertia: (flags & BodyFlag.fixedRotation) !== 0 ? 0 : rigid ? rigid.inertia[s] : (b.mass[s] * b.radius[s] * b.radius[s]) / 2,
       centerX: b.x[s],
       centerY: b.y[s],
       type: typeName(b.type[s]),

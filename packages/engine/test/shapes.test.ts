@@ -99,6 +99,18 @@ describe('bodies and shapes', () => {
       expect(world.getBody(triangle).inertia).toBeCloseTo((0.5 * 2) / 18, 12);
     }
   });
+  it('a fixed rotation reports inertia 0, as documented, and its own again when it may turn', () => {
+    const world = new World();
+    const fixed = world.createBox({ x: 0, y: 0, width: 1, height: 2, fixedRotation: true });
+    const capsule = world.createCapsule({ x: 5, y: 0, length: 1, radius: 0.2, fixedRotation: true });
+    expect(world.getBody(fixed).inertia).toBe(0);
+    expect(world.getBody(capsule).inertia).toBe(0);
+    world.setFixedRotation(fixed, false);
+    expect(world.getBody(fixed).inertia).toBeCloseTo((2 * (1 + 4)) / 12, 12);
+    world.setFixedRotation(fixed, true);
+    expect(world.getBody(fixed).inertia).toBe(0);
+  });
+
   it('an offset circle shape sits off the origin, and the body turns about its centre of mass', () => {
     const world = new World();
     const h = world.createBody({ x: 0, y: 0, angularVelocity: 1 });
