@@ -153,7 +153,7 @@ export interface CircleOptions {
   mask?: number | undefined;
   /** Multiplies the world's gravity for this body. Default 1. */
   gravityScale?: number | undefined;
-  /** Velocity decays as v / (1 + dt * linearDamping) each step, as in Box2D. Default 0. */
+  /** Velocity decays as v / (1 + h * linearDamping) over each solver step h, as in Box2D v3: the step's dt on the circle route, each of its sub-steps (dt / substeps) on the shape route. Default 0. */
   linearDamping?: number | undefined;
   /** Coulomb friction. Default: the world's `friction`. Above 0 the world takes the shape route. */
   friction?: number | undefined;
@@ -165,7 +165,7 @@ export interface CircleOptions {
   angle?: number | undefined;
   /** Radians per second. Default 0. */
   angularVelocity?: number | undefined;
-  /** Default 0. */
+  /** Angular velocity decays likewise (see linearDamping). Default 0. */
   angularDamping?: number | undefined;
   /** Default false. */
   fixedRotation?: boolean | undefined;

@@ -162,6 +162,22 @@ describe('bodies and shapes', () => {
     expect(world.getBody(h).angularVelocity).toBe(0);
   });
 
+  it('damping divides the velocity by 1 + h c over each solver step h: the step on the circle route, each sub-step on the shape route', () => {
+    const c = 2;
+    const circles = new World();
+    const ball = circles.createCircle({ x: 0, y: 0, radius: 0.5, vx: 10, linearDamping: c });
+    for (const substeps of [1, 4, 8]) {
+      const world = new World({ substeps });
+      const box = world.createBox({ x: 0, y: 0, width: 1, height: 1, vx: 10, angularVelocity: 3, linearDamping: c, angularDamping: c });
+      for (let s = 0; s < 60; s++) world.step(1 / 60);
+      const factor = (1 + c / (60 * substeps)) ** (-60 * substeps);
+      expect(world.getBody(box).vx / 10, `${substeps} sub-steps`).toBeCloseTo(factor, 12);
+      expect(world.getBody(box).angularVelocity / 3, `${substeps} sub-steps`).toBeCloseTo(factor, 12);
+    }
+    for (let s = 0; s < 60; s++) circles.step(1 / 60);
+    expect(circles.getCircle(ball).vx / 10).toBeCloseTo((1 + c / 60) ** -60, 12);
+  });
+
   it('kinetic energy counts the spin, and angular momentum counts orbit and spin', () => {
     const world = new World();
     const h = world.createBox({ x: 2, y: 0, width: 1, height: 1, vy: 3, angularVelocity: 4 });

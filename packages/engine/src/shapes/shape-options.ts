@@ -27,7 +27,7 @@ export interface BodyOptions {
   bullet?: boolean | undefined;
   /** Multiplies the world's gravity for this body. Default 1. */
   gravityScale?: number | undefined;
-  /** Velocity decays as v / (1 + dt * linearDamping) each step, as in Box2D. Default 0. */
+  /** Velocity decays as v / (1 + h * linearDamping) over each solver step h, as in Box2D v3: the step's dt on the circle route, each of its sub-steps (dt / substeps) on the shape route. Default 0. */
   linearDamping?: number | undefined;
   /** Angular velocity decays likewise. Default 0. */
   angularDamping?: number | undefined;
