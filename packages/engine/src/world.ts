@@ -351,6 +351,8 @@ export class World {
       this.bodies.setMass(slot, body.mass, (body.mass * body.radius * body.radius) / 2);
       if (spin.angularVelocity !== 0) this.turning = true;
     }
+    // A sleeper it overlaps wakes at the next step (nothing else would wake one under a static circle).
+    this.disturbances.note(this.bodies, slot);
     return this.bodies.handleOf(slot);
   }
 

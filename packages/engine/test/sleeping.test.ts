@@ -173,6 +173,21 @@ describe('sleeping (report 3.1.4.1, 5.3.3)', () => {
     expect(Math.hypot(a.x - 16, a.y - 95)).toBeGreaterThanOrEqual(10 - 0.05 - 1e-9);
   });
 
+  it('a static circle created overlapping a sleeper wakes it, and it is pushed out; a sleeper it does not touch sleeps on', () => {
+    const world = new World({ bounds: { width: 100, height: 100 }, gravity: { x: 0, y: 300 }, restitution: 0, restitutionThreshold: 10, sleeping: true, sleepSpeed: 40 });
+    const near = world.createCircle({ x: 20, y: 95, radius: 5 });
+    const far = world.createCircle({ x: 80, y: 95, radius: 5 });
+    for (let s = 0; s < 200; s++) world.step(1 / 60);
+    expect(world.isAwake(near) || world.isAwake(far)).toBe(false);
+    world.createCircle({ x: 26, y: 95, radius: 3, type: 'static' });
+    world.step(1 / 60);
+    expect(world.isAwake(near)).toBe(true);
+    expect(world.isAwake(far)).toBe(false);
+    for (let s = 0; s < 30; s++) world.step(1 / 60);
+    const a = world.getCircle(near);
+    expect(Math.hypot(a.x - 26, a.y - 95)).toBeGreaterThanOrEqual(8 - 0.05);
+  });
+
   it('sleepTime 0: a still body sleeps after one slow step, a moving one never', () => {
     const world = new World({ sleeping: true, sleepTime: 0 });
     const fast = world.createCircle({ x: 0, y: 0, radius: 1, vx: 300 });
