@@ -483,13 +483,39 @@ export class World {
     if (!this.segments.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} segments at once (handles encode the slot in 24 bits)`);
     if (segment.friction > 0) this.engage();
     this.staticVersion++;
-    return this.segments.add(segment);
+    const handle = this.segments.add(segment);
+    this.noteSegment(this.segmentSlot(handle));
+    return handle;
   }
 
   /** Removes a static segment; a stale or unknown handle throws a RangeError. */
   destroySegment(handle: number): void {
-    this.segments.remove(this.segmentSlot(handle));
+    const slot = this.segmentSlot(handle);
+    this.noteSegment(slot);
+    this.segments.remove(slot);
     this.staticVersion++;
+  }
+
+  /**
+   * Notes segment `slot` for the next step's wakeTouching, as circles along it each about the
+   * size of the widest body (at most 64): a sleeper it now crosses, or that rested on it, wakes,
+   * and one asleep elsewhere along a long floor does not.
+   */
+  private noteSegment(slot: number): void {
+    const b = this.bodies;
+    if (b.sleepingCount === 0) return;
+    const g = this.segments;
+    const ax = g.ax[slot];
+    const ay = g.ay[slot];
+    const dx = g.bx[slot] - ax;
+    const dy = g.by[slot] - ay;
+    const length = Math.sqrt(dx * dx + dy * dy);
+    const pieces = Math.min(64, Math.max(1, Math.ceil(length / (2 * (g.thickness[slot] + b.maxRadius())))));
+    const reach = length / (2 * pieces) + g.thickness[slot];
+    for (let k = 0; k < pieces; k++) {
+      const t = (k + 0.5) / pieces;
+      this.disturbances.noteCircle(b, ax + t * dx, ay + t * dy, reach);
+    }
   }
 
   /** A segment as created, with every default filled in. */

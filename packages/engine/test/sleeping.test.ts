@@ -188,6 +188,31 @@ describe('sleeping (report 3.1.4.1, 5.3.3)', () => {
     expect(Math.hypot(a.x - 26, a.y - 95)).toBeGreaterThanOrEqual(8 - 0.05);
   });
 
+  it('a segment created through a sleeper, or destroyed under one, wakes it; a sleeper elsewhere along the segment sleeps on', () => {
+    for (const friction of [0, 0.5]) {
+      const setup = () => {
+        const world = new World({ gravity: { x: 0, y: 10 }, restitution: 0, sleeping: true, friction });
+        const floor = world.createSegment({ x1: -50, y1: 0, x2: 50, y2: 0 });
+        const left = world.createCircle({ x: -40, y: -0.5, radius: 0.5 });
+        const right = world.createCircle({ x: 40, y: -0.5, radius: 0.5 });
+        for (let s = 0; s < 400; s++) world.step(1 / 60);
+        expect(world.isAwake(left) || world.isAwake(right), `friction ${friction}`).toBe(false);
+        return { world, floor, left, right };
+      };
+      const created = setup();
+      created.world.createSegment({ x1: -39.7, y1: -2, x2: -39.7, y2: 0 });
+      created.world.step(1 / 60);
+      expect(created.world.isAwake(created.left), `friction ${friction}: crossed`).toBe(true);
+      expect(created.world.isAwake(created.right), `friction ${friction}: far along the floor`).toBe(false);
+      const destroyed = setup();
+      const y = destroyed.world.getBody(destroyed.left).y;
+      destroyed.world.destroySegment(destroyed.floor);
+      for (let s = 0; s < 30; s++) destroyed.world.step(1 / 60);
+      expect(destroyed.world.getBody(destroyed.left).y, `friction ${friction}: falls once its floor is gone`).toBeGreaterThan(y + 1);
+      expect(destroyed.world.getBody(destroyed.right).y, `friction ${friction}: falls once its floor is gone`).toBeGreaterThan(y + 1);
+    }
+  });
+
   it('sleepTime 0: a still body sleeps after one slow step, a moving one never', () => {
     const world = new World({ sleeping: true, sleepTime: 0 });
     const fast = world.createCircle({ x: 0, y: 0, radius: 1, vx: 300 });
