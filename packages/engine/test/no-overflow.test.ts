@@ -296,6 +296,20 @@ describe('no NaN or infinity from finite input', () => {
     expect(cases).toBeGreaterThan(100);
   });
 
+  it('a capsule offset so far from its body origin that its core rounds to a point has the mass of the disc it collides as, finite', () => {
+    for (const offset of [1e15, 1e16, 1e17, 1e20, 6.4e19]) {
+      const world = new World({ solver: 'soft' });
+      const body = world.createBody({ x: 0, y: 0 });
+      world.addShape(body, { kind: 'capsule', length: 2, radius: 1, offsetX: offset });
+      const b = world.getBody(body);
+      expect(Number.isFinite(b.inertia) && Number.isFinite(b.centerX), `offset ${offset}`).toBe(true);
+      // Its core's ends 1 from the middle: apart at 1e15, one point from 1e16 on (a disc, pi r^2).
+      expect(b.mass, `offset ${offset}`).toBeCloseTo(offset < 1e16 ? Math.PI + 4 : Math.PI, 9);
+      world.step(1 / 60);
+      assertFinite(world, null, { op: 'step', dt: 1 / 60 });
+    }
+  });
+
   it('capsules whose cores round to a point (too short for where they lie) meet as circles, finite', () => {
     const cases = [
       { x: 1e17, y: 1e17, length: 3 },

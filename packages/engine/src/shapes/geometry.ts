@@ -284,8 +284,13 @@ export function areaProperties(g: Geometry, out: AreaProperties): AreaProperties
     const ex = bx - ax;
     const ey = by - ay;
     const length = Math.sqrt(ex * ex + ey * ey);
-    moments.addSector(bx, by, ex / length, ey / length, r, Math.PI, 1);
-    moments.addSector(ax, ay, -ex / length, -ey / length, r, Math.PI, 1);
+    // A core offset so far from its body's origin that its ends round to one point (length 2 at
+    // 1e16) has no direction of its own: its normal still has one, and the two half discs make
+    // the disc it collides as.
+    const ux = length > 0 ? ex / length : -g.ny[0];
+    const uy = length > 0 ? ey / length : g.nx[0];
+    moments.addSector(bx, by, ux, uy, r, Math.PI, 1);
+    moments.addSector(ax, ay, -ux, -uy, r, Math.PI, 1);
     return moments.write(out);
   }
   for (let i = 0; i < n; i++) {
