@@ -73,15 +73,17 @@ const FAR_ARM = 1e6;
 
 /**
  * Whether joint o's lever arms on either body (its anchors' and the centres' distances, bounding
- * every arm a kind forms) reach more than FAR_ARM of that body's radii of gyration, sqrt(I / m).
- * The effective masses are prepared once per step, from the arms at its start; such a body,
- * turned within the step, swings the arm through many times its own size, and the stale mass
- * then answers a velocity error with an impulse that multiplies it: from a unit box anchored 1e45
- * out, past the largest double within one sub-step. Those joints' bodies are held within the
- * speed limits after each of their impulses (holdWithinLimits); no ordinary joint comes near.
+ * every arm a kind forms, plus `travel`, the most the two bodies can part within the step at the
+ * speed limit) reach more than FAR_ARM of that body's radii of gyration, sqrt(I / m). The
+ * effective masses are prepared once per step, from the arms at its start; an arm that a turn or
+ * that travel makes many times longer within the step leaves the stale mass answering a velocity
+ * error with an impulse that multiplies it: from a unit box anchored 1e45 out, or from bodies
+ * 1e-10 wide that part at 1000 m/s on a wheel joint, past the largest double within one step.
+ * Those joints' bodies are held within the speed limits after each of their impulses
+ * (holdWithinLimits); no joint between bodies larger than about 1e-5 of the length unit comes near.
  */
-function farArms(r: Float64Array, o: number): boolean {
-  const arm = Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]) + Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]) + Math.sqrt(r[o + DELTA_CENTER_X] * r[o + DELTA_CENTER_X] + r[o + DELTA_CENTER_Y] * r[o + DELTA_CENTER_Y]);
+function farArms(r: Float64Array, o: number, travel: number): boolean {
+  const arm = Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]) + Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]) + Math.sqrt(r[o + DELTA_CENTER_X] * r[o + DELTA_CENTER_X] + r[o + DELTA_CENTER_Y] * r[o + DELTA_CENTER_Y]) + travel;
   const arm2 = arm * arm;
   const far2 = FAR_ARM * FAR_ARM;
   return arm2 * r[o + INV_INERTIA_A] > far2 * r[o + INV_MASS_A] || arm2 * r[o + INV_INERTIA_B] > far2 * r[o + INV_MASS_B];
@@ -142,7 +144,8 @@ export class JointSolver {
   private readonly gas = new GasPressure();
   private readonly springs = new ForceSprings();
   /** The speed limits, linear and angular, for boundImpulses. */
-  private readonly limits = new Float64Array(2);
+  /** The speed limits (linear, angular), then how far two bodies can part or close in the step (see farArms). */
+  private readonly limits = new Float64Array(3);
   /** How many joints listJoints listed of each kind of solve (see Listed). */
   private readonly listed = new Int32Array(4);
   /** How the springs are integrated: the world's integrator. */
@@ -175,7 +178,7 @@ export class JointSolver {
    * Once per step, after the bodies are gathered: `index` maps a body slot to its solver state (0:
    * fixed); `contactHertz` is the contacts' stiffness this step, which a rigid joint's is twice at most.
    */
-  prepare(bodies: BodyStore, index: Int32Array, slotOfState: Int32Array, stateCount: number, h: number, contactHertz: number, gx: number, gy: number, maxSpeed: number, maxAngular: number, kernel: SoftStepKernel | null): void {
+  prepare(bodies: BodyStore, index: Int32Array, slotOfState: Int32Array, stateCount: number, h: number, dt: number, contactHertz: number, gx: number, gy: number, maxSpeed: number, maxAngular: number, kernel: SoftStepKernel | null): void {
     const { store, step } = this;
     step.h = h;
     step.inverseH = 1 / h;
@@ -192,6 +195,7 @@ export class JointSolver {
     }
     this.limits[0] = maxSpeed;
     this.limits[1] = maxAngular;
+    this.limits[2] = 2 * maxSpeed * dt;
     this.listJoints(bodies, index);
     const listed = this.listed;
     this.activeCount = listed[Listed.active];
@@ -243,7 +247,7 @@ export class JointSolver {
       this.prepareJoint(bodies, j, o, ia, ib);
       if (store.kind[j] === JointKind.spring) this.springSlots[listed[Listed.springs]++] = j;
       else {
-        this.farArms[listed[Listed.active]] = farArms(r, o) ? 1 : 0;
+        this.farArms[listed[Listed.active]] = farArms(r, o, this.limits[2]) ? 1 : 0;
         this.active[listed[Listed.active]++] = j;
       }
     }

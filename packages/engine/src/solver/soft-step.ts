@@ -183,7 +183,7 @@ export class SoftStep {
     const inverseH = 1 / h;
     this.prepare(bodies, contacts, h, settings);
     if (joints !== null) {
-      joints.prepare(bodies, this.index, this.awake, this.awakeCount + 1, h, Math.min(settings.contactHertz, 0.25 / h), gx, gy, settings.maxLinearSpeed, MAX_ROTATION / dt, this.kernel);
+      joints.prepare(bodies, this.index, this.awake, this.awakeCount + 1, h, dt, Math.min(settings.contactHertz, 0.25 / h), gx, gy, settings.maxLinearSpeed, MAX_ROTATION / dt, this.kernel);
       // The joints' lanes share the kernel's memory, and growing them moves the other regions.
       this.adoptKernelViews();
     }
