@@ -329,6 +329,7 @@ export class World {
     const spin = resolveBody({ x: body.x, y: body.y, angle: o.angle, angularVelocity: o.angularVelocity, fixedRotation: o.fixedRotation, bullet: o.bullet, angularDamping: o.angularDamping, type: o.type });
     const material = resolveMaterial(o, this.materialDefaults(), scratchGeometry.setCircle(0, 0, body.radius));
     material.restitution = body.restitution;
+    this.checkGravityScale(body.gravityScale);
     this.assertInBox(body.x, body.y, body.radius);
     if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
     const shaped = this.shapes.engaged || material.friction > 0 || material.rollingResistance > 0 || material.sensor || (spin.flags & BodyFlag.bullet) !== 0;
@@ -366,6 +367,7 @@ export class World {
     const o = plainObject('body options', options);
     knownKeys('body options', o, BODY_KEYS);
     const body = resolveBody(o);
+    this.checkGravityScale(body.gravityScale);
     this.assertPointInBox(body.x, body.y);
     if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
     this.engage();
@@ -742,7 +744,8 @@ export class World {
   /** Sets the factor on the world's gravity for one body (CircleOptions.gravityScale); wakes it. */
   setGravityScale(handle: number, scale: number): void {
     const s = this.slot(handle);
-    this.bodies.setMotion(s, boundedNumber('gravityScale', scale), this.bodies.linearDamping[s]);
+    this.checkGravityScale(boundedNumber('gravityScale', scale));
+    this.bodies.setMotion(s, scale, this.bodies.linearDamping[s]);
     this.bodies.wake(s);
   }
 
@@ -838,6 +841,11 @@ export class World {
   /** Sets the world's gravity, in length units per second squared. */
   setGravity(x: number, y: number): void {
     const g = vector('gravity', { x, y });
+    // Every body's gravity scale times the new gravity must stay a bounded acceleration.
+    const { gravityScale, type, slotCount } = this.bodies;
+    let most = 0;
+    for (let k = 0; k < slotCount; k++) if (type[k] === TypeCode.dynamic && Math.abs(gravityScale[k]) > most) most = Math.abs(gravityScale[k]);
+    this.checkGravityScale(most, g.x, g.y, 'gravity');
     this.pipeline.settings.gravity.x = g.x;
     this.pipeline.settings.gravity.y = g.y;
   }
@@ -1559,6 +1567,7 @@ export class World {
     // a mass at a bound (1e100 on a 3 x 3 box) one unit past it.
     const mass = o.mass !== undefined ? (o.mass as number) : shape.density * areaProperties(geometry, massScratch).area;
     this.checkMass(-1, mass, body.type !== TypeCode.dynamic);
+    this.checkGravityScale(body.gravityScale);
     this.assertShapeInBox(geometry, body.x, body.y, body.c, body.s, 0, 0);
     if (!this.bodies.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} bodies at once (handles encode the slot in 24 bits)`);
     if (!this.shapes.store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} shapes at once`);
@@ -1635,6 +1644,18 @@ export class World {
     const c = rigid.c[slot];
     const sn = rigid.s[slot];
     this.disturbances.noteCircle(b, b.x[slot] + c * mx - sn * my, b.y[slot] + sn * mx + c * my, Math.sqrt(far) + store.radius[s]);
+  }
+
+  /**
+   * A RangeError where a gravity scale times gravity (the world's, or the one being set) is an
+   * acceleration beyond MAX_MAGNITUDE: each is bounded, but 1e100 times 1e100 would reach 1e200,
+   * past what a step's products stay finite for, as a force must leave the acceleration within it.
+   */
+  private checkGravityScale(scale: number, gx = this.pipeline.settings.gravity.x, gy = this.pipeline.settings.gravity.y, field = 'gravityScale'): void {
+    const g = Math.max(Math.abs(gx), Math.abs(gy));
+    if (!(Math.abs(scale) * g > MAX_MAGNITUDE)) return;
+    const which = field === 'gravity' ? `gravity (${gx}, ${gy}) times a body's gravityScale ${scale}` : `gravityScale ${scale} times gravity (${gx}, ${gy})`;
+    throw new RangeError(`${which} is an acceleration beyond ${MAX_MAGNITUDE} (so that no step can overflow)`);
   }
 
   /** A dynamic body's mass must be > 0; any body's within [1 / MAX_MAGNITUDE, MAX_MAGNITUDE] where it has one, so that no step overflows. */
