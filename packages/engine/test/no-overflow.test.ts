@@ -259,6 +259,23 @@ describe('no NaN or infinity from finite input', () => {
     }
   });
 
+  it('shapeless bodies all at one point (radius 0, no margin) step and answer queries on every broad-phase', () => {
+    // Found by an audit: cells of size 0 made the grid NaN columns wide, and its kernel divided by zero.
+    for (const broadphase of ['maxgrid', 'hgrid', 'auto', 'naive'] as const) {
+      for (const bounds of [null, { width: 10, height: 10 }]) {
+        const world = new World({ solver: 'elastic', broadphase, bounds });
+        for (let k = 0; k < 3; k++) world.createBody({ x: 0, y: 0, bullet: k === 2 });
+        for (let s = 0; s < 3; s++) {
+          world.step(1 / 60);
+          assertFinite(world, bounds, { op: 'step', dt: 1 / 60 });
+        }
+        expect(world.queryPoint(0, 0)).toBeInstanceOf(Array);
+        world.queryAABB(-1, -1, 1, 1);
+        world.rayCast(-1, -1, 1, 1);
+      }
+    }
+  });
+
   it('a joint anchor farther from its body than a shape may reach (1e50) is refused by name, the world unchanged', () => {
     const world = new World();
     const a = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
