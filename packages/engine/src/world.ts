@@ -1626,24 +1626,12 @@ export class World {
     const store = this.shapes.store;
     const slot = store.body[s];
     const rigid = b.rigid!;
-    const n = store.vertexCount[s];
-    let mx = 0;
-    let my = 0;
-    for (let i = 0, at = s * SHAPE_STRIDE + SHAPE_VERTICES; i < n; i++, at += VERTEX) {
-      mx += store.record[at];
-      my += store.record[at + 1];
-    }
-    mx /= n;
-    my /= n;
-    let far = 0;
-    for (let i = 0, at = s * SHAPE_STRIDE + SHAPE_VERTICES; i < n; i++, at += VERTEX) {
-      const dx = store.record[at] - mx;
-      const dy = store.record[at + 1] - my;
-      far = Math.max(far, dx * dx + dy * dy);
-    }
+    // Its centroid and extent about it, as the narrow-phase's compound test reads them.
+    const cx = store.centroidX[s];
+    const cy = store.centroidY[s];
     const c = rigid.c[slot];
     const sn = rigid.s[slot];
-    this.disturbances.noteCircle(b, b.x[slot] + c * mx - sn * my, b.y[slot] + sn * mx + c * my, Math.sqrt(far) + store.radius[s]);
+    this.disturbances.noteCircle(b, b.x[slot] + c * cx - sn * cy, b.y[slot] + sn * cx + c * cy, store.extent[s]);
   }
 
   /**

@@ -3,6 +3,21 @@ import type { Manifold } from './manifold.js';
 import { SegmentDistance } from './segment-distance.js';
 
 /**
+ * Whether the line (dx, dy) from the reference edge's nearest vertex (v11 where f1 is 0, v12
+ * where it is 1) to the incident vertex leaves that edge's end by more than a tenth of the slop,
+ * along the edge: a true corner meeting. Parallel edges of the same length whose ends line up
+ * (a capsule of length 1 on a box 1 wide, a box with a rounded core as wide as the face below)
+ * have their nearest points at the vertices too, exactly, in doubles, with the line between them
+ * along the normal: they meet face to face, and take two clipped points, or they rock on one.
+ */
+function beyondEnd(v11x: number, v11y: number, v12x: number, v12y: number, dx: number, dy: number, f1: number, slop: number): boolean {
+  const tx = v12x - v11x;
+  const ty = v12y - v11y;
+  const along = (dx * tx + dy * ty) / Math.sqrt(tx * tx + ty * ty);
+  return f1 === 0 ? along < -0.1 * slop : along > 0.1 * slop;
+}
+
+/**
  * Two convex polygons, either possibly rounded, by the separating axis test and reference-face
  * clipping, the method of Box2D v3, planck and Matter.js.
  *
@@ -30,21 +45,6 @@ import { SegmentDistance } from './segment-distance.js';
  *
  * A capsule is a two-point polygon here, its two edges the two sides of its segment.
  */
-/**
- * Whether the line (dx, dy) from the reference edge's nearest vertex (v11 where f1 is 0, v12
- * where it is 1) to the incident vertex leaves that edge's end by more than a tenth of the slop,
- * along the edge: a true corner meeting. Parallel edges of the same length whose ends line up
- * (a capsule of length 1 on a box 1 wide, a box with a rounded core as wide as the face below)
- * have their nearest points at the vertices too, exactly, in doubles, with the line between them
- * along the normal: they meet face to face, and take two clipped points, or they rock on one.
- */
-function beyondEnd(v11x: number, v11y: number, v12x: number, v12y: number, dx: number, dy: number, f1: number, slop: number): boolean {
-  const tx = v12x - v11x;
-  const ty = v12y - v11y;
-  const along = (dx * tx + dy * ty) / Math.sqrt(tx * tx + ty * ty);
-  return f1 === 0 ? along < -0.1 * slop : along > 0.1 * slop;
-}
-
 export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, slop: number, m: Manifold): void {
   m.clear();
   const radius = a.radius + b.radius;

@@ -5,7 +5,7 @@ import { ForceSprings } from './force-springs.js';
 import { GasPressure } from './gas-pressure.js';
 import type { IntegratorName } from '../integrate/integrator.js';
 import type { JointStore } from '../joints/joint-store.js';
-import { BODY, DYNAMIC, holdState, makeSoft } from './solver-body.js';
+import { BODY, DYNAMIC, FAR_ARM, holdState, makeSoft } from './solver-body.js';
 import type { JointKernel, JointStepContext } from './joints/joint-kernel.js';
 import { distanceJoint } from './joints/distance-joint.js';
 import { isPointDistanceJoint, PointDistanceJoints } from './joints/point-distance-joints.js';
@@ -67,9 +67,6 @@ function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64
     else if (value < -most) r[o + field] = -most;
   }
 }
-
-/** How many radii of gyration from a body's centre make a lever arm far (see farArms). */
-const FAR_ARM = 1e6;
 
 /**
  * Whether joint o's lever arms on either body (its anchors' and the centres' distances, bounding
@@ -143,8 +140,7 @@ export class JointSolver {
   private pressureSlots = new Int32Array(0);
   private readonly gas = new GasPressure();
   private readonly springs = new ForceSprings();
-  /** The speed limits, linear and angular, for boundImpulses. */
-  /** The speed limits (linear, angular), then how far two bodies can part or close in the step (see farArms). */
+  /** The speed limits (linear, angular) for boundImpulses and holdWithinLimits, then how far two bodies can part in the step (see farArms). */
   private readonly limits = new Float64Array(3);
   /** How many joints listJoints listed of each kind of solve (see Listed). */
   private readonly listed = new Int32Array(4);

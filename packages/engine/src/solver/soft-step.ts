@@ -5,7 +5,7 @@ import { ContactList, ContactPoint, POINT_STRIDE, WORLD } from '../narrowphase/c
 import { grownCapacity } from '../util/grow.js';
 import { SoftStepKernel } from './soft-step-kernel.js';
 import type { JointSolver } from './joint-solver.js';
-import { BODY, DPX, DPY, DQC, DQS, DYNAMIC, VX, VY, W, holdState, makeSoft } from './solver-body.js';
+import { BODY, DPX, DPY, DQC, DQS, DYNAMIC, FAR_ARM, VX, VY, W, holdState, makeSoft } from './solver-body.js';
 import { capSpeed } from './speed-limit.js';
 
 // The contact point record's fields as this module's own constants, which V8 folds into the code.
@@ -73,9 +73,6 @@ export const PAIR = P + 2 * POINT;
 function at(i: number): number {
   return (i >> 1) * PAIR + (i & 1);
 }
-
-/** How many radii of gyration from a body's centre a contact's lever arm may reach (see armScale). */
-const FAR_ARM = 1e6;
 
 /**
  * 1, or the factor that brings a contact's lever arm (rx, ry) on a body of inverse mass invMass

@@ -30,6 +30,14 @@ export function makeSoft(hertz: number, zeta: number, h: number, out: Float64Arr
 }
 
 /**
+ * How many of a body's radii of gyration, sqrt(I / m), from its centre make a lever arm far: the
+ * contacts' arms are held within it (soft-step.ts, armScale) and joints past it hold their bodies
+ * within the speed limits (joint-solver.ts, farArms). Rounding in an impulse's spin change then
+ * feeds the next constraint at most 1e-16 FAR_ARM^2 = 1e-4 of it.
+ */
+export const FAR_ARM = 1e6;
+
+/**
  * Caps the state row at s within the speed limits, keeping the velocity's direction: an impulse
  * a long lever arm multiplied enters the next pass within them. Scaled in two steps, so that a
  * speed whose square overflows still comes back finite.
