@@ -318,7 +318,9 @@ export class JointSolver {
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
       const o = j * JOINT_STRIDE;
-      JOINT_KERNELS[store.kind[j]].warmStart(r, o, states);
+      const joint = JOINT_KERNELS[store.kind[j]];
+      if (farArms[k] === 1 && joint.refresh !== undefined) joint.refresh(r, o, states);
+      joint.warmStart(r, o, states);
       if (farArms[k] === 1) holdWithinLimits(states, r, o, limits);
     }
     this.points.warmStart(states);
@@ -330,7 +332,10 @@ export class JointSolver {
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
       const o = j * JOINT_STRIDE;
-      JOINT_KERNELS[store.kind[j]].solve(r, o, states, step, useBias);
+      const joint = JOINT_KERNELS[store.kind[j]];
+      // The relax pass follows the sub-step's move (the solve with the bias shares the warm start's positions).
+      if (!useBias && farArms[k] === 1 && joint.refresh !== undefined) joint.refresh(r, o, states);
+      joint.solve(r, o, states, step, useBias);
       if (farArms[k] === 1) holdWithinLimits(states, r, o, limits);
     }
     this.points.solve(states, useBias);

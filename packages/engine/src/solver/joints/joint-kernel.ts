@@ -23,12 +23,16 @@ export interface JointStepContext {
  *   warmStart  per sub-step, applies the impulses the joint kept
  *   solve      per sub-step, twice: with the soft push back (useBias) and in the relax pass without
  *   reaction   after the step, the force and torque the joint put on body B
+ *   refresh    optional, before each sub-step's warm start and relax pass of a joint with far
+ *              arms (see JointSolver): the effective masses again, from the frame now, where
+ *              the bodies' travel within the step lengthens the arms (the sliding kinds)
  */
 export interface JointKernel {
   prepare(r: Float64Array, o: number, step: JointStepContext): void;
   warmStart(r: Float64Array, o: number, states: Float64Array): void;
   solve(r: Float64Array, o: number, states: Float64Array, step: JointStepContext, useBias: boolean): void;
   reaction(r: Float64Array, o: number, inverseH: number): void;
+  refresh?(r: Float64Array, o: number, states: Float64Array): void;
 }
 
 const angleIO = new Float64Array(3);

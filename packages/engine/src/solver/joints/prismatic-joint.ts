@@ -1,10 +1,16 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
 import { measureAngle, prepareSpringLimitMotor, solveScaledBlock, type JointKernel } from './joint-kernel.js';
-import { axialLimits, axialSpeed, axialSpring, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame } from './axis-frame.js';
+import { axialLimits, axialSpeed, axialSpring, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame, type AxisFrame } from './axis-frame.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorSpeed: MOTOR_SPEED, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+
+/** The effective mass along the axis, from the arms of frame f (the block across it is formed in each solve). */
+function axialMass(r: Float64Array, o: number, f: AxisFrame): void {
+  const k = r[o + INV_MASS_A] + r[o + INV_MASS_B] + r[o + INV_INERTIA_A] * f.a1 * f.a1 + r[o + INV_INERTIA_B] * f.a2 * f.a2;
+  r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;
+}
 
 /**
  * A prismatic joint (a slider): B keeps A's angle (plus the reference) and its anchor stays on
@@ -14,14 +20,12 @@ const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPUL
  */
 export const prismaticJoint: JointKernel = {
   prepare(r, o, step) {
-    const f = startAxisFrame(r, o);
-    const mA = r[o + INV_MASS_A];
-    const mB = r[o + INV_MASS_B];
-    const iA = r[o + INV_INERTIA_A];
-    const iB = r[o + INV_INERTIA_B];
-    const k = mA + mB + iA * f.a1 * f.a1 + iB * f.a2 * f.a2;
-    r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;
+    axialMass(r, o, startAxisFrame(r, o));
     prepareSpringLimitMotor(r, o, step);
+  },
+
+  refresh(r, o, states) {
+    axialMass(r, o, currentAxisFrame(r, o, states, r[o + STATE_A], r[o + STATE_B]));
   },
 
   warmStart(r, o, states) {

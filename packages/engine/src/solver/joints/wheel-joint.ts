@@ -1,10 +1,22 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
 import { prepareSpringLimitMotor, type JointKernel } from './joint-kernel.js';
-import { axialLimits, axialSpring, currentAxisFrame, normalSpeed, push, startAxisFrame } from './axis-frame.js';
+import { axialLimits, axialSpring, currentAxisFrame, normalSpeed, push, startAxisFrame, type AxisFrame } from './axis-frame.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorMass: MOTOR_MASS, motorSpeed: MOTOR_SPEED, perpMass: PERP_MASS, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+
+/** The effective masses along the axis and across it, from the arms of frame f. */
+function axisMasses(r: Float64Array, o: number, f: AxisFrame): void {
+  const mA = r[o + INV_MASS_A];
+  const mB = r[o + INV_MASS_B];
+  const iA = r[o + INV_INERTIA_A];
+  const iB = r[o + INV_INERTIA_B];
+  const ka = mA + mB + iA * f.a1 * f.a1 + iB * f.a2 * f.a2;
+  r[o + AXIAL_MASS] = ka > 0 ? 1 / ka : 0;
+  const kp = mA + mB + iA * f.s1 * f.s1 + iB * f.s2 * f.s2;
+  r[o + PERP_MASS] = kp > 0 ? 1 / kp : 0;
+}
 
 /**
  * A wheel joint: B's anchor stays on the line through A's anchor along A's axis (the
@@ -14,17 +26,15 @@ const { axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, enableLimit: ENABLE_
  */
 export const wheelJoint: JointKernel = {
   prepare(r, o, step) {
-    const f = startAxisFrame(r, o);
-    const mA = r[o + INV_MASS_A];
-    const mB = r[o + INV_MASS_B];
+    axisMasses(r, o, startAxisFrame(r, o));
     const iA = r[o + INV_INERTIA_A];
     const iB = r[o + INV_INERTIA_B];
-    const ka = mA + mB + iA * f.a1 * f.a1 + iB * f.a2 * f.a2;
-    r[o + AXIAL_MASS] = ka > 0 ? 1 / ka : 0;
-    const kp = mA + mB + iA * f.s1 * f.s1 + iB * f.s2 * f.s2;
-    r[o + PERP_MASS] = kp > 0 ? 1 / kp : 0;
     r[o + MOTOR_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
     prepareSpringLimitMotor(r, o, step);
+  },
+
+  refresh(r, o, states) {
+    axisMasses(r, o, currentAxisFrame(r, o, states, r[o + STATE_A], r[o + STATE_B]));
   },
 
   warmStart(r, o, states) {
