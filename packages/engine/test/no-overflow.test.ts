@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { World } from '../src/index.js';
+import { solvePointBlock } from '../src/solver/joints/joint-kernel.js';
 
 /**
  * The public API, driven at random with numbers from ordinary to the largest a double holds:
@@ -260,6 +261,58 @@ describe('no NaN or infinity from finite input', () => {
       }
     }
     expect(cases).toBe(24);
+  });
+
+  it('a weld to a compound whose only shape lies 8e48 out, beside a box of mass 1e100, under the strongest gravity, stays finite', () => {
+    // Found by an audit: the contacts with the heavy box spin the light triangle at 4e115 rad/s
+    // within a sub-step, and the weld's point block, its arm 8e48 on a body of inverse inertia
+    // 8e49, cancelled its determinant to rounding and overflowed its products: NaN in step 1 (or
+    // a WebAssembly RuntimeError from the bullet's sweep).
+    for (const bullet of [false, true]) {
+      const world = new World({ gravity: { x: 0, y: -1e100 } });
+      const far = world.createBody({ x: 4.317941863245435e-11, y: -4.184170418324387e-11 });
+      world.addShape(far, { kind: 'circle', radius: 2.955711058696059e-13, offsetY: 8.250149618834257e48 });
+      world.createBox({ x: -3.4068756211340295e-11, y: 4.779623681993694e-11, width: 1.5749527373103433e-11, height: 1.5749527373103433e-21, radius: 7.87476211159898e-22, mass: 1e100 });
+      world.createBox({ x: -2.0518031841080043e-11, y: 9.005331008726474e-12, width: 3.269208764504487e-11, height: 1.6346043822522436e-11, radius: 8.009561473035993e-12, bullet });
+      const triangle = world.createPolygon({
+        x: 2.753038369399871e-11,
+        y: 2.6237214520848365e-12,
+        vertices: [
+          { x: 1.5968586230633747e-10, y: 1.2982890795470924e-12 },
+          { x: -1.0400130337689856e-10, y: 6.06012494395973e-11 },
+          { x: -5.04879160983461e-11, y: -7.575831170027027e-11 },
+        ],
+      });
+      world.createJoint({ kind: 'weld', bodyA: triangle, bodyB: far });
+      for (const dt of [1e6, 1e6, 1 / 60]) {
+        world.step(dt);
+        assertFinite(world, null, { op: 'step', dt });
+      }
+    }
+  });
+
+  it("a point block of far arms is solved from its determinant's positive terms, as its eigen-decomposition gives", () => {
+    // K = m I + iB |rB|^2 u u^T with u the arm turned a quarter, unit: K^-1 c = (c.u) u / (m + iB |rB|^2) + (c - (c.u) u) / m.
+    // Speeds c with a part along the arm as well, whose answer dominates (a speed nearly across the
+    // arm leaves that part to rounding in either computation).
+    const cases = [
+      { m: 3.6435620864491504e24, iB: 8.341270726441998e49, rBx: 1.5895615633113394e48, rBy: -8.095570564796173e48, cx: 1e164, cy: 1e164 },
+      { m: 1, iB: 1, rBx: 1e6, rBy: 3e6, cx: 1, cy: -2 },
+      { m: 1e-20, iB: 1e40, rBx: -1e45, rBy: 2e44, cx: 1e30, cy: 3e29 },
+      { m: 2, iB: 0.5, rBx: 0.3, rBy: -0.4, cx: 1e-3, cy: 5 },
+    ];
+    for (const { m, iB, rBx, rBy, cx, cy } of cases) {
+      const length = Math.hypot(rBx, rBy);
+      const ux = -rBy / length;
+      const uy = rBx / length;
+      const along = cx * ux + cy * uy;
+      const stiff = along / (m + iB * length * length);
+      const ex = stiff * ux + (cx - along * ux) / m;
+      const ey = stiff * uy + (cy - along * uy) / m;
+      const b = solvePointBlock(m, 0, 0, 0, iB, rBx, rBy, cx, cy);
+      const size = Math.hypot(ex, ey);
+      expect(Math.hypot(b[0] - ex, b[1] - ey)).toBeLessThan(1e-9 * size);
+    }
   });
 
   it('a gravity scale times gravity beyond 1e100 is refused by name wherever either is set, the world unchanged', () => {

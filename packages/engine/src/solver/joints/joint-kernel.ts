@@ -181,14 +181,17 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   const k12 = -rAy * rAx * iA - rBy * rBx * iB;
   const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
   let det = k11 * k22 - k12 * k12;
-  let bx: number;
-  let by: number;
-  if (Number.isFinite(det)) {
-    det = det !== 0 ? 1 / det : 0;
+  let bx = 0;
+  let by = 0;
+  let exact = false;
+  if (det > WELL_POSED * k11 * k22) {
+    det = 1 / det;
     bx = det * (k22 * cx - k12 * cy);
     by = det * (k11 * cy - k12 * cx);
-  } else {
-    const block = solveScaledBlock(k11, k12, k22, cx, cy);
+    exact = Number.isFinite(bx) && Number.isFinite(by);
+  }
+  if (!exact) {
+    const block = solvePointBlock(mA + mB, iA, rAx, rAy, iB, rBx, rBy, cx, cy);
     bx = block[0];
     by = block[1];
   }
@@ -207,9 +210,10 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
 const scaledBlock = new Float64Array(2);
 
 /**
- * The solution of the symmetric 2x2 system [k11 k12; k12 k22] b = c, for a block whose
- * determinant is not finite: anchors far from the centres (or a body's inverse inertia near its
- * bound) square past the largest double there. The same system scaled by its largest entry has
+ * The solution of the symmetric 2x2 system [k11 k12; k12 k22] b = c, for the prismatic joint's
+ * block (across the axis and the angle; point blocks take solvePointBlock) whose determinant is
+ * not finite: anchors far from the centres (or a body's inverse inertia near its bound) square
+ * past the largest double there. The same system scaled by its largest entry has
  * the same solution. Into a reused array: b = (out[0], out[1]). Called on that rare path only,
  * beside each joint's own finite-determinant arithmetic, whose bits it leaves as they were. That
  * path stays spelled out in each joint: through a shared function returning its two values in an
@@ -231,6 +235,53 @@ export function solveScaledBlock(k11: number, k12: number, k22: number, c1: numb
   scaledBlock[0] = inverse * (d * c1 - b * c2);
   scaledBlock[1] = inverse * (a * c2 - b * c1);
   return scaledBlock;
+}
+
+/**
+ * How far above zero a 2x2 block's determinant, k11 k22 - k12^2, must lie, relative to k11 k22, for
+ * its plain arithmetic to be trusted: below, the two products agree in more digits than that
+ * leaves, and the difference is their rounding (a lever arm a million times its body's radius of
+ * gyration makes the block this close to rank one; no ordinary joint's comes near).
+ */
+export const WELL_POSED = 1e-8;
+
+const pointBlock = new Float64Array(2);
+
+/**
+ * The solution b of K b = c for a point constraint's block K = m I + iA rA' rA'^T + iB rB' rB'^T
+ * (rA', rB' the arms turned a quarter), where the plain arithmetic fails: far arms make the
+ * determinant of the entries cancel to its rounding, and products of huge entries and speeds pass
+ * the largest double although the solution does not. The determinant comes from its terms here,
+ * each positive, m (m + iA |rA|^2 + iB |rB|^2) + iA iB (rA x rB)^2, with the block scaled by its
+ * largest entry. A block past the largest double, or an answer that is, gives no impulse. Into a
+ * reused array: b = (out[0], out[1]).
+ */
+export function solvePointBlock(m: number, iA: number, rAx: number, rAy: number, iB: number, rBx: number, rBy: number, c1: number, c2: number): Float64Array {
+  const k11 = m + iA * rAy * rAy + iB * rBy * rBy;
+  const k12 = -iA * rAy * rAx - iB * rBy * rBx;
+  const k22 = m + iA * rAx * rAx + iB * rBx * rBx;
+  const scale = Math.max(k11, k22);
+  pointBlock[0] = 0;
+  pointBlock[1] = 0;
+  if (!(scale > 0 && scale < Infinity)) return pointBlock;
+  const a = k11 / scale;
+  const b = k12 / scale;
+  const d = k22 / scale;
+  const mass = m / scale;
+  const arms = (iA * (rAx * rAx + rAy * rAy) + iB * (rBx * rBx + rBy * rBy)) / scale;
+  const sA = Math.sqrt(iA);
+  const sB = Math.sqrt(iB);
+  const cross = ((sA * rAx) * (sB * rBy) - (sA * rAy) * (sB * rBx)) / scale;
+  const det = mass * (mass + arms) + cross * cross;
+  if (!(det > 0)) return pointBlock;
+  const inverse = 1 / (det * scale);
+  const b1 = inverse * (d * c1 - b * c2);
+  const b2 = inverse * (a * c2 - b * c1);
+  if (Number.isFinite(b1) && Number.isFinite(b2)) {
+    pointBlock[0] = b1;
+    pointBlock[1] = b2;
+  }
+  return pointBlock;
 }
 
 /** Where a frame keeps the anchors from each centre of mass, in the world now. */

@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
 import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
-import { softFromRecord, solveScaledBlock, type JointKernel } from './joint-kernel.js';
+import { softFromRecord, solvePointBlock, WELL_POSED, type JointKernel } from './joint-kernel.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angularImpulse: ANGULAR_IMPULSE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaB: INV_INERTIA_B, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, maxForce: MAX_FORCE, rBX: R_BX, rBY: R_BY, softBias: SOFT_BIAS, softImpulse: SOFT_IMPULSE, softMass: SOFT_MASS, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springMass: SPRING_MASS, stateB: STATE_B, torque: TORQUE } = J;
@@ -59,14 +59,17 @@ export const targetJoint: JointKernel = {
     const impulseScale = r[o + SPRING_IMPULSE];
     const oldX = r[o + LINEAR_IMPULSE_X];
     const oldY = r[o + LINEAR_IMPULSE_Y];
-    let totalX: number;
-    let totalY: number;
-    if (Number.isFinite(det)) {
-      det = det !== 0 ? 1 / det : 0;
+    let totalX = 0;
+    let totalY = 0;
+    let exact = false;
+    if (det > WELL_POSED * k11 * k22) {
+      det = 1 / det;
       totalX = oldX - massScale * det * (k22 * cx - k12 * cy) - impulseScale * oldX;
       totalY = oldY - massScale * det * (k11 * cy - k12 * cx) - impulseScale * oldY;
-    } else {
-      const block = solveScaledBlock(k11, k12, k22, cx, cy);
+      exact = Number.isFinite(totalX) && Number.isFinite(totalY);
+    }
+    if (!exact) {
+      const block = solvePointBlock(mB, 0, 0, 0, iB, rBx, rBy, cx, cy);
       totalX = oldX - massScale * block[0] - impulseScale * oldX;
       totalY = oldY - massScale * block[1] - impulseScale * oldY;
     }
