@@ -37,6 +37,20 @@ async function engineBytesPerStep(world: World, steps: number): Promise<{ bytes:
   }
 }
 
+/**
+ * engineBytesPerStep, measured once more on the same world when the first window allocated
+ * anything to speak of, and the lesser of the two: a function V8 deoptimised inside a window
+ * (a branch first taken there, or its optimised code late on a loaded machine) boxes its numbers
+ * until it is compiled again, which shows in one window, while an allocation per body or pair
+ * shows in every window.
+ */
+async function leastBytesPerStep(world: World, steps: number): Promise<{ bytes: number; where: string }> {
+  const first = await engineBytesPerStep(world, steps);
+  if (first.bytes < 512) return first;
+  const second = await engineBytesPerStep(world, steps);
+  return second.bytes < first.bytes ? second : first;
+}
+
 /** Boxes on prismatic joints (limit, motor, spring) above the ground, each carrying a wheel on a wheel joint; no segments. */
 function sliders(n: number): World {
   const world = new World({ gravity: { x: 0, y: 10 } });
@@ -68,8 +82,8 @@ describe('a warmed-up step allocates nothing per body or pair', () => {
     ['jellies on force springs integrated by rk4', (k: number) => buildShapeWorld(buildShapeScene('jellies', { count: 2 * k, side: 4, funnel: 0, floor: 0, stiffness: 500 }), { integrator: 'rk4' })],
     ['sliders and wheels on prismatic and wheel joints with limits, motors and springs', (k: number) => sliders(20 * k)],
   ] as const)('%s', async (_name, build) => {
-    const small = await engineBytesPerStep(build(1), 40);
-    const large = await engineBytesPerStep(build(4), 40);
+    const small = await leastBytesPerStep(build(1), 40);
+    const large = await leastBytesPerStep(build(4), 40);
     expect(small.bytes, small.where).toBeLessThan(4096);
     // Four times the bodies: one boxed number per body would add tens of kilobytes. Code that runs
     // once a step may still be unoptimised in one world and not the other: a few hundred bytes.
