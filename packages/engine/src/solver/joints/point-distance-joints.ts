@@ -1,6 +1,6 @@
 import { J, JOINT_STRIDE } from '../../joints/joint-layout.js';
 import { grownCapacity } from '../../util/grow.js';
-import { BODY, DPX, DPY, DYNAMIC, VX, VY, makeSoft } from '../solver-body.js';
+import { BODY, DPX, DPY, DYNAMIC, VX, VY, makeSoft, springHertz } from '../solver-body.js';
 import type { SoftStepKernel } from '../soft-step-kernel.js';
 import type { BodyStore } from '../../store/body-store.js';
 import type { JointStore } from '../../joints/joint-store.js';
@@ -151,7 +151,7 @@ export class PointDistanceJoints {
         rows[c + RELAX + SCALE] = 1;
         rows[c + RELAX + KEEP] = 0;
       } else {
-        makeSoft(r[o + HERTZ], r[o + DAMPING_RATIO], h, spring);
+        makeSoft(springHertz(r[o + HERTZ], h), r[o + DAMPING_RATIO], h, spring);
         rows[c + BIAS] = rows[c + RELAX + BIAS] = spring[0];
         rows[c + SCALE] = rows[c + RELAX + SCALE] = spring[1];
         rows[c + KEEP] = rows[c + RELAX + KEEP] = spring[2];
