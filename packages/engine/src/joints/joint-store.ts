@@ -112,7 +112,7 @@ export class JointStore {
 
   describeMissing(handle: number): string {
     if (!Number.isSafeInteger(handle) || handle < 0) return 'is not a joint handle';
-    if (handle < JOINT_HANDLES) return 'is a body, segment or shape handle, not a joint handle';
+    if (handle < JOINT_HANDLES) return 'is not a joint handle: it lies in the range of body, segment and shape handles';
     const slot = (handle - JOINT_HANDLES) % SLOT_SPACE;
     const gen = (handle - JOINT_HANDLES - slot) / SLOT_SPACE;
     if (slot >= this.slotCount || gen > this.generation[slot]) return 'is unknown to this world';
