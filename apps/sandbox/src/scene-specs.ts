@@ -144,6 +144,7 @@ const SCENE_PRESENTATION: Partial<Record<SceneChoice, Record<string, Presentatio
     linkLength: { label: 'Link length', step: 0.05, max: 5, format: fixed(2, ' m') },
     horizontal: { label: 'Start horizontal', step: 1, format: onOff },
     density: { label: 'Density', step: 1, max: 1000, format: fixed(0, ' kg/m²') },
+    rope: { label: 'Rope of beads', step: 1, format: onOff },
   },
   bridge: {
     planks: { label: 'Planks', step: 1, max: 200, format: count },

@@ -114,6 +114,39 @@ describe('joints', () => {
     }
   }, 60_000);
 
+  it('a rope of 100 beads hangs within 1 % of its rest length and settles; slack, it stays folded where a rigid chain would straighten', () => {
+    const world = buildShapeWorld(buildShapeScene('chain', { links: 100, rope: 1 }));
+    const beads = world.handles().slice(1);
+    expect(world.jointCount).toBe(100);
+    run(world, 60 * 40);
+    let previous = { x: 0, y: 0 };
+    let length = 0;
+    let longest = 0;
+    for (const h of beads) {
+      const b = world.getBody(h);
+      const gap = Math.hypot(b.x - previous.x, b.y - previous.y);
+      length += gap;
+      longest = Math.max(longest, gap);
+      previous = b;
+    }
+    expect(length / 100 - 1).toBeLessThan(0.01);
+    expect(length / 100 - 1).toBeGreaterThan(-0.01);
+    expect(longest).toBeLessThan(1.02);
+    expect(world.kineticEnergy()).toBeLessThan(1);
+
+    // Beads half a link apart with no gravity: a rope's joints leave them there, rigid ones push them out to a link.
+    for (const rope of [true, false]) {
+      const loose = new World({ gravity: { x: 0, y: 0 } });
+      const row: number[] = [];
+      for (let k = 0; k < 10; k++) row.push(loose.createCircle({ x: 0.5 * k, y: 0, radius: 0.1 }));
+      for (let k = 1; k < 10; k++) loose.createJoint({ kind: 'distance', bodyA: row[k - 1], bodyB: row[k], length: 1, ...(rope ? { minLength: 0, maxLength: 1 } : {}) });
+      run(loose, 120);
+      const ends = Math.hypot(loose.getBody(row[9]).x - loose.getBody(row[0]).x, loose.getBody(row[9]).y - loose.getBody(row[0]).y);
+      if (rope) expect(ends).toBeCloseTo(4.5, 9);
+      else expect(ends).toBeGreaterThan(8.5);
+    }
+  }, 60_000);
+
   it('a revolute motor reaches its speed, and a weak one accelerates at torque / inertia', () => {
     const world = new World();
     const ground = world.createBody({ x: 0, y: 0, type: 'static' });

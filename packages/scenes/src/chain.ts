@@ -8,13 +8,15 @@ export const chainParams = {
   linkLength: { default: 1, min: 0.05, max: 100, description: 'length of a link (pin to pin), m' },
   horizontal: { default: 0, min: 0, max: 1, integer: true, description: '1: starts straight out to the right and swings down; 0: hangs straight down' },
   density: { default: 20, min: 0.001, max: 1e6, description: 'density of the links' },
+  rope: { default: 0, min: 0, max: 1, integer: true, description: '1: a rope, beads on distance joints that keep them at most a link apart and let them close up; 0: capsules on revolute joints' },
 } satisfies ParamSpecs;
 
 /**
  * A chain of capsules pinned end to end by revolute joints, the first to a static anchor at the
  * origin (Box2D's chain sample): meters, gravity 10, y down. Each link is a capsule as long as its
  * pin spacing, a quarter of that wide, so neighbours just touch (they do not collide: joined
- * bodies are kept apart from collision).
+ * bodies are kept apart from collision). With `rope`, a rope of beads instead: circles half a
+ * link wide, each held at most a link from the one before by a distance joint with a range.
  */
 export function chain(given?: Partial<Record<keyof typeof chainParams, number>>): ShapeScene {
   const p = resolveParams('chain', chainParams, given);
@@ -26,6 +28,14 @@ export function chain(given?: Partial<Record<keyof typeof chainParams, number>>)
   const bodies: SceneBody[] = [{ x: 0, y: 0, type: 'static', shapes: [{ kind: 'circle', radius }] }];
   const joints: JointOptions[] = [];
   for (let k = 0; k < p.links; k++) {
+    if (p.rope === 1) {
+      // A bead a link out from the last, held at most a link from it (a rope's distance joint:
+      // free within [0, L], so the rope slackens and folds, and never stretches but by the solver's softness).
+      const along = (k + 1) * L;
+      bodies.push({ x: down ? 0 : along, y: down ? along : 0, shapes: [{ kind: 'circle', radius: L / 4, density: p.density, friction: 0.6 }] });
+      joints.push({ kind: 'distance', bodyA: k, bodyB: k + 1, length: L, minLength: 0, maxLength: L });
+      continue;
+    }
     const along = (k + 0.5) * L;
     bodies.push({ x: down ? 0 : along, y: down ? along : 0, angle, shapes: [{ kind: 'capsule', length: L - 2 * radius, radius, density: p.density, friction: 0.6 }] });
     joints.push({ kind: 'revolute', bodyA: k, bodyB: k + 1, anchorA: k === 0 ? { x: 0, y: 0 } : { x: L / 2, y: 0 }, anchorB: { x: -L / 2, y: 0 } });

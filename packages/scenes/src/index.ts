@@ -161,7 +161,7 @@ export const SHAPE_SCENES = {
     build: tumbler,
   },
   chain: {
-    description: 'A 100-link chain of capsules on revolute joints, hanging from a pin (horizontal: 1 lets it swing down)',
+    description: 'A 100-link chain of capsules on revolute joints, hanging from a pin (horizontal: 1 lets it swing down; rope: 1 makes it a rope of beads on distance joints)',
     params: chainParams,
     build: chain,
   },
