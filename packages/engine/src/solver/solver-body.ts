@@ -30,22 +30,6 @@ export function makeSoft(hertz: number, zeta: number, h: number, out: Float64Arr
 }
 
 /**
- * The highest frequency a soft-constraint spring keeps, as a fraction of the sub-step rate: a
- * quarter, 60 Hz at 60 Hz with 4 sub-steps, the bound Box2D v3 puts on its contacts' stiffness.
- * A lone spring is stable at any stiffness, but springs coupled in a lattice, solved one after
- * another, are not: a 6 x 6 jelly with shear springs settled up to 120 Hz there, gained energy
- * from about 150 Hz and reached the speed limit at 240. A stiffer spring is solved as one of this
- * frequency.
- */
-export const SPRING_RATE = 0.25;
-
-/** A spring's frequency as the sub-step h solves it: `hertz`, at most SPRING_RATE / h. */
-export function springHertz(hertz: number, h: number): number {
-  const most = SPRING_RATE / h;
-  return hertz < most ? hertz : most;
-}
-
-/**
  * How many of a body's radii of gyration, sqrt(I / m), from its centre make a lever arm far: the
  * contacts' arms are held within it (soft-step.ts, armScale) and joints past it hold their bodies
  * within the speed limits (joint-solver.ts, farArms). Rounding in an impulse's spin change then

@@ -1,6 +1,7 @@
 import { atan2Into } from '../../math/trig.js';
 import { J } from '../../joints/joint-layout.js';
-import { DPX, DPY, DQC, DQS, VX, VY, W, springHertz } from '../solver-body.js';
+import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
+import { springHertz } from '../spring-frequency.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, axialMass: AXIAL_MASS, dampingRatio: DAMPING_RATIO, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, springBias: SPRING_BIAS, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, upperImpulse: UPPER_IMPULSE } = J;
@@ -56,8 +57,8 @@ export function measureAngle(r: Float64Array, o: number, states: Float64Array): 
 }
 
 /**
- * makeSoft (solver-body.ts) for a spring of r[o + hertzField] hertz (at most what the sub-step
- * keeps: springHertz) and damping ratio r[o + DAMPING_RATIO], into r[o + at..at + 2]: the same
+ * makeSoft (solver-body.ts) for a spring of r[o + hertzField] hertz (solved at the frequency that
+ * keeps it, springHertz) and damping ratio r[o + DAMPING_RATIO], into r[o + at..at + 2]: the same
  * arithmetic, reading its numbers from the record rather than taking them as arguments.
  */
 export function softFromRecord(r: Float64Array, o: number, hertzField: number, at: number, step: JointStepContext): void {

@@ -1,6 +1,7 @@
 import { J, JOINT_STRIDE } from '../../joints/joint-layout.js';
 import { grownCapacity } from '../../util/grow.js';
-import { BODY, DPX, DPY, DYNAMIC, VX, VY, makeSoft, springHertz } from '../solver-body.js';
+import { BODY, DPX, DPY, DYNAMIC, VX, VY, makeSoft } from '../solver-body.js';
+import { springHertz } from '../spring-frequency.js';
 import type { SoftStepKernel } from '../soft-step-kernel.js';
 import type { BodyStore } from '../../store/body-store.js';
 import type { JointStore } from '../../joints/joint-store.js';
