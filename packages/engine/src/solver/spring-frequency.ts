@@ -24,9 +24,9 @@ export function springHertz(hertz: number, h: number): number {
   if (!(hertz > 0)) return 0;
   const most = SPRING_RATE / h;
   if (!(hertz < most)) return most;
-  // Below this the correction, about 18 (f h)^2, is under a billionth, and the cosines compared
-  // below, within a few ulps of 1, could no longer tell it.
-  if (hertz * h < 7.5e-6) return hertz;
+  // Below this the correction, about 18 (f h)^2, is under 2e-7 of the frequency, and the
+  // cosines compared below, within 2e-7 of 1, would tell it less well than that.
+  if (hertz * h < 1e-4) return hertz;
   for (let k = 0; k < CACHED; k++) {
     if (cachedHertz[k] === hertz && cachedStep[k] === h) return cachedAnswer[k];
   }
