@@ -30,7 +30,11 @@ export interface DistanceJointOptions extends JointBaseOptions {
   length?: number | undefined;
   minLength?: number | undefined;
   maxLength?: number | undefined;
-  /** Spring frequency in hertz; 0 (the default) for none. */
+  /**
+   * Spring frequency in hertz; 0 (the default) for none. An undamped spring oscillates at it up to
+   * about an eighth of the sub-step rate (30 Hz at 60 Hz with 4 sub-steps); a stiffer one at
+   * about 33 Hz there (see docs/engine.md, Joints).
+   */
   hertz?: number | undefined;
   /** The spring's damping ratio (1 critical). Default 0. */
   dampingRatio?: number | undefined;
