@@ -42,7 +42,7 @@ async function engineBytesPerStep(world: World, steps: number): Promise<{ bytes:
  * anything to speak of, and the lesser of the two: a function V8 deoptimised inside a window
  * (a branch first taken there, or its optimised code late on a loaded machine) boxes its numbers
  * until it is compiled again, which shows in one window, while an allocation per body or pair
- * shows in every window.
+ * shows in every window. (An allocation made only in bursts, one window in two, would pass.)
  */
 async function leastBytesPerStep(world: World, steps: number): Promise<{ bytes: number; where: string }> {
   const first = await engineBytesPerStep(world, steps);

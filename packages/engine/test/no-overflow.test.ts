@@ -234,10 +234,10 @@ describe('no NaN or infinity from finite input', () => {
   });
 
   it('sliding joints whose bodies travel far along the axis within a step stay finite, even at a speed limit of 1e100', () => {
-    // Found by an audit: a unit box and disc on a wheel joint, sliding at 1 m/s along its axis at
-    // dt 1e6 (or bodies 1e-10 wide at 60 Hz) in a world whose speed limit is 1e100: the arm across
-    // the axis grew 1e6 times within the step, past the mass prepared at its start, and holding the
-    // bodies within limits that high did not keep the solve from doubling past the largest double.
+    // A unit box and disc on a wheel joint sliding at 1 m/s along its axis at dt 1e6 (or bodies
+    // 1e-10 wide at 60 Hz), in a world whose speed limit is 1e100: the arm across the axis grows a
+    // millionfold within the step, and a mass prepared at its start, with the bodies held only
+    // within limits that high, lets the solve double past the largest double.
     let cases = 0;
     for (const kind of ['wheel', 'prismatic'] as const) {
       for (const size of [1e-10, 1]) {
@@ -264,10 +264,10 @@ describe('no NaN or infinity from finite input', () => {
   });
 
   it('a weld to a compound whose only shape lies 8e48 out, beside a box of mass 1e100, under the strongest gravity, stays finite', () => {
-    // Found by an audit: the contacts with the heavy box spin the light triangle at 4e115 rad/s
-    // within a sub-step, and the weld's point block, its arm 8e48 on a body of inverse inertia
-    // 8e49, cancelled its determinant to rounding and overflowed its products: NaN in step 1 (or
-    // a WebAssembly RuntimeError from the bullet's sweep).
+    // The contacts with the heavy box spin the light triangle at 4e115 rad/s within a sub-step,
+    // and the weld's point block, its arm 8e48 on a body of inverse inertia 8e49, cancels its
+    // determinant to rounding and overflows its products in plain arithmetic: NaN in step 1 (or a
+    // WebAssembly RuntimeError from the bullet's sweep).
     for (const bullet of [false, true]) {
       const world = new World({ gravity: { x: 0, y: -1e100 } });
       const far = world.createBody({ x: 4.317941863245435e-11, y: -4.184170418324387e-11 });

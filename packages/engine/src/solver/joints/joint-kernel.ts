@@ -1,7 +1,7 @@
 import { atan2Into } from '../../math/trig.js';
 import { J } from '../../joints/joint-layout.js';
 import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
-import { springHertz } from '../spring-frequency.js';
+import { softSpring, Spring } from '../spring-frequency.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, axialMass: AXIAL_MASS, dampingRatio: DAMPING_RATIO, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, springBias: SPRING_BIAS, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, upperImpulse: UPPER_IMPULSE } = J;
@@ -57,20 +57,22 @@ export function measureAngle(r: Float64Array, o: number, states: Float64Array): 
 }
 
 /**
- * makeSoft (solver-body.ts) for a spring of r[o + hertzField] hertz (solved at the frequency that
- * keeps it, springHertz) and damping ratio r[o + DAMPING_RATIO], into r[o + at..at + 2]: the same
- * arithmetic, reading its numbers from the record rather than taking them as arguments.
+ * The soft constraint of a spring of r[o + hertzField] hertz and damping ratio r[o + DAMPING_RATIO]
+ * (softSpring: solved at the frequency that keeps it, with the same damping), its bias rate, mass
+ * scale and impulse scale into r[o + at..at + 2].
  */
 export function softFromRecord(r: Float64Array, o: number, hertzField: number, at: number, step: JointStepContext): void {
-  const h = step.h;
-  const omega = 2 * Math.PI * springHertz(r[o + hertzField], h);
-  const a1 = 2 * r[o + DAMPING_RATIO] + h * omega;
-  const a2 = h * omega * a1;
-  const a3 = 1 / (1 + a2);
-  r[o + at] = omega / a1;
-  r[o + at + 1] = a2 * a3;
-  r[o + at + 2] = a3;
+  const io = springIO;
+  io[Spring.hertz] = r[o + hertzField];
+  io[Spring.zeta] = r[o + DAMPING_RATIO];
+  io[Spring.h] = step.h;
+  softSpring(io);
+  r[o + at] = io[Spring.bias];
+  r[o + at + 1] = io[Spring.massScale];
+  r[o + at + 2] = io[Spring.impulseScale];
 }
+
+const springIO = new Float64Array(8);
 
 /** A limit's gap and speed (limitIO[0], limitIO[1]) in, the change of its impulse (limitIO[2]) out: see applyLimit. */
 export const limitIO = new Float64Array(3);
@@ -184,14 +186,14 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   let det = k11 * k22 - k12 * k12;
   let bx = 0;
   let by = 0;
-  let exact = false;
+  let plainFinite = false;
   if (det > WELL_POSED * k11 * k22) {
     det = 1 / det;
     bx = det * (k22 * cx - k12 * cy);
     by = det * (k11 * cy - k12 * cx);
-    exact = Number.isFinite(bx) && Number.isFinite(by);
+    plainFinite = Number.isFinite(bx) && Number.isFinite(by);
   }
-  if (!exact) {
+  if (!plainFinite) {
     const block = solvePointBlock(mA + mB, iA, rAx, rAy, iB, rBx, rBy, cx, cy);
     bx = block[0];
     by = block[1];
@@ -208,41 +210,11 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   states[sb + W] = wB + iB * (rBx * py - rBy * px);
 }
 
-const scaledBlock = new Float64Array(2);
-
-/**
- * The solution of the symmetric 2x2 system [k11 k12; k12 k22] b = c, for the prismatic joint's
- * block (across the axis and the angle; point blocks take solvePointBlock) whose determinant is
- * not finite: anchors far from the centres (or a body's inverse inertia near its bound) square
- * past the largest double there. The same system scaled by its largest entry has
- * the same solution. Into a reused array: b = (out[0], out[1]). Called on that rare path only,
- * beside each joint's own finite-determinant arithmetic, whose bits it leaves as they were. That
- * path stays spelled out in each joint: through a shared function returning its two values in an
- * array, a grid of revolute joints stepped measurably slower.
- */
-export function solveScaledBlock(k11: number, k12: number, k22: number, c1: number, c2: number): Float64Array {
-  const scale = Math.max(Math.abs(k11), Math.abs(k12), Math.abs(k22));
-  if (!(scale < Infinity)) {
-    // An entry past the largest double: the block is stiffer than any impulse can move.
-    scaledBlock[0] = 0;
-    scaledBlock[1] = 0;
-    return scaledBlock;
-  }
-  const a = k11 / scale;
-  const b = k12 / scale;
-  const d = k22 / scale;
-  const scaled = a * d - b * b;
-  const inverse = scaled !== 0 ? 1 / (scaled * scale) : 0;
-  scaledBlock[0] = inverse * (d * c1 - b * c2);
-  scaledBlock[1] = inverse * (a * c2 - b * c1);
-  return scaledBlock;
-}
-
 /**
  * How far above zero a 2x2 block's determinant, k11 k22 - k12^2, must lie, relative to k11 k22, for
  * its plain arithmetic to be trusted: below, the two products agree in more digits than that
- * leaves, and the difference is their rounding (a lever arm a million times its body's radius of
- * gyration makes the block this close to rank one; no ordinary joint's comes near).
+ * leaves, and the difference is their rounding (a lever arm some 2e4 times its body's radius of
+ * gyration makes the block this close to rank one: a 1 cm disc pinned 100 m away).
  */
 export const WELL_POSED = 1e-8;
 

@@ -1,7 +1,7 @@
 import { J, JOINT_STRIDE } from '../../joints/joint-layout.js';
 import { grownCapacity } from '../../util/grow.js';
-import { BODY, DPX, DPY, DYNAMIC, VX, VY, makeSoft } from '../solver-body.js';
-import { springHertz } from '../spring-frequency.js';
+import { BODY, DPX, DPY, DYNAMIC, VX, VY } from '../solver-body.js';
+import { softSpring, Spring } from '../spring-frequency.js';
 import type { SoftStepKernel } from '../soft-step-kernel.js';
 import type { BodyStore } from '../../store/body-store.js';
 import type { JointStore } from '../../joints/joint-store.js';
@@ -31,8 +31,8 @@ const KEEP = 22;
 const RELAX = 6;
 export const LANE_PAIR = 30;
 
-/** A spring joint's softness over the sub-step (makeSoft's bias rate, mass scale, impulse scale). */
-const spring = new Float64Array(3);
+/** A spring joint's numbers in and softness out over the sub-step (see softSpring). */
+const spring = new Float64Array(8);
 
 /** Colours 0..COLOURS-1 hold joints that share no moving body; OVERFLOW, the rest, a pair each. */
 const COLOURS = 31;
@@ -152,10 +152,13 @@ export class PointDistanceJoints {
         rows[c + RELAX + SCALE] = 1;
         rows[c + RELAX + KEEP] = 0;
       } else {
-        makeSoft(springHertz(r[o + HERTZ], h), r[o + DAMPING_RATIO], h, spring);
-        rows[c + BIAS] = rows[c + RELAX + BIAS] = spring[0];
-        rows[c + SCALE] = rows[c + RELAX + SCALE] = spring[1];
-        rows[c + KEEP] = rows[c + RELAX + KEEP] = spring[2];
+        spring[Spring.hertz] = r[o + HERTZ];
+        spring[Spring.zeta] = r[o + DAMPING_RATIO];
+        spring[Spring.h] = h;
+        softSpring(spring);
+        rows[c + BIAS] = rows[c + RELAX + BIAS] = spring[Spring.bias];
+        rows[c + SCALE] = rows[c + RELAX + SCALE] = spring[Spring.massScale];
+        rows[c + KEEP] = rows[c + RELAX + KEEP] = spring[Spring.impulseScale];
       }
     }
   }

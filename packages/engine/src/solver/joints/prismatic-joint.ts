@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
-import { measureAngle, prepareSpringLimitMotor, solveScaledBlock, type JointKernel } from './joint-kernel.js';
+import { measureAngle, prepareSpringLimitMotor, WELL_POSED, type JointKernel } from './joint-kernel.js';
 import { axialLimits, axialSpeed, axialSpring, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame, type AxisFrame } from './axis-frame.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
@@ -10,6 +10,42 @@ const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPUL
 function axialMass(r: Float64Array, o: number, f: AxisFrame): void {
   const k = r[o + INV_MASS_A] + r[o + INV_MASS_B] + r[o + INV_INERTIA_A] * f.a1 * f.a1 + r[o + INV_INERTIA_B] * f.a2 * f.a2;
   r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;
+}
+
+const sliderBlock = new Float64Array(2);
+
+/**
+ * The solution b of K b = c for the block across the axis and of the angle, K = [m + iA s1^2 +
+ * iB s2^2, iA s1 + iB s2; iA s1 + iB s2, iA + iB] (1 for the last where neither body turns),
+ * where the plain arithmetic fails: far arms make the entries' determinant cancel to its rounding,
+ * and products of huge entries and speeds pass the largest double although the solution does not.
+ * The determinant comes from its terms here, each positive, m (iA + iB) + iA iB (s1 - s2)^2, with
+ * the block scaled by its largest entry. A block past the largest double, or an answer that is,
+ * gives no impulse. Into a reused array: b = (out[0], out[1]).
+ */
+function solveSliderBlock(m: number, iA: number, iB: number, s1: number, s2: number, c1: number, c2: number): Float64Array {
+  const turns = iA + iB;
+  const k11 = m + iA * s1 * s1 + iB * s2 * s2;
+  const k12 = iA * s1 + iB * s2;
+  const k22 = turns > 0 ? turns : 1;
+  const scale = Math.max(k11, k22);
+  sliderBlock[0] = 0;
+  sliderBlock[1] = 0;
+  if (!(scale < Infinity)) return sliderBlock;
+  const a = k11 / scale;
+  const b = k12 / scale;
+  const d = k22 / scale;
+  const split = ((Math.sqrt(iA) * Math.sqrt(iB)) * (s1 - s2)) / scale;
+  const det = turns > 0 ? (m / scale) * d + split * split : a * d;
+  if (!(det > 0)) return sliderBlock;
+  const inverse = 1 / (det * scale);
+  const b1 = inverse * (d * c1 - b * c2);
+  const b2 = inverse * (a * c2 - b * c1);
+  if (Number.isFinite(b1) && Number.isFinite(b2)) {
+    sliderBlock[0] = b1;
+    sliderBlock[1] = b2;
+  }
+  return sliderBlock;
 }
 
 /**
@@ -79,14 +115,17 @@ export const prismaticJoint: JointKernel = {
     // Neither body turns: the angle needs no impulse, and the block stays solvable.
     if (k22 === 0) k22 = 1;
     let det = k11 * k22 - k12 * k12;
-    let b1: number;
-    let b2: number;
-    if (Number.isFinite(det)) {
-      det = det !== 0 ? 1 / det : 0;
+    let b1 = 0;
+    let b2 = 0;
+    let plainFinite = false;
+    if (det > WELL_POSED * k11 * k22) {
+      det = 1 / det;
       b1 = det * (k22 * c1 - k12 * c2);
       b2 = det * (k11 * c2 - k12 * c1);
-    } else {
-      const block = solveScaledBlock(k11, k12, k22, c1, c2);
+      plainFinite = Number.isFinite(b1) && Number.isFinite(b2);
+    }
+    if (!plainFinite) {
+      const block = solveSliderBlock(mA + mB, iA, iB, f.s1, f.s2, c1, c2);
       b1 = block[0];
       b2 = block[1];
     }

@@ -61,14 +61,14 @@ export const targetJoint: JointKernel = {
     const oldY = r[o + LINEAR_IMPULSE_Y];
     let totalX = 0;
     let totalY = 0;
-    let exact = false;
+    let plainFinite = false;
     if (det > WELL_POSED * k11 * k22) {
       det = 1 / det;
       totalX = oldX - massScale * det * (k22 * cx - k12 * cy) - impulseScale * oldX;
       totalY = oldY - massScale * det * (k11 * cy - k12 * cx) - impulseScale * oldY;
-      exact = Number.isFinite(totalX) && Number.isFinite(totalY);
+      plainFinite = Number.isFinite(totalX) && Number.isFinite(totalY);
     }
-    if (!exact) {
+    if (!plainFinite) {
       const block = solvePointBlock(mB, 0, 0, 0, iB, rBx, rBy, cx, cy);
       totalX = oldX - massScale * block[0] - impulseScale * oldX;
       totalY = oldY - massScale * block[1] - impulseScale * oldY;
