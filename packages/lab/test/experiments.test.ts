@@ -3,7 +3,7 @@ import { Ajv } from 'ajv';
 import type { Engine } from '../src/engines/adapter.js';
 import { ENGINE_IDS } from '../src/engines/registry.js';
 import type { RunContext } from '../src/experiments/common.js';
-import { spread } from '../src/experiments/common.js';
+import { spread, warmUp } from '../src/experiments/common.js';
 import { EXPERIMENTS, cliffs, energy, falsePositives, piles, sapSleep, scale, stepTime, targets } from '../src/experiments/registry.js';
 import { cliffsVerdicts } from '../src/experiments/cliffs.js';
 import { CLIFF_SCENES } from '@maxgrid/scenes';
@@ -49,7 +49,7 @@ function expectPublishable(name: string, result: unknown): void {
 
 describe('step-time', () => {
   it('measures every engine at every N of both scenes, and its JSON validates', async () => {
-    const options = { ...stepTime.options('quick', {}), ns: [40, 80], runs: 2, seconds: 3 / 60, warmupSteps: 1 };
+    const options = { ...stepTime.options('quick', {}), ns: [40, 80], runs: 2, seconds: 3 / 60, warmupSteps: 1, warmUpMs: 5 };
     const result = await stepTime.run(options, ctx());
     expectValid(stepTime.schema, result);
     expect(result.rows).toHaveLength(2 * 2 * ENGINE_IDS.length);
@@ -65,7 +65,7 @@ describe('step-time', () => {
   });
 
   it('drops an engine at larger N once its median passes the cutoff', async () => {
-    const options = { ...stepTime.options('quick', {}), scenes: ['uniform'], ns: [30, 60], runs: 1, seconds: 1 / 60, warmupSteps: 0, cutoffMs: 0 };
+    const options = { ...stepTime.options('quick', {}), scenes: ['uniform'], ns: [30, 60], runs: 1, seconds: 1 / 60, warmupSteps: 0, warmUpMs: 0, cutoffMs: 0 };
     const result = await stepTime.run(options, ctx(['maxgrid:naive']));
     expect(result.rows.map((r) => r.n)).toEqual([30]);
     expect(result.skipped).toEqual([{ scene: 'uniform', engine: 'maxgrid:naive', fromN: 60 }]);
@@ -289,5 +289,48 @@ describe('schemas and reports', () => {
 
   it('spread gives quantiles of the values', () => {
     expect(spread([4, 1, 3, 2])).toEqual({ median: 2.5, p25: 1.75, p75: 3.25, min: 1, max: 4, mean: 2.5 });
+  });
+});
+
+describe('warmUp', () => {
+  /** A simulation whose step takes `stepMs` of wall time, recording what happened to it. */
+  function twins(stepMs: number) {
+    const made: { steps: number; disposed: boolean }[] = [];
+    const create = () => {
+      const twin = { steps: 0, disposed: false };
+      made.push(twin);
+      return {
+        step: () => {
+          const t0 = performance.now();
+          while (performance.now() - t0 < stepMs);
+          twin.steps++;
+        },
+        dispose: () => {
+          twin.disposed = true;
+        },
+      };
+    };
+    return { made, create };
+  }
+
+  it('steps fresh twins through the timed steps, one after another, until its budget runs out, and disposes each', () => {
+    const { made, create } = twins(0.05);
+    const t0 = performance.now();
+    const taken = warmUp(create, 7, 1 / 60, 60);
+    expect(performance.now() - t0).toBeGreaterThanOrEqual(60);
+    expect(made.length).toBeGreaterThan(1);
+    expect(made.every((t) => t.disposed)).toBe(true);
+    // Each twin runs the whole protocol from the start; only the last may be cut short by the budget.
+    expect(made.slice(0, -1).every((t) => t.steps === 7)).toBe(true);
+    expect(made[made.length - 1].steps).toBeLessThanOrEqual(7);
+    expect(taken).toBe(made.reduce((sum, t) => sum + t.steps, 0));
+  });
+
+  it('does nothing without a budget or without steps', () => {
+    for (const [steps, budget] of [[7, 0], [0, 50], [7, NaN]]) {
+      const { made, create } = twins(0);
+      expect(warmUp(create, steps, 1 / 60, budget)).toBe(0);
+      expect(made).toHaveLength(0);
+    }
   });
 });

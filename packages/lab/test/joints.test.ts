@@ -25,6 +25,7 @@ const TINY: JointsOptions = {
     { scene: 'ragdolls', params: { count: 2, columns: 2 } },
   ],
   warmupSteps: 5,
+  warmUpMs: 5,
   steps: 45,
   minSteps: 45,
   budgetMs: 60_000,

@@ -43,7 +43,7 @@ describe('C baseline (native/maxgrid.c)', () => {
   });
 
   it.skipIf(!hasCompiler)(`c-maxgrid quick run: JSON validates against its schema${needsC}`, async () => {
-    const options = { ...cMaxgrid.options('quick', {}), ns: [200, 500], rounds: 2, steps: 3, warmupSteps: 1 };
+    const options = { ...cMaxgrid.options('quick', {}), ns: [200, 500], rounds: 2, steps: 3, warmupSteps: 1, warmUpMs: 5 };
     const result = await cMaxgrid.run(options, ctx());
     const validate = new Ajv({ strict: false }).compile(cMaxgrid.schema);
     expect(validate(JSON.parse(JSON.stringify(result))), JSON.stringify(validate.errors)).toBe(true);

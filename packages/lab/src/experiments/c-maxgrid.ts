@@ -1,7 +1,7 @@
 import { buildScene, type Scene } from '@maxgrid/scenes';
 import type { Engine } from '../engines/adapter.js';
 import { lineChart, type ChartSpec } from '../report/charts.js';
-import { csvLine, makeMeta, maxgridOnly, metaSchema, now, spread, spreadSchema, type CBaseline, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+import { csvLine, makeMeta, maxgridOnly, metaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type CBaseline, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 
 /**
  * Issue 5, target 2: maxgrid's step against the same Max Grid algorithm in plain C
@@ -17,13 +17,15 @@ export interface CMaxgridOptions {
   /** Timed steps per round, each timed on its own, after `warmupSteps` untimed ones. */
   steps: number;
   warmupSteps: number;
+  /** maxgrid's warm-up on twins of each scene before its first round (see warmUp); C is compiled ahead. */
+  warmUpMs: number;
   dt: number;
 }
 
 export function cMaxgridDefaults(profile: Profile): CMaxgridOptions {
   return profile === 'full'
-    ? { scene: 'uniform', ns: [1000, 4000, 16000, 64000, 256000], rounds: 10, steps: 60, warmupSteps: 20, dt: 1 / 60 }
-    : { scene: 'uniform', ns: [4000, 64000], rounds: 3, steps: 10, warmupSteps: 20, dt: 1 / 60 };
+    ? { scene: 'uniform', ns: [1000, 4000, 16000, 64000, 256000], rounds: 10, steps: 60, warmupSteps: 20, warmUpMs: warmUpMs('full'), dt: 1 / 60 }
+    : { scene: 'uniform', ns: [4000, 64000], rounds: 3, steps: 10, warmupSteps: 20, warmUpMs: warmUpMs('quick'), dt: 1 / 60 };
 }
 
 export interface CComparison {
@@ -60,9 +62,10 @@ export async function compareWithC(
   c: CBaseline,
   engine: Engine,
   scene: Scene,
-  o: { rounds: number; steps: number; warmupSteps: number; dt: number },
+  o: { rounds: number; steps: number; warmupSteps: number; dt: number; warmUpMs?: number },
   ctx: RunContext,
 ): Promise<CComparison> {
+  warmUp(() => engine.create(scene), o.warmupSteps + o.steps, o.dt, o.warmUpMs ?? 0);
   const cTimes: number[] = [];
   const jsTimes: number[] = [];
   let cHash = '';

@@ -214,6 +214,52 @@ export function nRange(start: number, end: number, step: number): number[] {
 
 export const now: () => number = () => performance.now();
 
+/** A simulation as every engine adapter gives one. */
+export interface Steppable {
+  step(dt: number): void;
+  dispose(): void;
+}
+
+/**
+ * How long each engine warms up on a case before it is timed (see warmUp), per profile. Enough
+ * for V8 to optimise the step of a small scene (the slowest to warm: its functions are called few
+ * times a step) on this project's machine; docs/results.md, "How engines are timed", has the
+ * measurements behind it.
+ */
+export function warmUpMs(profile: Profile): number {
+  return profile === 'full' ? 1500 : 400;
+}
+
+/**
+ * Brings an engine's code to its steady state before it is timed, on throwaway twins of the
+ * simulation about to be timed: each twin is created from the same scene and stepped through the
+ * timed run's own `steps` (from the scene's start, so that the same code paths run), twin after
+ * twin, until `budgetMs` have passed; a twin is cut short when the budget runs out. Returns the
+ * steps the twins took.
+ *
+ * Why: JavaScript engines (maxgrid, planck, Matter.js, p2) start in V8's interpreter and
+ * WebAssembly ones (Rapier, Box2D) in its baseline compiler, and only optimise code that has run
+ * often. A large scene's step runs each loop long enough for that within a step or two; a small
+ * scene's does not, and its first few hundred steps run several times slower than the rest,
+ * which would rank engines by how fast they start rather than how fast they step. Warming on
+ * twins rather than on the timed simulation keeps the timed run starting where it always did,
+ * so figures read at its end keep their simulated time.
+ */
+export function warmUp(create: () => Steppable, steps: number, dt: number, budgetMs: number): number {
+  let taken = 0;
+  if (steps <= 0 || !(budgetMs > 0)) return 0;
+  const start = now();
+  while (now() - start < budgetMs) {
+    const twin = create();
+    try {
+      for (let i = 0; i < steps && now() - start < budgetMs; i++, taken++) twin.step(dt);
+    } finally {
+      twin.dispose();
+    }
+  }
+  return taken;
+}
+
 // JSON Schema pieces shared by every experiment's schema.
 export const spreadSchema = {
   type: 'object',

@@ -2,7 +2,7 @@ import { buildShapeScene, type ShapeScene, type ShapeSceneName } from '@maxgrid/
 import { fmt, ratioText, type Table } from '../report/tables.js';
 import { allocatePoses, resolveSceneJoints, scenePoint, UnsupportedSceneError, type PoseState, type ShapeProfile, type ShapeSimulation } from '../shape-engines/adapter.js';
 import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
-import { csvLine, makeMeta, metaSchema, now, spread, spreadSchema, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+import { csvLine, makeMeta, metaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 // Types only: registry.ts imports this file, and a value imported back would be read before it is defined.
 import type { Experiment, Overrides } from './registry.js';
 
@@ -18,8 +18,10 @@ export interface JointsOptions {
   cases: { scene: JointSceneName; params: Record<string, number> }[];
   /** The peers' settings profile: joints need their engines' iterations, not the report's one. */
   profile: ShapeProfile;
-  /** Untimed steps first, each engine in turn, so that the timed ones run compiled code. */
+  /** Untimed steps first, each engine in turn. */
   warmupSteps: number;
+  /** Each engine's warm-up on throwaway twins of a case before it is timed, so that the timed steps run compiled code (see warmUp). */
+  warmUpMs: number;
   /** Timed steps per engine, unless the budget runs out first. */
   steps: number;
   minSteps: number;
@@ -50,6 +52,7 @@ export function jointsDefaults(profile: Profile): JointsOptions {
           { scene: 'blobs', params: { count: 625, segments: 3 } },
         ],
         warmupSteps: 30,
+        warmUpMs: warmUpMs('full'),
         steps: 300,
         minSteps: 10,
         budgetMs: 20_000,
@@ -66,6 +69,7 @@ export function jointsDefaults(profile: Profile): JointsOptions {
           { scene: 'blobs', params: { count: 12 } },
         ],
         warmupSteps: 10,
+        warmUpMs: warmUpMs('quick'),
         steps: 60,
         minSteps: 5,
         budgetMs: 3000,
@@ -232,6 +236,7 @@ export async function runJoints(o: JointsOptions, ctx: RunContext): Promise<Join
     try {
       for (const engine of engines) {
         try {
+          warmUp(() => engine.create(scene, o.profile), o.warmupSteps + o.steps, o.dt, o.warmUpMs);
           running.push({ id: engine.info.id, sim: engine.create(scene, o.profile) });
         } catch (error) {
           if (!(error instanceof UnsupportedSceneError)) throw error;
@@ -322,7 +327,7 @@ export function jointsTables(result: JointsResult): Table[] {
         }),
       ];
     }),
-    note: `One simulation per engine, stepped in turn after ${String(result.meta.options.warmupSteps)} untimed steps; ${steps} timed steps each, fewer where an engine spent its budget of ${fmt(Number(result.meta.options.budgetMs) / 1000)} s. Peers with their recommended settings ('${String(result.meta.options.profile)}'), sleeping off. "not built": the engine lacks one of the scene's joint kinds or features (see below).`,
+    note: `One simulation per engine, stepped in turn after ${String(result.meta.options.warmupSteps)} untimed steps; ${steps} timed steps each, fewer where an engine spent its budget of ${fmt(Number(result.meta.options.budgetMs) / 1000)} s. Before that, each engine warmed up for ${fmt(Number(result.meta.options.warmUpMs) / 1000)} s on throwaway twins of the scene (the same steps from its start), so that small scenes are timed at their steady speed, not while V8 still compiles them. Peers with their recommended settings ('${String(result.meta.options.profile)}'), sleeping off. "not built": the engine lacks one of the scene's joint kinds or features (see below).`,
   };
   const sanity: Table = {
     title: 'Joint scenes: a physical figure after the run (and the largest revolute pin gap, m); "implausible" where the joints gave way',

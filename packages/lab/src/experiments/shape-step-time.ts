@@ -2,7 +2,7 @@ import { buildShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
 import { fmt, ratioText, type Table } from '../report/tables.js';
 import type { ShapeProfile, StageTimes } from '../shape-engines/adapter.js';
-import { csvLine, makeMeta, metaSchema, now, rotate, spread, spreadSchema, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+import { csvLine, makeMeta, metaSchema, now, rotate, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 
 /**
  * Step time on scenes of shapes, every engine on the same scene: Box2D v3's fixed benchmarks
@@ -21,6 +21,8 @@ export interface ShapeStepTimeOptions {
   runs: number;
   steps: number;
   warmupSteps: number;
+  /** Each engine's warm-up on twins of a case before its first timed run (see warmUp). */
+  warmUpMs: number;
   dt: number;
   /** An engine whose median exceeds this on a sweep is not run at larger N of it. */
   cutoffMs: number;
@@ -45,6 +47,7 @@ export function shapeStepTimeDefaults(profile: Profile): ShapeStepTimeOptions {
         runs: 3,
         steps: 300,
         warmupSteps: 60,
+        warmUpMs: warmUpMs('full'),
         cutoffMs: 1000,
       }
     : {
@@ -61,6 +64,7 @@ export function shapeStepTimeDefaults(profile: Profile): ShapeStepTimeOptions {
         runs: 1,
         steps: 60,
         warmupSteps: 30,
+        warmUpMs: warmUpMs('quick'),
         cutoffMs: 150,
       };
 }
@@ -112,6 +116,7 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
         if (out.has(id)) continue;
         const scene = buildShapeScene(c.scene, params);
         size = scene.bodies.length;
+        if (run === 0) warmUp(() => engine.create(scene, c.profile), o.warmupSteps + o.steps, o.dt, o.warmUpMs);
         const sim = engine.create(scene, c.profile);
         try {
           for (let i = 0; i < o.warmupSteps; i++) sim.step(o.dt);
@@ -195,6 +200,7 @@ export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
     title: 'Step time on shape scenes (median of runs, ms)',
     headers: ['scene', 'N', 'profile', ...engines],
     rows: cases.map((c) => [c.scene, String(c.n), c.profile, ...engines.map((e) => fmt(find(result, c.scene, c.n, e)?.ms.median))]),
+    note: `Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; engines in turn, the order rotated per run. Before its first run of a case, each engine warmed up for ${fmt(result.options.warmUpMs / 1000)} s on throwaway twins of it (the same steps from the scene's start), so that a small scene is timed at its steady speed, not while V8 still compiles it.`,
   };
   const baseline = result.options.baseline;
   const peers = peersOf(result);

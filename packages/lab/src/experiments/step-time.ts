@@ -9,6 +9,8 @@ import {
   rotate,
   spread,
   spreadSchema,
+  warmUp,
+  warmUpMs,
   type Meta,
   type Profile,
   type RunContext,
@@ -25,14 +27,19 @@ export interface StepTimeOptions {
   dt: number;
   /** Untimed steps before each run, so JIT tiers and buffers settle first. */
   warmupSteps: number;
+  /**
+   * Each engine's warm-up on twins of a scene's first N before its first run (see warmUp); the
+   * larger N that follow run the same code, already warm.
+   */
+  warmUpMs: number;
   /** An engine whose median exceeds this at some N is not run at larger N of that scene. */
   cutoffMs: number;
 }
 
 export function stepTimeDefaults(profile: Profile): StepTimeOptions {
   return profile === 'full'
-    ? { scenes: ['seed-box', 'uniform'], ns: nRange(10, 4200, 10), runs: 10, seconds: 10, dt: 1 / 60, warmupSteps: 30, cutoffMs: 1000 }
-    : { scenes: ['seed-box', 'uniform'], ns: [250, 1000, 4000], runs: 3, seconds: 0.5, dt: 1 / 60, warmupSteps: 10, cutoffMs: 100 };
+    ? { scenes: ['seed-box', 'uniform'], ns: nRange(10, 4200, 10), runs: 10, seconds: 10, dt: 1 / 60, warmupSteps: 30, warmUpMs: warmUpMs('full'), cutoffMs: 1000 }
+    : { scenes: ['seed-box', 'uniform'], ns: [250, 1000, 4000], runs: 3, seconds: 0.5, dt: 1 / 60, warmupSteps: 10, warmUpMs: warmUpMs('quick'), cutoffMs: 100 };
 }
 
 export interface StepTimeRow {
@@ -71,6 +78,7 @@ export async function runStepTime(options: StepTimeOptions, ctx: RunContext): Pr
           const id = engine.info.id;
           ctx.progress?.(done++, total, `${sceneName} N=${n} run ${run + 1} ${id}`);
           if (dropped.has(id)) continue;
+          if (run === 0 && n === options.ns[0]) warmUp(() => engine.create(scene), options.warmupSteps + steps, options.dt, options.warmUpMs);
           const sim = engine.create(scene);
           try {
             for (let i = 0; i < options.warmupSteps; i++) sim.step(options.dt);

@@ -21,7 +21,7 @@ export function cMaxgridTables(result: CMaxgridResult): Table[] {
                 ? [n(r.n), spreadText(r.cMs!), spreadText(r.jsMs!), ratioText(r.ratio!), `${r.cHash} = ${r.jsHash}`]
                 : [n(r.n), 'no timing: hashes differ', 'no timing', '–', `${r.cHash} ≠ ${r.jsHash}`],
             ),
-      note: c.status === 'ok' ? `Compiled with \`${c.command}\` (${c.version}); ${String(result.meta.options.rounds)} rounds alternating C and JS.` : undefined,
+      note: c.status === 'ok' ? `Compiled with \`${c.command}\` (${c.version}); ${String(result.meta.options.rounds)} rounds alternating C and JS${typeof result.meta.options.warmUpMs === 'number' ? `, maxgrid warmed up for ${fmt(result.meta.options.warmUpMs / 1000)} s on throwaway worlds of each N first` : ''}.` : undefined,
     },
   ];
 }

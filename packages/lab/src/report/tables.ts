@@ -42,6 +42,13 @@ export function engineTable(engines: EngineInfo[]): Table {
   };
 }
 
+/** How step-time timed each engine, from its options. */
+function stepTimeProtocol(result: StepTimeResult): string {
+  const o = result.meta.options;
+  const warm = typeof o.warmUpMs === 'number' ? ` Before its first run of a scene, each engine warmed up for ${fmt(o.warmUpMs / 1000)} s on throwaway twins of it (the same steps from the scene's start), so that small N are timed at their steady speed, not while V8 still compiles them.` : '';
+  return `Per run, each engine's own world of the run's seeded scene: ${String(o.warmupSteps)} untimed steps, then the mean of ${String(result.rows[0]?.stepsPerRun ?? '')} timed ones; engines in turn, the order rotated per run.${warm}`;
+}
+
 export function stepTimeTables(result: StepTimeResult): Table[] {
   const tables: Table[] = [];
   const scenes = [...new Set(result.rows.map((r) => r.scene))];
@@ -60,6 +67,7 @@ export function stepTimeTables(result: StepTimeResult): Table[] {
           return r ? `${fmt(r.ms.median)} [${fmt(r.ms.p25)}–${fmt(r.ms.p75)}]` : 'skipped';
         }),
       ]),
+      note: stepTimeProtocol(result),
     });
     if (hasBaseline) {
       tables.push({
