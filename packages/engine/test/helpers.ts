@@ -1,5 +1,7 @@
 import fc from 'fast-check';
-import { World, BROADPHASE_NAMES, type WorldOptions } from '../src/index.js';
+import { expect } from 'vitest';
+import { World, BROADPHASE_NAMES, type RayHit, type WorldOptions } from '../src/index.js';
+import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import { BodyStore } from '../src/store/body-store.js';
 import { TypeCode } from '../src/store/body-types.js';
 
@@ -133,5 +135,217 @@ export function hashWithPath(
     return world.stateHash();
   } finally {
     setEnabled(true);
+  }
+}
+
+/** What a world's query code exposes to tests: its per-body tests, its grid and its work counter. */
+interface QueriesInside {
+  examined: number;
+  grid: { originX: number; originY: number; cellSize: number; columns: number; rows: number };
+  contains(slot: number, px: number, py: number): boolean;
+  overlaps(slot: number, minX: number, minY: number, maxX: number, maxY: number): boolean;
+  rayBody(slot: number, x1: number, y1: number, dx: number, dy: number): number;
+  write(hit: RayHit, slot: number, t: number, x1: number, y1: number, dx: number, dy: number): RayHit;
+}
+
+export function queriesOf(world: World): QueriesInside {
+  return (world as unknown as { queries: QueriesInside }).queries;
+}
+
+function bodiesOf(world: World): BodyStore {
+  return (world as unknown as { bodies: BodyStore }).bodies;
+}
+
+/**
+ * The queries answered by testing every body in turn with the query code's own per-body tests:
+ * what a grid search must return, hit for hit and bit for bit.
+ */
+export const bruteQueries = {
+  point(world: World, px: number, py: number, mask: number): number[] {
+    const q = queriesOf(world);
+    const bodies = bodiesOf(world);
+    return world.handles().filter((h) => {
+      const s = bodies.slotOf(h);
+      return (bodies.category[s] & mask) !== 0 && q.contains(s, px, py);
+    });
+  },
+  box(world: World, minX: number, minY: number, maxX: number, maxY: number, mask: number): number[] {
+    const q = queriesOf(world);
+    const bodies = bodiesOf(world);
+    return world.handles().filter((h) => {
+      const s = bodies.slotOf(h);
+      return (bodies.category[s] & mask) !== 0 && q.overlaps(s, minX, minY, maxX, maxY);
+    });
+  },
+  rayAll(world: World, x1: number, y1: number, x2: number, y2: number, mask: number): RayHit[] {
+    const q = queriesOf(world);
+    const bodies = bodiesOf(world);
+    const hits: RayHit[] = [];
+    for (const h of world.handles()) {
+      const s = bodies.slotOf(h);
+      if ((bodies.category[s] & mask) === 0) continue;
+      const t = q.rayBody(s, x1, y1, x2 - x1, y2 - y1);
+      if (t >= 0) hits.push(q.write({ handle: 0, fraction: 0, x: 0, y: 0, normalX: 0, normalY: 0 }, s, t, x1, y1, x2 - x1, y2 - y1));
+    }
+    return hits.sort((a, b) => a.fraction - b.fraction || a.handle - b.handle);
+  },
+};
+
+/** Whether some body of the world lies outside the extent of its query grid (binned into an edge cell). */
+export function someOutsideQueryGrid(world: World): boolean {
+  const { originX, originY, cellSize, columns, rows } = queriesOf(world).grid;
+  const bodies = bodiesOf(world);
+  return world.handles().some((h) => {
+    const x = bodies.x[bodies.slotOf(h)];
+    const y = bodies.y[bodies.slotOf(h)];
+    return x < originX || y < originY || x >= originX + columns * cellSize || y >= originY + rows * cellSize;
+  });
+}
+
+/**
+ * A crowd of 260 to 1,500 bodies in a patch 150 wide, some static, one maybe destroyed, and up to
+ * four more far away (10^3 to 10^9, together or apart, in any direction), binned by WebAssembly or
+ * TypeScript: enough bodies that a fitted grid may leave some of the crowd out (1 in 256 at either
+ * end), and far ones it must leave out.
+ */
+export interface FarWorldSpec {
+  crowd: { u: number; v: number; size: number; angle: number; category: number; kind: number }[];
+  far: { distance: number; direction: number; near: number; dx: number; dy: number }[];
+  staticEvery: number;
+  destroy: boolean;
+  kernel: boolean;
+}
+
+export const CROWD_WIDTH = 150;
+
+export const farWorldArbitrary: fc.Arbitrary<FarWorldSpec> = fc.record({
+  crowd: fc.array(
+    fc.record({
+      u: fc.double({ min: 0, max: 1, noNaN: true }),
+      v: fc.double({ min: 0, max: 1, noNaN: true }),
+      size: fc.double({ min: 0.5, max: 2, noNaN: true }),
+      angle: fc.double({ min: -4, max: 4, noNaN: true }),
+      category: fc.constantFrom(1, 2, 4),
+      kind: fc.integer({ min: 0, max: 3 }),
+    }),
+    { minLength: 260, maxLength: 1500 },
+  ),
+  far: fc.array(
+    fc.record({
+      distance: fc.constantFrom(1e3, 1e4, 1e6, 1e9),
+      direction: fc.integer({ min: 0, max: 8 }),
+      // Index of an earlier far body to sit beside (touching it), or none.
+      near: fc.integer({ min: -1, max: 3 }),
+      dx: fc.double({ min: -3, max: 3, noNaN: true }),
+      dy: fc.double({ min: -3, max: 3, noNaN: true }),
+    }),
+    { minLength: 0, maxLength: 4 },
+  ),
+  staticEvery: fc.constantFrom(0, 7),
+  destroy: fc.boolean(),
+  kernel: fc.boolean(),
+});
+
+/** Eight directions, and one off every axis and diagonal. */
+const COMPASS = [[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1], [0.37, -0.81]] as const;
+
+/** Builds a FarWorldSpec's world; `shapes` makes boxes, triangles and capsules among the circles. Returns it and its far bodies' centres. */
+export function buildFarWorld(spec: FarWorldSpec, shapes: boolean): { world: World; far: { x: number; y: number }[] } {
+  setGridKernelEnabled(spec.kernel);
+  try {
+    const world = new World();
+    const make = (x: number, y: number, size: number, angle: number, category: number, kind: number, isStatic: boolean) => {
+      const type = isStatic ? ('static' as const) : ('dynamic' as const);
+      if (!shapes || kind === 0) return world.createCircle({ x, y, radius: size, category, type });
+      if (kind === 1) return world.createBox({ x, y, width: 2 * size, height: size, angle, category, type });
+      if (kind === 2) return world.createPolygon({ x, y, angle, category, type, vertices: [{ x: -size, y: -size }, { x: size, y: -size }, { x: 0, y: size }] });
+      return world.createCapsule({ x, y, length: 2 * size, radius: size / 2, angle, category, type });
+    };
+    spec.crowd.forEach((b, k) => make(b.u * CROWD_WIDTH, b.v * CROWD_WIDTH, b.size, b.angle, b.category, b.kind, spec.staticEvery > 0 && k % spec.staticEvery === 0));
+    const far: { x: number; y: number }[] = [];
+    spec.far.forEach((f, k) => {
+      const [ux, uy] = COMPASS[f.direction];
+      const beside = f.near >= 0 && f.near < far.length ? far[f.near] : null;
+      const x = beside ? beside.x + f.dx : CROWD_WIDTH / 2 + ux * f.distance;
+      const y = beside ? beside.y + f.dy : CROWD_WIDTH / 2 + uy * f.distance;
+      far.push({ x, y });
+      make(x, y, 1.5, f.dx, 1 << (k % 3), k, false);
+    });
+    if (spec.destroy) world.destroyBody(world.handles()[spec.crowd.length >> 1]);
+    return { world, far };
+  } finally {
+    setGridKernelEnabled(true);
+  }
+}
+
+/**
+ * A point a query is made from: in or around the crowd (kind 0), beside a far body (1), or 10^3 to
+ * 10^12 beyond either (2).
+ */
+export interface AnchorSpec {
+  kind: number;
+  u: number;
+  v: number;
+  k: number;
+  jx: number;
+  jy: number;
+  direction: number;
+  beyond: number;
+}
+
+export const anchorArbitrary: fc.Arbitrary<AnchorSpec> = fc.record({
+  kind: fc.integer({ min: 0, max: 2 }),
+  u: fc.double({ min: -0.2, max: 1.2, noNaN: true }),
+  v: fc.double({ min: -0.2, max: 1.2, noNaN: true }),
+  k: fc.nat(7),
+  jx: fc.double({ min: -4, max: 4, noNaN: true }),
+  jy: fc.double({ min: -4, max: 4, noNaN: true }),
+  direction: fc.integer({ min: 0, max: 8 }),
+  beyond: fc.constantFrom(1e3, 1e7, 1e12),
+});
+
+export function anchorPoint(a: AnchorSpec, far: { x: number; y: number }[]): { x: number; y: number } {
+  const crowd = { x: a.u * CROWD_WIDTH, y: a.v * CROWD_WIDTH };
+  const base = far.length > 0 && (a.kind === 1 || (a.kind === 2 && a.k % 2 === 1)) ? far[a.k % far.length] : crowd;
+  const [ux, uy] = COMPASS[a.direction];
+  if (a.kind === 2) return { x: base.x + ux * a.beyond, y: base.y + uy * a.beyond };
+  return { x: base.x + a.jx, y: base.y + a.jy };
+}
+
+export interface FarQuery {
+  kind: 'point' | 'box' | 'around' | 'ray';
+  a: AnchorSpec;
+  b: AnchorSpec;
+  size: number;
+  mask: number;
+}
+
+/** A point, a box between two anchors or around one, or a ray from one anchor to another. */
+export const farQueryArbitrary: fc.Arbitrary<FarQuery> = fc.record({
+  kind: fc.constantFrom('point' as const, 'box' as const, 'around' as const, 'ray' as const),
+  a: anchorArbitrary,
+  b: anchorArbitrary,
+  size: fc.double({ min: 0, max: 30, noNaN: true }),
+  mask: fc.constantFrom(0xffffffff, 1, 6),
+});
+
+/** Runs `queries` on the world and on bruteQueries; they must agree exactly. */
+export function expectQueriesAsBrute(world: World, far: { x: number; y: number }[], queries: FarQuery[]): void {
+  for (const query of queries) {
+    const a = anchorPoint(query.a, far);
+    const b = anchorPoint(query.b, far);
+    const { mask } = query;
+    const what = `${query.kind} (${a.x}, ${a.y}) (${b.x}, ${b.y}) mask ${mask}`;
+    if (query.kind === 'point') {
+      expect(world.queryPoint(a.x, a.y, { mask }), what).toEqual(bruteQueries.point(world, a.x, a.y, mask));
+    } else if (query.kind === 'box' || query.kind === 'around') {
+      const [minX, minY, maxX, maxY] =
+        query.kind === 'box' ? [Math.min(a.x, b.x), Math.min(a.y, b.y), Math.max(a.x, b.x), Math.max(a.y, b.y)] : [a.x - query.size, a.y - query.size, a.x + query.size, a.y + query.size];
+      expect(world.queryAABB(minX, minY, maxX, maxY, { mask }), `${what} box ${minX} ${minY} ${maxX} ${maxY}`).toEqual(bruteQueries.box(world, minX, minY, maxX, maxY, mask));
+    } else {
+      const expected = bruteQueries.rayAll(world, a.x, a.y, b.x, b.y, mask);
+      expect(world.rayCastAll(a.x, a.y, b.x, b.y, { mask }), what).toEqual(expected);
+      expect(world.rayCast(a.x, a.y, b.x, b.y, { mask }), what).toEqual(expected[0] ?? null);
+    }
   }
 }

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { World, type RayHit } from '../src/index.js';
+import { buildFarWorld, expectQueriesAsBrute, farQueryArbitrary, farWorldArbitrary, queriesOf, rng, someOutsideQueryGrid } from './helpers.js';
 
 const worldArbitrary = fc
   .array(
@@ -187,5 +188,68 @@ describe('queries agree with brute force', () => {
     expect(() => world.rayCastAll(-10, 0, 10, 0, {}, Object.freeze([]) as unknown as RayHit[])).toThrow(/out must be an array to fill, got a frozen or sealed array/);
     expect(() => world.rayCastAll(-10, 0, 10, 0, {}, [{ ...single }, Object.freeze({ ...single })])).toThrow(/out\[1\] must be a writable hit object to reuse, got a frozen object/);
     expect(() => world.rayCastAll(-10, 0, 10, 0, {}, [7 as unknown as RayHit])).toThrow(/out\[0\] must be a writable hit object to reuse, got 7/);
+  });
+});
+
+describe('queries with a few bodies far from the crowd', () => {
+  it('find what testing every body finds, for points, boxes and rays in, across and beyond the grid', () => {
+    let outside = 0;
+    fc.assert(
+      fc.property(farWorldArbitrary, fc.array(farQueryArbitrary, { minLength: 1, maxLength: 16 }), (spec, queries) => {
+        const { world, far } = buildFarWorld(spec, false);
+        expectQueriesAsBrute(world, far, queries);
+        if (someOutsideQueryGrid(world)) outside++;
+      }),
+      { numRuns: 120, seed: 5 },
+    );
+    // The grid's extent left bodies out (binned into its edge cells) in a good share of the worlds.
+    expect(outside).toBeGreaterThan(40);
+  });
+
+  it('search about as much of the grid as without them', () => {
+    const build = (far: boolean) => {
+      const random = rng(11);
+      const world = new World();
+      // 20,000 circles of radius 4 in a patch filled to a quarter, as the far-bodies scene.
+      const side = Math.sqrt((20_000 * Math.PI * 16) / 0.25);
+      for (let k = 0; k < 20_000; k++) world.createCircle({ x: (k % 141) * (side / 141) + random(), y: Math.floor(k / 141) * (side / 141) + random(), radius: 4 });
+      if (far) for (let k = 0; k < 4; k++) world.createCircle({ x: 1e6 + 10 * k, y: 1e6, radius: 4 });
+      return { world, side };
+    };
+    const work = (world: World, side: number) => {
+      const q = queriesOf(world);
+      const sample = rng(12);
+      const total = { point: 0, box: 0, ray: 0, rayAll: 0 };
+      for (let k = 0; k < 200; k++) {
+        const [x, y, x2, y2] = [sample() * side, sample() * side, sample() * side, sample() * side];
+        world.queryPoint(x, y);
+        total.point += q.examined;
+        world.queryAABB(x, y, x + 20, y + 20);
+        total.box += q.examined;
+        world.rayCast(x, y, x2, y2);
+        total.ray += q.examined;
+        world.rayCastAll(x, y, x + 50, y + 30);
+        total.rayAll += q.examined;
+      }
+      return total;
+    };
+    const near = build(false);
+    const far = build(true);
+    const without = work(near.world, near.side);
+    const withFar = work(far.world, far.side);
+    for (const kind of ['point', 'box', 'ray', 'rayAll'] as const) {
+      expect(withFar[kind], `${kind}: ${withFar[kind]} examined with the far bodies, ${without[kind]} without`).toBeLessThanOrEqual(2 * without[kind]);
+    }
+    // At the far bodies, and on rays among them and from them into the crowd, the search stays as small.
+    const q = queriesOf(far.world);
+    expect(far.world.queryPoint(1e6, 1e6)).toEqual([20_000]);
+    expect(q.examined).toBeLessThanOrEqual(64);
+    expect(far.world.rayCastAll(1e6 + 100, 1e6, 1e6 - 100, 1e6).map((hit) => hit.handle)).toEqual([20_003, 20_002, 20_001, 20_000]);
+    expect(q.examined).toBeLessThanOrEqual(64);
+    const centre = far.side / 2;
+    const hit = far.world.rayCast(1e6 - 100, 1e6 - 100, centre, centre);
+    const fromFar = q.examined;
+    expect(hit).toEqual(near.world.rayCast(1e6 - 100, 1e6 - 100, centre, centre));
+    expect(fromFar).toBeLessThanOrEqual(2 * queriesOf(near.world).examined + 64);
   });
 });

@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
+import fc from 'fast-check';
 import { World } from '../src/index.js';
+import { buildFarWorld, expectQueriesAsBrute, farQueryArbitrary, farWorldArbitrary, someOutsideQueryGrid } from './helpers.js';
 
 describe('queries with shapes', () => {
   const world = new World();
@@ -57,5 +59,21 @@ describe('queries with shapes', () => {
     expect(Math.hypot(down.normalX, down.normalY)).toBeCloseTo(1, 12);
     // From inside a shape the ray ignores it.
     expect(world.rayCast(5, 0, 5, 10)).toBeNull();
+  });
+});
+
+describe('shape queries with a few bodies far from the crowd', () => {
+  it('find what testing every body finds, for points, boxes and rays in, across and beyond the grid', () => {
+    let outside = 0;
+    fc.assert(
+      fc.property(farWorldArbitrary, fc.array(farQueryArbitrary, { minLength: 1, maxLength: 16 }), (spec, queries) => {
+        const { world, far } = buildFarWorld(spec, true);
+        expectQueriesAsBrute(world, far, queries);
+        if (someOutsideQueryGrid(world)) outside++;
+      }),
+      { numRuns: 60, seed: 6 },
+    );
+    // The grid's extent left bodies out (binned into its edge cells) in a good share of the worlds.
+    expect(outside).toBeGreaterThan(20);
   });
 });

@@ -94,8 +94,8 @@ export class LiveExtent implements Extent {
   /**
    * Narrows the extent to where the bodies are when a grid of `cellSize` over it would need more
    * than `budget` cells (see ExtentFitter): the bodies' own box rather than the world's (a crowd
-   * in a corner of a huge box), then all but 1/256 of them (a few far away). Call after measure;
-   * queries, which need every body in its cell, do not.
+   * in a corner of a huge box), then all but 1/256 of them (a few far away). Call after measure,
+   * whose box it narrows in place: read that box first where it is needed (Queries does).
    */
   fit(bodies: BodyStore, cellSize: number, budget: number): void {
     if (this.count < 2 || cellsOver(this.minX, this.minY, this.maxX, this.maxY, cellSize) <= budget) return;

@@ -21,6 +21,12 @@ export interface RayHit {
  * when the world's geometry changed since the last query (`version`), so many queries between
  * two steps share one build. Cell size is the largest diameter, so a circle that contains a point,
  * or is crossed by a ray at a point, has its centre within one cell of that point.
+ *
+ * The grid is laid over an extent fitted as the broad-phase's are (see extent-fit.ts): a few
+ * bodies far from the crowd would otherwise make every cell hold the whole crowd. Bodies beyond
+ * the extent are binned into its edge cells (cellIndex in cell-grid.ts), so every search clamps
+ * its cells the same way: clamping is monotonic and moves no two cells further apart, so a body
+ * within one cell of a point stays within one clamped cell of that point's clamped cell.
  */
 export class Queries {
   private readonly live = new LiveExtent();
@@ -28,6 +34,16 @@ export class Queries {
   private builtVersion = -1;
   private stamp = new Uint32Array(0);
   private epoch = 0;
+  /**
+   * The box around every body's centre, widened by a cell, before the extent is fitted: a point,
+   * box or ray beyond it touches nothing, and need not search the clamped edge cells.
+   */
+  private reachMinX = 0;
+  private reachMinY = 0;
+  private reachMaxX = 0;
+  private reachMaxY = 0;
+  /** Cell entries the last query read, before any test: how much of the grid it searched, for tests. */
+  examined = 0;
 
   /** A world's shapes once it has them: bodies are then tested shape by shape, their bounding circles only narrowing the search. */
   shapes: ShapeStore | null = null;
@@ -89,14 +105,15 @@ export class Queries {
   }
 
   point(version: number, px: number, py: number, mask: number, out: number[]): number[] {
-    if (!this.prepare(version)) return out;
+    this.examined = 0;
+    if (!this.prepare(version) || !this.reaches(px, py, px, py)) return out;
     const { grid, bodies } = this;
     const column = grid.columnOf(px);
     const row = grid.rowOf(py);
-    for (let r = Math.max(row - 1, 0); r <= Math.min(row + 1, grid.rows - 1); r++) {
-      const c0 = Math.max(column - 1, 0);
-      const c1 = Math.min(column + 1, grid.columns - 1);
-      if (c0 > c1) continue;
+    const c0 = clamp(column - 1, 0, grid.columns - 1);
+    const c1 = clamp(column + 1, 0, grid.columns - 1);
+    for (let r = clamp(row - 1, 0, grid.rows - 1); r <= clamp(row + 1, 0, grid.rows - 1); r++) {
+      this.examined += grid.cellStart[r * grid.columns + c1 + 1] - grid.cellStart[r * grid.columns + c0];
       for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
         const slot = grid.sortedSlot[m];
         if ((bodies.category[slot] & mask) === 0) continue;
@@ -120,14 +137,15 @@ export class Queries {
   }
 
   private inBox(version: number, minX: number, minY: number, maxX: number, maxY: number, mask: number, out: number[], handles: boolean): number[] {
-    if (!this.prepare(version)) return out;
+    this.examined = 0;
+    if (!this.prepare(version) || !this.reaches(minX, minY, maxX, maxY)) return out;
     const { grid, bodies } = this;
-    const c0 = Math.max(grid.columnOf(minX) - 1, 0);
-    const c1 = Math.min(grid.columnOf(maxX) + 1, grid.columns - 1);
-    const r0 = Math.max(grid.rowOf(minY) - 1, 0);
-    const r1 = Math.min(grid.rowOf(maxY) + 1, grid.rows - 1);
-    if (c0 > c1) return out;
+    const c0 = clamp(grid.columnOf(minX) - 1, 0, grid.columns - 1);
+    const c1 = clamp(grid.columnOf(maxX) + 1, 0, grid.columns - 1);
+    const r0 = clamp(grid.rowOf(minY) - 1, 0, grid.rows - 1);
+    const r1 = clamp(grid.rowOf(maxY) + 1, 0, grid.rows - 1);
     for (let r = r0; r <= r1; r++) {
+      this.examined += grid.cellStart[r * grid.columns + c1 + 1] - grid.cellStart[r * grid.columns + c0];
       for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
         const slot = grid.sortedSlot[m];
         if ((bodies.category[slot] & mask) === 0) continue;
@@ -193,54 +211,56 @@ export class Queries {
   }
 
   /**
-   * Walks the cells the segment crosses (Amanatides & Woo) over a grid widened by one cell on each
-   * side, testing the 3x3 cells around each; a stamp per body avoids testing one twice. With
-   * `all` false it stops once the next cell starts beyond the best hit found.
+   * Walks the cells the segment crosses (Amanatides & Woo), testing the 3x3 cells around each; a
+   * stamp per body avoids testing one twice. With `all` false it stops once the next cell starts
+   * beyond the best hit found. The cells are clamped into the grid as its bodies' are: outside the
+   * extent the walk stays in the edge cell the ray's point clamps to, and moves on only where the
+   * ray crosses a boundary between two cells of the grid, so it takes at most columns + rows steps
+   * however far the ray reaches, and the window around each step holds every body that the ray
+   * can touch while its point clamps there (see the class comment).
    */
   private walk(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, all: boolean): void {
+    this.examined = 0;
     if (!this.prepare(version)) return;
     const { grid } = this;
     const dx = x2 - x1;
     const dy = y2 - y1;
     const cs = grid.cellSize;
-    // Clip the segment to the widened grid: columns -1..columns, rows -1..rows.
-    const loX = grid.originX - cs;
-    const loY = grid.originY - cs;
-    const hiX = grid.originX + (grid.columns + 1) * cs;
-    const hiY = grid.originY + (grid.rows + 1) * cs;
     clip.enter = 0;
     clip.exit = 1;
-    if (!clipAxis(x1, dx, loX, hiX) || !clipAxis(y1, dy, loY, hiY)) return;
+    if (!clipAxis(x1, dx, this.reachMinX, this.reachMaxX) || !clipAxis(y1, dy, this.reachMinY, this.reachMaxY)) return;
     const tEnter = clip.enter;
     const tExit = clip.exit;
     if (tEnter > tExit) return;
     this.epoch++;
-    let column = clamp(grid.columnOf(x1 + dx * tEnter), -1, grid.columns);
-    let row = clamp(grid.rowOf(y1 + dy * tEnter), -1, grid.rows);
+    const lastColumn = dx > 0 ? grid.columns - 1 : 0;
+    const lastRow = dy > 0 ? grid.rows - 1 : 0;
+    let column = clamp(grid.columnOf(x1 + dx * tEnter), 0, grid.columns - 1);
+    let row = clamp(grid.rowOf(y1 + dy * tEnter), 0, grid.rows - 1);
     const stepX = dx > 0 ? 1 : -1;
     const stepY = dy > 0 ? 1 : -1;
-    const deltaX = dx === 0 ? Infinity : cs / Math.abs(dx);
-    const deltaY = dy === 0 ? Infinity : cs / Math.abs(dy);
-    const boundaryX = grid.originX + (column + (dx > 0 ? 1 : 0)) * cs;
-    const boundaryY = grid.originY + (row + (dy > 0 ? 1 : 0)) * cs;
-    let nextX = dx === 0 ? Infinity : (boundaryX - x1) / dx;
-    let nextY = dy === 0 ? Infinity : (boundaryY - y1) / dy;
+    const deltaX = cs / Math.abs(dx);
+    const deltaY = cs / Math.abs(dy);
+    // The fractions at which the ray crosses into the next column and row; none once in the last
+    // one it moves towards, beyond which its point clamps into that one.
+    let nextX = dx === 0 || column === lastColumn ? Infinity : (grid.originX + (column + (dx > 0 ? 1 : 0)) * cs - x1) / dx;
+    let nextY = dy === 0 || row === lastRow ? Infinity : (grid.originY + (row + (dy > 0 ? 1 : 0)) * cs - y1) / dy;
     let cellEnter = tEnter;
-    const guard = grid.columns + grid.rows + 8;
-    for (let visited = 0; visited <= guard * 2; visited++) {
-      if (cellEnter > tExit) break;
-      if (!all && cellEnter > this.bestFraction) break;
+    // Each step moves a column or a row towards the last, so the walk ends even if rounding stalls the fractions.
+    for (;;) {
       this.testWindow(column, row, x1, y1, dx, dy, mask, all);
       if (nextX < nextY) {
         cellEnter = nextX;
-        nextX += deltaX;
         column += stepX;
-      } else {
+        nextX = column === lastColumn ? Infinity : nextX + deltaX;
+      } else if (nextY !== Infinity) {
         cellEnter = nextY;
-        nextY += deltaY;
         row += stepY;
+        nextY = row === lastRow ? Infinity : nextY + deltaY;
+      } else {
+        break;
       }
-      if (column < -1 || column > grid.columns || row < -1 || row > grid.rows) break;
+      if (cellEnter > tExit || (!all && cellEnter > this.bestFraction)) break;
     }
   }
 
@@ -250,6 +270,7 @@ export class Queries {
     const c1 = Math.min(column + 1, grid.columns - 1);
     if (c0 > c1) return;
     for (let r = Math.max(row - 1, 0); r <= Math.min(row + 1, grid.rows - 1); r++) {
+      this.examined += grid.cellStart[r * grid.columns + c1 + 1] - grid.cellStart[r * grid.columns + c0];
       for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
         if (stamp[m] === epoch) continue;
         stamp[m] = epoch;
@@ -279,7 +300,14 @@ export class Queries {
       live.measure(bodies, true);
       if (live.count > 0) {
         const cellSize = live.cellSizeFor(live.maxRadius);
-        this.grid.build(bodies, live.dense ? null : live.slots, 0, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, 4 * live.count + 64);
+        const budget = 4 * live.count + 64;
+        // A cell is at least a diameter: every body touching a point lies within half a cell of it.
+        this.reachMinX = live.minX - cellSize;
+        this.reachMinY = live.minY - cellSize;
+        this.reachMaxX = live.maxX + cellSize;
+        this.reachMaxY = live.maxY + cellSize;
+        live.fit(bodies, cellSize, budget);
+        this.grid.build(bodies, live.dense ? null : live.slots, 0, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, budget);
         if (this.stamp.length < live.count) this.stamp = new Uint32Array(Math.max(live.count, 2 * this.stamp.length));
       }
       this.builtVersion = version;
@@ -289,6 +317,11 @@ export class Queries {
       this.epoch = 0;
     }
     return live.count > 0;
+  }
+
+  /** Whether the box meets the reach box: else it touches no body. */
+  private reaches(minX: number, minY: number, maxX: number, maxY: number): boolean {
+    return maxX >= this.reachMinX && minX <= this.reachMaxX && maxY >= this.reachMinY && minY <= this.reachMaxY;
   }
 }
 
