@@ -221,10 +221,9 @@ export interface Steppable {
 }
 
 /**
- * How long each engine warms up on a case before it is timed (see warmUp), per profile. Enough
- * for V8 to optimise the step of a small scene (the slowest to warm: its functions are called few
- * times a step) on this project's machine; docs/results.md, "How engines are timed", has the
- * measurements behind it.
+ * How long each engine warms up on a case before it is timed (see warmUp), per profile: enough
+ * for V8 to optimise the step of a small scene, the slowest to warm since its functions run few
+ * times a step (docs/results.md, "How engines are timed", has the measurements behind it).
  */
 export function warmUpMs(profile: Profile): number {
   return profile === 'full' ? 1500 : 400;

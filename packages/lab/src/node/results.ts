@@ -1,6 +1,6 @@
 import { join } from 'node:path';
 import type { EngineInfo } from '../engines/adapter.js';
-import type { Profile } from '../experiments/common.js';
+import { warmUpMs, type Profile } from '../experiments/common.js';
 import { EXPERIMENTS } from '../experiments/registry.js';
 import { htmlReport, type ReportSection } from '../report/html.js';
 import { machineLine, sectionMarkdown } from '../report/markdown.js';
@@ -10,6 +10,13 @@ import { writeCharts, writeText } from './output.js';
 import { runExperiment } from './run.js';
 
 const ORDER = ['step-time', 'energy', 'false-positives', 'scale', 'sap-sleep', 'cliffs', 'threads-load', 'piles', 'shape-step-time', 'stability', 'shape-energy', 'shape-false-positives', 'joints', 'integrators', 'c-maxgrid', 'targets', 'sandbox-render'] as const;
+
+/**
+ * The warm-up every timing experiment gives each engine (experiments/common.ts warmUp), and the
+ * measurement that asked for it.
+ */
+export const HOW_ENGINES_ARE_TIMED =
+  `**How engines are timed.** Before an engine is timed on a case (shape-step-time, joints, c-maxgrid, and step-time at each scene's first N), it steps throwaway twins of that case, each from the scene's start through the timed run's own steps, for ${warmUpMs('quick') / 1000} s (quick) or ${warmUpMs('full') / 1000} s (full). JavaScript engines (maxgrid, planck, Matter.js, p2) start in V8's interpreter and WebAssembly ones (Rapier, Box2D) in its baseline compiler, and V8 optimises only code that has run often; a large scene's loops run long enough for that within a step, a small scene's do not. Timed cold, a small scene's first hundreds of steps run several times slower than the rest: on polygon-box at 250 bodies, fresh worlds timed over their steps 30 to 90 one after another in one process took maxgrid 0.54, 0.25, 0.19, then about 0.07 ms a step, and Rapier 0.22, 0.15, 0.12, then about 0.10 ms; the three-body car 0.22 then 0.025 ms (box2d-wasm 0.009 then 0.004-0.005). Without the warm-up the lab ranked engines by how fast they start, and had Rapier and Box2D overtake Max Grid on polygon-box from N = 250. The timed simulation itself still starts from the scene's start, so figures read after a run keep their simulated time.`;
 
 export interface ResultsRequest {
   profile: Profile;
@@ -69,6 +76,8 @@ export async function runResults(req: ResultsRequest): Promise<string[]> {
     `${machineLine(environment)}. Measured in Node, except the browser-parity target (T6), which steps the same world in headless Chromium through the lab page (\`/lab.html\` in the sandbox, which also runs the quick experiments in a browser), and T7 (\`sandbox-render\`), which times the sandbox page itself in headless Chromium: this machine has no GPU, so its WebGL is SwiftShader; [gpu/sandbox-render.md](gpu/sandbox-render.md) is the same command on a GPU machine.`,
     '',
     'The machine is shared and has two cores, so absolute times are noisy: read the ratios, measured in the same run with engines interleaved per N, rather than single times.',
+    '',
+    HOW_ENGINES_ARE_TIMED,
     req.profile === 'quick' ? 'This is the **quick** profile (few N, short runs); `--full` runs the report\'s 10..4200 by 10, 10 s, 10 runs.' : '',
     '',
     markdownTable(engineTable(engineList)),
