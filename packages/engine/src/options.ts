@@ -375,20 +375,28 @@ export function resolveCircle(input: unknown, defaultRestitution: number): NewBo
       throw new RangeError(`mass from density ${density} and radius ${radius} is ${mass}, outside [${1 / MAX_MAGNITUDE}, ${MAX_MAGNITUDE}] (so that no step can overflow)`);
     }
   }
+  const type = TypeCode[o.type === undefined ? 'dynamic' : bodyType(o.type)];
   return {
     x: boundedNumber('x', o.x),
     y: boundedNumber('y', o.y),
-    vx: o.vx === undefined ? 0 : boundedNumber('vx', o.vx),
-    vy: o.vy === undefined ? 0 : boundedNumber('vy', o.vy),
+    vx: o.vx === undefined ? 0 : type === TypeCode.static ? staticVelocity('vx', o.vx) : boundedNumber('vx', o.vx),
+    vy: o.vy === undefined ? 0 : type === TypeCode.static ? staticVelocity('vy', o.vy) : boundedNumber('vy', o.vy),
     radius,
     mass,
     restitution: o.restitution === undefined ? defaultRestitution : restitutionNumber('restitution', o.restitution),
-    type: TypeCode[o.type === undefined ? 'dynamic' : bodyType(o.type)],
+    type,
     category: o.category === undefined ? 1 : layerBits('category', o.category),
     mask: o.mask === undefined ? 0xffffffff : layerBits('mask', o.mask),
     gravityScale: o.gravityScale === undefined ? 1 : boundedNumber('gravityScale', o.gravityScale),
     linearDamping: o.linearDamping === undefined ? 0 : nonNegativeNumber('linearDamping', o.linearDamping),
   };
+}
+
+/** A static body takes no velocity: 0 is accepted, anything else refused by name. */
+export function staticVelocity(field: string, value: unknown): number {
+  const v = finiteNumber(field, value);
+  if (v !== 0) throw new RangeError(`${field} of a static body must be 0, got ${v}; make it kinematic to move it`);
+  return 0;
 }
 
 /** A restitution: >= 0, at most MAX_RESTITUTION (above 1 a bounce adds energy, and speeds are capped at the world's top speed). */

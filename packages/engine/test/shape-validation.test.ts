@@ -54,6 +54,23 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
     refuses(world, () => world.createBox({ x: 0, y: 0, width: 1, height: 1, type: 'static', vx: 3 }), RangeError, /vx of a static body must be 0/);
   });
 
+  it('a static circle takes no velocity either, on the circle engine and on the shape route, as every other creator', () => {
+    const circles = new World({ gravity: { x: 0, y: 0 } });
+    circles.createCircle({ x: 5, y: 5, radius: 1 });
+    for (const w of [circles, world]) {
+      refuses(w, () => w.createCircle({ x: 0, y: 0, radius: 1, type: 'static', vx: 3 }), RangeError, /vx of a static body must be 0, got 3; make it kinematic/);
+      refuses(w, () => w.createCircle({ x: 0, y: 0, radius: 1, type: 'static', vy: -1e-300 }), RangeError, /vy of a static body must be 0/);
+      refuses(w, () => w.createCircle({ x: 0, y: 0, radius: 1, type: 'static', vx: NaN }), TypeError, /vx must be a finite number, got NaN/);
+      refuses(w, () => w.createBody({ x: 0, y: 0, type: 'static', vy: 2 }), RangeError, /vy of a static body must be 0/);
+      const h = w.createCircle({ x: 0, y: 0, radius: 1, type: 'static', vx: 0, vy: -0 });
+      expect(w.getBody(h)).toMatchObject({ vx: 0, vy: 0, type: 'static' });
+      w.destroyBody(h);
+      const k = w.createCircle({ x: 0, y: 0, radius: 1, type: 'kinematic', vx: 3 });
+      expect(w.getBody(k).vx).toBe(3);
+      w.destroyBody(k);
+    }
+  });
+
   it('a mass given at either bound is accepted for any size, though its density times the area rounds past it', () => {
     const w = new World();
     for (const mass of [1e100, 1e-100]) {

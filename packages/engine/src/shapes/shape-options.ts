@@ -5,7 +5,7 @@ import type { NewShape } from '../store/shape-store.js';
 import { cosSin } from '../math/trig.js';
 import { areaProperties, checkPolygon, emptyAreaProperties, Geometry, MAX_POLYGON_VERTICES } from './geometry.js';
 import { boundedNonNegative, boundedNumber, boundedPositive, describeValue, finiteNumber, nonNegativeNumber, plainObject, knownKeys, MAX_SHAPE_REACH } from '../util/validate.js';
-import { bodyType, flag, layerBits, restitutionNumber, type Vector } from '../options.js';
+import { bodyType, flag, layerBits, restitutionNumber, staticVelocity, type Vector } from '../options.js';
 
 /** Where a body starts and how it moves. Angles in radians; see docs/engine.md for their sense. */
 export interface BodyOptions {
@@ -137,13 +137,6 @@ export function resolveBody(o: Record<string, unknown>): ResolvedBody {
     linearDamping: o.linearDamping === undefined ? 0 : nonNegativeNumber('linearDamping', o.linearDamping),
     angularDamping: o.angularDamping === undefined ? 0 : nonNegativeNumber('angularDamping', o.angularDamping),
   };
-}
-
-/** A static body takes no velocity: 0 is accepted, anything else refused by name. */
-function staticVelocity(field: string, value: unknown): number {
-  const v = finiteNumber(field, value);
-  if (v !== 0) throw new RangeError(`${field} of a static body must be 0, got ${v}; make it kinematic to move it`);
-  return 0;
 }
 
 export function resolveMaterial(o: Record<string, unknown>, defaults: MaterialDefaults, geometry: Geometry): NewShape {
