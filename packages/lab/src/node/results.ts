@@ -78,6 +78,7 @@ export async function runResults(req: ResultsRequest): Promise<string[]> {
     'The machine is shared and has two cores, so absolute times are noisy: read the ratios, measured in the same run with engines interleaved per N, rather than single times.',
     '',
     HOW_ENGINES_ARE_TIMED,
+    '',
     req.profile === 'quick' ? 'This is the **quick** profile (few N, short runs); `--full` runs the report\'s 10..4200 by 10, 10 s, 10 runs.' : '',
     '',
     markdownTable(engineTable(engineList)),
