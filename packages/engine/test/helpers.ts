@@ -349,3 +349,20 @@ export function expectQueriesAsBrute(world: World, far: { x: number; y: number }
     }
   }
 }
+
+/**
+ * Runs `numRuns` random far-body worlds (circles, or with `shapes` boxes and polygons) through
+ * expectQueriesAsBrute; returns in how many the query grid left some body outside its extent.
+ */
+export function farQueriesAsBrute(shapes: boolean, numRuns: number, seed: number): number {
+  let outside = 0;
+  fc.assert(
+    fc.property(farWorldArbitrary, fc.array(farQueryArbitrary, { minLength: 1, maxLength: 16 }), (spec, queries) => {
+      const { world, far } = buildFarWorld(spec, shapes);
+      expectQueriesAsBrute(world, far, queries);
+      if (someOutsideQueryGrid(world)) outside++;
+    }),
+    { numRuns, seed },
+  );
+  return outside;
+}
