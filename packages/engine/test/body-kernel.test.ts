@@ -19,14 +19,15 @@ function busyWorld(options: WorldOptions): World {
   const world = new World({ bounds: { width: 400, height: 300 }, ...options });
   for (let i = 0; i < 600; i++) {
     const fast = i % 97 === 0;
+    const type = i % 50 === 7 ? 'kinematic' : i % 50 === 8 ? 'static' : 'dynamic';
     world.createCircle({
       x: 10 + (i % 30) * 12.5,
       y: 10 + Math.floor(i / 30) * 13,
       radius: 3 + (i % 4),
-      vx: fast ? 3e6 : ((i * 37) % 23) - 11,
-      vy: fast ? -7e4 : ((i * 53) % 19) - 9,
+      vx: type === 'static' ? 0 : fast ? 3e6 : ((i * 37) % 23) - 11,
+      vy: type === 'static' ? 0 : fast ? -7e4 : ((i * 53) % 19) - 9,
       restitution: (i % 5) / 4,
-      type: i % 50 === 7 ? 'kinematic' : i % 50 === 8 ? 'static' : 'dynamic',
+      type,
     });
   }
   return world;

@@ -40,7 +40,9 @@ function apply(world: World, c: Call, segments: number[]): void {
       return;
     case 'create': {
       const r = 2 + 10 * c.r;
-      world.createCircle({ x: r + (SIZE - 2 * r) * c.x, y: r + (SIZE - 2 * r) * c.y, radius: r, vx: 400 * c.vx - 200, vy: 400 * c.vy - 200, type: c.type === 0 ? 'static' : c.type === 1 ? 'kinematic' : 'dynamic' });
+      // A static body takes no velocity (createCircle refuses one).
+      const still = c.type === 0;
+      world.createCircle({ x: r + (SIZE - 2 * r) * c.x, y: r + (SIZE - 2 * r) * c.y, radius: r, vx: still ? 0 : 400 * c.vx - 200, vy: still ? 0 : 400 * c.vy - 200, type: still ? 'static' : c.type === 1 ? 'kinematic' : 'dynamic' });
       return;
     }
     case 'segment':
