@@ -25,7 +25,7 @@ import { atan2, cosSin } from './math/trig.js';
 import { BodyFlag } from './store/rigid-columns.js';
 import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type NewShape } from './store/shape-store.js';
 import { Geometry, SHAPE_KIND_NAMES, areaProperties, emptyAreaProperties } from './shapes/geometry.js';
-import { bodyBounds } from './shapes/bounds.js';
+import { bodyBounds, poseOf } from './shapes/bounds.js';
 import {
   applyMassOption,
   BODY_KEYS,
@@ -81,6 +81,7 @@ function circleIntegrator(name: IntegratorName): CircleIntegratorName {
   return name === 'rk4' ? 'semi-implicit-euler' : name;
 }
 const box4 = new Float64Array(4);
+const pose4 = new Float64Array(4);
 // Scratch outside the world, so that a call refused after using it leaves the snapshot's bytes as they were.
 const massScratch = emptyAreaProperties();
 const scratchGeometry = new Geometry();
@@ -1674,7 +1675,7 @@ export class World {
     if (this.shapes.engaged) {
       if (rigid!.firstShape[slot] < 0) this.assertPointInBox(cx, cy);
       else if (this.bounds) {
-        bodyBounds(this.shapes.store, rigid!.firstShape[slot], cx, cy, c, s, box4);
+        bodyBounds(this.shapes.store, rigid!.firstShape[slot], poseOf(pose4, cx, cy, c, s), box4);
         this.assertBoundsInBox(box4);
       }
     } else {

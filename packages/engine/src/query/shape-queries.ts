@@ -4,13 +4,14 @@ import { WorldShape } from '../narrowphase/world-shape.js';
 import { ShapeDistance } from '../narrowphase/distance.js';
 import { rayCircle } from './ray-circle.js';
 import { rayCapsule } from './ray-capsule.js';
-import { shapeBounds } from '../shapes/bounds.js';
+import { poseOf, shapeBounds } from '../shapes/bounds.js';
 
 const placed = new WorldShape();
 const probe = new WorldShape();
 const distance = new ShapeDistance();
 const box = new Float64Array(4);
 const bounds = new Float64Array(4);
+const pose = new Float64Array(4);
 
 /** Where the last rayShape hit entered: the outward unit normal there. */
 export const rayNormal = { x: 0, y: 0 };
@@ -28,7 +29,7 @@ export function shapeContains(shapes: ShapeStore, slot: number, px: number, py: 
  * alone: the distance to a box far larger than the shape loses the shape in its rounding.
  */
 export function shapeOverlapsBox(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, minX: number, minY: number, maxX: number, maxY: number): boolean {
-  const b = shapeBounds(shapes, slot, px, py, c, s, bounds);
+  const b = shapeBounds(shapes, slot, poseOf(pose, px, py, c, s), bounds);
   if (b[0] >= minX && b[2] <= maxX && b[1] >= minY && b[3] <= maxY) return true;
   if (b[2] < minX || b[0] > maxX || b[3] < minY || b[1] > maxY) return false;
   placed.fromStore(shapes, slot, px, py, c, s);

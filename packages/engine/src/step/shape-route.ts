@@ -16,7 +16,7 @@ import { ContinuousShapes } from '../solver/continuous-shapes.js';
 import type { Queries } from '../query/queries.js';
 import type { ContactEvents } from '../store/contact-events.js';
 import { clearForces } from '../integrate/motion.js';
-import { bodyBounds, shapeBounds } from '../shapes/bounds.js';
+import { bodyBounds, poseOf, shapeBounds } from '../shapes/bounds.js';
 import type { StepStats } from './stats.js';
 import { nowMs } from '../util/timer.js';
 
@@ -45,6 +45,7 @@ export interface ShapeRouteSettings {
 }
 
 const bounds = new Float64Array(4);
+const pose = new Float64Array(4);
 
 /**
  * The step of a world with shapes, as a list of stages over the stores:
@@ -172,7 +173,7 @@ export class ShapeRoute {
     for (let slot = 0; slot < bodies.slotCount; slot++) {
       if (bodies.type[slot] !== TypeCode.static) continue;
       for (let s = rigid.firstShape[slot]; s >= 0; s = shapes.next[s]) {
-        shapeBounds(shapes, s, bodies.x[slot], bodies.y[slot], rigid.c[slot], rigid.s[slot], bounds);
+        shapeBounds(shapes, s, poseOf(pose, bodies.x[slot], bodies.y[slot], rigid.c[slot], rigid.s[slot]), bounds);
         tree.add(s, bounds[0], bounds[1], bounds[2], bounds[3]);
       }
     }
@@ -202,7 +203,11 @@ export class ShapeRoute {
       // leave it on or through the opposite wall.
       const qx = px < -width || px > 2 * width ? (px < 0 ? 0 : width) : px;
       const qy = py < -height || py > 2 * height ? (py < 0 ? 0 : height) : py;
-      bodyBounds(shapes, rigid.firstShape[i], qx, qy, rigid.c[i], rigid.s[i], bounds);
+      pose[0] = qx;
+      pose[1] = qy;
+      pose[2] = rigid.c[i];
+      pose[3] = rigid.s[i];
+      bodyBounds(shapes, rigid.firstShape[i], pose, bounds);
       x[i] = qx + containShift(bounds[0], bounds[2], width);
       y[i] = qy + containShift(bounds[1], bounds[3], height);
     }
