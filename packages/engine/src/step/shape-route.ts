@@ -203,6 +203,7 @@ export class ShapeRoute {
       // leave it on or through the opposite wall.
       const qx = px < -width || px > 2 * width ? (px < 0 ? 0 : width) : px;
       const qy = py < -height || py > 2 * height ? (py < 0 ? 0 : height) : py;
+      // Written here rather than through poseOf: four numbers passed to a call are what the array spares.
       pose[0] = qx;
       pose[1] = qy;
       pose[2] = rigid.c[i];

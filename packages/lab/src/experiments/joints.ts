@@ -1,5 +1,5 @@
 import { buildShapeScene, type ShapeScene, type ShapeSceneName } from '@maxgrid/scenes';
-import { fmt, ratioText, type Table } from '../report/tables.js';
+import { fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
 import { allocatePoses, resolveSceneJoints, scenePoint, UnsupportedSceneError, type PoseState, type ShapeProfile, type ShapeSimulation } from '../shape-engines/adapter.js';
 import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
 import { csvLine, makeMeta, metaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
@@ -327,7 +327,7 @@ export function jointsTables(result: JointsResult): Table[] {
         }),
       ];
     }),
-    note: `One simulation per engine, stepped in turn after ${String(result.meta.options.warmupSteps)} untimed steps; ${steps} timed steps each, fewer where an engine spent its budget of ${fmt(Number(result.meta.options.budgetMs) / 1000)} s. Before that, each engine warmed up for ${fmt(Number(result.meta.options.warmUpMs) / 1000)} s on throwaway twins of the scene (the same steps from its start), so that small scenes are timed at their steady speed, not while V8 still compiles them. Peers with their recommended settings ('${String(result.meta.options.profile)}'), sleeping off. "not built": the engine lacks one of the scene's joint kinds or features (see below).`,
+    note: `One simulation per engine, stepped in turn after ${String(result.meta.options.warmupSteps)} untimed steps; ${steps} timed steps each, fewer where an engine spent its budget of ${fmt(Number(result.meta.options.budgetMs) / 1000)} s.${warmUpNote('Before that', result.meta.options.warmUpMs)} Peers with their recommended settings ('${String(result.meta.options.profile)}'), sleeping off. "not built": the engine lacks one of the scene's joint kinds or features (see below).`,
   };
   const sanity: Table = {
     title: 'Joint scenes: a physical figure after the run (and the largest revolute pin gap, m); "implausible" where the joints gave way',

@@ -1,6 +1,6 @@
 import { buildShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
-import { fmt, ratioText, type Table } from '../report/tables.js';
+import { fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
 import type { ShapeProfile, StageTimes } from '../shape-engines/adapter.js';
 import { csvLine, makeMeta, metaSchema, now, rotate, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 
@@ -200,7 +200,7 @@ export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
     title: 'Step time on shape scenes (median of runs, ms)',
     headers: ['scene', 'N', 'profile', ...engines],
     rows: cases.map((c) => [c.scene, String(c.n), c.profile, ...engines.map((e) => fmt(find(result, c.scene, c.n, e)?.ms.median))]),
-    note: `Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; engines in turn, the order rotated per run. Before its first run of a case, each engine warmed up for ${fmt(result.options.warmUpMs / 1000)} s on throwaway twins of it (the same steps from the scene's start), so that a small scene is timed at its steady speed, not while V8 still compiles it.`,
+    note: `Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; engines in turn, the order rotated per run.${warmUpNote('Before its first run of a case', result.options.warmUpMs)}`,
   };
   const baseline = result.options.baseline;
   const peers = peersOf(result);

@@ -42,11 +42,19 @@ export function engineTable(engines: EngineInfo[]): Table {
   };
 }
 
+/**
+ * A table note's sentence on the warm-up (experiments/common.ts warmUp): `when`, each engine
+ * warmed up for `warmUpMs`; empty for results from before it, whose options lack it.
+ */
+export function warmUpNote(when: string, warmUpMs: unknown): string {
+  if (typeof warmUpMs !== 'number') return '';
+  return ` ${when}, each engine warmed up for ${fmt(warmUpMs / 1000)} s on throwaway twins of the case (the same steps from its start), so that small scenes are timed at their steady speed, not while V8 still compiles them.`;
+}
+
 /** How step-time timed each engine, from its options. */
 function stepTimeProtocol(result: StepTimeResult): string {
   const o = result.meta.options;
-  const warm = typeof o.warmUpMs === 'number' ? ` Before its first run of a scene, each engine warmed up for ${fmt(o.warmUpMs / 1000)} s on throwaway twins of it (the same steps from the scene's start), so that small N are timed at their steady speed, not while V8 still compiles them.` : '';
-  return `Per run, each engine's own world of the run's seeded scene: ${String(o.warmupSteps)} untimed steps, then the mean of ${String(result.rows[0]?.stepsPerRun ?? '')} timed ones; engines in turn, the order rotated per run.${warm}`;
+  return `Per run, each engine's own world of the run's seeded scene: ${String(o.warmupSteps)} untimed steps, then the mean of ${String(result.rows[0]?.stepsPerRun ?? '')} timed ones; engines in turn, the order rotated per run.${warmUpNote('Before its first run of a scene', o.warmUpMs)}`;
 }
 
 export function stepTimeTables(result: StepTimeResult): Table[] {
