@@ -215,6 +215,42 @@ describe('joints', () => {
     expect(Math.abs(world.getBody(bar).angularVelocity)).toBeLessThan(0.01);
   });
 
+  it('a reference angle is a turn: one beyond pi holds as the same turn within it, and no finite one makes NaN', () => {
+    // A box pinned below a static point, its limits +-0.1 about the reference: a reference a
+    // whole number of turns from 0.2 must hold the box where 0.2 does.
+    const swing = (referenceAngle: number) => {
+      const world = new World({ gravity: { x: 0, y: 10 } });
+      const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+      const box = world.createBox({ x: 1.5, y: 1, width: 1, height: 1 });
+      const joint = world.createJoint({ kind: 'revolute', bodyA: ground, bodyB: box, anchorA: { x: 1.5, y: 0 }, anchorB: { x: 0, y: -1 }, referenceAngle, lowerAngle: -0.1, upperAngle: 0.1 });
+      let gap = 0;
+      for (let s = 0; s < 120; s++) {
+        world.step(DT);
+        const j = world.getJoint(joint);
+        gap = Math.max(gap, Math.hypot(j.anchorA.x - j.anchorB.x, j.anchorA.y - j.anchorB.y));
+      }
+      return { angle: world.getBody(box).angle, jointAngle: world.getJoint(joint).angle, gap };
+    };
+    const base = swing(0.2);
+    expect(base.gap).toBeLessThan(0.01);
+    for (const turns of [1, 2, -3, 16]) {
+      const wound = swing(0.2 + 2 * Math.PI * turns);
+      expect(wound.gap, `${turns} turns`).toBeLessThan(0.01);
+      expect(wound.angle, `${turns} turns`).toBeCloseTo(base.angle, 9);
+      expect(wound.jointAngle, `${turns} turns`).toBeCloseTo(base.jointAngle, 9);
+    }
+    for (const referenceAngle of [1e300, -Number.MAX_VALUE, Number.MAX_VALUE]) {
+      const world = new World({ gravity: { x: 0, y: 10 } });
+      const a = world.createBox({ x: 0, y: 1, width: 1, height: 1 });
+      const b = world.createBox({ x: 1.5, y: 1, width: 1, height: 1 });
+      const joint = world.createJoint({ kind: 'weld', bodyA: a, bodyB: b, referenceAngle });
+      run(world, 30);
+      const j = world.getJoint(joint);
+      for (const v of [j.angle, j.torque, j.force.x, j.force.y, world.getBody(a).y, world.getBody(b).angle]) expect(Number.isFinite(v), `${referenceAngle}`).toBe(true);
+      expect(Math.abs(j.angle), `${referenceAngle}`).toBeLessThan(0.01);
+    }
+  });
+
   it('a prismatic joint at its limit holds a body against gravity, and its motor drives it', () => {
     const world = new World({ gravity: { x: 0, y: 10 } });
     const ground = world.createBody({ x: 0, y: 0, type: 'static' });

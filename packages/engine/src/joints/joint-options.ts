@@ -1,6 +1,7 @@
 import type { Vector } from '../options.js';
 import { flag, vector } from '../options.js';
 import { MAX_MAGNITUDE, MAX_SHAPE_REACH, boundedNonNegative, boundedNumber, describeValue, finiteNumber, knownKeys, plainObject } from '../util/validate.js';
+import { wrapAngle } from '../math/trig.js';
 import { J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind, type JointKindName } from './joint-layout.js';
 
 /** What every joint between two bodies takes. Anchors are in each body's own frame, from its origin. */
@@ -43,7 +44,7 @@ export interface DistanceJointOptions extends JointBaseOptions {
 /** A pin: the anchors kept together, the bodies free to turn about them. */
 export interface RevoluteJointOptions extends JointBaseOptions {
   kind: 'revolute';
-  /** B's angle less A's at which the joint angle is 0. Default: as the bodies stand when it is made. */
+  /** B's angle less A's at which the joint angle is 0, any finite angle (taken as the same turn within [-pi, pi]). Default: as the bodies stand when it is made. */
   referenceAngle?: number | undefined;
   /** Angle limits (radians, within [-pi, pi]); giving either turns limits on, the other then unbounded. */
   lowerAngle?: number | undefined;
@@ -364,7 +365,7 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     r[J.enableLimit] = hertz > 0 || min < max ? 1 : 0;
     return { kind: JointKind.distance, bodyA: a, bodyB: b, collide, definition: r, ring: null };
   }
-  r[J.referenceAngle] = o.referenceAngle === undefined ? relative : finiteNumber('referenceAngle', o.referenceAngle);
+  r[J.referenceAngle] = o.referenceAngle === undefined ? relative : wrapAngle(finiteNumber('referenceAngle', o.referenceAngle));
   if (kind === 'weld') {
     r[J.linearHertz] = optionalNonNegative('linearHertz', o.linearHertz, 0);
     r[J.angularHertz] = optionalNonNegative('angularHertz', o.angularHertz, 0);

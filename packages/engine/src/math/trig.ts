@@ -159,6 +159,17 @@ export function atan2Into(io: Float64Array, at: number): void {
   io[at + 2] = y < 0 || 1 / y < 0 ? -a : a;
 }
 
+/**
+ * The angle that names the same turn within [-pi, pi]: `angle` itself there (the same bits), and
+ * otherwise atan2 of its cosine and sine. Constraints that subtract angles (a joint's reference
+ * angle) rely on both terms lying within [-pi, pi], as one wrap of their difference does.
+ */
+export function wrapAngle(angle: number): number {
+  if (Math.abs(angle) <= PI) return angle;
+  cosSin(angle, scratch);
+  return atan2(scratch[1], scratch[0]);
+}
+
 /** Below this, `turn` sums the short series; its first omitted terms are below 1e-20 of the result. */
 const SMALL_TURN = 0.125;
 
