@@ -28,6 +28,10 @@ describe('integrators experiment', () => {
     expect(integratorsCsv(result).trim().split('\n')).toHaveLength(17);
     expect(integratorsTables(result)[1].rows.map((r) => r[r.length - 1])).toEqual(['300', '1,000,000', '1,000,000', 'never']);
     expect(integratorsHeadline(result)[0]).toMatch(/explicit-euler from k = 300/);
+    // 10^6 N/m between 1 kg bodies is 225 Hz, past the 60 Hz that soft constraints are held to at 60 Hz.
+    expect(integratorsHeadline(result)[2]).toMatch(/at most at a quarter of the sub-step rate \(60 Hz at 60 Hz with 4 sub-steps\): from k = 1,000,000 \(225 Hz\)/);
+    const gentle = await runIntegrators({ ...integrators.options('quick', { seconds: 0.5 }), stiffnesses: [300] }, ctx);
+    expect(integratorsHeadline(gentle)[2]).toBe('');
   });
 
   it('takes --seconds and --dt only', () => {
