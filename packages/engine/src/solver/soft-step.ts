@@ -98,6 +98,10 @@ const COLOURS = 23;
 /** Contacts between two moving bodies use the lower colours only, leaving the top ones to static contacts. */
 const MOVING_COLOURS = COLOURS - 4;
 const NO_COLOUR = 255;
+/** The colours a contact between two moving bodies may take, as bits: 0 .. MOVING_COLOURS - 1. */
+const MOVING_MASK = (1 << MOVING_COLOURS) - 1;
+/** Those a contact with one moving body may take: 1 .. COLOURS - 1. */
+const STATIC_MASK = ((1 << COLOURS) - 1) & ~1;
 /** Lanes the kernel solves together (assembly/soft-step.ts): a colour is padded to a multiple of them. */
 const QUAD = 4;
 /** Strides for visiting contacts when colouring them: the first that does not divide the count. */
@@ -474,36 +478,34 @@ export class SoftStep {
   private greedyColours(contacts: ContactList, count: number, stride: number): void {
     const { index, colourOf, colourStart, used } = this;
     const contactOrder = contacts.order;
-    for (let visit = 0, n = 0; visit < count; visit++, n = (n + stride) % count) {
+    // n steps by stride modulo count; the step brought below count once, so that each visit
+    // subtracts at most one count rather than dividing.
+    const step = stride % count;
+    for (let visit = 0, n = 0; visit < count; visit++) {
       const k = contactOrder[n];
       const b = contacts.bodyB[k];
       const ia = index[contacts.bodyA[k]];
       const ib = b === WORLD ? 0 : index[b];
       let colour = NO_COLOUR;
       if (ia !== 0 && ib !== 0) {
-        colour = COLOURS;
-        const taken = used[ia] | used[ib];
-        for (let c = 0; c < MOVING_COLOURS; c++) {
-          if ((taken & (1 << c)) === 0) {
-            colour = c;
-            used[ia] |= 1 << c;
-            used[ib] |= 1 << c;
-            break;
-          }
+        // The lowest colour free for both: the lowest clear bit of what they use.
+        const free = ~(used[ia] | used[ib]) & MOVING_MASK;
+        colour = free === 0 ? COLOURS : 31 - Math.clz32(free & -free);
+        if (free !== 0) {
+          used[ia] |= 1 << colour;
+          used[ib] |= 1 << colour;
         }
       } else if (ia !== 0 || ib !== 0) {
-        colour = COLOURS;
+        // The highest colour free for the moving body, colour 0 left to moving pairs.
         const moving = ia !== 0 ? ia : ib;
-        for (let c = COLOURS - 1; c >= 1; c--) {
-          if ((used[moving] & (1 << c)) === 0) {
-            colour = c;
-            used[moving] |= 1 << c;
-            break;
-          }
-        }
+        const free = ~used[moving] & STATIC_MASK;
+        colour = free === 0 ? COLOURS : 31 - Math.clz32(free);
+        if (free !== 0) used[moving] |= 1 << colour;
       }
       colourOf[n] = colour;
       if (colour !== NO_COLOUR) colourStart[colour + 1]++;
+      n += step;
+      if (n >= count) n -= count;
     }
   }
 
