@@ -104,6 +104,9 @@ export class PointDistanceJoints {
     const { rows, pairs, slotOfLane, laneSource } = this;
     const r = store.record;
     const { x, y, invMass } = bodies;
+    // What `spring` holds the softness of; -1, never a hertz, before the first.
+    let lastHertz = -1;
+    let lastZeta = -1;
     for (let i = 0; i < lanes; i++) {
       const c = (i >> 1) * LANE_PAIR + (i & 1);
       const j = slotOfLane[i];
@@ -152,10 +155,18 @@ export class PointDistanceJoints {
         rows[c + RELAX + SCALE] = 1;
         rows[c + RELAX + KEEP] = 0;
       } else {
-        spring[Spring.hertz] = r[o + HERTZ];
-        spring[Spring.zeta] = r[o + DAMPING_RATIO];
-        spring[Spring.h] = h;
-        softSpring(spring);
+        // Soft bodies' springs mostly share their hertz and damping ratio: the softness of the
+        // last spring serves the next one with the same two (softSpring is a function of them and h).
+        const hertz = r[o + HERTZ];
+        const zeta = r[o + DAMPING_RATIO];
+        if (hertz !== lastHertz || zeta !== lastZeta) {
+          spring[Spring.hertz] = hertz;
+          spring[Spring.zeta] = zeta;
+          spring[Spring.h] = h;
+          softSpring(spring);
+          lastHertz = hertz;
+          lastZeta = zeta;
+        }
         rows[c + BIAS] = rows[c + RELAX + BIAS] = spring[Spring.bias];
         rows[c + SCALE] = rows[c + RELAX + SCALE] = spring[Spring.massScale];
         rows[c + KEEP] = rows[c + RELAX + KEEP] = spring[Spring.impulseScale];
