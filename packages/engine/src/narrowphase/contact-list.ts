@@ -13,7 +13,7 @@ export const WORLD = -1;
  *
  * Each slot holds its manifold (normal, up to two points with anchors relative to each body's
  * centre of mass) and what the solver accumulated on it. A contact whose manifold is kept
- * (`refresh`, see ShapeNarrowPhase.recyclable) is updated where it lies, a few fields, instead of
+ * (`refresh`, see ShapeNarrowPhase.recycle) is updated where it lies, a few fields, instead of
  * being copied into a new list: piles at rest keep nearly all their contacts, and copying a
  * contact's forty-odd fields was a third of a 5,050-box pyramid's narrow-phase. A recomputed one
  * (`rewrite`) inherits its impulses point by point where the same features touch again (warm

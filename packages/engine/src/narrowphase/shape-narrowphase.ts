@@ -88,7 +88,7 @@ export class ShapeNarrowPhase implements PairConsumer {
   private recycleDistance = 0;
   private margin = 0;
   private dt = 0;
-  /** Contacts whose manifold the last build kept from the step before (see recyclable). */
+  /** Contacts whose manifold the last build kept from the step before (see recycle). */
   recycled = 0;
   /** Per body slot, 1 where its contacts are recomputed whatever they did (see noteFastBodies). */
   private fastBody = new Uint8Array(0);
@@ -255,7 +255,7 @@ export class ShapeNarrowPhase implements PairConsumer {
   /**
    * Whether a body whose bounding circle (speculative margin included) is at (px, py) with radius
    * r lies too far from segment g for any contact, new or kept: farther than r, the segment's
-   * thickness and the distance a kept manifold may drift (see recyclable), widened by a millionth
+   * thickness and the distance a kept manifold may drift (see recycle), widened by a millionth
    * against rounding. A long diagonal segment's bounding box holds many bodies nowhere near it,
    * and each would otherwise be a pair function's call.
    */
@@ -343,8 +343,7 @@ export class ShapeNarrowPhase implements PairConsumer {
         pose[Pose.keyA] = record[ra + ShapeField.handle];
         pose[Pose.keyB] = record[rb + ShapeField.handle];
         const q = sensing ? -1 : this.find(p, i, j);
-        if (q >= 0 && this.recycleDistance > 0 && this.recyclable(q, i, j)) {
-          this.recycleFrom(q, i, j);
+        if (q >= 0 && this.recycleDistance > 0 && this.recycle(q, i, j)) {
           touching = true;
           continue;
         }
@@ -421,10 +420,7 @@ export class ShapeNarrowPhase implements PairConsumer {
       pose[Pose.keyA] = shapes.record[sa * SHAPE_STRIDE + ShapeField.handle];
       pose[Pose.keyB] = keyB;
       const q = this.find(p, i, WORLD);
-      if (q >= 0 && this.recycleDistance > 0 && this.recyclable(q, i, WORLD)) {
-        this.recycleFrom(q, i, WORLD);
-        continue;
-      }
+      if (q >= 0 && this.recycleDistance > 0 && this.recycle(q, i, WORLD)) continue;
       this.shapePairs++;
       pose[Pose.ax] = x[i];
       pose[Pose.ay] = y[i];
@@ -482,16 +478,17 @@ export class ShapeNarrowPhase implements PairConsumer {
   }
 
   /**
-   * Whether last step's manifold for contact q still holds: Box2D v3's contact recycling. Neither
-   * body moved fast, each turned less than about 11 degrees since the manifold was computed, and
-   * B moved relative to A (its centre, and its farthest point through the turn) less than the
-   * recycle distance. Kept manifolds keep their anchors and take their separations from how the
-   * anchors moved, as the sub-steps do: resting contacts then do not jitter with each new
-   * computation of their points (a stack of 15 boxes leaned 0.23 m without it, Box2D's 0.001),
-   * and piles at rest skip the pair functions.
+   * Keeps last step's manifold for contact q where it still holds, and says whether it did: Box2D
+   * v3's contact recycling. It holds where neither body moved fast, each turned less than about 11
+   * degrees since the manifold was computed, and B moved relative to A (its centre, and its
+   * farthest point through the turn) less than the recycle distance. Kept manifolds keep their
+   * anchors and take their separations from how the anchors moved, as the sub-steps do (see
+   * ContactList.refresh): resting contacts then do not jitter with each new computation of their
+   * points (a stack of 15 boxes leaned 0.23 m without it, Box2D's 0.001), and piles at rest skip
+   * the pair functions. The test and the keeping share one reading of the poses and the cache.
    */
-  private recyclable(q: number, i: number, j: number): boolean {
-    const prev = this.current;
+  private recycle(q: number, i: number, j: number): boolean {
+    const list = this.current;
     const bodies = this.bodies;
     const { x, y, radius } = bodies;
     const rigid = bodies.rigid!;
@@ -501,13 +498,16 @@ export class ShapeNarrowPhase implements PairConsumer {
     const as = s[i];
     const bc = j === WORLD ? 1 : c[j];
     const bs = j === WORLD ? 0 : s[j];
-    const r = prev.recycle;
+    const r = list.recycle;
     const o = q * RECYCLE;
-    const cosA = ac * r[o + Recycle.ac] + as * r[o + Recycle.as];
-    const cosB = bc * r[o + Recycle.bc] + bs * r[o + Recycle.bs];
-    if (!(Math.min(cosA, cosB) > RECYCLE_COS)) return false;
-    const dx = (j === WORLD ? 0 : x[j]) - x[i];
-    const dy = (j === WORLD ? 0 : y[j]) - y[i];
+    // Each body's turn since the cache, q q0^-1: its cosines first, for the test.
+    const dac = ac * r[o + Recycle.ac] + as * r[o + Recycle.as];
+    const dbc = bc * r[o + Recycle.bc] + bs * r[o + Recycle.bs];
+    if (!(Math.min(dac, dbc) > RECYCLE_COS)) return false;
+    const bx = j === WORLD ? 0 : x[j];
+    const by = j === WORLD ? 0 : y[j];
+    const dx = bx - x[i];
+    const dy = by - y[i];
     const rx = ac * dx + as * dy;
     const ry = -as * dx + ac * dy;
     const rc = ac * bc + as * bs;
@@ -517,7 +517,19 @@ export class ShapeNarrowPhase implements PairConsumer {
     const extentA = bodies.type[i] === TypeCode.static ? 0 : radius[i] - this.margin;
     const extentB = j === WORLD || bodies.type[j] === TypeCode.static ? 0 : radius[j] - this.margin;
     const moved = Math.sqrt((rx - r[o + Recycle.x]) * (rx - r[o + Recycle.x]) + (ry - r[o + Recycle.y]) * (ry - r[o + Recycle.y]));
-    return moved + Math.max(extentA, extentB) * Math.abs(turn) < this.recycleDistance;
+    if (!(moved + Math.max(extentA, extentB) * Math.abs(turn) < this.recycleDistance)) return false;
+    const pose = list.pose;
+    pose[Pose.ax] = x[i];
+    pose[Pose.ay] = y[i];
+    pose[Pose.ac] = dac;
+    pose[Pose.as] = as * r[o + Recycle.ac] - ac * r[o + Recycle.as];
+    pose[Pose.bx] = bx;
+    pose[Pose.by] = by;
+    pose[Pose.bc] = dbc;
+    pose[Pose.bs] = bs * r[o + Recycle.bc] - bc * r[o + Recycle.bs];
+    list.refresh(q);
+    this.recycled++;
+    return true;
   }
 
   /**
@@ -539,35 +551,5 @@ export class ShapeNarrowPhase implements PairConsumer {
       const v = Math.sqrt(vx[i] * vx[i] + vy[i] * vy[i]) + (radius[i] - this.margin) * Math.abs(angularVelocity[i]);
       fastBody[i] = (flags[i] & BodyFlag.bullet) !== 0 || v * this.dt > 0.5 * minExtent[i] ? 1 : 0;
     }
-  }
-
-  /** Keeps contact q of the previous step for bodies i and j (see recyclable). */
-  private recycleFrom(q: number, i: number, j: number): void {
-    const list = this.current;
-    const bodies = this.bodies;
-    const rigid = bodies.rigid!;
-    const { c, s } = rigid;
-    const ac = c[i];
-    const as = s[i];
-    const bc = j === WORLD ? 1 : c[j];
-    const bs = j === WORLD ? 0 : s[j];
-    // Each body's turn since the cache: q q0^-1.
-    const r = list.recycle;
-    const o = q * RECYCLE;
-    const dac = ac * r[o + Recycle.ac] + as * r[o + Recycle.as];
-    const das = as * r[o + Recycle.ac] - ac * r[o + Recycle.as];
-    const dbc = bc * r[o + Recycle.bc] + bs * r[o + Recycle.bs];
-    const dbs = bs * r[o + Recycle.bc] - bc * r[o + Recycle.bs];
-    const pose = list.pose;
-    pose[Pose.ax] = bodies.x[i];
-    pose[Pose.ay] = bodies.y[i];
-    pose[Pose.ac] = dac;
-    pose[Pose.as] = das;
-    pose[Pose.bx] = j === WORLD ? 0 : bodies.x[j];
-    pose[Pose.by] = j === WORLD ? 0 : bodies.y[j];
-    pose[Pose.bc] = dbc;
-    pose[Pose.bs] = dbs;
-    list.refresh(q);
-    this.recycled++;
   }
 }
