@@ -37,6 +37,8 @@ const spring = new Float64Array(8);
 /** Colours 0..COLOURS-1 hold joints that share no moving body; OVERFLOW, the rest, a pair each. */
 const COLOURS = 31;
 const OVERFLOW = COLOURS;
+/** The colours as bits. */
+const COLOUR_MASK = 2 ** COLOURS - 1;
 
 /**
  * Whether the distance joint at record offset `o`, between bodies a and b, is a point joint this
@@ -70,8 +72,11 @@ export class PointDistanceJoints {
   private pairs = new Int32Array(0);
   /** Each lane's joint slot, or -1 for an empty lane that closes a colour. */
   private slotOfLane = new Int32Array(0);
-  /** Each lane's place in prepare's lists. */
-  private laneSource = new Int32Array(0);
+  /** Each joint's lane, by its place in prepare's lists (slot order). */
+  private laneOf = new Int32Array(0);
+  /** prepare's joints in slot order, for finish. */
+  private slots: Int32Array = new Int32Array(0);
+  private jointCount = 0;
   private laneCount = 0;
   private colourOf = new Uint8Array(0);
   private used = new Uint32Array(0);
@@ -90,6 +95,8 @@ export class PointDistanceJoints {
    */
   prepare(store: JointStore, bodies: BodyStore, slots: Int32Array, stateA: Int32Array, stateB: Int32Array, count: number, stateCount: number, h: number, soft: Float64Array, maxSpeed: number, kernel: SoftStepKernel | null): void {
     this.kernel = kernel;
+    this.slots = slots;
+    this.jointCount = count;
     this.colour(slots, stateA, stateB, count, stateCount);
     const lanes = this.laneCount;
     const rowsNeeded = (lanes >> 1) * LANE_PAIR;
@@ -101,22 +108,26 @@ export class PointDistanceJoints {
       if (this.rows.length < rowsNeeded) this.rows = new Float64Array(grownCapacity(this.rows.length, rowsNeeded));
       if (this.pairs.length < 2 * lanes) this.pairs = new Int32Array(grownCapacity(this.pairs.length, 2 * lanes));
     }
-    const { rows, pairs, slotOfLane, laneSource } = this;
+    const { rows, pairs, slotOfLane, laneOf } = this;
     const r = store.record;
     const { x, y, invMass } = bodies;
     // What `spring` holds the softness of; -1, never a hertz, before the first.
     let lastHertz = -1;
     let lastZeta = -1;
     for (let i = 0; i < lanes; i++) {
+      if (slotOfLane[i] >= 0) continue;
       const c = (i >> 1) * LANE_PAIR + (i & 1);
-      const j = slotOfLane[i];
-      if (j < 0) {
-        pairs[2 * i] = 0;
-        pairs[2 * i + 1] = 0;
-        for (let f = 0; f < LANE_PAIR; f += 2) rows[c + f] = 0;
-        continue;
-      }
-      const k = laneSource[i];
+      pairs[2 * i] = 0;
+      pairs[2 * i + 1] = 0;
+      for (let f = 0; f < LANE_PAIR; f += 2) rows[c + f] = 0;
+    }
+    // In slot order, writing each joint into its lane: the joint records, far larger than the
+    // lanes, are then read front to back once, where lane order jumped between them (a lattice
+    // of 57,000 springs missed the cache at nearly every joint).
+    for (let k = 0; k < count; k++) {
+      const i = laneOf[k];
+      const c = (i >> 1) * LANE_PAIR + (i & 1);
+      const j = slots[k];
       const ia = stateA[k];
       const ib = stateB[k];
       const a = store.bodyA[j];
@@ -184,14 +195,9 @@ export class PointDistanceJoints {
     for (let k = 0; k < count; k++) {
       const ia = stateA[k];
       const ib = stateB[k];
-      const taken = (ia === 0 ? 0 : used[ia]) | (ib === 0 ? 0 : used[ib]);
-      let colour = OVERFLOW;
-      for (let c = 0; c < COLOURS; c++) {
-        if ((taken & (1 << c)) === 0) {
-          colour = c;
-          break;
-        }
-      }
+      // The lowest colour free for both: the lowest clear bit of what they use.
+      const free = ~((ia === 0 ? 0 : used[ia]) | (ib === 0 ? 0 : used[ib])) & COLOUR_MASK;
+      const colour = free === 0 ? OVERFLOW : 31 - Math.clz32(free & -free);
       if (colour !== OVERFLOW) {
         used[ia] |= 1 << colour;
         used[ib] |= 1 << colour;
@@ -206,17 +212,15 @@ export class PointDistanceJoints {
       lanes += c === OVERFLOW ? 2 * size : (size + 1) & -2;
     }
     this.laneCount = lanes;
-    if (this.slotOfLane.length < lanes) {
-      this.slotOfLane = new Int32Array(grownCapacity(this.slotOfLane.length, lanes));
-      this.laneSource = new Int32Array(this.slotOfLane.length);
-    }
-    const { slotOfLane, laneSource } = this;
+    if (this.slotOfLane.length < lanes) this.slotOfLane = new Int32Array(grownCapacity(this.slotOfLane.length, lanes));
+    if (this.laneOf.length < count) this.laneOf = new Int32Array(grownCapacity(this.laneOf.length, count));
+    const { slotOfLane, laneOf } = this;
     slotOfLane.fill(-1, 0, lanes);
     for (let k = 0; k < count; k++) {
       const colour = colourOf[k];
       const lane = colourStart[colour + 1];
       slotOfLane[lane] = slots[k];
-      laneSource[lane] = k;
+      laneOf[k] = lane;
       colourStart[colour + 1] = lane + (colour === OVERFLOW ? 2 : 1);
     }
   }
@@ -277,10 +281,11 @@ export class PointDistanceJoints {
    * warm start, and its force on body B over the last sub-step (as distanceJoint.reaction gives).
    */
   finish(r: Float64Array, inverseH: number): void {
-    const { rows, slotOfLane } = this;
-    for (let i = 0; i < this.laneCount; i++) {
-      const j = slotOfLane[i];
-      if (j < 0) continue;
+    const { rows, laneOf, slots } = this;
+    // In slot order, as prepare reads the records.
+    for (let k = 0; k < this.jointCount; k++) {
+      const i = laneOf[k];
+      const j = slots[k];
       const o = j * JOINT_STRIDE;
       const c = (i >> 1) * LANE_PAIR + (i & 1);
       const impulse = rows[c + IMPULSE];
@@ -295,6 +300,6 @@ export class PointDistanceJoints {
   }
 
   memoryBytes(): number {
-    return (this.kernel === null ? this.rows.byteLength + this.pairs.byteLength : 0) + 2 * this.slotOfLane.byteLength + this.colourOf.byteLength + this.used.byteLength;
+    return (this.kernel === null ? this.rows.byteLength + this.pairs.byteLength : 0) + this.slotOfLane.byteLength + this.laneOf.byteLength + this.colourOf.byteLength + this.used.byteLength;
   }
 }
