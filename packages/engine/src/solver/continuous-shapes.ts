@@ -1,6 +1,7 @@
 import type { BodyStore } from '../store/body-store.js';
 import type { ShapeStore } from '../store/shape-store.js';
 import { TypeCode } from '../store/body-types.js';
+import { ShapeKind } from '../shapes/geometry.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import type { StaticTree } from '../broadphase/static-tree.js';
 import type { Queries } from '../query/queries.js';
@@ -8,7 +9,7 @@ import { WorldShape } from '../narrowphase/world-shape.js';
 import { SegmentDistance } from '../narrowphase/segment-distance.js';
 import { SEGMENT_ENTRY, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
 import { grownCapacity } from '../util/grow.js';
-import { impact, sweepRotation, timeOfImpact, TOUCHING, type Sweep } from './time-of-impact.js';
+import { impact, sweepRotation, timeOfImpact, TOUCHING, vertexCrosses, type Sweep } from './time-of-impact.js';
 
 /** A body moving less than this fraction of its smallest extent in a step is left to the contacts (Box2D's safety factor). */
 const SAFETY = 0.5;
@@ -219,19 +220,35 @@ export class ContinuousShapes {
   private earliest(shapes: ShapeStore, first: number, best: number, slop: number, otherRestitution: number, core: number): number {
     for (let t = first; t >= 0; t = shapes.next[t]) {
       if (shapes.sensor[t]) continue;
-      let toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop);
-      if (toi === TOUCHING) toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, core);
-      if (toi >= 0 && toi < best) {
-        best = toi;
-        this.hitNx = impact.nx;
-        this.hitNy = impact.ny;
-        this.hitX = impact.x;
-        this.hitY = impact.y;
-        this.hitRestitution = otherRestitution;
-        this.hitShape = t;
+      const toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop);
+      if (toi !== TOUCHING) {
+        best = this.note(toi, best, otherRestitution, t);
+        continue;
+      }
+      best = this.note(timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, core), best, otherRestitution, t);
+      // A polygon's corners that start the step clear and end it inside the other shape or past
+      // it: the contact holds only the points near at the step's start, and a long polygon
+      // turning about one of them can carry the far ones through a thin wall within the step,
+      // which then pushes it on through. Not a capsule's ends, discs of its whole radius: a thin
+      // capsule spinning along a thin segment sank through it more often with them.
+      if (shapes.kind[t] !== ShapeKind.polygon) continue;
+      for (let v = 0; v < shapes.vertexCount[t]; v++) {
+        if (vertexCrosses(shapes, t, this.sweep, other, v)) best = this.note(timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, -1, v), best, otherRestitution, t);
       }
     }
     return best;
+  }
+
+  /** The earlier of `best` and an impact at `toi` (< 0: none) of shape `shape`, noting where the impact happened. */
+  private note(toi: number, best: number, otherRestitution: number, shape: number): number {
+    if (!(toi >= 0 && toi < best)) return best;
+    this.hitNx = impact.nx;
+    this.hitNy = impact.ny;
+    this.hitX = impact.x;
+    this.hitY = impact.y;
+    this.hitRestitution = otherRestitution;
+    this.hitShape = shape;
+    return toi;
   }
 
   /**

@@ -1,4 +1,4 @@
-import type { ShapeStore } from '../store/shape-store.js';
+import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type ShapeStore } from '../store/shape-store.js';
 import { WorldShape } from '../narrowphase/world-shape.js';
 import { ShapeDistance } from '../narrowphase/distance.js';
 
@@ -37,6 +37,37 @@ export function sweepRotation(sweep: Sweep, t: number, out: Float64Array): void 
 
 const rotation = new Float64Array(2);
 
+/** `moving` as vertex `vertex` of shape `slot` (a disc of its rounding radius), its body centred at (px, py) turned by `rotation`. */
+function placeVertex(shapes: ShapeStore, slot: number, vertex: number, px: number, py: number): void {
+  const at = slot * SHAPE_STRIDE + SHAPE_VERTICES + vertex * VERTEX;
+  const vx = shapes.record[at];
+  const vy = shapes.record[at + 1];
+  moving.circle(px + rotation[0] * vx - rotation[1] * vy, py + rotation[1] * vx + rotation[0] * vy, shapes.radius[slot]);
+}
+
+/**
+ * Whether vertex `vertex` of shape `slot` passes into or through `other` over the sweep: clear of
+ * its core at the start, and at the end within it or on its far side (the direction between the
+ * closest points turned around). A vertex that merely comes to touch, as the ends of a stick
+ * spinning on the ground do, is left to the contacts.
+ */
+export function vertexCrosses(shapes: ShapeStore, slot: number, sweep: Sweep, other: WorldShape, vertex: number): boolean {
+  rotation[0] = sweep.c0;
+  rotation[1] = sweep.s0;
+  placeVertex(shapes, slot, vertex, sweep.x0, sweep.y0);
+  distance.compute(moving, other);
+  const d0 = distance.distance;
+  if (!(d0 > 0)) return false;
+  const nx = distance.x2 - distance.x1;
+  const ny = distance.y2 - distance.y1;
+  rotation[0] = sweep.c1;
+  rotation[1] = sweep.s1;
+  placeVertex(shapes, slot, vertex, sweep.x1, sweep.y1);
+  distance.compute(moving, other);
+  if (!(distance.distance > 0)) return true;
+  return nx * (distance.x2 - distance.x1) + ny * (distance.y2 - distance.y1) < 0;
+}
+
 /** timeOfImpact's answer when the shapes are already within the target at the sweep's start. */
 export const TOUCHING = -2;
 
@@ -48,9 +79,11 @@ export const TOUCHING = -2;
  * much, which can never step past the impact. -1 when there is no impact in the step; TOUCHING
  * when the shapes are already that close at its start (a contact, which the contact solver owns).
  * With `core` >= 0 the moving shape is a disc of that radius at the shape's centroid instead
- * (Box2D v3's fallback for a fast shape that starts the step touching something).
+ * (Box2D v3's fallback for a fast shape that starts the step touching something); with `vertex`
+ * >= 0, that vertex of the shape (a corner of a polygon, an end of a capsule's core), a disc of
+ * the shape's rounding radius.
  */
-export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, other: WorldShape, target: number, tolerance: number, core = -1): number {
+export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, other: WorldShape, target: number, tolerance: number, core = -1, vertex = -1): number {
   const dx = sweep.x1 - sweep.x0;
   const dy = sweep.y1 - sweep.y0;
   // The total turn from the chord between the two rotations: 2 asin(chord / 2) <= (pi / 2) chord,
@@ -63,7 +96,8 @@ export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, oth
     sweepRotation(sweep, t, rotation);
     const px = sweep.x0 + t * dx;
     const py = sweep.y0 + t * dy;
-    if (core < 0) moving.fromStore(shapes, slot, px, py, rotation[0], rotation[1]);
+    if (vertex >= 0) placeVertex(shapes, slot, vertex, px, py);
+    else if (core < 0) moving.fromStore(shapes, slot, px, py, rotation[0], rotation[1]);
     else {
       const cx = shapes.centroidX[slot];
       const cy = shapes.centroidY[slot];
