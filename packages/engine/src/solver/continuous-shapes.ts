@@ -226,12 +226,11 @@ export class ContinuousShapes {
         continue;
       }
       best = this.note(timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, core), best, otherRestitution, t);
-      // A polygon's corners that start the step clear and end it inside the other shape or past
-      // it: the contact holds only the points near at the step's start, and a long polygon
-      // turning about one of them can carry the far ones through a thin wall within the step,
-      // which then pushes it on through. Not a capsule's ends, discs of its whole radius: a thin
-      // capsule spinning along a thin segment sank through it more often with them.
-      if (shapes.kind[t] !== ShapeKind.polygon) continue;
+      // The corners of a polygon, and the ends of a capsule's core, that start the step clear
+      // and end it inside the other shape or past it: the contact holds only the points near at
+      // the step's start, and a long body turning about one of them can carry the far ones
+      // through a thin wall within the step, which then pushes the body on through.
+      if (shapes.kind[t] === ShapeKind.circle) continue;
       for (let v = 0; v < shapes.vertexCount[t]; v++) {
         if (vertexCrosses(shapes, t, this.sweep, other, v)) best = this.note(timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, -1, v), best, otherRestitution, t);
       }

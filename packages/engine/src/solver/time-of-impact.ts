@@ -37,12 +37,12 @@ export function sweepRotation(sweep: Sweep, t: number, out: Float64Array): void 
 
 const rotation = new Float64Array(2);
 
-/** `moving` as vertex `vertex` of shape `slot` (a disc of its rounding radius), its body centred at (px, py) turned by `rotation`. */
+/** `moving` as vertex `vertex` of shape `slot`, a point, its body centred at (px, py) turned by `rotation`. */
 function placeVertex(shapes: ShapeStore, slot: number, vertex: number, px: number, py: number): void {
   const at = slot * SHAPE_STRIDE + SHAPE_VERTICES + vertex * VERTEX;
   const vx = shapes.record[at];
   const vy = shapes.record[at + 1];
-  moving.circle(px + rotation[0] * vx - rotation[1] * vy, py + rotation[1] * vx + rotation[0] * vy, shapes.radius[slot]);
+  moving.circle(px + rotation[0] * vx - rotation[1] * vy, py + rotation[1] * vx + rotation[0] * vy, 0);
 }
 
 /**
@@ -80,8 +80,9 @@ export const TOUCHING = -2;
  * when the shapes are already that close at its start (a contact, which the contact solver owns).
  * With `core` >= 0 the moving shape is a disc of that radius at the shape's centroid instead
  * (Box2D v3's fallback for a fast shape that starts the step touching something); with `vertex`
- * >= 0, that vertex of the shape (a corner of a polygon, an end of a capsule's core), a disc of
- * the shape's rounding radius.
+ * >= 0, that vertex of the shape alone, a point (a corner of a polygon, an end of a capsule's
+ * core: as a disc of the shape's radius, a capsule's end started the step touching what it
+ * lay on, and a thin one spinning along a thin segment sank through it).
  */
 export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, other: WorldShape, target: number, tolerance: number, core = -1, vertex = -1): number {
   const dx = sweep.x1 - sweep.x0;
