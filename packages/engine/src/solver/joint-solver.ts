@@ -18,7 +18,7 @@ import { SPIN_DAMPING, SPIN_HERTZ, targetJoint } from './joints/target-joint.js'
 import { atan2Into } from '../math/trig.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
-const { active: ACTIVE, enableLimit: ENABLE_LIMIT, hertz: HERTZ, anchorAX: ANCHOR_AX, anchorAY: ANCHOR_AY, anchorBX: ANCHOR_BX, anchorBY: ANCHOR_BY, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axisX: AXIS_X, axisY: AXIS_Y, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, referenceAngle: REFERENCE_ANGLE, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, targetX: TARGET_X, targetY: TARGET_Y, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+const { active: ACTIVE, anchorAX: ANCHOR_AX, anchorAY: ANCHOR_AY, anchorBX: ANCHOR_BX, anchorBY: ANCHOR_BY, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axisX: AXIS_X, axisY: AXIS_Y, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, referenceAngle: REFERENCE_ANGLE, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, targetX: TARGET_X, targetY: TARGET_Y, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
 
 const angleIO = new Float64Array(3);
 
@@ -284,10 +284,8 @@ export class JointSolver {
     r[o + WORLD_AXIS_X] = ca * r[o + AXIS_X] - sa * r[o + AXIS_Y];
     r[o + WORLD_AXIS_Y] = sa * r[o + AXIS_X] + ca * r[o + AXIS_Y];
     const kind = store.kind[j];
-    // Only the joints that hold or limit an angle read it (a revolute joint only with a spring or
-    // limits: measureAngle), and the arc tangent is most of a pin's preparation.
-    const holdsAngle = kind === JointKind.revolute ? r[o + HERTZ] > 0 || r[o + ENABLE_LIMIT] === 1 : kind === JointKind.prismatic || kind === JointKind.weld;
-    if (holdsAngle) {
+    // The arc tangent is most of a pin's preparation, and only some joints read the angle.
+    if (kind !== JointKind.spring && JOINT_KERNELS[kind].readsAngle(r, o)) {
       angleIO[0] = sb * ca - cb * sa;
       angleIO[1] = cb * ca + sb * sa;
       atan2Into(angleIO, 0);

@@ -80,9 +80,9 @@ export const TOUCHING = -2;
  * when the shapes are already that close at its start (a contact, which the contact solver owns).
  * With `core` >= 0 the moving shape is a disc of that radius at the shape's centroid instead
  * (Box2D v3's fallback for a fast shape that starts the step touching something); with `vertex`
- * >= 0, that vertex of the shape alone, a point (a corner of a polygon, an end of a capsule's
- * core: as a disc of the shape's radius, a capsule's end started the step touching what it
- * lay on, and a thin one spinning along a thin segment sank through it).
+ * >= 0, that vertex of the shape alone (a corner of a polygon, an end of a capsule's core), as a
+ * point: as a disc of the capsule's radius, an end lying on a surface would start the step
+ * touching it and never be swept.
  */
 export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, other: WorldShape, target: number, tolerance: number, core = -1, vertex = -1): number {
   const dx = sweep.x1 - sweep.x0;

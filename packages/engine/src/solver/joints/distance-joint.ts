@@ -12,6 +12,10 @@ const { axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, deltaCenterX: DELTA_
  * Box2D v3's distance joint; the spring acts in both passes, the range's ends as limits.
  */
 export const distanceJoint: JointKernel = {
+  readsAngle() {
+    return false;
+  },
+
   prepare(r, o, step) {
     const dx = r[o + DELTA_CENTER_X] + r[o + R_BX] - r[o + R_AX];
     const dy = r[o + DELTA_CENTER_Y] + r[o + R_BY] - r[o + R_AY];

@@ -29,6 +29,8 @@ export interface JointStepContext {
  *              the bodies' travel within the step lengthens the arms (the sliding kinds)
  */
 export interface JointKernel {
+  /** Whether the solve reads the joint angle (measureAngle), so that preparation measures its value at the step's start: an arc tangent a joint that does not read it is spared. */
+  readsAngle(r: Float64Array, o: number): boolean;
   prepare(r: Float64Array, o: number, step: JointStepContext): void;
   warmStart(r: Float64Array, o: number, states: Float64Array): void;
   solve(r: Float64Array, o: number, states: Float64Array, step: JointStepContext, useBias: boolean): void;

@@ -55,6 +55,10 @@ function solveSliderBlock(m: number, iA: number, iB: number, s1: number, s2: num
  * prismatic joint).
  */
 export const prismaticJoint: JointKernel = {
+  readsAngle() {
+    return true;
+  },
+
   prepare(r, o, step) {
     axialMass(r, o, startAxisFrame(r, o));
     prepareSpringLimitMotor(r, o, step);

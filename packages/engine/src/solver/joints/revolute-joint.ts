@@ -12,6 +12,11 @@ const { angle: ANGLE, axialMass: AXIAL_MASS, enableLimit: ENABLE_LIMIT, enableMo
  * (Box2D v3's revolute joint, Catto's "Solver2D" soft step).
  */
 export const revoluteJoint: JointKernel = {
+  // Only its spring and its limits hold an angle.
+  readsAngle(r, o) {
+    return r[o + HERTZ] > 0 || r[o + ENABLE_LIMIT] === 1;
+  },
+
   prepare(r, o, step) {
     const k = r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B];
     r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;

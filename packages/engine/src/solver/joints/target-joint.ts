@@ -15,6 +15,10 @@ export const SPIN_DAMPING = 0.1;
  * spin a little, so that a dragged body does not whirl. Body A is the world (state 0).
  */
 export const targetJoint: JointKernel = {
+  readsAngle() {
+    return false;
+  },
+
   prepare(r, o, step) {
     softFromRecord(r, o, HERTZ, SPRING_BIAS, step);
     r[o + SOFT_BIAS] = step.spinSoft[0];

@@ -11,6 +11,10 @@ const { angle: ANGLE, angularHertz: ANGULAR_HERTZ, angularImpulse: ANGULAR_IMPUL
  * makes that part a spring of its own, acting in both passes (Box2D v3's weld joint).
  */
 export const weldJoint: JointKernel = {
+  readsAngle() {
+    return true;
+  },
+
   prepare(r, o, step) {
     const k = r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B];
     r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;

@@ -25,6 +25,10 @@ function axisMasses(r: Float64Array, o: number, f: AxisFrame): void {
  * joint).
  */
 export const wheelJoint: JointKernel = {
+  readsAngle() {
+    return false;
+  },
+
   prepare(r, o, step) {
     axisMasses(r, o, startAxisFrame(r, o));
     const iA = r[o + INV_INERTIA_A];
