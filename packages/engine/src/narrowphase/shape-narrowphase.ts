@@ -3,6 +3,7 @@ import type { PairConsumer } from '../store/pair-sink.js';
 import type { SegmentStore } from '../store/segment-store.js';
 import { SHAPE_STRIDE, ShapeField, type ShapeStore } from '../store/shape-store.js';
 import { ContactBuffer } from '../store/contact-buffer.js';
+import { SHAPE_HANDLES, SLOT_SPACE } from '../store/handles.js';
 import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import { grownCapacity, grow } from '../util/grow.js';
@@ -315,6 +316,9 @@ export class ShapeNarrowPhase implements PairConsumer {
     const compound = shapeCount[i] > 1 || shapeCount[j] > 1;
     const list = this.current;
     p = this.seek(i, j, p);
+    // 1: kept; 0: tried, not kept (the loop below need not try again); -1: not tried.
+    const lone = !compound && this.recycleDistance > 0 ? this.recycledLone(i, j, shapes, p) : -1;
+    if (lone === 1) return this.afterTouch(i, j, p);
     let touching = false;
     // Each shape's header in its record: one run of memory per shape (see ShapeStore.record).
     const record = shapes.record;
@@ -343,7 +347,7 @@ export class ShapeNarrowPhase implements PairConsumer {
         pose[Pose.keyA] = record[ra + ShapeField.handle];
         pose[Pose.keyB] = record[rb + ShapeField.handle];
         const q = sensing ? -1 : this.find(p, i, j);
-        if (q >= 0 && this.recycleDistance > 0 && this.recycle(q, i, j)) {
+        if (q >= 0 && this.recycleDistance > 0 && lone !== 0 && this.recycle(q, i, j)) {
           touching = true;
           continue;
         }
@@ -387,12 +391,39 @@ export class ShapeNarrowPhase implements PairConsumer {
         list.cache(k);
       }
     }
-    if (touching) {
-      const asleep = bodies.asleep;
-      if (asleep[i] && !asleep[j] && this.wakes(j)) this.noteWake(i);
-      else if (asleep[j] && !asleep[i] && this.wakes(i)) this.noteWake(j);
-    }
+    return touching ? this.afterTouch(i, j, p) : p;
+  }
+
+  /** A sleeper touched by an awake body is noted to wake; returns p. */
+  private afterTouch(i: number, j: number, p: number): number {
+    const asleep = this.bodies.asleep;
+    if (asleep[i] && !asleep[j] && this.wakes(j)) this.noteWake(i);
+    else if (asleep[j] && !asleep[i] && this.wakes(i)) this.noteWake(j);
     return p;
+  }
+
+  /**
+   * Whether the pair of two bodies of one shape each kept last step's manifold (see recycle): 1
+   * if it did, 0 if not, -1 where this path does not apply. It reads no shape record, which the
+   * general loop reads for each shape's filter, sensor flag and key: the pair's bodies passed the
+   * body-level filter (consume, gatherStatic), which for a lone shape is the shape's own; a pair
+   * with a sensor has no manifold to keep; the key is the shape's handle, from its generation.
+   * Most pairs of a pile at rest end here, and the records they skip are the pair loop's cache
+   * misses once the solver's constraints have pushed them out (see docs/engine.md, "Performance
+   * with shapes"). The general loop computes what was not kept.
+   */
+  private recycledLone(i: number, j: number, shapes: ShapeStore, p: number): number {
+    const rigid = this.bodies.rigid!;
+    const sa = rigid.firstShape[i];
+    const sb = rigid.firstShape[j];
+    if (sa < 0 || sb < 0) return -1;
+    const pose = this.current.pose;
+    // ShapeStore.handleOf's sum, written here: a handle is past the small integers, and a call
+    // V8 does not inline returns it boxed, one allocation per pair.
+    pose[Pose.keyA] = SHAPE_HANDLES + shapes.generation[sa] * SLOT_SPACE + sa;
+    pose[Pose.keyB] = SHAPE_HANDLES + shapes.generation[sb] * SLOT_SPACE + sb;
+    const q = this.find(p, i, j);
+    return q >= 0 && this.recycle(q, i, j) ? 1 : 0;
   }
 
   private collideWorld(i: number, entry: number, shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number, p: number): number {
