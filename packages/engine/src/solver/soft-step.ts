@@ -48,7 +48,7 @@ const IB = 20;
 const BIAS_RATE = 22;
 const MASS_SCALE = 24;
 const IMPULSE_SCALE = 26;
-/** 1 or 2; 0 for the empty lanes that pad a colour to whole quads. */
+/** 1 or 2; 0 for the empty lanes that pad a colour to whole pairs. */
 const POINTS = 28;
 const CONTACT = 30;
 const P = 32;
@@ -103,7 +103,7 @@ const MOVING_MASK = (1 << MOVING_COLOURS) - 1;
 /** Those a contact with one moving body may take: 1 .. COLOURS - 1. */
 const STATIC_MASK = ((1 << COLOURS) - 1) & ~1;
 /** Lanes the kernel solves together (assembly/soft-step.ts): a colour is padded to a multiple of them. */
-const QUAD = 4;
+const LANES = 2;
 /** Strides for visiting contacts when colouring them: the first that does not divide the count. */
 const STRIDE_PRIMES = [7919, 7927, 7933, 7937];
 
@@ -155,7 +155,7 @@ export class SoftStep {
   private states = new Float64Array(0);
   private constraints = new Float64Array(0);
   private pairs = new Int32Array(0);
-  /** Constraint lanes in use: each colour padded with empty lanes to a multiple of QUAD. */
+  /** Constraint lanes in use: each colour padded with empty lanes to a multiple of LANES. */
   private laneCount = 0;
   private colourOf = new Uint8Array(0);
   /** Each contact's lane, by canonical position (-1: no moving body, not solved). */
@@ -429,7 +429,7 @@ export class SoftStep {
 
   /**
    * Gives each contact with a moving body a colour (greedy: the lowest free for both bodies), and
-   * lists them in `order` colour by colour, each colour in canonical order and padded to whole quads; sets laneCount.
+   * lists them in `order` colour by colour, each colour in canonical order and padded to whole pairs; sets laneCount.
    *
    * Contacts are visited in a scattered order, k -> k * STRIDE_PRIME mod count, not in canonical
    * order: canonical order runs through space (slots follow creation), so a greedy sweep in it
@@ -455,14 +455,14 @@ export class SoftStep {
       }
     }
     this.greedyColours(contacts, count, stride);
-    // Lanes per colour: each colour rounded up to whole quads (the kernel's two pairs of lanes);
+    // Lanes per colour: each colour rounded up to whole pairs (the kernel's two lanes);
     // the contacts with no colour left (more neighbours than colours) may share bodies, so each
-    // takes a quad of its own, and they come after all the colours.
+    // takes a pair of its own, and they come after all the colours.
     let lanes = 0;
     for (let c = 0; c <= COLOURS; c++) {
       const size = colourStart[c + 1];
       colourStart[c + 1] = lanes;
-      lanes += c === COLOURS ? QUAD * size : (size + QUAD - 1) & -QUAD;
+      lanes += c === COLOURS ? LANES * size : (size + LANES - 1) & -LANES;
     }
     this.laneCount = lanes;
     if (this.order.length < lanes) this.order = new Int32Array(grownCapacity(this.order.length, lanes));
@@ -522,7 +522,7 @@ export class SoftStep {
       const lane = colourStart[colour + 1];
       order[lane] = contactOrder[n];
       laneAt[n] = lane;
-      colourStart[colour + 1] = lane + (colour === COLOURS ? QUAD : 1);
+      colourStart[colour + 1] = lane + (colour === COLOURS ? LANES : 1);
     }
   }
 
