@@ -3,9 +3,11 @@
 // sub-step. The constraints are stored in pairs, field by field, lane 0 beside lane 1; colours are
 // padded to whole pairs, so the two constraints of a pair are of one colour and share no moving
 // body, and solving them side by side gives each exactly the bits the TypeScript loop gives it
-// one after the other. Every expression below keeps the TypeScript's order of operations; a lane
-// without a point (a one-point manifold's second, or an empty lane closing a colour) keeps its old
-// values through a select, and a lane writes its bodies back only when they are dynamic.
+// one after the other. Every expression below keeps the TypeScript's order of operations. A lane
+// without a second point (a one-point manifold's) keeps its old values through a select; a lane
+// without a first point is an empty lane closing a colour (the contact list holds only manifolds
+// with points), on the dummy body, so its first point's velocity updates need no select: a lane
+// writes its bodies back only when they are dynamic, and the dummy never is.
 //
 // One pair per iteration: two pairs interleaved, each line written once per pair so that their
 // chains of dependent operations would overlap, measured slower in every pass, and twice as slow
@@ -126,12 +128,12 @@ export function warmStart(states: usize, constraints: usize, pairs: usize, lanes
       const pt = field(q, TANGENT_IMPULSE);
       const px = f64x2.add(f64x2.mul(pn, nx), f64x2.mul(pt, ny));
       const py = f64x2.sub(f64x2.mul(pn, ny), f64x2.mul(pt, nx));
-      vAx = v128.bitselect(f64x2.sub(vAx, f64x2.mul(mA, px)), vAx, mask);
-      vAy = v128.bitselect(f64x2.sub(vAy, f64x2.mul(mA, py)), vAy, mask);
-      wA = v128.bitselect(f64x2.sub(wA, f64x2.mul(iA, f64x2.sub(f64x2.mul(rAx, py), f64x2.mul(rAy, px)))), wA, mask);
-      vBx = v128.bitselect(f64x2.add(vBx, f64x2.mul(mB, px)), vBx, mask);
-      vBy = v128.bitselect(f64x2.add(vBy, f64x2.mul(mB, py)), vBy, mask);
-      wB = v128.bitselect(f64x2.add(wB, f64x2.mul(iB, f64x2.sub(f64x2.mul(rBx, py), f64x2.mul(rBy, px)))), wB, mask);
+      vAx = f64x2.sub(vAx, f64x2.mul(mA, px));
+      vAy = f64x2.sub(vAy, f64x2.mul(mA, py));
+      wA = f64x2.sub(wA, f64x2.mul(iA, f64x2.sub(f64x2.mul(rAx, py), f64x2.mul(rAy, px))));
+      vBx = f64x2.add(vBx, f64x2.mul(mB, px));
+      vBy = f64x2.add(vBy, f64x2.mul(mB, py));
+      wB = f64x2.add(wB, f64x2.mul(iB, f64x2.sub(f64x2.mul(rBx, py), f64x2.mul(rBy, px))));
     }
     if (v128.any_true(hasPoint(c, 1))) {
       const mask = hasPoint(c, 1);
@@ -235,12 +237,12 @@ export function solve(states: usize, constraints: usize, pairs: usize, lanes: i3
       if (bouncy) noteImpact(q, mask, total, vn, zero); else noteMost(q, mask, total);
       const px = f64x2.mul(impulse, nx);
       const py = f64x2.mul(impulse, ny);
-      vAx = v128.bitselect(f64x2.sub(vAx, f64x2.mul(mA, px)), vAx, mask);
-      vAy = v128.bitselect(f64x2.sub(vAy, f64x2.mul(mA, py)), vAy, mask);
-      wA = v128.bitselect(f64x2.sub(wA, f64x2.mul(iA, f64x2.sub(f64x2.mul(rAx, py), f64x2.mul(rAy, px)))), wA, mask);
-      vBx = v128.bitselect(f64x2.add(vBx, f64x2.mul(mB, px)), vBx, mask);
-      vBy = v128.bitselect(f64x2.add(vBy, f64x2.mul(mB, py)), vBy, mask);
-      wB = v128.bitselect(f64x2.add(wB, f64x2.mul(iB, f64x2.sub(f64x2.mul(rBx, py), f64x2.mul(rBy, px)))), wB, mask);
+      vAx = f64x2.sub(vAx, f64x2.mul(mA, px));
+      vAy = f64x2.sub(vAy, f64x2.mul(mA, py));
+      wA = f64x2.sub(wA, f64x2.mul(iA, f64x2.sub(f64x2.mul(rAx, py), f64x2.mul(rAy, px))));
+      vBx = f64x2.add(vBx, f64x2.mul(mB, px));
+      vBy = f64x2.add(vBy, f64x2.mul(mB, py));
+      wB = f64x2.add(wB, f64x2.mul(iB, f64x2.sub(f64x2.mul(rBx, py), f64x2.mul(rBy, px))));
     }
     if (v128.any_true(hasPoint(c, 1))) {
       const mask = hasPoint(c, 1);
@@ -348,12 +350,12 @@ export function relax(states: usize, constraints: usize, pairs: usize, lanes: i3
       totalNormalImpulse = v128.bitselect(f64x2.add(totalNormalImpulse, total), totalNormalImpulse, mask);
       const px = f64x2.mul(impulse, nx);
       const py = f64x2.mul(impulse, ny);
-      vAx = v128.bitselect(f64x2.sub(vAx, f64x2.mul(mA, px)), vAx, mask);
-      vAy = v128.bitselect(f64x2.sub(vAy, f64x2.mul(mA, py)), vAy, mask);
-      wA = v128.bitselect(f64x2.sub(wA, f64x2.mul(iA, f64x2.sub(f64x2.mul(rAx, py), f64x2.mul(rAy, px)))), wA, mask);
-      vBx = v128.bitselect(f64x2.add(vBx, f64x2.mul(mB, px)), vBx, mask);
-      vBy = v128.bitselect(f64x2.add(vBy, f64x2.mul(mB, py)), vBy, mask);
-      wB = v128.bitselect(f64x2.add(wB, f64x2.mul(iB, f64x2.sub(f64x2.mul(rBx, py), f64x2.mul(rBy, px)))), wB, mask);
+      vAx = f64x2.sub(vAx, f64x2.mul(mA, px));
+      vAy = f64x2.sub(vAy, f64x2.mul(mA, py));
+      wA = f64x2.sub(wA, f64x2.mul(iA, f64x2.sub(f64x2.mul(rAx, py), f64x2.mul(rAy, px))));
+      vBx = f64x2.add(vBx, f64x2.mul(mB, px));
+      vBy = f64x2.add(vBy, f64x2.mul(mB, py));
+      wB = f64x2.add(wB, f64x2.mul(iB, f64x2.sub(f64x2.mul(rBx, py), f64x2.mul(rBy, px))));
     }
     if (v128.any_true(hasPoint(c, 1))) {
       const mask = hasPoint(c, 1);
@@ -404,12 +406,12 @@ export function relax(states: usize, constraints: usize, pairs: usize, lanes: i3
       put(q, TANGENT_IMPULSE, v128.bitselect(total, accumulated, mask));
       const px = f64x2.mul(impulse, tx);
       const py = f64x2.mul(impulse, ty);
-      vAx = v128.bitselect(f64x2.sub(vAx, f64x2.mul(mA, px)), vAx, mask);
-      vAy = v128.bitselect(f64x2.sub(vAy, f64x2.mul(mA, py)), vAy, mask);
-      wA = v128.bitselect(f64x2.sub(wA, f64x2.mul(iA, f64x2.sub(f64x2.mul(rAx, py), f64x2.mul(rAy, px)))), wA, mask);
-      vBx = v128.bitselect(f64x2.add(vBx, f64x2.mul(mB, px)), vBx, mask);
-      vBy = v128.bitselect(f64x2.add(vBy, f64x2.mul(mB, py)), vBy, mask);
-      wB = v128.bitselect(f64x2.add(wB, f64x2.mul(iB, f64x2.sub(f64x2.mul(rBx, py), f64x2.mul(rBy, px)))), wB, mask);
+      vAx = f64x2.sub(vAx, f64x2.mul(mA, px));
+      vAy = f64x2.sub(vAy, f64x2.mul(mA, py));
+      wA = f64x2.sub(wA, f64x2.mul(iA, f64x2.sub(f64x2.mul(rAx, py), f64x2.mul(rAy, px))));
+      vBx = f64x2.add(vBx, f64x2.mul(mB, px));
+      vBy = f64x2.add(vBy, f64x2.mul(mB, py));
+      wB = f64x2.add(wB, f64x2.mul(iB, f64x2.sub(f64x2.mul(rBx, py), f64x2.mul(rBy, px))));
     }
     if (v128.any_true(hasPoint(c, 1))) {
       const mask = hasPoint(c, 1);
