@@ -11,8 +11,9 @@ export const WORLD = -1;
  * every contact of its body with bodies, then by shape pair in the bodies' shape order. Stages
  * walk `order`, so results depend on that order alone, never on which slot a contact got.
  *
- * Each slot holds its manifold (normal, up to two points with anchors relative to each body's
- * centre of mass) and what the solver accumulated on it. A contact whose manifold is kept
+ * Each slot holds its manifold (normal, one or two points with anchors relative to each body's
+ * centre of mass: a manifold without points is never listed, which the soft step's kernel relies
+ * on) and what the solver accumulated on it. A contact whose manifold is kept
  * (`refresh`, see ShapeNarrowPhase.recycle) is updated where it lies, a few fields, instead of
  * being copied into a new list: piles at rest keep nearly all their contacts, and copying a
  * contact's forty-odd fields was a third of a 5,050-box pyramid's narrow-phase. A recomputed one
