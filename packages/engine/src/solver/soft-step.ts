@@ -50,7 +50,10 @@ const MASS_SCALE = 24;
 const IMPULSE_SCALE = 26;
 /** 1 or 2; 0 for the empty lanes that pad a colour to whole pairs. */
 const POINTS = 28;
-/** Where the points start: the header's fourteen fields and one unused fill four cache lines, so that each point's fields start on one. */
+/**
+ * Where the points start: the header's fifteen fields and one unused fill four cache lines, so
+ * that each point's fields start on one.
+ */
 const P = 32;
 const RAX = 0;
 const RAY = 2;
