@@ -10,8 +10,8 @@
 // writes its bodies back only when they are dynamic, and the dummy never is.
 //
 // One pair per iteration: two pairs interleaved, each line written once per pair so that their
-// chains of dependent operations would overlap, measured slower in every pass, and twice as slow
-// where the constraints outgrow the cache (docs/engine.md, Numbers).
+// chains of dependent operations would overlap, measured slower in every pass, and about twice
+// as slow in the warm start and solve of many pyramids' 58,000 lanes (docs/engine.md, Numbers).
 
 export { pointDistanceWarmStart, pointDistanceSolve } from './point-distance-joints';
 
@@ -84,13 +84,31 @@ const POINT: i32 = 24;
   put(q, MAX_NORMAL_IMPULSE, v128.bitselect(f64x2.max(total, most), most, mask));
 }
 
+/**
+ * The relative velocity along (dx, dy) at a point with arms (rAx, rAy) and (rBx, rBy): B's
+ * velocity there less A's.
+ */
+@inline function speedAlong(rAx: v128, rAy: v128, rBx: v128, rBy: v128, vAx: v128, vAy: v128, wA: v128, vBx: v128, vBy: v128, wB: v128, dx: v128, dy: v128): v128 {
+  const dvx = f64x2.sub(f64x2.sub(vBx, f64x2.mul(wB, rBy)), f64x2.sub(vAx, f64x2.mul(wA, rAy)));
+  const dvy = f64x2.sub(f64x2.add(vBy, f64x2.mul(wB, rBx)), f64x2.add(vAy, f64x2.mul(wA, rAx)));
+  return f64x2.add(f64x2.mul(dvx, dx), f64x2.mul(dvy, dy));
+}
+
 /** The second point's normal speed at the given velocities. */
 @inline function secondSpeed(c: usize, vAx: v128, vAy: v128, wA: v128, vBx: v128, vBy: v128, wB: v128, nx: v128, ny: v128): v128 {
   const second = c + (<usize>(P + POINT) << 3);
-  return f64x2.add(
-    f64x2.mul(f64x2.sub(f64x2.sub(vBx, f64x2.mul(wB, field(second, RBY))), f64x2.sub(vAx, f64x2.mul(wA, field(second, RAY)))), nx),
-    f64x2.mul(f64x2.sub(f64x2.add(vBy, f64x2.mul(wB, field(second, RBX))), f64x2.add(vAy, f64x2.mul(wA, field(second, RAX)))), ny),
-  );
+  return speedAlong(field(second, RAX), field(second, RAY), field(second, RBX), field(second, RBY), vAx, vAy, wA, vBx, vBy, wB, nx, ny);
+}
+
+/**
+ * The separation of the point at q now: its separation at the step's start plus how its anchors
+ * moved apart along the normal, the bodies having moved by (dpx, dpy) relative to each other and
+ * turned by (qAc, qAs) and (qBc, qBs) since.
+ */
+@inline function separation(q: usize, rAx: v128, rAy: v128, rBx: v128, rBy: v128, dpx: v128, dpy: v128, qAc: v128, qAs: v128, qBc: v128, qBs: v128, nx: v128, ny: v128): v128 {
+  const dsx = f64x2.sub(f64x2.add(dpx, f64x2.sub(f64x2.mul(qBc, rBx), f64x2.mul(qBs, rBy))), f64x2.sub(f64x2.mul(qAc, rAx), f64x2.mul(qAs, rAy)));
+  const dsy = f64x2.sub(f64x2.add(dpy, f64x2.add(f64x2.mul(qBs, rBx), f64x2.mul(qBc, rBy))), f64x2.add(f64x2.mul(qAs, rAx), f64x2.mul(qAc, rAy)));
+  return f64x2.add(f64x2.add(field(q, BASE_SEPARATION), f64x2.mul(dsx, nx)), f64x2.mul(dsy, ny));
 }
 
 export function warmStart(states: usize, constraints: usize, pairs: usize, lanes: i32): void {
@@ -220,16 +238,12 @@ export function solve(states: usize, constraints: usize, pairs: usize, lanes: i3
       const rAy = field(q, RAY);
       const rBx = field(q, RBX);
       const rBy = field(q, RBY);
-      const dsx = f64x2.sub(f64x2.add(dpx, f64x2.sub(f64x2.mul(qBc, rBx), f64x2.mul(qBs, rBy))), f64x2.sub(f64x2.mul(qAc, rAx), f64x2.mul(qAs, rAy)));
-      const dsy = f64x2.sub(f64x2.add(dpy, f64x2.add(f64x2.mul(qBs, rBx), f64x2.mul(qBc, rBy))), f64x2.add(f64x2.mul(qAs, rAx), f64x2.mul(qAc, rAy)));
-      const s = f64x2.add(f64x2.add(field(q, BASE_SEPARATION), f64x2.mul(dsx, nx)), f64x2.mul(dsy, ny));
+      const s = separation(q, rAx, rAy, rBx, rBy, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
       const speculative = f64x2.gt(s, zero);
       const bias = v128.bitselect(f64x2.mul(s, invH), f64x2.max(f64x2.mul(f64x2.mul(biasRate, softMassScale), s), floor), speculative);
       const massScale = v128.bitselect(one, softMassScale, speculative);
       const impulseScale = v128.bitselect(zero, softImpulseScale, speculative);
-      const dvx = f64x2.sub(f64x2.sub(vBx, f64x2.mul(wB, rBy)), f64x2.sub(vAx, f64x2.mul(wA, rAy)));
-      const dvy = f64x2.sub(f64x2.add(vBy, f64x2.mul(wB, rBx)), f64x2.add(vAy, f64x2.mul(wA, rAx)));
-      const vn = f64x2.add(f64x2.mul(dvx, nx), f64x2.mul(dvy, ny));
+      const vn = speedAlong(rAx, rAy, rBx, rBy, vAx, vAy, wA, vBx, vBy, wB, nx, ny);
       const accumulated = field(q, NORMAL_IMPULSE);
       const total = f64x2.max(f64x2.add(accumulated, f64x2.sub(f64x2.mul(f64x2.neg(field(q, NORMAL_MASS)), f64x2.add(f64x2.mul(massScale, vn), bias)), f64x2.mul(impulseScale, accumulated))), zero);
       const impulse = f64x2.sub(total, accumulated);
@@ -251,16 +265,12 @@ export function solve(states: usize, constraints: usize, pairs: usize, lanes: i3
       const rAy = field(q, RAY);
       const rBx = field(q, RBX);
       const rBy = field(q, RBY);
-      const dsx = f64x2.sub(f64x2.add(dpx, f64x2.sub(f64x2.mul(qBc, rBx), f64x2.mul(qBs, rBy))), f64x2.sub(f64x2.mul(qAc, rAx), f64x2.mul(qAs, rAy)));
-      const dsy = f64x2.sub(f64x2.add(dpy, f64x2.add(f64x2.mul(qBs, rBx), f64x2.mul(qBc, rBy))), f64x2.add(f64x2.mul(qAs, rAx), f64x2.mul(qAc, rAy)));
-      const s = f64x2.add(f64x2.add(field(q, BASE_SEPARATION), f64x2.mul(dsx, nx)), f64x2.mul(dsy, ny));
+      const s = separation(q, rAx, rAy, rBx, rBy, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
       const speculative = f64x2.gt(s, zero);
       const bias = v128.bitselect(f64x2.mul(s, invH), f64x2.max(f64x2.mul(f64x2.mul(biasRate, softMassScale), s), floor), speculative);
       const massScale = v128.bitselect(one, softMassScale, speculative);
       const impulseScale = v128.bitselect(zero, softImpulseScale, speculative);
-      const dvx = f64x2.sub(f64x2.sub(vBx, f64x2.mul(wB, rBy)), f64x2.sub(vAx, f64x2.mul(wA, rAy)));
-      const dvy = f64x2.sub(f64x2.add(vBy, f64x2.mul(wB, rBx)), f64x2.add(vAy, f64x2.mul(wA, rAx)));
-      const vn = f64x2.add(f64x2.mul(dvx, nx), f64x2.mul(dvy, ny));
+      const vn = speedAlong(rAx, rAy, rBx, rBy, vAx, vAy, wA, vBx, vBy, wB, nx, ny);
       const accumulated = field(q, NORMAL_IMPULSE);
       const total = f64x2.max(f64x2.add(accumulated, f64x2.sub(f64x2.mul(f64x2.neg(field(q, NORMAL_MASS)), f64x2.add(f64x2.mul(massScale, vn), bias)), f64x2.mul(impulseScale, accumulated))), zero);
       const impulse = f64x2.sub(total, accumulated);
@@ -335,13 +345,9 @@ export function relax(states: usize, constraints: usize, pairs: usize, lanes: i3
       const rAy = field(q, RAY);
       const rBx = field(q, RBX);
       const rBy = field(q, RBY);
-      const dsx = f64x2.sub(f64x2.add(dpx, f64x2.sub(f64x2.mul(qBc, rBx), f64x2.mul(qBs, rBy))), f64x2.sub(f64x2.mul(qAc, rAx), f64x2.mul(qAs, rAy)));
-      const dsy = f64x2.sub(f64x2.add(dpy, f64x2.add(f64x2.mul(qBs, rBx), f64x2.mul(qBc, rBy))), f64x2.add(f64x2.mul(qAs, rAx), f64x2.mul(qAc, rAy)));
-      const s = f64x2.add(f64x2.add(field(q, BASE_SEPARATION), f64x2.mul(dsx, nx)), f64x2.mul(dsy, ny));
+      const s = separation(q, rAx, rAy, rBx, rBy, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
       const bias = v128.bitselect(f64x2.mul(s, invH), zero, f64x2.gt(s, zero));
-      const dvx = f64x2.sub(f64x2.sub(vBx, f64x2.mul(wB, rBy)), f64x2.sub(vAx, f64x2.mul(wA, rAy)));
-      const dvy = f64x2.sub(f64x2.add(vBy, f64x2.mul(wB, rBx)), f64x2.add(vAy, f64x2.mul(wA, rAx)));
-      const vn = f64x2.add(f64x2.mul(dvx, nx), f64x2.mul(dvy, ny));
+      const vn = speedAlong(rAx, rAy, rBx, rBy, vAx, vAy, wA, vBx, vBy, wB, nx, ny);
       const accumulated = field(q, NORMAL_IMPULSE);
       const total = f64x2.max(f64x2.add(accumulated, f64x2.mul(f64x2.neg(field(q, NORMAL_MASS)), f64x2.add(vn, bias))), zero);
       const impulse = f64x2.sub(total, accumulated);
@@ -364,13 +370,9 @@ export function relax(states: usize, constraints: usize, pairs: usize, lanes: i3
       const rAy = field(q, RAY);
       const rBx = field(q, RBX);
       const rBy = field(q, RBY);
-      const dsx = f64x2.sub(f64x2.add(dpx, f64x2.sub(f64x2.mul(qBc, rBx), f64x2.mul(qBs, rBy))), f64x2.sub(f64x2.mul(qAc, rAx), f64x2.mul(qAs, rAy)));
-      const dsy = f64x2.sub(f64x2.add(dpy, f64x2.add(f64x2.mul(qBs, rBx), f64x2.mul(qBc, rBy))), f64x2.add(f64x2.mul(qAs, rAx), f64x2.mul(qAc, rAy)));
-      const s = f64x2.add(f64x2.add(field(q, BASE_SEPARATION), f64x2.mul(dsx, nx)), f64x2.mul(dsy, ny));
+      const s = separation(q, rAx, rAy, rBx, rBy, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
       const bias = v128.bitselect(f64x2.mul(s, invH), zero, f64x2.gt(s, zero));
-      const dvx = f64x2.sub(f64x2.sub(vBx, f64x2.mul(wB, rBy)), f64x2.sub(vAx, f64x2.mul(wA, rAy)));
-      const dvy = f64x2.sub(f64x2.add(vBy, f64x2.mul(wB, rBx)), f64x2.add(vAy, f64x2.mul(wA, rAx)));
-      const vn = f64x2.add(f64x2.mul(dvx, nx), f64x2.mul(dvy, ny));
+      const vn = speedAlong(rAx, rAy, rBx, rBy, vAx, vAy, wA, vBx, vBy, wB, nx, ny);
       const accumulated = field(q, NORMAL_IMPULSE);
       const total = f64x2.max(f64x2.add(accumulated, f64x2.mul(f64x2.neg(field(q, NORMAL_MASS)), f64x2.add(vn, bias))), zero);
       const impulse = f64x2.sub(total, accumulated);
@@ -396,9 +398,7 @@ export function relax(states: usize, constraints: usize, pairs: usize, lanes: i3
       const rAy = field(q, RAY);
       const rBx = field(q, RBX);
       const rBy = field(q, RBY);
-      const dvx = f64x2.sub(f64x2.sub(vBx, f64x2.mul(wB, rBy)), f64x2.sub(vAx, f64x2.mul(wA, rAy)));
-      const dvy = f64x2.sub(f64x2.add(vBy, f64x2.mul(wB, rBx)), f64x2.add(vAy, f64x2.mul(wA, rAx)));
-      const vt = f64x2.add(f64x2.mul(dvx, tx), f64x2.mul(dvy, ty));
+      const vt = speedAlong(rAx, rAy, rBx, rBy, vAx, vAy, wA, vBx, vBy, wB, tx, ty);
       const accumulated = field(q, TANGENT_IMPULSE);
       const limit = f64x2.mul(friction, field(q, NORMAL_IMPULSE));
       const total = f64x2.max(f64x2.min(f64x2.sub(accumulated, f64x2.mul(field(q, TANGENT_MASS), vt)), limit), f64x2.neg(limit));
@@ -420,9 +420,7 @@ export function relax(states: usize, constraints: usize, pairs: usize, lanes: i3
       const rAy = field(q, RAY);
       const rBx = field(q, RBX);
       const rBy = field(q, RBY);
-      const dvx = f64x2.sub(f64x2.sub(vBx, f64x2.mul(wB, rBy)), f64x2.sub(vAx, f64x2.mul(wA, rAy)));
-      const dvy = f64x2.sub(f64x2.add(vBy, f64x2.mul(wB, rBx)), f64x2.add(vAy, f64x2.mul(wA, rAx)));
-      const vt = f64x2.add(f64x2.mul(dvx, tx), f64x2.mul(dvy, ty));
+      const vt = speedAlong(rAx, rAy, rBx, rBy, vAx, vAy, wA, vBx, vBy, wB, tx, ty);
       const accumulated = field(q, TANGENT_IMPULSE);
       const limit = f64x2.mul(friction, field(q, NORMAL_IMPULSE));
       const total = f64x2.max(f64x2.min(f64x2.sub(accumulated, f64x2.mul(field(q, TANGENT_MASS), vt)), limit), f64x2.neg(limit));

@@ -3,7 +3,6 @@ import type { PairConsumer } from '../store/pair-sink.js';
 import type { SegmentStore } from '../store/segment-store.js';
 import { SHAPE_STRIDE, ShapeField, type ShapeStore } from '../store/shape-store.js';
 import { ContactBuffer } from '../store/contact-buffer.js';
-import { SHAPE_HANDLES, SLOT_SPACE } from '../store/handles.js';
 import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import { grownCapacity, grow } from '../util/grow.js';
@@ -407,7 +406,7 @@ export class ShapeNarrowPhase implements PairConsumer {
    * if it did, 0 if not, -1 where this path does not apply. It reads no shape record, which the
    * general loop reads for each shape's filter, sensor flag and key: the pair's bodies passed the
    * body-level filter (consume, gatherStatic), which for a lone shape is the shape's own; a pair
-   * with a sensor has no manifold to keep; the key is the shape's handle, from its generation.
+   * with a sensor has no manifold to keep; the key is the shape's handle.
    * Most pairs of a pile at rest end here, and the records they skip are the pair loop's cache
    * misses once the solver's constraints have pushed them out (see docs/engine.md, "Performance
    * with shapes"). The general loop computes what was not kept.
@@ -418,10 +417,8 @@ export class ShapeNarrowPhase implements PairConsumer {
     const sb = rigid.firstShape[j];
     if (sa < 0 || sb < 0) return -1;
     const pose = this.current.pose;
-    // ShapeStore.handleOf's sum, written here: a handle is past the small integers, and a call
-    // V8 does not inline returns it boxed, one allocation per pair.
-    pose[Pose.keyA] = SHAPE_HANDLES + shapes.generation[sa] * SLOT_SPACE + sa;
-    pose[Pose.keyB] = SHAPE_HANDLES + shapes.generation[sb] * SLOT_SPACE + sb;
+    pose[Pose.keyA] = shapes.handleOf(sa);
+    pose[Pose.keyB] = shapes.handleOf(sb);
     const q = this.find(p, i, j);
     return q >= 0 && this.recycle(q, i, j) ? 1 : 0;
   }
