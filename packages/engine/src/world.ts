@@ -53,7 +53,7 @@ import { StepPipeline } from './step/pipeline.js';
 import { checkWorkerCount, DEFAULT_MIN_BODIES, ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
 import type { CircleIntegratorName, IntegratorName } from './integrate/integrator.js';
-import { MAX_DT, MAX_MAGNITUDE, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
+import { MAX_DT, MAX_MAGNITUDE, MAX_SHAPE_REACH, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
 import { flag } from './options.js';
 import { copyOptions, field, holdsObject, numberField, readSnapshot, writeOnto, writeSnapshot } from './snapshot/world-snapshot.js';
 import {
@@ -86,6 +86,8 @@ const pose4 = new Float64Array(4);
 const massScratch = emptyAreaProperties();
 const scratchGeometry = new Geometry();
 const EMPTY = new Float64Array(0);
+/** Mass and inertia after a change of shapes (see checkLoadsAfter). */
+const loads = new Float64Array(2);
 
 /**
  * A 2D world of bodies. A step is a fixed list of stages over the stores, on one of two routes
@@ -415,6 +417,7 @@ export class World {
     const engaged = this.shapes.engaged;
     const mass = this.shapes.massWith(slot, shape) + (engaged ? 0 : b.mass[slot]);
     this.checkMass(handle, mass, b.type[slot] !== TypeCode.dynamic);
+    this.checkLoadsAfter(handle, slot, shape, -1, 'adding this shape');
     const c = rigid ? rigid.c[slot] : 1;
     const sn = rigid ? rigid.s[slot] : 0;
     const lx = rigid && engaged ? rigid.localCenterX[slot] : 0;
@@ -434,7 +437,21 @@ export class World {
     const slot = this.shapes.store.body[s];
     const rigid = this.bodies.rigid!;
     // The shapes left must give a mass addShape would accept (the last one leaves a shapeless body of mass 1).
-    if (rigid.shapeCount[slot] > 1) this.checkMass(this.bodies.handleOf(slot), this.shapes.massWithout(slot, s), this.bodies.type[slot] !== TypeCode.dynamic);
+    const handle = this.bodies.handleOf(slot);
+    if (rigid.shapeCount[slot] > 1) this.checkMass(handle, this.shapes.massWithout(slot, s), this.bodies.type[slot] !== TypeCode.dynamic);
+    else {
+      // The body becomes shapeless, and the box then holds it by its origin (see createBody).
+      const b = this.bodies;
+      const lx = rigid.localCenterX[slot];
+      const ly = rigid.localCenterY[slot];
+      const ox = b.x[slot] - (rigid.c[slot] * lx - rigid.s[slot] * ly);
+      const oy = b.y[slot] - (rigid.s[slot] * lx + rigid.c[slot] * ly);
+      const box = this.bounds;
+      if (box && !(ox >= 0 && ox <= box.width && oy >= 0 && oy <= box.height)) {
+        throw new RangeError(`destroying shape ${shapeHandle}, the last of body ${handle}, would leave a body without shapes with its origin at (${ox}, ${oy}), outside the box 0..${box.width} x 0..${box.height}; move the body first (setTransform) or destroy it`);
+      }
+    }
+    this.checkLoadsAfter(handle, slot, null, s, 'destroying this shape');
     this.disturbances.note(this.bodies, slot);
     this.shapes.remove(s);
     this.shapesChanged(slot);
@@ -770,6 +787,7 @@ export class World {
   setFixedRotation(handle: number, fixed: boolean): void {
     const s = this.slot(handle);
     flag('fixedRotation', fixed);
+    if (!fixed && this.bodies.type[s] === TypeCode.dynamic) this.checkTorque(handle, s, this.inertiaOf(s), 'freeing its rotation');
     const rigid = this.useRigid();
     rigid.flags[s] = fixed ? rigid.flags[s] | BodyFlag.fixedRotation : rigid.flags[s] & ~BodyFlag.fixedRotation;
     if (fixed) rigid.angularVelocity[s] = 0;
@@ -832,9 +850,9 @@ export class World {
   /** Switches the integrator; 'rk4' moves the world to the shape route (see IntegratorName). */
   setIntegrator(name: IntegratorName): void {
     const checked = integratorName(name);
+    if (checked === 'rk4') this.engage();
     this.integratorChoice = checked;
     this.pipeline.integrator = circleIntegrator(checked);
-    if (checked === 'rk4') this.engage();
     if (this.shapeRoute) this.shapeRoute.settings.integrator = checked;
     if (this.joints) this.joints.integrator = checked;
   }
@@ -1512,6 +1530,13 @@ export class World {
   /** Lists every body's shapes and moves the world to the shape route (see BodyShapes.engage). */
   private engage(): void {
     if (this.shapeRoute) return;
+    // Every circle becomes a shape; one too large for a shape would get an infinite inertia. The
+    // caller has changed nothing yet, so refusing here leaves the world as it was.
+    const b = this.bodies;
+    for (let slot = 0; slot < b.slotCount; slot++) {
+      if (b.type[slot] === TypeCode.free || b.radius[slot] <= MAX_SHAPE_REACH) continue;
+      throw new RangeError(`body ${b.handleOf(slot)}, a circle of radius ${b.radius[slot]}, would become a shape reaching beyond ${MAX_SHAPE_REACH} (so that its rotational inertia stays finite): a world holding it cannot take shapes, friction, joints, rk4 or the soft solver; make it smaller or destroy it first`);
+    }
     const settings = shapeRouteSettings(this.resolved, this.pipeline.settings.gravity);
     settings.integrator = this.integratorChoice;
     this.shapes.engage(settings.margin);
@@ -1645,6 +1670,36 @@ export class World {
     if (!(Math.abs(scale) * g > MAX_MAGNITUDE)) return;
     const which = field === 'gravity' ? `gravity (${gx}, ${gy}) times a body's gravityScale ${scale}` : `gravityScale ${scale} times gravity (${gx}, ${gy})`;
     throw new RangeError(`${which} is an acceleration beyond ${MAX_MAGNITUDE} (so that no step can overflow)`);
+  }
+
+  /**
+   * Refuses a change of a dynamic body's shapes (`shape` added, shape slot `without` removed)
+   * under which the force or torque already applied to it for the next step would give an
+   * acceleration beyond MAX_MAGNITUDE: applyForce and applyTorque check the body as it is, and a
+   * smaller mass or inertia afterwards would otherwise carry the load past it, to infinity.
+   */
+  private checkLoadsAfter(handle: number, slot: number, shape: NewShape | null, without: number, change: string): void {
+    const b = this.bodies;
+    if (b.type[slot] !== TypeCode.dynamic || !b.forcesPending) return;
+    const after = this.shapes.massPropertiesAfter(slot, shape, without, loads);
+    const mass = after[0];
+    const inertia = after[1];
+    const fx = b.forceX[slot];
+    const fy = b.forceY[slot];
+    if (!(Math.abs(fx / mass) <= MAX_MAGNITUDE && Math.abs(fy / mass) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`${change} would give body ${handle} mass ${mass}, under which the force (${fx}, ${fy}) applied to it for the next step is an acceleration beyond ${MAX_MAGNITUDE}; step first, or change the shapes before applying the force`);
+    }
+    const rigid = b.rigid;
+    if (rigid && (rigid.flags[slot] & BodyFlag.fixedRotation) === 0) this.checkTorque(handle, slot, inertia, change);
+  }
+
+  /** checkLoadsAfter's test of the pending torque against the inertia `inertia` (0: the body does not turn). */
+  private checkTorque(handle: number, slot: number, inertia: number, change: string): void {
+    const torque = this.bodies.rigid?.torque[slot] ?? 0;
+    if (torque === 0 || !(inertia > 0)) return;
+    if (!(Math.abs(torque / inertia) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`${change} would give body ${handle} inertia ${inertia}, under which the torque ${torque} applied to it for the next step is an angular acceleration beyond ${MAX_MAGNITUDE}; step first, or make the change before applying the torque`);
+    }
   }
 
   /** A dynamic body's mass must be > 0; any body's within [1 / MAX_MAGNITUDE, MAX_MAGNITUDE] where it has one, so that no step overflows. */

@@ -24,6 +24,10 @@ type Op =
   | { op: 'velocity' | 'force' | 'impulse' | 'position'; body: number; x: number; y: number }
   | { op: 'spin' | 'torque' | 'angular'; body: number; value: number }
   | { op: 'gravity'; x: number; y: number }
+  | { op: 'bare'; x: number; y: number }
+  | { op: 'fixed'; body: number; fixed: boolean }
+  | { op: 'shape'; body: number; size: number; density: number; offset: number }
+  | { op: 'unshape'; body: number }
   | { op: 'step'; dt: number };
 
 const opArbitrary: fc.Arbitrary<Op> = fc.oneof(
@@ -42,6 +46,11 @@ const opArbitrary: fc.Arbitrary<Op> = fc.oneof(
   fc.record({ op: fc.constantFrom('velocity' as const, 'force' as const, 'impulse' as const, 'position' as const), body: fc.nat(20), x: wide, y: wide }),
   fc.record({ op: fc.constantFrom('spin' as const, 'torque' as const, 'angular' as const), body: fc.nat(20), value: wide }),
   fc.record({ op: fc.constant('gravity' as const), x: wide, y: wide }),
+  // Changes of a body's mass and inertia, between loads applied and the step that spends them.
+  fc.record({ op: fc.constant('bare' as const), x: fc.double({ min: 5, max: 95, noNaN: true }), y: fc.double({ min: 5, max: 95, noNaN: true }) }),
+  fc.record({ op: fc.constant('fixed' as const), body: fc.nat(20), fixed: fc.boolean() }),
+  fc.record({ op: fc.constant('shape' as const), body: fc.nat(20), size: positive, density: positive, offset: fc.oneof(fc.constant(0), wide) }),
+  fc.record({ op: fc.constant('unshape' as const), body: fc.nat(20) }),
   fc.record({ op: fc.constant('step' as const), dt }),
 );
 
@@ -82,6 +91,21 @@ function apply(world: World, o: Op): void {
         break;
       case 'gravity':
         world.setGravity(o.x, o.y);
+        break;
+      case 'bare':
+        world.createBody({ x: o.x, y: o.y });
+        break;
+      case 'fixed':
+        if (handles.length) world.setFixedRotation(pick(o.body), o.fixed);
+        break;
+      case 'shape':
+        if (handles.length) world.addShape(pick(o.body), { kind: 'box', width: o.size, height: o.size, density: o.density, offsetX: o.offset });
+        break;
+      case 'unshape':
+        if (handles.length) {
+          const shapes = world.getBody(pick(o.body)).shapes;
+          if (shapes.length) world.destroyShape(shapes[0]);
+        }
         break;
       case 'step':
         world.step(o.dt);
@@ -128,6 +152,34 @@ describe('no NaN or infinity from finite input', () => {
         },
       ),
       { numRuns: 300, seed: 20261201 },
+    );
+  });
+
+  it('loads applied, then the mass or inertia they act on changed, on a few bodies', () => {
+    // Found by an audit: a torque applied to a body that did not turn (fixed, or without shapes)
+    // reached infinity once it could, and a force on a body of mass 1 outlived its mass.
+    const few = fc.nat(3);
+    const load = fc.constantFrom(1, 1e50, 1e100, 1e200, 1e308);
+    const ops: fc.Arbitrary<Op> = fc.oneof(
+      fc.record({ op: fc.constant('bare' as const), x: fc.double({ min: 5, max: 95, noNaN: true }), y: fc.double({ min: 5, max: 95, noNaN: true }) }),
+      fc.record({ op: fc.constant('fixed' as const), body: few, fixed: fc.boolean() }),
+      fc.record({ op: fc.constant('shape' as const), body: few, size: fc.constantFrom(1e-45, 1e-20, 1, 10), density: fc.constantFrom(1e-50, 1, 1e50), offset: fc.constantFrom(0, 1, 1e20) }),
+      fc.record({ op: fc.constant('unshape' as const), body: few }),
+      fc.record({ op: fc.constant('torque' as const), body: few, value: load }),
+      fc.record({ op: fc.constant('force' as const), body: few, x: load, y: fc.constant(0) }),
+      fc.record({ op: fc.constant('step' as const), dt: fc.constant(1 / 60) }),
+    );
+    fc.assert(
+      fc.property(fc.constantFrom('elastic' as const, 'soft' as const), fc.array(ops, { minLength: 5, maxLength: 30 }), (solver, list) => {
+        const world = new World({ solver, gravity: { x: 0, y: 0 } });
+        for (const o of list) {
+          apply(world, o);
+          assertFinite(world, null, o);
+        }
+        world.step(1 / 60);
+        assertFinite(world, null, { op: 'step', dt: 1 / 60 });
+      }),
+      { numRuns: 300, seed: 20261204 },
     );
   });
 

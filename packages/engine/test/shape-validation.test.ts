@@ -163,5 +163,73 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
     // So a shape can be given to it there.
     boxed.addShape(point, { kind: 'box', width: 1, height: 1, offsetX: 0.5, offsetY: -0.5 });
     expect(boxed.bodyCount).toBe(1);
+    // Nor can its last shape be taken away where that leaves its origin outside the box.
+    const offset = boxed.createPolygon({ x: -1, y: 5, vertices: [{ x: 2, y: 0 }, { x: 3, y: 0 }, { x: 2, y: 1 }] });
+    const last = boxed.getBody(offset).shapes[0];
+    refuses(boxed, () => boxed.destroyShape(last), RangeError, /the last of body \d+, would leave a body without shapes with its origin at \(-1, 5\), outside the box/);
+    boxed.setTransform(offset, 1, 5, 0);
+    boxed.destroyShape(last);
+    expect(boxed.getBody(offset).shapes).toEqual([]);
+  });
+
+  it('a force or torque already applied is checked again when the mass or inertia it acts on changes', () => {
+    // Applied while the body does not turn (fixed, or without shapes), the torque is fine; the
+    // change that would let it spin the body past every bound is refused instead.
+    for (const solver of ['elastic', 'soft'] as const) {
+      const world = new World({ solver, gravity: { x: 0, y: 0 } });
+      const fixed = world.createBox({ x: 0, y: 0, width: 1, height: 1, fixedRotation: true });
+      world.applyTorque(fixed, 1e308);
+      refuses(world, () => world.setFixedRotation(fixed, false), RangeError, /freeing its rotation would give body \d+ inertia 0.1666\d*, under which the torque 1e\+308 .* beyond 1e\+100/);
+      const bare = world.createBody({ x: 5, y: 0 });
+      world.applyTorque(bare, 1e308);
+      refuses(world, () => world.addShape(bare, { kind: 'box', width: 1, height: 1 }), RangeError, /adding this shape would give body \d+ inertia .* torque 1e\+308/);
+      const light = world.createBody({ x: 10, y: 0 });
+      world.applyForce(light, 1e100, 0);
+      refuses(world, () => world.addShape(light, { kind: 'box', width: 1e-45, height: 1e-45 }), RangeError, /mass 1e-90, under which the force \(1e\+100, 0\)/);
+      // Removing the heavy part of an L leaves the light one under the same force.
+      const l = world.createBox({ x: 20, y: 0, width: 1, height: 1, density: 1e6 });
+      world.addShape(l, { kind: 'box', width: 1e-3, height: 1e-3, offsetX: 1 });
+      world.applyForce(l, 1e100, 0);
+      refuses(world, () => world.destroyShape(world.getBody(l).shapes[0]), RangeError, /destroying this shape would give body \d+ mass 9.99+\d*e-7, under which the force \(1e\+100, 0\)/);
+      // After the step the loads are spent, and the same changes go through.
+      world.step(1 / 60);
+      world.setFixedRotation(fixed, false);
+      world.addShape(bare, { kind: 'box', width: 1, height: 1 });
+      for (const h of world.handles()) {
+        const b = world.getBody(h);
+        for (const v of [b.x, b.y, b.angle, b.vx, b.vy, b.angularVelocity]) expect(Number.isFinite(v)).toBe(true);
+      }
+      // A load within bounds under the new inertia is kept: the torque turns the freed box at tau / I.
+      world.applyTorque(fixed, 1);
+      world.setFixedRotation(fixed, true);
+      world.setFixedRotation(fixed, false);
+      world.step(1 / 60);
+      if (solver === 'elastic') expect(world.getBody(fixed).angularVelocity).toBeCloseTo(6 / 60, 12);
+    }
+    // The circle route: a tiny circle's inertia is tiny.
+    const circles = new World();
+    const dot = circles.createCircle({ x: 0, y: 0, radius: 1e-50, mass: 1e-100, fixedRotation: true });
+    circles.applyTorque(dot, 1e300);
+    refuses(circles, () => circles.setFixedRotation(dot, false), RangeError, /freeing its rotation .* torque 1e\+300/);
+  });
+
+  it('a circle of the circle route too large to be a shape keeps the world off the shape route', () => {
+    const circles = new World();
+    const huge = circles.createCircle({ x: 0, y: 0, radius: 1e100, mass: 1 });
+    const message = /body \d+, a circle of radius 1e\+100, would become a shape reaching beyond 1e\+50/;
+    refuses(circles, () => circles.createBody({ x: 0, y: 0 }), RangeError, message);
+    refuses(circles, () => circles.createBox({ x: 0, y: 0, width: 1, height: 1 }), RangeError, message);
+    refuses(circles, () => circles.addShape(huge, { kind: 'circle', radius: 1 }), RangeError, message);
+    refuses(circles, () => circles.createCircle({ x: 0, y: 0, radius: 1, friction: 0.5 }), RangeError, message);
+    refuses(circles, () => circles.setIntegrator('rk4'), RangeError, message);
+    expect(circles.getBody(huge).inertia).toBe(5e199);
+    circles.destroyBody(huge);
+    circles.createBox({ x: 0, y: 0, width: 1, height: 1 });
+    expect(circles.bodyCount).toBe(1);
+  });
+
+  it('a polygon whose outline crosses itself is refused for what it is', () => {
+    const world = new World();
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 1, y: 0 }, { x: 0, y: 1 }] }), RangeError, /crosses itself/);
   });
 });

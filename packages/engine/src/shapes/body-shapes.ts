@@ -109,6 +109,74 @@ export class BodyShapes {
   }
 
   /**
+   * The mass and the rotational inertia about the centre of mass that `update` would give a
+   * dynamic body with `shape` added (geometry from its origin; null: none) and its shape in slot
+   * `without` removed (-1: none), into out[0] and out[1], changing nothing: for refusing a change
+   * under which the loads already applied to the body would overflow. Before the world is
+   * engaged, the body's circle counts as the disc it becomes.
+   */
+  massPropertiesAfter(slot: number, shape: NewShape | null, without: number, out: Float64Array): Float64Array {
+    const bodies = this.bodies;
+    const rigid = bodies.rigid;
+    const store = this.store;
+    const listed = this.engaged && rigid !== null;
+    // Pass 1: mass and centre, in the body's frame from its origin.
+    let mass = 0;
+    let mx = 0;
+    let my = 0;
+    if (listed) {
+      for (let s = rigid.firstShape[slot]; s >= 0; s = store.next[s]) {
+        if (s === without) continue;
+        const m = store.density[s] * store.area[s];
+        mass += m;
+        mx += m * (store.centroidX[s] + rigid.localCenterX[slot]);
+        my += m * (store.centroidY[s] + rigid.localCenterY[slot]);
+      }
+    } else if (shape !== null) {
+      mass = bodies.mass[slot];
+    }
+    let added = 0;
+    if (shape !== null) {
+      areaProperties(shape.geometry, props);
+      added = shape.density * props.area;
+      mass += added;
+      mx += added * props.cx;
+      my += added * props.cy;
+    }
+    if (!(mass > 0)) {
+      // A dynamic body without shapes has mass 1 and does not turn.
+      out[0] = 1;
+      out[1] = 0;
+      return out;
+    }
+    const cx = mx / mass;
+    const cy = my / mass;
+    // Pass 2: each part's inertia about its own centroid, moved to the body's centre.
+    let inertia = 0;
+    if (listed) {
+      for (let s = rigid.firstShape[slot]; s >= 0; s = store.next[s]) {
+        if (s === without) continue;
+        const m = store.density[s] * store.area[s];
+        const dx = store.centroidX[s] + rigid.localCenterX[slot] - cx;
+        const dy = store.centroidY[s] + rigid.localCenterY[slot] - cy;
+        inertia += store.density[s] * store.areaInertia[s] + m * (dx * dx + dy * dy);
+      }
+    } else if (shape !== null) {
+      const m = bodies.mass[slot];
+      const r = bodies.radius[slot];
+      inertia += (m * r * r) / 2 + m * (cx * cx + cy * cy);
+    }
+    if (shape !== null) {
+      const dx = props.cx - cx;
+      const dy = props.cy - cy;
+      inertia += shape.density * props.inertia + added * (dx * dx + dy * dy);
+    }
+    out[0] = mass;
+    out[1] = inertia;
+    return out;
+  }
+
+  /**
    * Recomputes a body's mass, centre of mass and inertia from its shapes, moving its centre (and
    * so its position column) while its origin stays put; then its bounding radius and filter.
    * Static and kinematic bodies keep their centre at their origin, as in Box2D: they turn about it.

@@ -244,7 +244,7 @@ function polygonPoints(input: unknown): void {
     case 'count':
       throw new RangeError(`vertices must hold 3 to ${MAX_POLYGON_VERTICES} points, got ${n}`);
     case 'area':
-      throw new RangeError(`vertices enclose no area: the points ${input.map((_, k) => `(${(input[k] as Vector).x}, ${(input[k] as Vector).y})`).join(', ')} lie on one line or one spot`);
+      throw new RangeError(`vertices enclose no area: the points ${input.map((_, k) => `(${(input[k] as Vector).x}, ${(input[k] as Vector).y})`).join(', ')} lie on one line or one spot, or their outline crosses itself so that its parts cancel`);
     case 'duplicate':
       throw new RangeError(`vertices must be distinct: ${original(check.index)} repeats vertices[${check.other}]`);
     case 'collinear':
