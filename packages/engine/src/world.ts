@@ -836,7 +836,10 @@ export class World {
     this.disturbances.note(this.bodies, s);
     if (this.bodies.type[s] === TypeCode.static || code === TypeCode.static) this.staticVersion++;
     this.bodies.setTypeCode(s, code);
-    if (this.shapes.engaged) this.shapes.update(s);
+    if (this.shapes.engaged) {
+      this.shapes.update(s);
+      this.shapeRoute?.narrow.forget(s);
+    }
     if (code === TypeCode.static && rigid) rigid.angularVelocity[s] = 0;
     this.geometryVersion++;
   }
@@ -1638,6 +1641,7 @@ export class World {
     if (this.bodies.type[slot] === TypeCode.static) this.staticVersion++;
     this.geometryVersion++;
     this.bodies.wake(slot);
+    this.shapeRoute?.narrow.forget(slot);
   }
 
   /**

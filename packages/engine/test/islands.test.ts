@@ -93,4 +93,20 @@ describe('island sleeping with shapes', () => {
     for (let s = 0; s < 300; s++) world.step(DT);
     expect(world.isAwake(box)).toBe(true);
   });
+
+  it('a body resting on a kinematic platform at rest falls asleep once and stays asleep, as on a static one', () => {
+    for (const type of ['kinematic', 'static'] as const) {
+      const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, sleeping: true });
+      world.createBox({ x: 0, y: 0, width: 6, height: 0.5, type });
+      const box = world.createBox({ x: 0, y: -0.75, width: 1, height: 1 });
+      let naps = 0;
+      let awake = true;
+      for (let s = 0; s < 600; s++) {
+        world.step(DT);
+        if (awake && !world.isAwake(box)) naps++;
+        awake = world.isAwake(box);
+      }
+      expect({ type, naps, awake }).toEqual({ type, naps: 1, awake: false });
+    }
+  });
 });

@@ -92,8 +92,22 @@ export class ShapeNarrowPhase implements PairConsumer {
   recycled = 0;
   /** Per body slot, 1 where its contacts are recomputed whatever they did (see noteFastBodies). */
   private fastBody = new Uint8Array(0);
+  /** Bodies whose contacts the next build recomputes (see forget). */
+  private forgotten = new Int32Array(8);
+  private forgottenCount = 0;
 
   constructor(private readonly bodies: BodyStore) {}
+
+  /**
+   * Has the next build recompute body `slot`'s contacts rather than keep them: its centre of mass
+   * moved (a shape added or removed, its type changed), and a kept manifold's anchors, relative to
+   * that centre, would no longer lie on its shapes; the move, smaller than the recycle distance,
+   * would pass for motion, and the body would rest sunk into its support or above it.
+   */
+  forget(slot: number): void {
+    if (this.forgottenCount === this.forgotten.length) this.forgotten = grow(this.forgotten, 2 * this.forgotten.length);
+    this.forgotten[this.forgottenCount++] = slot;
+  }
 
   begin(): void {
     this.filtered = 0;
@@ -214,6 +228,7 @@ export class ShapeNarrowPhase implements PairConsumer {
     this.dt = dt;
     this.recycled = 0;
     if (recycleDistance > 0) this.noteFastBodies();
+    this.forgottenCount = 0;
     const list = this.current;
     list.begin();
     const bodies = this.bodies;
@@ -301,7 +316,8 @@ export class ShapeNarrowPhase implements PairConsumer {
   private wakes(slot: number): boolean {
     const bodies = this.bodies;
     const t = bodies.type[slot];
-    if (t === TypeCode.kinematic) return true;
+    // A kinematic body at rest holds what it supports as a static one does (see IslandSleep).
+    if (t === TypeCode.kinematic) return bodies.vx[slot] !== 0 || bodies.vy[slot] !== 0 || bodies.rigid!.angularVelocity[slot] !== 0;
     if (t !== TypeCode.dynamic) return false;
     const v = Math.sqrt(bodies.vx[slot] * bodies.vx[slot] + bodies.vy[slot] * bodies.vy[slot]) + bodies.radius[slot] * Math.abs(bodies.rigid!.angularVelocity[slot]);
     return v > this.wakeSpeed;
@@ -578,6 +594,10 @@ export class ShapeNarrowPhase implements PairConsumer {
       }
       const v = Math.sqrt(vx[i] * vx[i] + vy[i] * vy[i]) + (radius[i] - this.margin) * Math.abs(angularVelocity[i]);
       fastBody[i] = (flags[i] & BodyFlag.bullet) !== 0 || v * this.dt > 0.5 * minExtent[i] ? 1 : 0;
+    }
+    for (let k = 0; k < this.forgottenCount; k++) {
+      const slot = this.forgotten[k];
+      if (slot < slotCount) fastBody[slot] = 1;
     }
   }
 }

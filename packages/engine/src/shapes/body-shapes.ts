@@ -2,6 +2,7 @@ import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { ShapeStore, SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type NewShape } from '../store/shape-store.js';
 import { areaProperties, emptyAreaProperties, Geometry } from './geometry.js';
+import { MAX_MAGNITUDE } from '../util/validate.js';
 
 const props = emptyAreaProperties();
 const plainCircle = new Geometry();
@@ -211,8 +212,18 @@ export class BodyShapes {
       rigid.localCenterY[slot] += shiftY;
       const c = rigid.c[slot];
       const sn = rigid.s[slot];
-      bodies.x[slot] += c * shiftX - sn * shiftY;
-      bodies.y[slot] += sn * shiftX + c * shiftY;
+      const dx = c * shiftX - sn * shiftY;
+      const dy = sn * shiftX + c * shiftY;
+      bodies.x[slot] += dx;
+      bodies.y[slot] += dy;
+      // The velocity is the centre's: the new centre's is the old one's plus w x d, so that every
+      // point of the body keeps its velocity (Box2D's mass data update does the same).
+      const w = rigid.angularVelocity[slot];
+      if (w !== 0 && bodies.type[slot] !== TypeCode.static) {
+        // Within the bound every velocity keeps: a spin and a shift at theirs would pass it.
+        bodies.vx[slot] = clampMagnitude(bodies.vx[slot] - w * dy);
+        bodies.vy[slot] = clampMagnitude(bodies.vy[slot] + w * dx);
+      }
     }
     let inertia = 0;
     let reach = 0;
@@ -273,6 +284,10 @@ export class BodyShapes {
     }
     rigid.shapeCount[slot]--;
   }
+}
+
+function clampMagnitude(v: number): number {
+  return v > MAX_MAGNITUDE ? MAX_MAGNITUDE : v < -MAX_MAGNITUDE ? -MAX_MAGNITUDE : v;
 }
 
 /** How far a shape's surface is from its centroid at the nearest: its radius, plus for a polygon the distance to its nearest edge line. */
