@@ -108,7 +108,17 @@ export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, oth
     const gap = distance.distance - moving.radius - other.radius;
     const d = distance.distance;
     if (gap < target + tolerance) {
-      if (t === 0) return TOUCHING;
+      if (t === 0) {
+        // A corner that crosses in this step (the only corners swept) but starts nearer than the
+        // target, where last step's sweep parked it: swept to half its gap rather than left to the
+        // contact, whose points come from the step's start and which a fast turn carries through.
+        if (vertex >= 0 && gap > 0 && target > gap / 2) {
+          target = gap / 2;
+          tolerance = gap / 4;
+          continue;
+        }
+        return TOUCHING;
+      }
       if (!(d > 0)) return -1;
       impact.nx = (distance.x2 - distance.x1) / d;
       impact.ny = (distance.y2 - distance.y1) / d;
