@@ -291,7 +291,9 @@ const timeline = new TimelineBar(sim, {
 });
 byId('download').addEventListener('click', () => {
   const format = byId<HTMLSelectElement>('format').value;
-  const base = `maxgrid-${settings.scene}-n${settings.params.n}-seed${settings.seed}`;
+  // Only some scenes have a body count.
+  const count = settings.params.n === undefined ? '' : `-n${settings.params.n}`;
+  const base = `maxgrid-${settings.scene}${count}-seed${settings.seed}`;
   const world = sim.world;
   if (format === 'json') download(`${base}.json`, 'application/json', toJson(sim.recorder, settings, DT, world.broadphase, world.integrator));
   else download(`${base}.csv`, 'text/csv', toCsv(sim.recorder));

@@ -103,7 +103,7 @@ export const SCENE_NAMES = Object.keys(SCENES) as SceneName[];
 
 /** Builds a circle scene of SCENES by name; an unknown name throws a RangeError that lists the known ones. */
 export function buildScene(name: string, params?: Partial<Record<string, number>>): Scene {
-  if (!(name in SCENES)) {
+  if (!Object.hasOwn(SCENES, name)) {
     throw new RangeError(`unknown scene '${name}'; scenes: ${SCENE_NAMES.join(', ')}`);
   }
   return SCENES[name as SceneName].build(params);
@@ -204,6 +204,6 @@ export const SHAPE_SCENE_NAMES = Object.keys(SHAPE_SCENES) as ShapeSceneName[];
 
 /** Builds a scene with shapes by name; an unknown name throws a RangeError that lists the known ones. */
 export function buildShapeScene(name: string, params?: Partial<Record<string, number>>): ShapeScene {
-  if (!(name in SHAPE_SCENES)) throw new RangeError(`unknown shape scene '${name}'; shape scenes: ${SHAPE_SCENE_NAMES.join(', ')}`);
+  if (!Object.hasOwn(SHAPE_SCENES, name)) throw new RangeError(`unknown shape scene '${name}'; shape scenes: ${SHAPE_SCENE_NAMES.join(', ')}`);
   return SHAPE_SCENES[name as ShapeSceneName].build(params);
 }

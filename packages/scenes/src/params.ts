@@ -19,14 +19,18 @@ export function resolveParams<S extends ParamSpecs>(
   specs: S,
   given: Partial<Record<string, number>> = {},
 ): ParamValues<S> {
+  if (given === null || typeof given !== 'object' || Array.isArray(given)) {
+    throw new TypeError(`scene '${scene}' takes its parameters as an object of numbers, got ${Array.isArray(given) ? 'an array' : String(given)}`);
+  }
+  // Own names only: 'constructor' or 'toString' are not parameters, whatever Object.prototype holds.
   for (const key of Object.keys(given)) {
-    if (!(key in specs)) {
+    if (!Object.hasOwn(specs, key)) {
       throw new TypeError(`scene '${scene}' has no parameter '${key}'; it has: ${Object.keys(specs).join(', ')}`);
     }
   }
   const out: Record<string, number> = {};
   for (const [key, spec] of Object.entries(specs)) {
-    const value = given[key] ?? spec.default;
+    const value = Object.hasOwn(given, key) ? (given[key] ?? spec.default) : spec.default;
     if (typeof value !== 'number' || !Number.isFinite(value)) {
       throw new TypeError(`${scene}.${key} must be a finite number, got ${String(value)}`);
     }

@@ -104,6 +104,12 @@ describe('scenes', () => {
     expect(() => buildScene('uniform', { radius: 3 })).toThrow(/no parameter 'radius'/);
     expect(() => buildScene('seed-box', { gravity: NaN })).toThrow(/gravity.*NaN/);
     expect(() => buildScene('uniform', { minRadius: 9, maxRadius: 3 })).toThrow(/minRadius/);
+    // Names Object.prototype holds are neither scenes nor parameters.
+    expect(() => buildScene('toString')).toThrow(/unknown scene 'toString'/);
+    expect(() => buildScene('uniform', { n: 10, constructor: 5 })).toThrow(/no parameter 'constructor'/);
+    expect(() => buildScene('uniform', JSON.parse('{"n": 10, "__proto__": 3}'))).toThrow(/no parameter '__proto__'/);
+    expect(() => buildScene('uniform', [] as never)).toThrow(/object of numbers, got an array/);
+    expect(() => buildScene('uniform', null as never)).toThrow(/object of numbers, got null/);
   });
 
   it('every parameter default lies within its range', () => {
