@@ -44,6 +44,21 @@ describe('parallel step', () => {
     await expectSameBits(uniform(4000), 60);
   });
 
+  it('stats.threads says 1 once a threaded world of circles moves to the shape route, which runs on one thread', async () => {
+    const world = buildWorld(buildScene('uniform', { n: 2000 }));
+    await world.startWorkers(2, { minBodies: 0, adaptive: false });
+    try {
+      world.step(1 / 60);
+      expect(world.stats.threads).toBe(2);
+      world.createBox({ x: 100, y: 100, width: 10, height: 10 });
+      world.step(1 / 60);
+      expect(world.stats.threads).toBe(1);
+      expect(world.backend.lastStepThreads).toBe(1);
+    } finally {
+      world.stopWorkers();
+    }
+  });
+
   it('gives the serial bits whether bodies lie in memory in spatial order or shuffled (chunk cell ranges of the parallel bin)', async () => {
     // The uniform scene creates bodies row by row, so most chunks of 1,024 bodies fall in one
     // thread's band of cells; shuffled, every chunk spans every band. 5,000 is no multiple of 1,024.

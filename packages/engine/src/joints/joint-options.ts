@@ -96,7 +96,7 @@ export interface WheelJointOptions extends JointBaseOptions {
   kind: 'wheel';
   /** The suspension's axis in A's frame. Default (0, 1): up and down on the engine's y-down screens. */
   axis?: Vector | undefined;
-  /** The suspension spring's frequency. Default 1 Hz (0: rigid along the axis but for limits). */
+  /** The suspension spring's frequency. Default 1 Hz (0: no spring, the wheel slides freely along the axis but for limits and the motor, as in Box2D). */
   hertz?: number | undefined;
   /** Default 0.7. */
   dampingRatio?: number | undefined;

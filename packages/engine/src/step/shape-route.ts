@@ -142,6 +142,8 @@ export class ShapeRoute {
     stats.correctMs = t5 - t4;
     stats.reportMs = t6 - t5;
     stats.totalMs = t6 - t0;
+    // The shape route runs on the calling thread alone (see startWorkers).
+    stats.threads = 1;
   }
 
   /** Bullets in the world: the continuous stage runs for them even with nothing static. */
