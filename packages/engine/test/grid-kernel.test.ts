@@ -309,6 +309,31 @@ describe('grid WebAssembly kernel', () => {
       expect(refused).toBeGreaterThan(0);
     });
 
+    it('counts the jumps that decide it: bodies whose cell lies far from the one before', () => {
+      // Window: more than two rows and more than 1/64 of the cells (assembly jumpWindow).
+      fc.assert(
+        fc.property(fc.integer({ min: 1, max: 700 }), fc.integer({ min: 0, max: 2 ** 31 - 1 }), fc.boolean(), (n, seed, counted) => {
+          bandedBin.minBodies = counted ? 1 : n + 1;
+          const columns = 37;
+          const rows = 29;
+          const { serial } = kernelPair(n, 1, columns, rows, false, seed);
+          const x = Array.from(serial.inputX.subarray(0, n));
+          const y = Array.from(serial.inputY.subarray(0, n));
+          serial.bin(n, false, 0, 0, 1, columns, columns * rows);
+          const window = Math.max(2 * columns, (columns * rows) >> 6);
+          let expected = 0;
+          let last = 0;
+          for (let k = 0; k < n; k++) {
+            const c = Math.floor(y[k]) * columns + Math.floor(x[k]);
+            if (Math.abs(c - last) > window) expected++;
+            last = c;
+          }
+          expect(serial.jumps).toBe(counted ? expected : 0);
+        }),
+        { numRuns: 60 },
+      );
+    });
+
     it('is not taken for bodies created in the order they lie in space', () => {
       bandedBin.minBodies = 2;
       bandedBin.bodiesPerBand = 16;

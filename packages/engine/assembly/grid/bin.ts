@@ -20,40 +20,132 @@ export function jumps(): i32 {
  * Counting sort of n bodies into `cells` row-major cells: slots 0..n-1, or the n int32 slots at
  * `slots` when it is not 0; positions and radii are read at xs, ys, rs by slot. cellStart
  * (cells + 2 int32) ends as each cell's first index, sorted* hold the bodies in cell order, binOf
- * is scratch. Radii are copied as they are: scans pad them as they read them.
+ * is scratch. Radii are copied as they are: scans pad them as they read them. With `countJumps`
+ * (slots 0..n-1 only: the banded bin takes no slot list), counts the jumps for `jumps()`, which
+ * is otherwise 0.
+ *
+ * The loops run four bodies (or cells) a turn and each case has loops of its own, its choices
+ * made outside them: V8 checks for interrupts on every turn of a WebAssembly loop and does not move
+ * a loop-invariant test out of one, and at 64,000 bodies those costs were a third of this bin
+ * (docs/engine.md, Numbers). For the same reason the cells are computed in a pass of their own
+ * before they are counted: the fused loop was the slower.
  */
 export function bin(
   xs: usize, ys: usize, rs: usize, slots: usize, n: i32,
   minX: f64, minY: f64, inverse: f64, columns: i32, cells: i32,
   cellStart: usize, binOf: usize, sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
+  countJumps: bool,
 ): void {
   const rows = cells / columns;
+  if (slots != 0) cellsOfBodies(xs, ys, slots, n, minX, minY, inverse, columns, rows, binOf);
+  else cellsOfBodies(xs, ys, 0, n, minX, minY, inverse, columns, rows, binOf);
   memory.fill(cellStart, 0, (<usize>cells + 2) << 2);
-  const window = jumpWindow(columns, cells);
-  let last: i32 = 0;
-  let jumped: i32 = 0;
-  for (let k: i32 = 0; k < n; k++) {
-    const at = <usize>slotAt(slots, k) << 3;
-    const c = cellOf(load<f64>(ys + at), minY, inverse, rows) * columns + cellOf(load<f64>(xs + at), minX, inverse, columns);
-    store<i32>(binOf + (<usize>k << 2), c);
-    const counter = cellStart + (<usize>c << 2);
-    store<i32>(counter, load<i32>(counter) + 1);
-    jumped += <i32>(abs<i32>(c - last) > window);
-    last = c;
-  }
-  jumpsFound = jumped;
+  if (countJumps) jumpsFound = countBodies(binOf, n, cellStart, jumpWindow(columns, cells), true);
+  else jumpsFound = countBodies(binOf, n, cellStart, 0, false);
   let sum: i32 = 0;
-  for (let c: i32 = 0; c < cells; c++) {
+  let c: i32 = 0;
+  for (; c + 3 < cells; c += 4) {
+    const counter = cellStart + (<usize>c << 2);
+    sum += load<i32>(counter);
+    store<i32>(counter, sum);
+    sum += load<i32>(counter, 4);
+    store<i32>(counter, sum, 4);
+    sum += load<i32>(counter, 8);
+    store<i32>(counter, sum, 8);
+    sum += load<i32>(counter, 12);
+    store<i32>(counter, sum, 12);
+  }
+  for (; c < cells; c++) {
     const counter = cellStart + (<usize>c << 2);
     sum += load<i32>(counter);
     store<i32>(counter, sum);
   }
   // From the back with pre-decrement: slots ascend inside each cell, as in CellGrid.bin.
-  for (let k: i32 = n - 1; k >= 0; k--) {
-    scatterOne(slotAt(slots, k), load<i32>(binOf + (<usize>k << 2)), cellStart, xs, ys, rs, sortedSlot, sortedX, sortedY, sortedR);
-  }
+  if (slots != 0) scatterBodies(xs, ys, rs, slots, n, cellStart, binOf, sortedSlot, sortedX, sortedY, sortedR);
+  else scatterBodies(xs, ys, rs, 0, n, cellStart, binOf, sortedSlot, sortedX, sortedY, sortedR);
   store<i32>(cellStart + (<usize>cells << 2), n);
   store<i32>(cellStart + ((<usize>cells + 1) << 2), n);
+}
+
+/** binOf[k] = the cell of the k-th body to bin (see slotAt), for k in [0, n). */
+// @ts-ignore: decorator
+@inline
+function cellsOfBodies(
+  xs: usize, ys: usize, slots: usize, n: i32, minX: f64, minY: f64, inverse: f64, columns: i32, rows: i32, binOf: usize,
+): void {
+  let k: i32 = 0;
+  for (; k + 3 < n; k += 4) {
+    const out = binOf + (<usize>k << 2);
+    store<i32>(out, cellAt(xs, ys, slotAt(slots, k), minX, minY, inverse, columns, rows));
+    store<i32>(out, cellAt(xs, ys, slotAt(slots, k + 1), minX, minY, inverse, columns, rows), 4);
+    store<i32>(out, cellAt(xs, ys, slotAt(slots, k + 2), minX, minY, inverse, columns, rows), 8);
+    store<i32>(out, cellAt(xs, ys, slotAt(slots, k + 3), minX, minY, inverse, columns, rows), 12);
+  }
+  for (; k < n; k++) store<i32>(binOf + (<usize>k << 2), cellAt(xs, ys, slotAt(slots, k), minX, minY, inverse, columns, rows));
+}
+
+/** The cell of the body in slot i. */
+// @ts-ignore: decorator
+@inline
+function cellAt(xs: usize, ys: usize, i: i32, minX: f64, minY: f64, inverse: f64, columns: i32, rows: i32): i32 {
+  const at = <usize>i << 3;
+  return cellOf(load<f64>(ys + at), minY, inverse, rows) * columns + cellOf(load<f64>(xs + at), minX, inverse, columns);
+}
+
+/**
+ * One more in the counter of each of the n cells in binOf; with `countJumps`, returns how many of
+ * them lie more than `window` cells from the one before (see jumpsFound), otherwise 0.
+ */
+// @ts-ignore: decorator
+@inline
+function countBodies(binOf: usize, n: i32, cellStart: usize, window: i32, countJumps: bool): i32 {
+  let last: i32 = 0;
+  let jumped: i32 = 0;
+  let k: i32 = 0;
+  for (; k + 3 < n; k += 4) {
+    const at = binOf + (<usize>k << 2);
+    const c0 = load<i32>(at);
+    const c1 = load<i32>(at, 4);
+    const c2 = load<i32>(at, 8);
+    const c3 = load<i32>(at, 12);
+    countOne(cellStart, c0);
+    countOne(cellStart, c1);
+    countOne(cellStart, c2);
+    countOne(cellStart, c3);
+    if (countJumps) {
+      jumped += <i32>(abs<i32>(c0 - last) > window) + <i32>(abs<i32>(c1 - c0) > window) + <i32>(abs<i32>(c2 - c1) > window) + <i32>(abs<i32>(c3 - c2) > window);
+      last = c3;
+    }
+  }
+  for (; k < n; k++) {
+    const c = load<i32>(binOf + (<usize>k << 2));
+    countOne(cellStart, c);
+    if (countJumps) {
+      jumped += <i32>(abs<i32>(c - last) > window);
+      last = c;
+    }
+  }
+  return jumped;
+}
+
+/** bin's scatter, from the back, four bodies a turn. */
+// @ts-ignore: decorator
+@inline
+function scatterBodies(
+  xs: usize, ys: usize, rs: usize, slots: usize, n: i32, cellStart: usize, binOf: usize,
+  sortedSlot: usize, sortedX: usize, sortedY: usize, sortedR: usize,
+): void {
+  let k: i32 = n - 1;
+  for (; k >= 3; k -= 4) {
+    const at = binOf + (<usize>k << 2);
+    scatterOne(slotAt(slots, k), load<i32>(at), cellStart, xs, ys, rs, sortedSlot, sortedX, sortedY, sortedR);
+    scatterOne(slotAt(slots, k - 1), load<i32>(at - 4), cellStart, xs, ys, rs, sortedSlot, sortedX, sortedY, sortedR);
+    scatterOne(slotAt(slots, k - 2), load<i32>(at - 8), cellStart, xs, ys, rs, sortedSlot, sortedX, sortedY, sortedR);
+    scatterOne(slotAt(slots, k - 3), load<i32>(at - 12), cellStart, xs, ys, rs, sortedSlot, sortedX, sortedY, sortedR);
+  }
+  for (; k >= 0; k--) {
+    scatterOne(slotAt(slots, k), load<i32>(binOf + (<usize>k << 2)), cellStart, xs, ys, rs, sortedSlot, sortedX, sortedY, sortedR);
+  }
 }
 
 /**

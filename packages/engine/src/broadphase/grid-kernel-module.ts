@@ -8,6 +8,7 @@ export interface KernelExports {
     xs: number, ys: number, rs: number, slots: number, n: number,
     minX: number, minY: number, inverse: number, columns: number, cells: number,
     cellStart: number, binOf: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,
+    countJumps: boolean,
   ): void;
   scan(
     cellStart: number, sortedSlot: number, sortedX: number, sortedY: number, sortedR: number,

@@ -1,6 +1,6 @@
 import { grownCapacity } from '../util/grow.js';
 import { RADIUS_PAD } from './fat-bounds.js';
-import { BandedPolicy, planBandStarts } from './banded-policy.js';
+import { BandedPolicy, bandedBin, planBandStarts } from './banded-policy.js';
 import { instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
 import { CELL_CHUNK, kernelModule, SHARED_MAXIMUM_PAGES, type KernelExports } from './grid-kernel-module.js';
 
@@ -271,6 +271,8 @@ export class GridKernel {
       this.inputXAt, this.inputYAt, this.inputRAt, slotList ? this.slotListAt : 0, n,
       minX, minY, inverse, columns, cells,
       this.cellStartAt, this.binOfAt, this.sortedSlotAt, this.sortedXAt, this.sortedYAt, this.sortedRAt,
+      // Jumps only decide whether the next bin is banded, which smaller grids never are.
+      !slotList && n >= bandedBin.minBodies,
     );
   }
 
@@ -280,7 +282,12 @@ export class GridKernel {
    * `jumps`; for a shared grid, what its threads' cells pass counted, see noteJumps).
    */
   wantsBanded(n: number): boolean {
-    return this.banding.wants(n, this.shared ? this.sharedJumps : this.fn.jumps());
+    return this.banding.wants(n, this.jumps);
+  }
+
+  /** The last bin's jumps (assembly `jumps`; 0 where it had fewer than bandedBin.minBodies bodies), or a shared grid's (see noteJumps). */
+  get jumps(): number {
+    return this.shared ? this.sharedJumps : this.fn.jumps();
   }
 
   /** A shared grid's jumps, summed over the threads' cell passes of a step (cellsOf's returns). */
