@@ -1,9 +1,9 @@
 // Compiles the AssemblyScript kernels in assembly/ into TypeScript modules in src/generated/ that
 // export the WebAssembly bytes, so that the engine ships no separate .wasm file and has no runtime
 // dependency: Node, Vite and bundlers load them as ordinary TypeScript/JavaScript.
-// - grid-kernel.ts -> grid-kernel-wasm.ts, and body-kernel.ts -> body-kernel-wasm.ts, each twice:
-//   for a private memory, and for a shared one (a parallel step's grid and body columns, which its
-//   threads all work on).
+// - grid-kernel.ts -> grid-kernel-wasm.ts, and body-kernel.ts -> body-kernel-wasm.ts, each for a
+//   private memory and for a shared one (a parallel step's grid and body columns, which its
+//   threads all work on); the body kernel also with 128-bit SIMD, which the loader prefers.
 // - soft-step.ts -> soft-step-wasm.ts, with 128-bit SIMD, for a private memory.
 // Each output is skipped when it is newer than this script and every file under assembly/ (an
 // entry's imports are not traced, so any change there rebuilds both kernels: a few seconds).
@@ -29,6 +29,9 @@ const sharedVariant = (name, source) => ({
   flags: ['--enable', 'threads', '--sharedMemory', '--maximumMemory', String(SHARED_MAXIMUM_PAGES)],
 });
 
+/** `variant` with 128-bit SIMD enabled. */
+const withSimd = (variant) => ({ ...variant, flags: [...variant.flags, '--enable', 'simd'] });
+
 const KERNELS = [
   {
     source: 'grid-kernel.ts',
@@ -38,7 +41,14 @@ const KERNELS = [
   {
     source: 'body-kernel.ts',
     out: 'body-kernel-wasm.ts',
-    variants: [{ name: 'BODY_KERNEL_WASM', flags: [] }, sharedVariant('BODY_KERNEL_SHARED_WASM', 'src/store/body-kernel.ts')],
+    // Each with and without 128-bit SIMD (ASC_FEATURE_SIMD in the source): the same bits either
+    // way; the loader takes the SIMD build where the runtime compiles it.
+    variants: [
+      { name: 'BODY_KERNEL_WASM', flags: [] },
+      sharedVariant('BODY_KERNEL_SHARED_WASM', 'src/store/body-kernel.ts'),
+      { name: 'BODY_KERNEL_SIMD_WASM', flags: ['--enable', 'simd'] },
+      withSimd(sharedVariant('BODY_KERNEL_SHARED_SIMD_WASM', 'src/store/body-kernel.ts')),
+    ],
   },
   {
     source: 'soft-step.ts',

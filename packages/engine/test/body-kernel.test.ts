@@ -3,12 +3,15 @@ import { buildScene, buildWorld } from '@maxgrid/scenes';
 import { World, type WorldOptions } from '../src/index.js';
 import { hashWithPath } from './helpers.js';
 import { BodyStore } from '../src/store/body-store.js';
-import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
+import { kernelModule, setBodyKernelEnabled, setBodyKernelSimd } from '../src/store/body-kernel.js';
 
 // The body kernel (integration, walls and contact solve in WebAssembly) must be the TypeScript
 // loops bit for bit: a world steps to the same state whichever path its store took.
 
-afterEach(() => setBodyKernelEnabled(true));
+afterEach(() => {
+  setBodyKernelEnabled(true);
+  setBodyKernelSimd(true);
+});
 
 function runHash(build: () => World, steps: number, kernel: boolean, mutate?: (world: World, step: number) => void): string {
   return hashWithPath(setBodyKernelEnabled, kernel, build, steps, mutate);
@@ -72,6 +75,25 @@ describe('body WebAssembly kernel', () => {
   it.each(variants)('agrees with kinematic, static, mixed-restitution and folding bodies (past 16 bounces a step): %s', (_label, options) => {
     const build = () => busyWorld(options);
     expect(runHash(build, 90, true)).toBe(runHash(build, 90, false));
+  });
+
+  // The SIMD build moves two dynamic bodies per instruction and falls back to the scalar code for
+  // other pairs and near the walls; the plain build is what runtimes without SIMD get.
+  it('has a SIMD build and a plain one on this runtime (so the comparisons below compare two builds)', () => {
+    const simd = kernelModule(false);
+    setBodyKernelSimd(false);
+    const plain = kernelModule(false);
+    expect(simd).not.toBeNull();
+    expect(plain).not.toBeNull();
+    expect(plain).not.toBe(simd);
+  });
+
+  const simdCases: [string, () => World][] = [
+    ['uniform, 3,001 bodies (an odd count: one body left after the pairs)', () => buildWorld(buildScene('uniform', { n: 3001, seed: 5 }), { broadphase: 'maxgrid', continuous: false })],
+    ...variants.filter(([label]) => label.startsWith('one pass')).map(([label, options]): [string, () => World] => [label, () => busyWorld(options)]),
+  ];
+  it.each(simdCases)('steps to the same state hash with the SIMD build and the plain one: %s', (_label, build) => {
+    expect(hashWithPath(setBodyKernelSimd, true, build, 90)).toBe(hashWithPath(setBodyKernelSimd, false, build, 90));
   });
 
   it('agrees with collision layers (the narrow-phase filter)', () => {

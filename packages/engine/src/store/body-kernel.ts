@@ -1,4 +1,4 @@
-import { BODY_KERNEL_SHARED_WASM, BODY_KERNEL_WASM } from '../generated/body-kernel-wasm.js';
+import { BODY_KERNEL_SHARED_SIMD_WASM, BODY_KERNEL_SHARED_WASM, BODY_KERNEL_SIMD_WASM, BODY_KERNEL_WASM } from '../generated/body-kernel-wasm.js';
 import { grownCapacity, type Column } from '../util/grow.js';
 import type { ContactSink } from './contact-buffer.js';
 import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelMemory } from '../util/wasm.js';
@@ -83,6 +83,7 @@ const SHARED_MAXIMUM_PAGES = 32768;
 
 const compiled: { private?: object | null; shared?: object | null } = {};
 let enabled = true;
+let simdWanted = true;
 
 /** Whether kernels made from now on run (see setBodyKernelEnabled). */
 export function bodyKernelEnabled(): boolean {
@@ -92,8 +93,23 @@ export function bodyKernelEnabled(): boolean {
 /** The compiled body kernel for a private or a shared memory, or null where this runtime lacks one. */
 export function kernelModule(shared: boolean): object | null {
   const key = shared ? 'shared' : 'private';
-  if (compiled[key] === undefined) compiled[key] = compileKernel(shared ? BODY_KERNEL_SHARED_WASM : BODY_KERNEL_WASM);
+  if (compiled[key] === undefined) {
+    // The SIMD build where this runtime compiles it (the same bits, see moveInBox), else the plain one.
+    const simd = simdWanted ? compileKernel(shared ? BODY_KERNEL_SHARED_SIMD_WASM : BODY_KERNEL_SIMD_WASM) : null;
+    compiled[key] = simd ?? compileKernel(shared ? BODY_KERNEL_SHARED_WASM : BODY_KERNEL_WASM);
+  }
   return compiled[key]!;
+}
+
+/**
+ * Whether kernels made from now on use the body kernel's SIMD build, where the runtime has one:
+ * for tests that compare the two builds; not part of the public API.
+ */
+export function setBodyKernelSimd(on: boolean): void {
+  if (on === simdWanted) return;
+  simdWanted = on;
+  delete compiled.private;
+  delete compiled.shared;
 }
 
 /**
