@@ -376,6 +376,25 @@ describe('joints', () => {
     expect(Math.abs(world.getBody(bob).y - 3)).toBeLessThan(0.02);
   });
 
+  it('a range of one length (minLength == maxLength) holds the anchors that far apart, spring or not', () => {
+    // The bob is made 1 m below the pivot; the range asks for 2 m, whatever the rest length would default to.
+    for (const extra of [{}, { length: 2 }, { hertz: 5, dampingRatio: 0.5 }]) {
+      const world = new World({ gravity: { x: 0, y: 10 } });
+      const pivot = world.createBody({ x: 0, y: 0, type: 'static' });
+      const bob = world.createCircle({ x: 0.3, y: 1, radius: 0.1, mass: 1 });
+      const joint = world.createJoint({ kind: 'distance', bodyA: pivot, bodyB: bob, minLength: 2, maxLength: 2, ...extra });
+      run(world, 60);
+      // Then it swings as a rigid pendulum of 2 m.
+      let worst = 0;
+      for (let s = 0; s < 180; s++) {
+        world.step(DT);
+        worst = Math.max(worst, Math.abs(world.getJoint(joint).length - 2));
+      }
+      // Measured: within 1e-4 in all three.
+      expect(worst, JSON.stringify(extra)).toBeLessThan(0.001);
+    }
+  });
+
   it('a joint breaks above its break force, with an event', () => {
     const world = new World({ gravity: { x: 0, y: 10 } });
     const pivot = world.createBody({ x: 0, y: 0, type: 'static' });
@@ -514,6 +533,8 @@ describe('joints', () => {
       [{ kind: 'distance', bodyA: a, bodyB: b, length: -1 }, /length must be > 0, got -1/, RangeError],
       [{ kind: 'distance', bodyA: a, bodyB: b, hertz: -2 }, /hertz must be >= 0/, RangeError],
       [{ kind: 'distance', bodyA: a, bodyB: b, minLength: 3, maxLength: 2 }, /minLength \(3\) must not exceed maxLength \(2\)/, RangeError],
+      [{ kind: 'distance', bodyA: a, bodyB: b, length: 2, minLength: 3, maxLength: 3 }, /length \(2\) must equal minLength and maxLength \(3\)/, RangeError],
+      [{ kind: 'distance', bodyA: a, bodyB: b, maxLength: 0 }, /minLength and maxLength are both 0/, RangeError],
       [{ kind: 'distance', bodyA: a, bodyB: b, anchorA: { x: 1, y: 0 } }, /anchors coincide/, RangeError],
       [{ kind: 'revolute', bodyA: a, bodyB: b, lowerAngle: 1, upperAngle: 0 }, /lowerAngle \(1\) must not exceed upperAngle \(0\)/, RangeError],
       [{ kind: 'revolute', bodyA: a, bodyB: b, upperAngle: 4 }, /upperAngle must be within \[-pi, pi\]/, RangeError],

@@ -23,12 +23,19 @@ export interface JointBaseOptions {
 /**
  * Keeps the anchors `length` apart: rigidly, unless a range is given (minLength < maxLength), in
  * which the anchors move freely (a rope), or `hertz` > 0, which makes it a spring towards
- * `length` (free of limits unless a range is also given).
+ * `length` (free of limits unless a range is also given). A range of one length
+ * (minLength == maxLength) holds the anchors rigidly that far apart, spring or not.
  */
 export interface DistanceJointOptions extends JointBaseOptions {
   kind: 'distance';
-  /** Default: the anchors' distance when the joint is made; must be > 0. */
+  /**
+   * Default: the anchors' distance when the joint is made, or the range's length where
+   * minLength == maxLength; must be > 0. With minLength == maxLength it must equal them (a
+   * RangeError otherwise). Within a wider range only a spring reads it, and may rest outside the
+   * range: the spring then presses the anchors against its nearer end.
+   */
   length?: number | undefined;
+  /** The range's ends; giving either turns the range on, the other then 0 or unbounded. */
   minLength?: number | undefined;
   maxLength?: number | undefined;
   /**
@@ -348,21 +355,31 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     const dx = pointB[0] - point[0];
     const dy = pointB[1] - point[1];
     const apart = Math.sqrt(dx * dx + dy * dy);
-    const length = o.length === undefined ? apart : boundedNumber('length', o.length);
-    if (!(length > 0)) {
-      throw new RangeError(o.length === undefined ? `the anchors coincide (distance ${apart}): give a length > 0, or use a revolute joint` : `length must be > 0, got ${describeValue(o.length)}`);
-    }
+    const given = o.length === undefined ? undefined : boundedNumber('length', o.length);
+    if (given !== undefined && !(given > 0)) throw new RangeError(`length must be > 0, got ${describeValue(o.length)}`);
     const hertz = optionalNonNegative('hertz', o.hertz, 0);
+    const dampingRatio = optionalNonNegative('dampingRatio', o.dampingRatio, 0);
+    const ranged = o.minLength !== undefined || o.maxLength !== undefined;
+    const min = ranged ? optionalNonNegative('minLength', o.minLength, 0) : 0;
+    const max = ranged && o.maxLength !== undefined ? boundedNonNegative('maxLength', o.maxLength) : Infinity;
+    if (min > max) throw new RangeError(`minLength (${min}) must not exceed maxLength (${max})`);
+    // A range of one length leaves the anchors no play, so that length is the joint's: holding a
+    // different rest length instead would ignore the range, and no spring has room to act in it.
+    const fixed = ranged && min === max;
+    if (fixed && given !== undefined && given !== min) {
+      throw new RangeError(`length (${given}) must equal minLength and maxLength (${min}) where they are equal: that range holds the anchors ${min} apart (leave length out, or widen the range)`);
+    }
+    const length = given ?? (fixed ? min : apart);
+    if (!(length > 0)) {
+      throw new RangeError(fixed ? 'minLength and maxLength are both 0: a distance joint cannot hold its anchors together (use a revolute joint)' : `the anchors coincide (distance ${apart}): give a length > 0, or use a revolute joint`);
+    }
+    const rigid = fixed || (!ranged && hertz === 0);
     r[J.length] = length;
     r[J.hertz] = hertz;
-    r[J.dampingRatio] = optionalNonNegative('dampingRatio', o.dampingRatio, 0);
-    const ranged = o.minLength !== undefined || o.maxLength !== undefined;
-    const min = optionalNonNegative('minLength', o.minLength, ranged || hertz > 0 ? 0 : length);
-    const max = o.maxLength === undefined ? (ranged || hertz > 0 ? Infinity : length) : boundedNonNegative('maxLength', o.maxLength);
-    if (min > max) throw new RangeError(`minLength (${min}) must not exceed maxLength (${max})`);
-    r[J.minLength] = min;
-    r[J.maxLength] = max;
-    r[J.enableLimit] = hertz > 0 || min < max ? 1 : 0;
+    r[J.dampingRatio] = dampingRatio;
+    r[J.minLength] = rigid ? length : min;
+    r[J.maxLength] = rigid ? length : max;
+    r[J.enableLimit] = rigid ? 0 : 1;
     return { kind: JointKind.distance, bodyA: a, bodyB: b, collide, definition: r, ring: null };
   }
   r[J.referenceAngle] = o.referenceAngle === undefined ? relative : wrapAngle(finiteNumber('referenceAngle', o.referenceAngle));
