@@ -21,7 +21,7 @@ import { grow, grownCapacity } from './util/grow.js';
 import { BodyShapes } from './shapes/body-shapes.js';
 import { ShapeRoute } from './step/shape-route.js';
 import { turnCircles } from './integrate/rigid-motion.js';
-import { atan2, cosSin } from './math/trig.js';
+import { atan2, cosSin, nearestTurn } from './math/trig.js';
 import { BodyFlag } from './store/rigid-columns.js';
 import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type NewShape } from './store/shape-store.js';
 import { Geometry, SHAPE_KIND_NAMES, areaProperties, emptyAreaProperties } from './shapes/geometry.js';
@@ -1036,9 +1036,11 @@ export class World {
     const cb = rigid.c[b];
     const sb = rigid.s[b];
     let angle = atan2(sb * ca - cb * sa, cb * ca + sb * sa) - r[o + J.referenceAngle];
-    if (angle > Math.PI) angle -= 2 * Math.PI;
-    else if (angle < -Math.PI) angle += 2 * Math.PI;
     const kind = store.kind[j];
+    // A limited revolute joint's angle is the one its limits act on, followed across ±pi (J.deltaAngle).
+    if (kind === JointKind.revolute && r[o + J.enableLimit] === 1) angle = nearestTurn(angle, r[o + J.deltaAngle]);
+    else if (angle > Math.PI) angle -= 2 * Math.PI;
+    else if (angle < -Math.PI) angle += 2 * Math.PI;
     const dx = pb[0] - pa[0];
     const dy = pb[1] - pa[1];
     const slides = kind === JointKind.prismatic || kind === JointKind.wheel;

@@ -215,6 +215,63 @@ describe('joints', () => {
     expect(Math.abs(world.getBody(bar).angularVelocity)).toBeLessThan(0.01);
   });
 
+  it('revolute limits near ±pi hold under a strong motor: the angle is followed across pi, not wrapped to the other limit', () => {
+    // A bar pinned at its left end to a static pivot, no gravity, driven by a motor into one limit.
+    // The soft limit gives a little under the motor's torque; once that passed pi the angle read
+    // as lying beyond the other limit, and the bar spun on. The bar's own direction, from its
+    // centre's position, is measured against the limit.
+    for (const [limit, torque] of [
+      [3.1, 1000],
+      [Math.PI, 100],
+      [Math.PI, 1000],
+      [3.0, 3000],
+    ]) {
+      for (const sense of [1, -1]) {
+        const world = new World();
+        const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+        const bar = world.createBox({ x: 1, y: 0, width: 2, height: 0.1, density: 1 });
+        const joint = world.createJoint({ kind: 'revolute', bodyA: ground, bodyB: bar, anchorA: { x: 0, y: 0 }, anchorB: { x: -1, y: 0 }, lowerAngle: -limit, upperAngle: limit, motorSpeed: 10 * sense, maxMotorTorque: torque });
+        const label = `limit ${limit}, torque ${torque}, sense ${sense}`;
+        let past = 0;
+        for (let s = 0; s < 300; s++) {
+          world.step(DT);
+          const b = world.getBody(bar);
+          // How far the bar has turned past the limit, the short way round from it.
+          const turned = Math.atan2(b.y, b.x) * sense - limit;
+          past = Math.max(past, turned - 2 * Math.PI * Math.round(turned / (2 * Math.PI)));
+        }
+        // The soft limit's give under the motor: measured up to 0.23 rad (3000 N m against 3.0).
+        expect(past, label).toBeLessThan(0.3);
+        expect(Math.abs(world.getBody(bar).angularVelocity), label).toBeLessThan(0.6);
+        expect(world.getJoint(joint).angle * sense, label).toBeGreaterThan(limit - 0.01);
+        expect(world.getJoint(joint).angle * sense, label).toBeLessThan(limit + 0.3);
+      }
+    }
+  });
+
+  it('a revolute joint made a little past a limit near pi is pushed back the short way', () => {
+    // Limits [2.5, pi]; the bar is made pointing at pi + 0.05, which reads as -pi + 0.05 wrapped.
+    const world = new World();
+    const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+    const start = Math.PI + 0.05;
+    const bar = world.createBox({ x: Math.cos(start), y: Math.sin(start), width: 2, height: 0.1, density: 1, angle: start });
+    const joint = world.createJoint({ kind: 'revolute', bodyA: ground, bodyB: bar, anchorA: { x: 0, y: 0 }, anchorB: { x: -1, y: 0 }, referenceAngle: 0, lowerAngle: 2.5, upperAngle: Math.PI });
+    expect(world.getJoint(joint).angle).toBeCloseTo(start, 9);
+    // The bar's direction stays on the arc from the lower limit to where it was made: it never
+    // swings round through the 3.7 rad outside the limits.
+    let outside = 0;
+    for (let s = 0; s < 120; s++) {
+      world.step(DT);
+      const b = world.getBody(bar);
+      let direction = Math.atan2(b.y, b.x);
+      if (direction < 0) direction += 2 * Math.PI;
+      outside = Math.max(outside, 2.5 - direction, direction - start);
+    }
+    expect(outside).toBeLessThan(0.02);
+    expect(world.getJoint(joint).angle).toBeGreaterThan(2.49);
+    expect(world.getJoint(joint).angle).toBeLessThan(start);
+  });
+
   it('a reference angle is a turn: one beyond pi holds as the same turn within it, and no finite one makes NaN', () => {
     // A box pinned below a static point, its limits +-0.1 about the reference: a reference a
     // whole number of turns from 0.2 must hold the box where 0.2 does.

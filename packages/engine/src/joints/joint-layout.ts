@@ -51,7 +51,11 @@ export const J = {
   maxLength: 25,
   /** Spring frequency in hertz (0: none) and damping ratio. */
   hertz: 26,
-  /** The joint angle (relative angle less the reference) at the step's start. */
+  /**
+   * The joint angle (relative angle less the reference) at the step's start: within [-pi, pi],
+   * but followed continuously across turns for a revolute joint with limits, from the turn
+   * nearest its limits when made (see resolveJoint).
+   */
   deltaAngle: 27,
   linearImpulseX: 28,
   linearImpulseY: 29,

@@ -1,7 +1,7 @@
 import type { Vector } from '../options.js';
 import { flag, vector } from '../options.js';
 import { MAX_MAGNITUDE, MAX_SHAPE_REACH, boundedNonNegative, boundedNumber, describeValue, finiteNumber, knownKeys, plainObject } from '../util/validate.js';
-import { wrapAngle } from '../math/trig.js';
+import { nearestTurn, wrapAngle } from '../math/trig.js';
 import { J, JOINT_KIND_NAMES, JOINT_STRIDE, JointKind, type JointKindName } from './joint-layout.js';
 
 /** What every joint between two bodies takes. Anchors are in each body's own frame, from its origin. */
@@ -53,7 +53,11 @@ export interface RevoluteJointOptions extends JointBaseOptions {
   kind: 'revolute';
   /** B's angle less A's at which the joint angle is 0, any finite angle (taken as the same turn within [-pi, pi]). Default: as the bodies stand when it is made. */
   referenceAngle?: number | undefined;
-  /** Angle limits (radians, within [-pi, pi]); giving either turns limits on, the other then unbounded. */
+  /**
+   * Angle limits (radians, within [-pi, pi]); giving either turns limits on, the other then
+   * unbounded. With limits on, the joint angle is followed across ±pi (not wrapped), so a limit
+   * at pi holds, and with one limit the joint may wind freely the other way.
+   */
   lowerAngle?: number | undefined;
   upperAngle?: number | undefined;
   /** Target relative spin of B against A, radians per second, for a motor of maxMotorTorque. Default 0. */
@@ -401,6 +405,7 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     if (o.lowerAngle !== undefined && !(Math.abs(finiteNumber('lowerAngle', o.lowerAngle)) <= Math.PI)) throw new RangeError(`lowerAngle must be within [-pi, pi], got ${describeValue(o.lowerAngle)}`);
     if (o.upperAngle !== undefined && !(Math.abs(finiteNumber('upperAngle', o.upperAngle)) <= Math.PI)) throw new RangeError(`upperAngle must be within [-pi, pi], got ${describeValue(o.upperAngle)}`);
     range('lowerAngle', 'upperAngle', o.lowerAngle, o.upperAngle, r);
+    if (r[J.enableLimit] === 1) r[J.deltaAngle] = turnNearLimits(relative - r[J.referenceAngle], r[J.lower], r[J.upper]);
     return { kind: JointKind.revolute, bodyA: a, bodyB: b, collide, definition: r, ring: null };
   }
   const axis = unitAxis('axis', o.axis, wheel ? { x: 0, y: 1 } : { x: 1, y: 0 });
@@ -408,6 +413,25 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
   r[J.axisY] = axis.y;
   range('lowerTranslation', 'upperTranslation', o.lowerTranslation, o.upperTranslation, r);
   return { kind: wheel ? JointKind.wheel : JointKind.prismatic, bodyA: a, bodyB: b, collide, definition: r, ring: null };
+}
+
+/**
+ * The turn of a joint angle that lies nearest the limits [lower, upper], where the solver starts
+ * following a limited revolute joint's angle (see J.deltaAngle): a joint made a little past a
+ * limit near ±pi is pushed back the short way, not around the circle to its other limit.
+ */
+function turnNearLimits(angle: number, lower: number, upper: number): number {
+  const within = nearestTurn(angle, 0);
+  let best = within;
+  let gap = Math.max(lower - within, within - upper, 0);
+  for (const turn of [within - 2 * Math.PI, within + 2 * Math.PI]) {
+    const g = Math.max(lower - turn, turn - upper, 0);
+    if (g < gap) {
+      best = turn;
+      gap = g;
+    }
+  }
+  return best;
 }
 
 /**

@@ -170,6 +170,15 @@ export function wrapAngle(angle: number): number {
   return atan2(scratch[1], scratch[0]);
 }
 
+/**
+ * The angle that names the same turn as `angle` and lies within pi of `near`: an angle followed
+ * from one reading to the next across ±pi, which stays continuous while it turns less than pi
+ * between readings. Whole steps of TWO_PI, so the same bits everywhere.
+ */
+export function nearestTurn(angle: number, near: number): number {
+  return angle + TWO_PI * Math.round((near - angle) / TWO_PI);
+}
+
 /** Below this, `turn` sums the short series; its first omitted terms are below 1e-20 of the result. */
 const SMALL_TURN = 0.125;
 

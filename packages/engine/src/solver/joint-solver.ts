@@ -18,9 +18,10 @@ import { SPIN_DAMPING, SPIN_HERTZ, targetJoint } from './joints/target-joint.js'
 import { atan2Into } from '../math/trig.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
-const { active: ACTIVE, anchorAX: ANCHOR_AX, anchorAY: ANCHOR_AY, anchorBX: ANCHOR_BX, anchorBY: ANCHOR_BY, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axisX: AXIS_X, axisY: AXIS_Y, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, referenceAngle: REFERENCE_ANGLE, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, targetX: TARGET_X, targetY: TARGET_Y, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+const { active: ACTIVE, anchorAX: ANCHOR_AX, anchorAY: ANCHOR_AY, anchorBX: ANCHOR_BX, anchorBY: ANCHOR_BY, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axisX: AXIS_X, axisY: AXIS_Y, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, referenceAngle: REFERENCE_ANGLE, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, targetX: TARGET_X, targetY: TARGET_Y, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
 
 const angleIO = new Float64Array(3);
+const TWO_PI = 2 * Math.PI;
 
 /** Each constraint kind's solver: one line per kind. Springs and gas pressure are forces, applied apart (ForceSprings, GasPressure). */
 const KERNEL_OF: Record<Exclude<JointKindName, 'spring' | 'pressure'>, JointKernel> = {
@@ -290,8 +291,14 @@ export class JointSolver {
       angleIO[1] = cb * ca + sb * sa;
       atan2Into(angleIO, 0);
       let angle = angleIO[2] - r[o + REFERENCE_ANGLE];
-      if (angle > Math.PI) angle -= 2 * Math.PI;
-      else if (angle < -Math.PI) angle += 2 * Math.PI;
+      if (kind === JointKind.revolute && r[o + ENABLE_LIMIT] === 1) {
+        // Limits are followed across ±pi from the angle the last step started at (the bodies turn
+        // less than pi a step): wrapped, an angle pushed past a limit near ±pi reads as lying
+        // beyond the other limit, which then drives it on the wrong way round. (nearestTurn, written
+        // out: V8 boxes a number a call it does not inline returns.)
+        angle += TWO_PI * Math.round((r[o + DELTA_ANGLE] - angle) / TWO_PI);
+      } else if (angle > Math.PI) angle -= TWO_PI;
+      else if (angle < -Math.PI) angle += TWO_PI;
       r[o + DELTA_ANGLE] = angle;
     }
     if (store.kind[j] !== JointKind.spring) {
