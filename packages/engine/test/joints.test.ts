@@ -215,6 +215,100 @@ describe('joints', () => {
     expect(Math.abs(world.getBody(bar).angularVelocity)).toBeLessThan(0.01);
   });
 
+  it('a fast pendulum stops at its revolute limit within the sub-step it reaches it', () => {
+    // A 5 cm disc of 1 kg on a 1 m arm, launched sideways into limits of +-0.3 rad. Its spin about
+    // its own centre is a thousandth of its swing's inertia about the pin.
+    for (const speed of [5, 10, 20]) {
+      const world = new World({ gravity: { x: 0, y: 10 } });
+      const pivot = world.createBody({ x: 0, y: 0, type: 'static' });
+      const bob = world.createCircle({ x: 0, y: 1, radius: 0.05, mass: 1 });
+      const joint = world.createJoint({ kind: 'revolute', bodyA: pivot, bodyB: bob, anchorA: { x: 0, y: 0 }, anchorB: { x: 0, y: -1 }, lowerAngle: -0.3, upperAngle: 0.3 });
+      world.setVelocity(bob, -speed, 0);
+      let angle = 0;
+      let swing = 0;
+      for (let s = 0; s < 120; s++) {
+        world.step(DT);
+        const b = world.getBody(bob);
+        angle = Math.max(angle, Math.abs(world.getJoint(joint).angle));
+        // Where the bob lies, seen from the pivot: the pin must hold too.
+        swing = Math.max(swing, Math.abs(Math.atan2(-b.x, b.y)));
+      }
+      // Measured: the joint angle at most 0.3000, the bob's direction 0.3003.
+      expect(angle, `${speed} m/s`).toBeLessThan(0.301);
+      expect(swing, `${speed} m/s`).toBeLessThan(0.305);
+    }
+  });
+
+  it('a small bob rests on its revolute limit, the joint carrying its weight and moment', () => {
+    // A 1 cm disc of 1 kg 2 m out from the pin, made level, falls onto its limit at 0.3 rad.
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const pivot = world.createBody({ x: 0, y: 0, type: 'static' });
+    const bob = world.createCircle({ x: 2, y: 0, radius: 0.01, mass: 1 });
+    const joint = world.createJoint({ kind: 'revolute', bodyA: pivot, bodyB: bob, anchorA: { x: 0, y: 0 }, anchorB: { x: -2, y: 0 }, lowerAngle: -0.3, upperAngle: 0.3 });
+    let most = 0;
+    for (let s = 0; s < 180; s++) {
+      world.step(DT);
+      const b = world.getBody(bob);
+      most = Math.max(most, Math.atan2(b.y, b.x));
+    }
+    expect(most).toBeLessThan(0.301);
+    const j = world.getJoint(joint);
+    expect(Math.abs(j.angle - 0.3)).toBeLessThan(0.001);
+    // The pin carries the weight; the limit the weight's moment about it, m g L cos(0.3), on B against its turn.
+    expect(j.force.y).toBeCloseTo(-10, 3);
+    expect(j.torque / (-10 * 2 * Math.cos(0.3)) - 1).toBeLessThan(0.001);
+    expect(j.torque / (-10 * 2 * Math.cos(0.3)) - 1).toBeGreaterThan(-0.001);
+  });
+
+  it('a motor held by a revolute limit loads the limit, not the pin', () => {
+    // A 2 m bar pinned at its end, no gravity, its motor of 1000 N m driving it into a limit at 1 rad.
+    const world = new World();
+    const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+    const bar = world.createBox({ x: 1, y: 0, width: 2, height: 0.1, density: 1 });
+    const joint = world.createJoint({ kind: 'revolute', bodyA: ground, bodyB: bar, anchorA: { x: 0, y: 0 }, anchorB: { x: -1, y: 0 }, lowerAngle: -1, upperAngle: 1, motorSpeed: 10, maxMotorTorque: 1000 });
+    run(world, 300);
+    const j = world.getJoint(joint);
+    // The soft limit gives by the torque over the stiffness of the bar's turn about the pin: measured 0.0264 rad.
+    expect(j.angle).toBeGreaterThan(1);
+    expect(j.angle).toBeLessThan(1.03);
+    // Motor and limit cancel between the two bodies; the pin carries nothing and holds.
+    expect(Math.abs(j.torque)).toBeLessThan(1e-6);
+    expect(Math.hypot(j.force.x, j.force.y)).toBeLessThan(1e-6);
+    expect(Math.hypot(j.anchorA.x - j.anchorB.x, j.anchorA.y - j.anchorB.y)).toBeLessThan(1e-4);
+    expect(Math.abs(world.getBody(bar).angularVelocity)).toBeLessThan(1e-6);
+  });
+
+  it('a revolute spring swings its body about the pin at its frequency, anchored off the centre too', () => {
+    // A 2 m bar pinned at its end and a 5 cm disc on a 2 m arm, no gravity, turned 0.2 rad from
+    // the spring's rest. Watched at the sub-step, as for the springs above.
+    const h = 1 / 240;
+    for (const hertz of [2, 10]) {
+      for (const shape of ['bar', 'bob'] as const) {
+        const world = new World({ substeps: 1 });
+        const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+        const arm = shape === 'bar' ? 1 : 2;
+        const start = 0.2;
+        const cos = 1 - start ** 2 / 2 + start ** 4 / 24 - start ** 6 / 720;
+        const sin = start - start ** 3 / 6 + start ** 5 / 120;
+        const body = shape === 'bar' ? world.createBox({ x: cos, y: sin, angle: start, width: 2, height: 0.1, density: 1 }) : world.createCircle({ x: arm * cos, y: arm * sin, angle: start, radius: 0.05, mass: 1 });
+        world.createJoint({ kind: 'revolute', bodyA: ground, bodyB: body, anchorA: { x: 0, y: 0 }, anchorB: { x: -arm, y: 0 }, referenceAngle: 0, hertz, dampingRatio: 0 });
+        const crossings: number[] = [];
+        let previous = start;
+        for (let s = 1; s <= Math.round(10 / hertz / h); s++) {
+          world.step(h);
+          const b = world.getBody(body);
+          const x = Math.atan2(b.y, b.x);
+          if (previous > 0 && x <= 0) crossings.push((s - x / (x - previous)) * h);
+          previous = x;
+        }
+        const what = `${shape} at ${hertz} Hz`;
+        expect(crossings.length, what).toBeGreaterThanOrEqual(5);
+        // Measured: within 1e-4 for the bar, 0.3 % for the disc at 10 Hz (its pin, at the joints' 60 Hz, flexes).
+        expect(Math.abs(1 / meanPeriod(crossings) / hertz - 1), what).toBeLessThan(0.005);
+      }
+    }
+  });
+
   it('revolute limits near ±pi hold under a strong motor: the angle is followed across pi, not wrapped to the other limit', () => {
     // A bar pinned at its left end to a static pivot, no gravity, driven by a motor into one limit.
     // The soft limit gives a little under the motor's torque; once that passed pi the angle read
@@ -240,11 +334,11 @@ describe('joints', () => {
           const turned = Math.atan2(b.y, b.x) * sense - limit;
           past = Math.max(past, turned - 2 * Math.PI * Math.round(turned / (2 * Math.PI)));
         }
-        // The soft limit's give under the motor: measured up to 0.23 rad (3000 N m against 3.0).
-        expect(past, label).toBeLessThan(0.3);
-        expect(Math.abs(world.getBody(bar).angularVelocity), label).toBeLessThan(0.6);
+        // The soft limit's give under the motor: measured up to 0.079 rad (3000 N m against 3.0).
+        expect(past, label).toBeLessThan(0.1);
+        expect(Math.abs(world.getBody(bar).angularVelocity), label).toBeLessThan(0.01);
         expect(world.getJoint(joint).angle * sense, label).toBeGreaterThan(limit - 0.01);
-        expect(world.getJoint(joint).angle * sense, label).toBeLessThan(limit + 0.3);
+        expect(world.getJoint(joint).angle * sense, label).toBeLessThan(limit + 0.1);
       }
     }
   });

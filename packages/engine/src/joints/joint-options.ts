@@ -64,7 +64,10 @@ export interface RevoluteJointOptions extends JointBaseOptions {
   motorSpeed?: number | undefined;
   /** The motor's largest torque; the motor is on when this is given and > 0. */
   maxMotorTorque?: number | undefined;
-  /** An angular spring towards the reference angle; 0 (the default) for none. */
+  /**
+   * An angular spring towards the reference angle; 0 (the default) for none. Undamped, the
+   * bodies swing about the pin at this frequency, wherever the anchors lie on them.
+   */
   hertz?: number | undefined;
   dampingRatio?: number | undefined;
 }

@@ -10,7 +10,7 @@ import type { JointKernel, JointStepContext } from './joints/joint-kernel.js';
 import { distanceJoint } from './joints/distance-joint.js';
 import { isPointDistanceJoint, PointDistanceJoints } from './joints/point-distance-joints.js';
 import type { SoftStepKernel } from './soft-step-kernel.js';
-import { revoluteJoint } from './joints/revolute-joint.js';
+import { pinnedTurnAtStart, revoluteJoint, TURN_MASS, turnIO } from './joints/revolute-joint.js';
 import { prismaticJoint } from './joints/prismatic-joint.js';
 import { weldJoint } from './joints/weld-joint.js';
 import { wheelJoint } from './joints/wheel-joint.js';
@@ -58,7 +58,12 @@ function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64
   const inverseMass = r[o + INV_MASS_A] + r[o + INV_MASS_B];
   const inverseInertia = r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B];
   const linear = inverseMass > 0 ? (2 * maxSpeed) / inverseMass : 0;
-  const angular = inverseInertia > 0 ? (2 * maxAngular) / inverseInertia : 0;
+  let angular = inverseInertia > 0 ? (2 * maxAngular) / inverseInertia : 0;
+  // A revolute joint's spring, motor and limits turn its bodies about the pin, with that turn's mass.
+  if (kind === JointKind.revolute && inverseInertia > 0) {
+    pinnedTurnAtStart(r, o);
+    angular = 2 * maxAngular * turnIO[TURN_MASS];
+  }
   const angularFields = ANGULAR[kind];
   for (let k = 0; k < IMPULSES.length; k++) {
     const field = IMPULSES[k];

@@ -111,12 +111,14 @@ export function axialLimits(r: Float64Array, o: number, states: Float64Array, sa
   axialSpeed(states, sa, sb, f);
   limitIO[0] = f.translation - r[o + LOWER];
   limitIO[1] = f.speed;
+  limitIO[3] = r[o + AXIAL_MASS];
   applyLimit(r, o, LOWER_IMPULSE, step, useBias);
   f.along = limitIO[2];
   pushAlong(r, o, states, sa, sb, f);
   axialSpeed(states, sa, sb, f);
   limitIO[0] = r[o + UPPER] - f.translation;
   limitIO[1] = -f.speed;
+  limitIO[3] = r[o + AXIAL_MASS];
   applyLimit(r, o, UPPER_IMPULSE, step, useBias);
   f.along = -limitIO[2];
   pushAlong(r, o, states, sa, sb, f);

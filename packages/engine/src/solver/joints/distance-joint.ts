@@ -155,6 +155,7 @@ function apply(r: Float64Array, o: number, states: Float64Array, sa: number, sb:
 function limit(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: Frame, step: JointStepContext, useBias: boolean, field: number, sign: number): void {
   speedAlong(states, sa, sb, f);
   limitIO[1] = sign * f.speed;
+  limitIO[3] = r[o + AXIAL_MASS];
   applyLimit(r, o, field, step, useBias);
   f.impulse = sign * limitIO[2];
   apply(r, o, states, sa, sb, f);

@@ -4,7 +4,7 @@ import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
 import { softSpring, Spring } from '../spring-frequency.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
-const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, axialMass: AXIAL_MASS, dampingRatio: DAMPING_RATIO, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, springBias: SPRING_BIAS, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, upperImpulse: UPPER_IMPULSE } = J;
+const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, dampingRatio: DAMPING_RATIO, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, springBias: SPRING_BIAS, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, upperImpulse: UPPER_IMPULSE } = J;
 
 /** What every joint's solve reads besides its record: the sub-step and the joints' softness. */
 export interface JointStepContext {
@@ -76,12 +76,12 @@ export function softFromRecord(r: Float64Array, o: number, hertzField: number, a
 
 const springIO = new Float64Array(8);
 
-/** A limit's gap and speed (limitIO[0], limitIO[1]) in, the change of its impulse (limitIO[2]) out: see applyLimit. */
-export const limitIO = new Float64Array(3);
+/** A limit's gap, speed and effective mass (limitIO[0], limitIO[1], limitIO[3]) in, the change of its impulse (limitIO[2]) out: see applyLimit. */
+export const limitIO = new Float64Array(4);
 
 /**
  * The new total impulse of a one-sided limit C >= 0, into r[o + field], with C and its speed
- * along it in limitIO[0..1] and the effective mass r[o + AXIAL_MASS]: apart (C > 0) it lets the
+ * along it in limitIO[0..1] and its effective mass in limitIO[3]: apart (C > 0) it lets the
  * gap close within the sub-step and no more (speculative, as contacts do); past it, the soft push
  * back in the biased solve, none in the relax pass. The impulse's change goes to limitIO[2].
  */
@@ -97,7 +97,7 @@ export function applyLimit(r: Float64Array, o: number, field: number, step: Join
     impulseScale = step.soft[2];
   }
   const accumulated = r[o + field];
-  const impulse = -massScale * r[o + AXIAL_MASS] * (limitIO[1] + bias) - impulseScale * accumulated;
+  const impulse = -massScale * limitIO[3] * (limitIO[1] + bias) - impulseScale * accumulated;
   const total = Math.max(accumulated + impulse, 0);
   r[o + field] = total;
   limitIO[2] = total - accumulated;

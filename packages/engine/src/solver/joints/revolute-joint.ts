@@ -1,15 +1,17 @@
 import { J } from '../../joints/joint-layout.js';
-import { W } from '../solver-body.js';
+import { DQC, DQS, VX, VY, W } from '../solver-body.js';
 import { applyLimit, limitIO, measureAngle, prepareSpringLimitMotor, RIGID, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
-const { angle: ANGLE, axialMass: AXIAL_MASS, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lower: LOWER, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorSpeed: MOTOR_SPEED, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upper: UPPER, upperImpulse: UPPER_IMPULSE } = J;
+const { angle: ANGLE, invMassA: INV_MASS_A, invMassB: INV_MASS_B, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lower: LOWER, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorSpeed: MOTOR_SPEED, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upper: UPPER, upperImpulse: UPPER_IMPULSE } = J;
 
 /**
  * A revolute joint (a pin): the two anchors kept together by a 2x2 point constraint, with an
  * optional angular spring towards the reference angle, a motor of bounded torque, and angle
- * limits, solved in that order so that the point constraint, the stiffest, has the last word
- * (Box2D v3's revolute joint, Catto's "Solver2D" soft step).
+ * limits (Box2D v3's revolute joint, Catto's "Solver2D" soft step). The spring and motor come
+ * first, then the point constraint, then the limits, so that they have the last word on the
+ * joint's turn; all three turn the bodies about the pin (pinnedTurn), leaving the anchors'
+ * relative speed as they found it.
  */
 export const revoluteJoint: JointKernel = {
   // Only its spring and its limits hold an angle.
@@ -18,8 +20,6 @@ export const revoluteJoint: JointKernel = {
   },
 
   prepare(r, o, step) {
-    const k = r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B];
-    r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;
     prepareSpringLimitMotor(r, o, step);
   },
 
@@ -30,47 +30,55 @@ export const revoluteJoint: JointKernel = {
   solve(r, o, states, step, useBias) {
     const sa = r[o + STATE_A];
     const sb = r[o + STATE_B];
-    const iA = r[o + INV_INERTIA_A];
-    const iB = r[o + INV_INERTIA_B];
-    let wA = states[sa + W];
-    let wB = states[sb + W];
-    const turns = iA + iB > 0;
-    const axialMass = r[o + AXIAL_MASS];
-    if (turns && r[o + HERTZ] > 0) {
-      measureAngle(r, o, states);
-      const C = r[o + ANGLE];
-      const accumulated = r[o + SPRING_IMPULSE_SUM];
-      const impulse = -r[o + SPRING_MASS] * axialMass * (wB - wA + r[o + SPRING_BIAS] * C) - r[o + SPRING_IMPULSE] * accumulated;
-      r[o + SPRING_IMPULSE_SUM] = accumulated + impulse;
-      wA -= iA * impulse;
-      wB += iB * impulse;
+    const sprung = r[o + HERTZ] > 0;
+    const driven = r[o + ENABLE_MOTOR] === 1;
+    const limited = r[o + ENABLE_LIMIT] === 1;
+    if (r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B] === 0 || !(sprung || driven || limited)) {
+      solvePoint(r, o, states, useBias ? step.soft : RIGID, 0);
+      return;
     }
-    if (turns && r[o + ENABLE_MOTOR] === 1) {
+    pinnedTurn(r, o, states);
+    const mass = turnIO[TURN_MASS];
+    if (sprung) {
+      measureAngle(r, o, states);
+      const accumulated = r[o + SPRING_IMPULSE_SUM];
+      const impulse = -r[o + SPRING_MASS] * mass * (states[sb + W] - states[sa + W] + r[o + SPRING_BIAS] * r[o + ANGLE]) - r[o + SPRING_IMPULSE] * accumulated;
+      r[o + SPRING_IMPULSE_SUM] = accumulated + impulse;
+      turnIO[TURN_IMPULSE] = impulse;
+      applyTurn(r, o, states);
+    }
+    if (driven) {
       const accumulated = r[o + MOTOR_IMPULSE];
       const most = r[o + MAX_MOTOR] * step.h;
-      let total = accumulated - axialMass * (wB - wA - r[o + MOTOR_SPEED]);
+      let total = accumulated - mass * (states[sb + W] - states[sa + W] - r[o + MOTOR_SPEED]);
       total = total < -most ? -most : total > most ? most : total;
       r[o + MOTOR_IMPULSE] = total;
-      wA -= iA * (total - accumulated);
-      wB += iB * (total - accumulated);
+      turnIO[TURN_IMPULSE] = total - accumulated;
+      applyTurn(r, o, states);
     }
-    if (turns && r[o + ENABLE_LIMIT] === 1) {
-      measureAngle(r, o, states);
-      const angle = r[o + ANGLE];
-      limitIO[0] = angle - r[o + LOWER];
-      limitIO[1] = wB - wA;
-      applyLimit(r, o, LOWER_IMPULSE, step, useBias);
-      wA -= iA * limitIO[2];
-      wB += iB * limitIO[2];
-      limitIO[0] = r[o + UPPER] - angle;
-      limitIO[1] = wA - wB;
-      applyLimit(r, o, UPPER_IMPULSE, step, useBias);
-      wA += iA * limitIO[2];
-      wB -= iB * limitIO[2];
-    }
-    states[sa + W] = wA;
-    states[sb + W] = wB;
+    // The pin's soft solve decays the impulse it keeps; the share of it that holds the anchors
+    // together while the spring, motor and limits turn the bodies is theirs to keep.
+    const share = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    r[o + LINEAR_IMPULSE_X] -= turnIO[TURN_X] * share;
+    r[o + LINEAR_IMPULSE_Y] -= turnIO[TURN_Y] * share;
     solvePoint(r, o, states, useBias ? step.soft : RIGID, 0);
+    r[o + LINEAR_IMPULSE_X] += turnIO[TURN_X] * share;
+    r[o + LINEAR_IMPULSE_Y] += turnIO[TURN_Y] * share;
+    if (!limited) return;
+    measureAngle(r, o, states);
+    const angle = r[o + ANGLE];
+    limitIO[0] = angle - r[o + LOWER];
+    limitIO[1] = states[sb + W] - states[sa + W];
+    limitIO[3] = mass;
+    applyLimit(r, o, LOWER_IMPULSE, step, useBias);
+    turnIO[TURN_IMPULSE] = limitIO[2];
+    applyTurn(r, o, states);
+    limitIO[0] = r[o + UPPER] - angle;
+    limitIO[1] = states[sa + W] - states[sb + W];
+    limitIO[3] = mass;
+    applyLimit(r, o, UPPER_IMPULSE, step, useBias);
+    turnIO[TURN_IMPULSE] = -limitIO[2];
+    applyTurn(r, o, states);
   },
 
   reaction(r, o, inverseH) {
@@ -79,3 +87,116 @@ export const revoluteJoint: JointKernel = {
     r[o + TORQUE] = (r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE]) * inverseH;
   },
 };
+
+/** Where pinnedTurn leaves its results and applyTurn takes its impulse (V8 boxes numbers passed to or returned from calls it does not inline). */
+export const turnIO = new Float64Array(4);
+export const TURN_MASS = 0;
+const TURN_X = 1;
+const TURN_Y = 2;
+const TURN_IMPULSE = 3;
+
+/**
+ * The effective mass of the bodies' relative turn with the anchors held together, into
+ * turnIO[TURN_MASS], and the linear impulse at the anchors, per unit of angular impulse on B,
+ * that keeps the anchors' relative speed meanwhile, into turnIO[TURN_X..TURN_Y]; the arms now
+ * into armsIO, for applyTurn.
+ *
+ * A limit that pushed on the turn alone, with the mass 1 / (iA + iB) of the bodies' spins about
+ * their centres (as Box2D's do), would be undone by the point constraint wherever an anchor lies
+ * off a centre:
+ * a pendulum's bob swings about the pin, and an impulse that stops its spin leaves its speed,
+ * which the pin turns back into spin (on a 5 cm disc 1 m from its pin, all but 1/801 of it).
+ * The swing would then be left to the soft push back once past the limit, and a fast bob would
+ * pass it by radians. Within the 3x3 block of the pin and the turn, K = [K2 k; k^T k33], the
+ * turn's response with the pin held is the Schur complement s = k33 - k^T K2^-1 k =
+ * det K / det K2, and the pin's impulse per unit of turn impulse is -K2^-1 k. Both
+ * determinants are sums of positive terms (m = mA + mB, X = rA x rB):
+ *
+ *   det K2 = m (m + iA |rA|^2 + iB |rB|^2) + iA iB X^2
+ *   det K  = m (m (iA + iB) + iA iB |rA - rB|^2)
+ *
+ * and adj(K2) k holds no difference of large terms either, so a far anchor loses no digits to
+ * cancellation here. Where they still fail (not finite), the joint falls back to the spin alone.
+ *
+ * The spring and motor turn the bodies the same way: a motor or spring that pushed on the spin
+ * alone, held by a limit that turns them about the pin, would leave the pin to carry the
+ * difference, and its soft hold would give under it (0.1 m under a 1000 N m motor on a 2 m bar).
+ */
+function pinnedTurn(r: Float64Array, o: number, states: Float64Array): void {
+  const sa = r[o + STATE_A];
+  const sb = r[o + STATE_B];
+  const qAc = states[sa + DQC];
+  const qAs = states[sa + DQS];
+  const qBc = states[sb + DQC];
+  const qBs = states[sb + DQS];
+  armsIO[0] = qAc * r[o + R_AX] - qAs * r[o + R_AY];
+  armsIO[1] = qAs * r[o + R_AX] + qAc * r[o + R_AY];
+  armsIO[2] = qBc * r[o + R_BX] - qBs * r[o + R_BY];
+  armsIO[3] = qBs * r[o + R_BX] + qBc * r[o + R_BY];
+  turnAbout(r, o);
+}
+
+/** pinnedTurn with the arms as the step starts: for the bound on the limits' kept impulses (JointSolver's boundImpulses). */
+export function pinnedTurnAtStart(r: Float64Array, o: number): void {
+  armsIO[0] = r[o + R_AX];
+  armsIO[1] = r[o + R_AY];
+  armsIO[2] = r[o + R_BX];
+  armsIO[3] = r[o + R_BY];
+  turnAbout(r, o);
+}
+
+/** The arms from each centre to the anchors, (rAx, rAy, rBx, rBy), that turnAbout and applyTurn read. */
+const armsIO = new Float64Array(4);
+
+function turnAbout(r: Float64Array, o: number): void {
+  const mA = r[o + INV_MASS_A];
+  const mB = r[o + INV_MASS_B];
+  const iA = r[o + INV_INERTIA_A];
+  const iB = r[o + INV_INERTIA_B];
+  const rAx = armsIO[0];
+  const rAy = armsIO[1];
+  const rBx = armsIO[2];
+  const rBy = armsIO[3];
+  const m = mA + mB;
+  const cross = rAx * rBy - rAy * rBx;
+  const dx = rAx - rBx;
+  const dy = rAy - rBy;
+  const iAB = iA * iB;
+  const det2 = m * (m + iA * (rAx * rAx + rAy * rAy) + iB * (rBx * rBx + rBy * rBy)) + iAB * cross * cross;
+  const det3 = m * (m * (iA + iB) + iAB * (dx * dx + dy * dy));
+  const mass = det2 / det3;
+  const ux = (iAB * dx * cross + m * (iA * rAy + iB * rBy)) / det2;
+  const uy = (iAB * dy * cross - m * (iA * rAx + iB * rBx)) / det2;
+  if (mass > 0 && mass < Infinity && Number.isFinite(ux) && Number.isFinite(uy)) {
+    turnIO[TURN_MASS] = mass;
+    turnIO[TURN_X] = ux;
+    turnIO[TURN_Y] = uy;
+  } else {
+    turnIO[TURN_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
+    turnIO[TURN_X] = 0;
+    turnIO[TURN_Y] = 0;
+  }
+}
+
+/** The angular impulse turnIO[TURN_IMPULSE] on B (A takes the opposite), with the linear impulse at the anchors that pinnedTurn found keeps their relative speed. */
+function applyTurn(r: Float64Array, o: number, states: Float64Array): void {
+  const sa = r[o + STATE_A];
+  const sb = r[o + STATE_B];
+  const angular = turnIO[TURN_IMPULSE];
+  const px = turnIO[TURN_X] * angular;
+  const py = turnIO[TURN_Y] * angular;
+  r[o + LINEAR_IMPULSE_X] += px;
+  r[o + LINEAR_IMPULSE_Y] += py;
+  const rAx = armsIO[0];
+  const rAy = armsIO[1];
+  const rBx = armsIO[2];
+  const rBy = armsIO[3];
+  const mA = r[o + INV_MASS_A];
+  const mB = r[o + INV_MASS_B];
+  states[sa + VX] -= mA * px;
+  states[sa + VY] -= mA * py;
+  states[sa + W] -= r[o + INV_INERTIA_A] * (rAx * py - rAy * px + angular);
+  states[sb + VX] += mB * px;
+  states[sb + VY] += mB * py;
+  states[sb + W] += r[o + INV_INERTIA_B] * (rBx * py - rBy * px + angular);
+}
