@@ -1,6 +1,7 @@
 import { Prng } from './prng.js';
 import { resolveParams, type ParamSpecs } from './params.js';
 import type { SceneBody, SceneShape, ShapeScene } from './shape-scene.js';
+import { clampInside } from './scene.js';
 
 /** The parameters polygonBox takes, with their defaults and ranges (resolveParams checks them). */
 export const polygonBoxParams = {
@@ -50,8 +51,8 @@ export function polygonBox(given?: Partial<Record<keyof typeof polygonBoxParams,
     const r = rng.noisy(p.size, p.sizeNoise);
     const speed = rng.noisy(p.velocity, p.velocityNoise);
     const [dx, dy] = rng.direction();
-    const x = rng.range(r, p.width - r);
-    const y = rng.range(r, p.height - r);
+    const x = clampInside(rng.range(r, p.width - r), r, p.width);
+    const y = clampInside(rng.range(r, p.height - r), r, p.height);
     const angle = rng.range(0, 2 * Math.PI);
     const angularVelocity = rng.range(-p.spin, p.spin);
     let shape: SceneShape;

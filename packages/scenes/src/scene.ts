@@ -60,6 +60,27 @@ export function allocateScene(
   };
 }
 
+const bits = new Float64Array(1);
+const word = new BigUint64Array(bits.buffer);
+
+/**
+ * `at` moved, where it must be, into the span of centres from which a circle of radius r lies
+ * inside [0, side] as the engine tests it (centre - r >= 0, centre + r <= side, both rounded).
+ * side - r rounds up for some radii, and a centre there pokes an ulp past the wall, which the
+ * engine refuses; so the upper end steps down an ulp at a time until it holds. A centre already
+ * inside is returned as it is, so scenes that fitted keep their bits. Needs 2r <= side.
+ */
+export function clampInside(at: number, r: number, side: number): number {
+  let high = side - r;
+  while (high + r > side) {
+    // The next double below a positive one: its bit pattern, less one.
+    bits[0] = high;
+    word[0] -= 1n;
+    high = bits[0];
+  }
+  return Math.min(high, Math.max(r, at));
+}
+
 /** Layers of one body: see the engine's `category` and `mask`. */
 export interface Layers {
   category: number;

@@ -1,6 +1,6 @@
 import { Prng } from './prng.js';
 import { resolveParams, type ParamSpecs } from './params.js';
-import { allocateScene, type Scene } from './scene.js';
+import { allocateScene, clampInside, type Scene } from './scene.js';
 
 /** The parameters seedBox takes, with their defaults and ranges (resolveParams checks them). */
 export const seedBoxParams = {
@@ -38,8 +38,8 @@ export function seedBox(given?: Partial<Record<keyof typeof seedBoxParams, numbe
     const speed = rng.noisy(p.velocity, p.velocityNoise);
     const [dx, dy] = rng.direction();
     scene.radius[k] = r;
-    scene.x[k] = rng.range(r, p.width - r);
-    scene.y[k] = rng.range(r, p.height - r);
+    scene.x[k] = clampInside(rng.range(r, p.width - r), r, p.width);
+    scene.y[k] = clampInside(rng.range(r, p.height - r), r, p.height);
     scene.vx[k] = speed * dx;
     scene.vy[k] = speed * dy;
   }

@@ -1,6 +1,7 @@
 import { Prng } from './prng.js';
 import { resolveParams, type ParamSpecs } from './params.js';
 import type { SceneBody, SceneShape, ShapeScene } from './shape-scene.js';
+import { clampInside } from './scene.js';
 
 /** The parameters uniformPolygons takes, with their defaults and ranges (resolveParams checks them). */
 export const uniformPolygonsParams = {
@@ -44,8 +45,8 @@ export function uniformPolygons(given?: Partial<Record<keyof typeof uniformPolyg
     const column = k % perRow;
     const row = (k - column) / perRow;
     const slack = Math.max(0, cell - 2 * r);
-    const x = Math.min(side - r, Math.max(r, column * cell + (cell - slack) / 2 + rng.next() * slack));
-    const y = Math.min(side - r, Math.max(r, row * cell + (cell - slack) / 2 + rng.next() * slack));
+    const x = clampInside(column * cell + (cell - slack) / 2 + rng.next() * slack, r, side);
+    const y = clampInside(row * cell + (cell - slack) / 2 + rng.next() * slack, r, side);
     const speed = rng.range(0, p.maxSpeed);
     const [dx, dy] = rng.direction();
     const angle = rng.range(0, Math.PI);

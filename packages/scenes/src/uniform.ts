@@ -1,6 +1,6 @@
 import { Prng } from './prng.js';
 import { resolveParams, type ParamSpecs } from './params.js';
-import { allocateScene, type Scene } from './scene.js';
+import { allocateScene, clampInside, type Scene } from './scene.js';
 
 /** The parameters uniform takes, with their defaults and ranges (resolveParams checks them). */
 export const uniformParams = {
@@ -68,8 +68,8 @@ export function uniform(given?: Partial<Record<keyof typeof uniformParams, numbe
     const slack = Math.max(0, cell - 2 * r);
     const x = column * cell + (cell - slack) / 2 + rng.next() * slack;
     const y = row * cell + (cell - slack) / 2 + rng.next() * slack;
-    scene.x[k] = Math.min(side - r, Math.max(r, x));
-    scene.y[k] = Math.min(side - r, Math.max(r, y));
+    scene.x[k] = clampInside(x, r, side);
+    scene.y[k] = clampInside(y, r, side);
     const speed = rng.range(0, p.maxSpeed);
     const [dx, dy] = rng.direction();
     scene.vx[k] = speed * dx;
