@@ -91,13 +91,20 @@ export const segmentFloorParams = {
 } satisfies ParamSpecs;
 
 /**
+ * The narrowest segment-floor box. Balls start 10 units clear of either wall, which a box 2n wide
+ * cannot give below n = 10 (below n = 7 it put them outside the box), and barely gives just above.
+ */
+const FLOOR_MIN_WIDTH = 40;
+
+/**
  * n circles (radius 4) thrown down at `speed` under gravity 300 onto a floor of n segments 2
  * long: fast enough to tunnel through it without continuous collision, which must then sweep
- * every ball each step.
+ * every ball each step. The box is 2n wide, and 40 wide below 20 circles, where the n segments
+ * are longer so as to span it.
  */
 export function segmentFloor(given?: Partial<Record<keyof typeof segmentFloorParams, number>>): Scene {
   const p = resolveParams('segment-floor', segmentFloorParams, given);
-  const width = 2 * p.n;
+  const width = Math.max(2 * p.n, FLOOR_MIN_WIDTH);
   const height = Math.max(200, p.n);
   const scene = allocateScene('segment-floor', p, p.n, { bounds: { width, height }, gravity: { x: 0, y: 300 }, restitution: 1 });
   const rng = new Prng(p.seed);
@@ -108,7 +115,8 @@ export function segmentFloor(given?: Partial<Record<keyof typeof segmentFloorPar
     scene.vy[k] = p.speed;
   }
   const floor = height - 0.05 * height;
-  for (let k = 0; k < p.n; k++) scene.segments.push({ x1: 2 * k, y1: floor, x2: 2 * k + 2, y2: floor, thickness: 0 });
+  const length = width / p.n;
+  for (let k = 0; k < p.n; k++) scene.segments.push({ x1: k * length, y1: floor, x2: (k + 1) * length, y2: floor, thickness: 0 });
   return scene;
 }
 

@@ -43,6 +43,27 @@ describe('cliff scenes', () => {
     expect(max / min).toBeGreaterThan(1e5);
   });
 
+  it('segment-floor builds for every n in its range: balls inside the box, above a floor of n segments that spans it', () => {
+    // Every n from the least up to where the box is 2n wide whatever n, and a larger one.
+    const { min } = CLIFF_SCENES['segment-floor'].params.n;
+    for (const n of [...Array.from({ length: 41 - min }, (_, k) => min + k), 1000]) {
+      const scene = CLIFF_SCENES['segment-floor'].build({ n, seed: n });
+      expect(() => buildWorld(scene), `n = ${n}`).not.toThrow();
+      const floor = scene.segments;
+      expect(floor).toHaveLength(n);
+      expect(floor[0].x1).toBe(0);
+      expect(floor[n - 1].x2).toBe(scene.bounds.width);
+      for (let k = 1; k < n; k++) expect(floor[k].x1).toBe(floor[k - 1].x2);
+      let lowest = 0;
+      for (let k = 0; k < n; k++) lowest = Math.max(lowest, scene.y[k] + scene.radius[k]);
+      expect(lowest, `n = ${n}`).toBeLessThan(floor[0].y1);
+    }
+    // From 20 balls on, the box is 2n wide and the segments 2 long, as the lab has measured them.
+    const scene = CLIFF_SCENES['segment-floor'].build({ n: 20 });
+    expect(scene.bounds.width).toBe(40);
+    expect(scene.segments.map((s) => s.x2 - s.x1)).toEqual(new Array(20).fill(2));
+  });
+
   it('segment-floor: the balls tunnel through the floor without continuous collision, and never with it', () => {
     const ends = (continuous: boolean) => {
       const scene = CLIFF_SCENES['segment-floor'].build({ n: 300 });
