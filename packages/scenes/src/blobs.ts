@@ -10,7 +10,7 @@ export const blobsParams = {
   pressure: { default: 40, min: 0, max: 1e6, description: 'gas pressure at the rest area, N/m (0: an empty ring, which folds)' },
   hertz: { default: 20, min: 0, max: 1000, description: 'frequency of the springs between neighbours (0: rigid links)' },
   gravity: { default: 10, min: 0, max: 100, description: 'gravity, m/s^2' },
-  funnel: { default: 1, min: 0, max: 1, integer: true, description: '1: they fall into a funnel onto a floor; 0: they float' },
+  funnel: { default: 1, min: 0, max: 1, integer: true, description: '1: they fall into a funnel onto a floor; 0: no funnel or floor, so they fall for ever (unless gravity is 0)' },
 } satisfies ParamSpecs;
 
 /**

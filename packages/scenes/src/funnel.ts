@@ -4,7 +4,13 @@ import { allocateScene, type Scene } from './scene.js';
 
 /** The parameters funnel takes, with their defaults and ranges (resolveParams checks them). */
 export const funnelParams = {
-  n: { default: 500, min: 0, max: 20_000, integer: true, description: 'number of falling circles' },
+  n: {
+    default: 500,
+    min: 0,
+    max: 7962,
+    integer: true,
+    description: 'number of falling circles; no more than fit above the funnel: 7,962 of size 1, 992 of size 4, 127 of size 12',
+  },
   seed: { default: 1, min: 0, max: 2 ** 32 - 1, integer: true, description: 'PRNG seed' },
   gravity: { default: 400, min: 0, max: 1e5, description: 'downward gravity, units/s^2' },
   elasticity: { default: 0.5, min: 0, max: 1, description: 'restitution of circles, pegs, walls and segments' },
@@ -18,7 +24,9 @@ const PEG_RADIUS = 6;
 /**
  * A pinball-like board for the engine's static shapes (issue 6): circles fall from the top into a
  * funnel of two thick segments, drop through a field of static pegs, and slide off a ramp. The
- * first circles are the pegs (static); the rest start on a jittered lattice above the funnel.
+ * first circles are the pegs (static); the rest start on a jittered lattice above the funnel. The
+ * lattice's cell grows with `size`, so fewer fit the larger they are: n's range is what the
+ * smallest size holds, and more than a larger size holds is refused by name.
  */
 export function funnel(given?: Partial<Record<keyof typeof funnelParams, number>>): Scene {
   const p = resolveParams('funnel', funnelParams, given);

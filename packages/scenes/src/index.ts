@@ -141,7 +141,7 @@ export const SHAPE_SCENES = {
     build: cardHouse,
   },
   ramp: {
-    description: 'A box on a tilted static ramp: it sticks while tan(angle) <= friction, else slides',
+    description: 'A box on a static ramp tilted up to 44 degrees: it sticks while tan(angle) <= friction, else slides',
     params: rampParams,
     build: ramp,
   },
@@ -176,7 +176,7 @@ export const SHAPE_SCENES = {
     build: jointGrid,
   },
   ragdolls: {
-    description: 'A rain of ragdolls (ten capsules and a head on revolute joints with limits) onto the ground',
+    description: 'A rain of ragdolls (a round head and nine capsules on revolute joints with limits) onto the ground',
     params: ragdollsParams,
     build: ragdolls,
   },

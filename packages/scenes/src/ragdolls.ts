@@ -18,9 +18,9 @@ function part(x: number, top: number, length: number, radius: number): SceneBody
 }
 
 /**
- * A rain of ragdolls onto the ground (Box2D's ragdoll benchmark, simplified): each has a head,
- * a torso, and two-part arms and legs, eleven capsules and circles joined by revolute joints with
- * angle limits, dropped in rows. Meters, gravity 10, y down, the ground's top at y = 0.
+ * A rain of ragdolls onto the ground (Box2D's ragdoll benchmark, simplified): each has a round
+ * head and nine capsules (a torso, and two-part arms and legs), ten bodies joined by nine
+ * revolute joints with angle limits, dropped in rows. Meters, gravity 10, y down, the ground's top at y = 0.
  */
 export function ragdolls(given?: Partial<Record<keyof typeof ragdollsParams, number>>): ShapeScene {
   const p = resolveParams('ragdolls', ragdollsParams, given);

@@ -3,7 +3,7 @@ import type { SceneBody, ShapeScene } from './shape-scene.js';
 
 /** The parameters ramp takes, with their defaults and ranges (resolveParams checks them). */
 export const rampParams = {
-  angle: { default: 20, min: 0, max: 80, description: 'slope of the ramp, degrees' },
+  angle: { default: 20, min: 0, max: 44, description: 'slope of the ramp, degrees; under 45, where the box would tip over rather than stick or slide' },
   friction: { default: 0.5, min: 0, max: 10, description: 'friction of the box and the ramp' },
   length: { default: 40, min: 1, max: 1000, description: 'length of the ramp, m' },
 } satisfies ParamSpecs;
@@ -12,7 +12,9 @@ export const rampParams = {
  * A box at rest on a static ramp tilted by `angle` (the ramp is a long static box, turned): it
  * stays when tan(angle) <= friction and otherwise slides down with acceleration
  * g (sin(angle) - friction cos(angle)). Meters, gravity 10, y down; the box starts at the ramp's
- * upper end, which is on the left.
+ * upper end, which is on the left. The box is a unit cube, so from 45 degrees its centre lies
+ * beyond its lower edge: there, wherever friction is 1 or more, it tips over and tumbles instead
+ * (measured from 45 to 80 degrees), hence the slope's range stops short of 45.
  */
 export function ramp(given?: Partial<Record<keyof typeof rampParams, number>>): ShapeScene {
   const p = resolveParams('ramp', rampParams, given);

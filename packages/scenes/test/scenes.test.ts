@@ -218,6 +218,18 @@ describe('funnel (static shapes)', () => {
   });
 
   it('refuses more circles than fit above the funnel, by name', () => {
-    expect(() => buildScene('funnel', { n: 20_000 })).toThrow(/funnel: only \d+ circles/);
+    expect(() => buildScene('funnel', { n: 2000 })).toThrow(/funnel: only 992 circles of size 4 fit/);
+  });
+
+  it("n's range and description say how many fit: n.max at the smallest size builds, and each count the description gives is exact", () => {
+    const { n, size } = SCENES.funnel.params;
+    expect(buildScene('funnel', { n: n.max, size: size.min }).count).toBeGreaterThan(n.max);
+    const said = [...n.description.matchAll(/([\d,]+) of size (\d+)/g)].map((m) => [Number(m[1].replaceAll(',', '')), Number(m[2])]);
+    expect(said.length).toBeGreaterThanOrEqual(3);
+    expect(said).toContainEqual([n.max, size.min]);
+    for (const [fits, at] of said) {
+      expect(() => buildScene('funnel', { n: fits, size: at })).not.toThrow();
+      if (fits < n.max) expect(() => buildScene('funnel', { n: fits + 1, size: at })).toThrow(new RegExp(`only ${fits} circles`));
+    }
   });
 });

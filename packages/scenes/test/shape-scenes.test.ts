@@ -88,3 +88,75 @@ describe('shape scenes', () => {
     expect(Object.keys(SHAPE_SCENES)).toEqual(SHAPE_SCENE_NAMES);
   });
 });
+
+describe('shape scenes do what their descriptions and ranges say', () => {
+  it("ragdolls: the description counts each ragdoll's parts as the scene builds them", () => {
+    const scene = buildShapeScene('ragdolls', { count: 1 });
+    const doll = scene.bodies.filter((b) => b.type !== 'static');
+    const kinds = doll.map((b) => b.shapes[0].kind);
+    const words = ['no', 'one', 'two', 'three', 'four', 'five', 'six', 'seven', 'eight', 'nine', 'ten', 'eleven'];
+    const capsules = kinds.filter((k) => k === 'capsule').length;
+    expect(kinds.filter((k) => k === 'circle')).toHaveLength(1);
+    expect(capsules + 1).toBe(doll.length);
+    expect(SHAPE_SCENES.ragdolls.description).toContain(`a round head and ${words[capsules]} capsules`);
+    expect(scene.joints).toHaveLength(doll.length - 1);
+  });
+
+  it('tumbler: at either end of its speed range, stepped 60 times a second, the drum turns within 1.5 % of that speed', () => {
+    // The engine turns no body more than 45 degrees a step: at 60 steps a second a drum asked for
+    // 3,600 degrees a second turns 2,666.
+    const { min, max } = SHAPE_SCENES.tumbler.params.speed;
+    for (const speed of [min, max]) {
+      const world = buildShapeWorld(buildShapeScene('tumbler', { grid: 1, speed }));
+      let turned = 0;
+      let last = world.getBody(0).angle;
+      for (let s = 0; s < 60; s++) {
+        world.step(1 / 60);
+        const angle = world.getBody(0).angle;
+        turned += Math.atan2(Math.sin(angle - last), Math.cos(angle - last));
+        last = angle;
+      }
+      expect(Math.abs((turned * 180) / Math.PI / speed - 1), `speed ${speed}`).toBeLessThan(0.015);
+    }
+  });
+
+  it('ramp: over its whole slope range the box sticks while tan(angle) <= friction and slides otherwise, without tipping', () => {
+    const { angle: range, friction: frictions } = SHAPE_SCENES.ramp.params;
+    const wrong: string[] = [];
+    for (let angle = range.min; angle <= range.max; angle += (range.max - range.min) / 8) {
+      const tan = Math.tan((angle * Math.PI) / 180);
+      for (const friction of [0.8 * tan, 1.2 * tan + 0.05, frictions.max]) {
+        const world = buildShapeWorld(buildShapeScene('ramp', { angle, friction }));
+        const start = world.getBody(1);
+        let turned = 0;
+        for (let s = 0; s < 120; s++) {
+          world.step(1 / 60);
+          turned = Math.max(turned, Math.abs(world.getBody(1).angle - start.angle));
+        }
+        const end = world.getBody(1);
+        const slid = Math.hypot(end.centerX - start.centerX, end.centerY - start.centerY);
+        const theta = (angle * Math.PI) / 180;
+        // Two seconds from rest: g (sin - friction cos) t^2 / 2 when it slides.
+        const expected = tan <= friction ? 0 : (10 * (Math.sin(theta) - friction * Math.cos(theta)) * 4) / 2;
+        if (Math.abs(slid - expected) > 0.02 + 0.03 * expected || turned > (2 * Math.PI) / 180) {
+          wrong.push(`angle ${angle} friction ${friction.toFixed(2)}: slid ${slid.toFixed(3)} (expected ${expected.toFixed(3)}), turned ${((turned * 180) / Math.PI).toFixed(1)} degrees`);
+        }
+      }
+    }
+    expect(wrong).toEqual([]);
+  });
+
+  it('blobs without the funnel fall freely under gravity, and stay where they are without it', () => {
+    const drop = (gravity: number) => {
+      const scene = buildShapeScene('blobs', { count: 4, funnel: 0, gravity });
+      const world = buildShapeWorld(scene);
+      const mean = () => world.handles().reduce((sum, h) => sum + world.getBody(h).y, 0) / scene.bodies.length;
+      const before = mean();
+      for (let s = 0; s < 60; s++) world.step(1 / 60);
+      return mean() - before;
+    };
+    expect(drop(10)).toBeCloseTo(5, 0);
+    expect(Math.abs(drop(0))).toBeLessThan(0.01);
+    expect(SHAPE_SCENES.blobs.params.funnel.description).toMatch(/0: no funnel or floor, so they fall/);
+  });
+});
