@@ -3,6 +3,6 @@ import { defineConfig } from 'vitest/config';
 // Each workspace keeps its own vitest config; `npm test` runs them all.
 export default defineConfig({
   test: {
-    projects: ['packages/*/vitest.config.ts', 'apps/*/vitest.config.ts', 'examples/vitest.config.ts'],
+    projects: ['packages/*/vitest.config.ts', 'apps/*/vitest.config.ts', 'apps/*/vitest.unit.config.ts', 'examples/vitest.config.ts'],
   },
 });

@@ -5,7 +5,7 @@ export default defineConfig({
   resolve: { alias: workspaceAliases },
   test: {
     name: 'sandbox-e2e',
-    include: ['test/**/*.test.ts'],
+    include: ['test/e2e/**/*.test.ts'],
     globalSetup: ['test/e2e/global-setup.ts'],
     testTimeout: 120_000,
     hookTimeout: 120_000,

@@ -145,7 +145,7 @@ export class Controls {
     if (this.slidersFor !== s.scene) this.makeSliders(s.scene);
     for (const { spec, input, output } of this.sliders) {
       const value = s.params[spec.key];
-      input.value = String(spec.slider ? spec.slider.toPosition(value) : value);
+      input.value = String(spec.slider.toPosition(value));
       input.setAttribute('aria-valuetext', spec.format(value));
       output.value = spec.format(value);
     }
@@ -210,14 +210,14 @@ export class Controls {
     input.type = 'range';
     input.id = id;
     input.name = spec.key;
-    input.min = String(spec.slider ? spec.slider.min : spec.min);
-    input.max = String(spec.slider ? spec.slider.max : spec.max);
-    input.step = String(spec.slider ? 1 : spec.step);
+    input.min = String(spec.slider.min);
+    input.max = String(spec.slider.max);
+    input.step = String(spec.slider.step);
     field.append(label, input);
     // 'input' fires while dragging: the label follows at once, the rebuild is coalesced by the page.
     input.addEventListener('input', () => {
       const raw = Number(input.value);
-      const value = clampNumber(spec, spec.slider ? spec.slider.toValue(raw) : raw);
+      const value = clampNumber(spec, spec.slider.toValue(raw));
       if (value === this.current.params[spec.key]) return;
       this.current.params[spec.key] = value;
       output.value = spec.format(value);

@@ -32,16 +32,21 @@ export function defaultSeed(scene: SceneChoice): number {
 export interface NumberSpec {
   key: string;
   label: string;
-  /** The URL accepts [min, max]; the slider may cover the same range through `slider`. */
+  /** The URL accepts any value in [min, max] (a whole one where `integer`) and keeps it as it is. */
   min: number;
   max: number;
+  /** The slider's resolution: it stops at multiples of it. */
   step: number;
+  integer: boolean;
   default: number;
   /** What the parameter means, from the scene's own spec; shown as the slider's tooltip. */
   description: string;
   format(value: number): string;
-  /** For sliders whose position is not the value (Quantity is logarithmic). */
-  slider?: { min: number; max: number; toValue(position: number): number; toPosition(value: number): number };
+  /**
+   * The range input: its min, max and step, and the value each position stands for. Quantity's
+   * positions are logarithmic; elsewhere the position is the value, at a multiple of `step`.
+   */
+  slider: { min: number; max: number; step: number; toValue(position: number): number; toPosition(value: number): number };
 }
 
 const fixed = (digits: number, unit = '') => (v: number) => v.toFixed(digits) + unit;
@@ -56,31 +61,67 @@ function twoSignificant(v: number): number {
 
 // Quantities span several decades, so a linear slider would make every small count unreachable;
 // positions map logarithmically, rounded to two significant digits.
-function logSlider(max: number): NonNullable<NumberSpec['slider']> {
+function logSlider(max: number): NumberSpec['slider'] {
   const positions = 600;
   const decades = Math.log10(max);
   return {
     min: 0,
     max: positions,
+    step: 1,
     toValue: (p) => (p <= 0 ? 0 : Math.min(max, twoSignificant(10 ** ((decades * (p - 1)) / (positions - 1))))),
     toPosition: (v) => (v <= 0 ? 0 : 1 + Math.round(((positions - 1) * Math.log10(v)) / decades)),
+  };
+}
+
+/** Digits after the point in `step` as written (0.0005: 4): k step rounded to them is free of binary noise. */
+function decimals(step: number): number {
+  const written = String(step);
+  const point = written.indexOf('.');
+  return point < 0 ? 0 : written.length - point - 1;
+}
+
+/**
+ * A slider whose stops are the multiples of `step` (a range input stops at its min + k step, so
+ * its min is the multiple at or below `min`, and its max the one at or above `max`), each value
+ * clamped into [min, max]: a density from 0.001 in steps of 1 stops at 0.001, 1, 2, ... 1000
+ * rather than at 1.001, 2.001, ..., and every stop is a value the URL keeps as it is.
+ */
+function gridSlider(min: number, max: number, step: number): NumberSpec['slider'] {
+  const digits = decimals(step);
+  const multiple = (k: number) => Number((k * step).toFixed(digits));
+  let low = Math.floor(min / step);
+  if (multiple(low + 1) <= min) low++;
+  let high = Math.ceil(max / step);
+  if (multiple(high - 1) >= max) high--;
+  return {
+    min: multiple(low),
+    max: multiple(high),
+    step,
+    // The input's own arithmetic may leave binary noise (0.30000000000000004) that would show in the URL.
+    toValue: (position) => Math.min(max, Math.max(min, Number(position.toFixed(digits)))),
+    toPosition: (value) => value,
   };
 }
 
 /** The page's widest quantity: the WebGL renderer still draws this many at interactive rates. */
 export const QUANTITY_MAX = 200_000;
 
+/** A spec of real values on a slider that stops at multiples of its step. */
+function linear(spec: Omit<NumberSpec, 'integer' | 'slider'>): NumberSpec {
+  return { ...spec, integer: false, slider: gridSlider(spec.min, spec.max, spec.step) };
+}
+
 const seedBox = seedBoxParams;
 // The report's sliders, kept as they were for the seed-box scene (labels, ranges, formats).
 const SEED_BOX_SPECS: readonly NumberSpec[] = [
-  { key: 'gravity', label: 'Gravity', min: -2000, max: 2000, step: 10, default: seedBox.gravity.default, description: seedBox.gravity.description, format: fixed(0, ' px/s²') },
-  { key: 'elasticity', label: 'Elasticity', min: 0, max: 1, step: 0.01, default: seedBox.elasticity.default, description: seedBox.elasticity.description, format: fixed(2) },
-  { key: 'n', label: 'Quantity', min: 0, max: QUANTITY_MAX, step: 1, default: seedBox.n.default, description: seedBox.n.description, format: count, slider: logSlider(QUANTITY_MAX) },
+  linear({ key: 'gravity', label: 'Gravity', min: -2000, max: 2000, step: 10, default: seedBox.gravity.default, description: seedBox.gravity.description, format: fixed(0, ' px/s²') }),
+  linear({ key: 'elasticity', label: 'Elasticity', min: 0, max: 1, step: 0.01, default: seedBox.elasticity.default, description: seedBox.elasticity.description, format: fixed(2) }),
+  { key: 'n', label: 'Quantity', min: 0, max: QUANTITY_MAX, step: 1, integer: true, default: seedBox.n.default, description: seedBox.n.description, format: count, slider: logSlider(QUANTITY_MAX) },
   // Size is capped well below the scene's own limit so the largest circle always fits the box.
-  { key: 'size', label: 'Size', min: 0.5, max: 40, step: 0.5, default: seedBox.size.default, description: seedBox.size.description, format: fixed(1, ' px') },
-  { key: 'sizeNoise', label: 'Size noise', min: 0, max: 0.99, step: 0.01, default: seedBox.sizeNoise.default, description: seedBox.sizeNoise.description, format: percent },
-  { key: 'velocity', label: 'Velocity', min: 0, max: 2000, step: 10, default: seedBox.velocity.default, description: seedBox.velocity.description, format: fixed(0, ' px/s') },
-  { key: 'velocityNoise', label: 'Velocity noise', min: 0, max: 1, step: 0.01, default: seedBox.velocityNoise.default, description: seedBox.velocityNoise.description, format: percent },
+  linear({ key: 'size', label: 'Size', min: 0.5, max: 40, step: 0.5, default: seedBox.size.default, description: seedBox.size.description, format: fixed(1, ' px') }),
+  linear({ key: 'sizeNoise', label: 'Size noise', min: 0, max: 0.99, step: 0.01, default: seedBox.sizeNoise.default, description: seedBox.sizeNoise.description, format: percent }),
+  linear({ key: 'velocity', label: 'Velocity', min: 0, max: 2000, step: 10, default: seedBox.velocity.default, description: seedBox.velocity.description, format: fixed(0, ' px/s') }),
+  linear({ key: 'velocityNoise', label: 'Velocity noise', min: 0, max: 1, step: 0.01, default: seedBox.velocityNoise.default, description: seedBox.velocityNoise.description, format: percent }),
 ];
 
 /**
@@ -202,10 +243,11 @@ function fromSceneSpec(scene: SceneChoice, key: string, spec: ParamSpec): Number
     min,
     max,
     step: look.step,
+    integer: spec.integer === true,
     default: Math.min(max, Math.max(min, look.default ?? spec.default)),
     description: spec.description,
     format: look.format,
-    slider: look.log ? logSlider(max) : undefined,
+    slider: look.log ? logSlider(max) : gridSlider(min, max, look.step),
   };
 }
 
@@ -231,14 +273,15 @@ export function defaultParams(scene: SceneChoice): Record<string, number> {
   return out;
 }
 
-/** Clamps into the spec's range and snaps to its step; NaN falls back to the default. */
+/**
+ * A value for the spec: clamped into its range, and rounded where it takes whole numbers; NaN
+ * falls back to the default. A value already valid comes back as it is, whether or not a slider
+ * stops there, so that a URL or a save rebuilds the world it was made from.
+ */
 export function clampNumber(spec: NumberSpec, value: number): number {
   if (!Number.isFinite(value)) return spec.default;
   const clamped = Math.min(spec.max, Math.max(spec.min, value));
-  if (spec.key === 'n') return Math.round(clamped);
-  const snapped = spec.min + Math.round((clamped - spec.min) / spec.step) * spec.step;
-  // Round away binary noise such as 0.30000000000000004, which would show up in the URL.
-  return Math.min(spec.max, Number(snapped.toFixed(6)));
+  return spec.integer ? Math.round(clamped) : clamped;
 }
 
 /** The body (by handle) an open scene's region follows across as it moves, or -1: the car, which drives away. */
