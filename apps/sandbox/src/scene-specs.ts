@@ -142,7 +142,7 @@ interface Presentation {
 
 const PRESENTATION: Record<string, Presentation> = {
   n: { label: 'Quantity', step: 1, format: count, log: true },
-  gravity: { label: 'Gravity', step: 10, max: 2000, format: fixed(0, ' px/s²') },
+  gravity: { label: 'Gravity', step: 10, min: -2000, max: 2000, format: fixed(0, ' px/s²') },
   elasticity: { label: 'Elasticity', step: 0.01, format: fixed(2) },
   size: { label: 'Size', step: 0.5, format: fixed(1, ' px') },
   minRadius: { label: 'Min radius', step: 0.5, min: 0.5, max: 20, format: fixed(1, ' px') },
@@ -180,6 +180,16 @@ const onOff = (v: number) => (v ? 'on' : 'off');
  * 10,000 links or a 1,000-circle-square grid, which take seconds a step.
  */
 const SCENE_PRESENTATION: Partial<Record<SceneChoice, Record<string, Presentation>>> = {
+  // The seed box with shapes: the seed box's sliders, and its box's size. The smallest box holds
+  // the largest body (2 x 40 x 1.99 = 159 px across), so every setting of the sliders builds.
+  'polygon-box': {
+    width: { label: 'Box width', step: 10, min: 200, max: 4000, format: fixed(0, ' px') },
+    height: { label: 'Box height', step: 10, min: 200, max: 4000, format: fixed(0, ' px') },
+    size: { label: 'Size', step: 0.5, min: 0.5, max: 40, format: fixed(1, ' px') },
+    sizeNoise: { label: 'Size noise', step: 0.01, format: percent },
+    velocity: { label: 'Velocity', step: 10, max: 2000, format: fixed(0, ' px/s') },
+    velocityNoise: { label: 'Velocity noise', step: 0.01, format: percent },
+  },
   chain: {
     links: { label: 'Links', step: 1, max: 500, format: count },
     linkLength: { label: 'Link length', step: 0.05, max: 5, format: fixed(2, ' m') },
