@@ -139,8 +139,8 @@ export class Controls {
     return copySettings(this.current);
   }
 
-  /** Shows `s`; broad-phases in `refused` are disabled, their reason as the option's title. */
-  show(s: Settings, refused: Partial<Record<BroadPhaseName, string>> = {}): void {
+  /** Shows `s`; broad-phases in `refused` and tools in `unusable` are disabled, their reason as the option's title. */
+  show(s: Settings, refused: Partial<Record<BroadPhaseName, string>> = {}, unusable: Partial<Record<ToolName, string>> = {}): void {
     this.current = copySettings(s);
     if (this.slidersFor !== s.scene) this.makeSliders(s.scene);
     for (const { spec, input, output } of this.sliders) {
@@ -169,6 +169,11 @@ export class Controls {
     for (const { key, input } of this.toggles) input.checked = s[key];
     for (const option of this.broadphase.options) {
       const why = refused[option.value as BroadPhaseName];
+      option.disabled = why !== undefined;
+      option.title = why ?? '';
+    }
+    for (const option of this.tool.options) {
+      const why = unusable[option.value as ToolName];
       option.disabled = why !== undefined;
       option.title = why ?? '';
     }

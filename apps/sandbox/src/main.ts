@@ -16,9 +16,11 @@ import {
   defaultSettings,
   offeredThreads,
   parseSettings,
+  refusedTools,
   serializeSettings,
   type RendererName,
   type Settings,
+  type ToolName,
 } from './settings.js';
 import { DT, STEP_BUDGET_MS, Simulation } from './simulation.js';
 import { Pace } from './pace.js';
@@ -111,6 +113,18 @@ function withinBudget(s: Settings): Settings {
   return s;
 }
 
+/** Tools the current world has no use for, with why (refusedTools). */
+let unusable: Partial<Record<ToolName, string>> = {};
+
+/** Offers only the tools the world on screen can use: a tool it refuses gives way to Drag. */
+function withinTools(s: Settings): Settings {
+  unusable = refusedTools(sim.acceptsJoints);
+  const why = unusable[s.tool];
+  if (why === undefined) return s;
+  say(`${why}; using Drag.`);
+  return { ...s, tool: 'drag' };
+}
+
 /**
  * Builds the world for `next`. A scene may refuse its parameters (more circles than fit the funnel,
  * a minimum radius above the maximum): then the page says why and keeps, or falls back to, a
@@ -129,7 +143,7 @@ function rebuild(next: Settings): void {
     wanted = fallback;
     sim.rebuild(wanted);
   }
-  settings = withinBudget(wanted);
+  settings = withinTools(withinBudget(wanted));
   shown();
 }
 
@@ -142,7 +156,7 @@ function shown(): void {
   sim.setThreads(settings.threads, threadsFailed);
   query.clear();
   query.setTool(settings.tool);
-  controls.show(settings, refused);
+  controls.show(settings, refused, unusable);
   saveUrl();
   showOverfill();
   forceStats = true;
@@ -170,7 +184,7 @@ function loadSave(name: string, bytes: Uint8Array): void {
   }
   say('');
   pendingScene = null;
-  settings = withinBudget(next);
+  settings = withinTools(withinBudget(next));
   settings.renderer = selectRenderer(settings.renderer);
   shown();
   sim.paused = paused;
@@ -192,7 +206,7 @@ function seek(step: number): void {
   // The integrator is the step's own: going back before a switch switches back, and the form says so.
   if (sim.world.integrator !== settings.integrator) {
     settings.integrator = sim.world.integrator;
-    controls.show(settings, refused);
+    controls.show(settings, refused, unusable);
     saveUrl();
   }
   // world.restore stopped the workers.
@@ -224,7 +238,7 @@ function applyLive(next: Settings): void {
     query.setTool(settings.tool);
     query.update(sim.world);
   }
-  controls.show(settings, refused);
+  controls.show(settings, refused, unusable);
   saveUrl();
 }
 
@@ -306,7 +320,7 @@ const overlayOptions: OverlayOptions = { grid: false, aabb: false, contacts: fal
 
 rebuild(settings);
 settings.renderer = selectRenderer(settings.renderer);
-controls.show(settings, refused);
+controls.show(settings, refused, unusable);
 saveUrl();
 
 declare global {

@@ -64,6 +64,16 @@ export type RendererName = (typeof RENDERER_NAMES)[number];
 export const TOOL_NAMES = ['drag', 'ray', 'point', 'box', 'pin', 'cut'] as const;
 export type ToolName = (typeof TOOL_NAMES)[number];
 
+/**
+ * The tools a world has no use for, each with why: Pin makes a joint and Cut removes one, so a
+ * world that refuses joints (made with solver 'elastic', as uniform-polygons is) is offered neither.
+ */
+export function refusedTools(acceptsJoints: boolean): Partial<Record<ToolName, string>> {
+  if (acceptsJoints) return {};
+  const why = "this scene's world has no joints and takes none (its solver is the elastic pass)";
+  return { pin: `Pin makes a joint: ${why}`, cut: `Cut removes a joint: ${why}` };
+}
+
 /** World options that rebuild the scene, by URL key; `continuous` is on by default, as in the engine. */
 export const WORLD_TOGGLES = ['sleeping', 'piles', 'continuous', 'events', 'hits', 'layers'] as const;
 export type WorldToggle = (typeof WORLD_TOGGLES)[number];

@@ -37,6 +37,8 @@ interface SceneFrame {
   gravity: { x: number; y: number };
   bounded: boolean;
   threshold: number;
+  /** Whether the world takes joints: World.createJoint refuses them in a world made with solver 'elastic'. */
+  joints: boolean;
   build(): World;
 }
 
@@ -51,6 +53,7 @@ function sceneFrame(settings: Settings): SceneFrame {
       gravity,
       bounded: scene.bounds !== null,
       threshold: Math.max(8 * Math.hypot(gravity.x, gravity.y) * DT, (scene.world.lengthUnit ?? 1) * 0.5),
+      joints: scene.world.solver !== 'elastic',
       build: () => buildSandboxShapeWorld(scene, DT, settings, settings.substeps),
     };
   }
@@ -61,6 +64,8 @@ function sceneFrame(settings: Settings): SceneFrame {
     gravity: scene.gravity,
     bounded: true,
     threshold: hitThreshold(scene, DT),
+    // Circle worlds are made with the default solver, 'auto', which moves to the soft step with a first joint.
+    joints: true,
     build: () => buildSandboxWorld(scene, DT, settings),
   };
 }
@@ -93,6 +98,8 @@ export class Simulation {
   bounded = true;
   /** A world of shapes (boxes, polygons, capsules that turn), or of circles. */
   shapes = false;
+  /** Whether the world takes joints, so that the Pin and Cut tools have something to do. */
+  acceptsJoints = true;
   /** Static segments of the scene (x1, y1, x2, y2, thickness each); they never change. */
   segments: Float64Array = new Float64Array(0);
   /** Static circles in the scene: renderers skip their extra pass when there are none. */
@@ -158,6 +165,7 @@ export class Simulation {
     this.world?.stopWorkers();
     this.world = world;
     this.shapes = world.route.route === 'shapes';
+    this.acceptsJoints = frame.joints;
     this.layers = settings.layers && !this.shapes;
     this.continuous = settings.continuous;
     this.segments = segments;

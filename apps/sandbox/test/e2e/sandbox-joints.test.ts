@@ -185,4 +185,22 @@ describe('sandbox with joints', () => {
     expect(errors).toEqual([]);
     await page.close();
   });
+
+  it('a world that refuses joints is offered neither Pin nor Cut: a link asking for Pin gets Drag, and says why', async () => {
+    const { page, errors } = await openPage(browser, '/?scene=uniform-polygons&n=50&tool=pin');
+    await stepsPass(page, 2);
+    const tool = page.getByLabel('Tool');
+    expect(await tool.inputValue()).toBe('drag');
+    await expect.poll(() => new URL(page.url()).searchParams.get('tool')).toBe(null);
+    expect(await page.locator('#notice').innerText()).toMatch(/Pin makes a joint.*using Drag/);
+    const disabled = () => tool.locator('option').evaluateAll((os) => (os as HTMLOptionElement[]).filter((o) => o.disabled).map((o) => o.value));
+    expect(await disabled()).toEqual(['pin', 'cut']);
+    // A scene with joints offers them again.
+    await page.getByLabel('Scene').selectOption('chain');
+    await expect.poll(disabled).toEqual([]);
+    await tool.selectOption('pin');
+    await expect.poll(() => new URL(page.url()).searchParams.get('tool')).toBe('pin');
+    expect(errors).toEqual([]);
+    await page.close();
+  });
 });
