@@ -391,6 +391,32 @@ describe('parallel step', () => {
     expect(world.workerCount).toBe(1);
   });
 
+  it("fails the step with the failing worker's own error, whether a kernel throws in a command or the worker cannot take the buffers", async () => {
+    for (const [script, error, threads] of [
+      ['kernel-throws.mjs', 'Error: a kernel failed on purpose', 2],
+      ['install-throws.mjs', 'Error: buffers refused on purpose', 1],
+    ] as const) {
+      const world = uniform(400)();
+      await world.startWorkers(threads + 1, { minBodies: 0, adaptive: false, workerUrl: new URL(`./workers/${script}`, import.meta.url) });
+      try {
+        let thrown: unknown = null;
+        try {
+          world.step(1 / 60);
+        } catch (e) {
+          thrown = e;
+        }
+        const message = thrown instanceof Error ? thrown.message : String(thrown);
+        // The worker's stack comes with it, the fixture's frame included.
+        expect(message, script).toMatch(/^worker thread [12] failed during the step/);
+        expect(message, script).toContain(error);
+        expect(message, script).toContain(script);
+        if (threads === 2) expect(message).toContain('(and 1 more worker)');
+      } finally {
+        world.stopWorkers();
+      }
+    }
+  });
+
   it('polls for the next command only where threads fit the cores, and stops polling when the budget runs out', () => {
     expect(spinBudget(2, 2)).toBeGreaterThan(0);
     expect(spinBudget(3, 2)).toBe(0);

@@ -11,6 +11,9 @@ import type { Column } from '../util/grow.js';
 
 export const MAX_THREADS = 16;
 
+/** The code units of a worker's error that the control block holds; the rest is cut. */
+export const ERROR_TEXT = 2048;
+
 export const Slot = {
   seq: 0,
   command: 1,
@@ -27,7 +30,7 @@ export const Slot = {
   sleeping: 12,
   bounce: 13,
   hasBox: 14,
-  /** Set by a worker whose kernel threw; the caller then fails the step. */
+  /** Workers that threw (a kernel in a command, or taking new buffers); the caller then fails the step with the first one's error. */
   failed: 15,
   /** Contacts in the step's canonical buffer. */
   contactTotal: 16,
@@ -54,6 +57,9 @@ export const Slot = {
   /** A banded bin's bands: cells per band (log 2), and how many. */
   bandShift: 26,
   bands: 27,
+  /** The first failed worker's index, and how many UTF-16 code units of its error errorText holds. */
+  failedWorker: 28,
+  errorLength: 29,
   /** MAX_THREADS cells: each thread's contacts found, which may exceed its list's capacity. */
   contactCount: 64,
   /** MAX_THREADS cells: contacts each thread's solve block deferred. */
@@ -66,7 +72,14 @@ export const Slot = {
   bandTotal: 128,
   /** MAX_THREADS cells: each thread's jumps in this step's cells pass (see GridKernel.noteJumps). */
   jumps: 192,
-  length: 208,
+  /**
+   * ERROR_TEXT cells: the first failed worker's error (its stack, as text), a UTF-16 code unit a
+   * cell. A step fails on the calling thread, which cannot take a worker's message while it waits
+   * in that step: the error comes back through the shared block, with the barrier that counts
+   * the worker done.
+   */
+  errorText: 208,
+  length: 208 + ERROR_TEXT,
 } as const;
 
 /**

@@ -1,4 +1,4 @@
-import { Slot } from './control.js';
+import { ERROR_TEXT, Slot } from './control.js';
 import { canBlock, spinWhileEqual } from './host.js';
 import { nowMs } from '../util/timer.js';
 
@@ -35,8 +35,19 @@ export function awaitWorkers(c: Int32Array, expected: number): void {
     }
     if (canBlock) Atomics.wait(c, Slot.done, done, 20);
   }
-  if (Atomics.load(c, Slot.failed) !== 0) {
+  const failed = Atomics.load(c, Slot.failed);
+  if (failed !== 0) {
     Atomics.store(c, Slot.failed, 0);
-    throw new Error('a worker thread failed during the step (its error was posted to the console of the thread that started it)');
+    throw new Error(workerFailure(c, failed));
   }
+}
+
+/** What the first of `failed` workers left in the control block (see recordFailure in worker-entry.ts). */
+function workerFailure(c: Int32Array, failed: number): string {
+  const length = c[Slot.errorLength];
+  let text = '';
+  for (let i = 0; i < length; i++) text += String.fromCharCode(c[Slot.errorText + i]);
+  const cut = length === ERROR_TEXT ? ' [cut]' : '';
+  const others = failed > 1 ? ` (and ${failed - 1} more worker${failed > 2 ? 's' : ''})` : '';
+  return `worker thread ${c[Slot.failedWorker]} failed during the step${others}: ${text}${cut}`;
 }

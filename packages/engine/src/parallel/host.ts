@@ -152,16 +152,17 @@ export function spinWhileEqual(array: Int32Array, index: number, value: number, 
 /**
  * Starts a worker on `script` (by default the engine's worker-entry.js), sends it `init` and
  * resolves once it answers that it is ready. Node workers are unref'd: a world that is never
- * stopped does not keep the process alive.
+ * stopped does not keep the process alive. A worker that fails later, in a step, says so through
+ * the control block (worker-entry.ts's recordFailure), not in a message: the thread that started
+ * it is inside that step and takes no messages until it ends.
  */
 export async function startWorker(init: unknown, script?: WorkerScript): Promise<WorkerHandle> {
   if (isNode) {
     const { Worker } = (await import(/* @vite-ignore */ /* webpackIgnore: true */ WORKER_THREADS)) as { Worker: new (url: string | URL) => NodeWorker };
     const worker = new Worker(script === undefined ? nodeWorkerUrl() : typeof script === 'string' ? script : new URL(script.href));
     await new Promise<void>((resolve, reject) => {
-      worker.on('message', (message: { kind?: string; error?: string }) => {
+      worker.on('message', (message: { kind?: string }) => {
         if (message.kind === 'ready') resolve();
-        if (message.kind === 'failed') reject(new Error(`worker thread failed: ${message.error}`));
       });
       worker.on('error', (error: Error) => reject(error));
       worker.postMessage(init);
@@ -172,9 +173,7 @@ export async function startWorker(init: unknown, script?: WorkerScript): Promise
   const worker = browserWorker(script);
   await new Promise<void>((resolve, reject) => {
     worker.onmessage = (event) => {
-      const message = event.data as { kind?: string; error?: string };
-      if (message.kind === 'ready') resolve();
-      if (message.kind === 'failed') reject(new Error(`worker thread failed: ${message.error}`));
+      if ((event.data as { kind?: string }).kind === 'ready') resolve();
     };
     // A script that could not be fetched fires a bare Event; one that threw, an ErrorEvent with a message.
     worker.onerror = (event) => reject(new Error(browserStartFailure(script, event.message)));

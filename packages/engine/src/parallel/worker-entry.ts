@@ -3,7 +3,7 @@
  * to receive new buffers, runs each command the caller publishes on its share, and counts itself
  * done. See control.ts for the protocol and kernels.ts for the work.
  */
-import { Command, Slot, type BufferMessage, type InitMessage } from './control.js';
+import { Command, ERROR_TEXT, Slot, type BufferMessage, type InitMessage } from './control.js';
 import { workerKernels, type ThreadKernels } from './kernels.js';
 import { isNode, spinWhileEqual } from './host.js';
 
@@ -16,12 +16,15 @@ const SPIN = 2_000;
 const waitAsync = (Atomics as unknown as { waitAsync: WaitAsync }).waitAsync;
 
 let kernels: ThreadKernels | null = null;
+/** This worker's thread index (1 and up; the caller is 0). */
+let index = 0;
 let epoch = 0;
 let epochWaiter: (() => void) | null = null;
 let post: Post = () => {};
 
 function receive(message: InitMessage | BufferMessage): void {
   if (message.kind === 'init') {
+    index = message.index;
     kernels = workerKernels(message.index, new Int32Array(message.control), new Float64Array(message.params), new Float64Array(message.results));
     // The command count is read before answering: once the caller hears "ready" it may publish at
     // any moment, and a count read after that could already include the first command, which
@@ -30,8 +33,13 @@ function receive(message: InitMessage | BufferMessage): void {
     post({ kind: 'ready' });
     return;
   }
-  kernels!.install(message);
-  kernels!.bindContactList();
+  try {
+    kernels!.install(message);
+    kernels!.bindContactList();
+  } catch (error) {
+    // The caller waits on the sync command for this epoch: it ends, and the step fails with this.
+    recordFailure(kernels!.control, error);
+  }
   epoch = message.epoch;
   epochWaiter?.();
 }
@@ -70,13 +78,26 @@ async function serve(k: ThreadKernels, seen: number): Promise<void> {
         k.run(command);
       }
     } catch (error) {
-      // The caller is waiting on DONE: report the failure there, then count in as usual.
-      Atomics.store(control, Slot.failed, 1);
-      post({ kind: 'failed', error: String((error as Error)?.stack ?? error) });
+      // The caller is waiting on DONE: leave the failure beside it, then count in as usual.
+      recordFailure(control, error);
     }
     Atomics.add(control, Slot.done, 1);
     Atomics.notify(control, Slot.done);
   }
+}
+
+/**
+ * Counts this worker as failed and, where it is the first, writes its index and error into the
+ * control block, where the caller reads them once every worker is done (awaitWorkers). The
+ * Atomics.add on DONE that follows publishes these plain writes.
+ */
+function recordFailure(control: Int32Array, error: unknown): void {
+  if (Atomics.add(control, Slot.failed, 1) !== 0) return;
+  const text = String((error as Error | null)?.stack ?? error);
+  const length = Math.min(text.length, ERROR_TEXT);
+  for (let i = 0; i < length; i++) control[Slot.errorText + i] = text.charCodeAt(i);
+  control[Slot.errorLength] = length;
+  control[Slot.failedWorker] = index;
 }
 
 // A variable, not a literal, so that bundlers for the browser leave the Node-only import alone.
