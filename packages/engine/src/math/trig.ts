@@ -49,7 +49,7 @@ function cosKernel(r: number): number {
 /** Beyond this the reduction by pi/2 below loses its exactness; larger angles are first taken modulo 2 pi. */
 const EXACT_REDUCTION = 2 ** 20 * HALF_PI_1;
 /** 2 pi as a double: `%` by it is exact (IEEE remainder), so the same bits everywhere. */
-const TWO_PI = 6.283185307179586;
+export const TWO_PI = 6.283185307179586;
 
 /** Writes cos(angle) and sin(angle) into out[0], out[1]. */
 export function cosSin(angle: number, out: Float64Array | number[]): void {

@@ -15,13 +15,12 @@ import { prismaticJoint } from './joints/prismatic-joint.js';
 import { weldJoint } from './joints/weld-joint.js';
 import { wheelJoint } from './joints/wheel-joint.js';
 import { SPIN_DAMPING, SPIN_HERTZ, targetJoint } from './joints/target-joint.js';
-import { atan2Into } from '../math/trig.js';
+import { atan2Into, TWO_PI } from '../math/trig.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { active: ACTIVE, anchorAX: ANCHOR_AX, anchorAY: ANCHOR_AY, anchorBX: ANCHOR_BX, anchorBY: ANCHOR_BY, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axisX: AXIS_X, axisY: AXIS_Y, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, referenceAngle: REFERENCE_ANGLE, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, targetX: TARGET_X, targetY: TARGET_Y, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
 
 const angleIO = new Float64Array(3);
-const TWO_PI = 2 * Math.PI;
 
 /** Each constraint kind's solver: one line per kind. Springs and gas pressure are forces, applied apart (ForceSprings, GasPressure). */
 const KERNEL_OF: Record<Exclude<JointKindName, 'spring' | 'pressure'>, JointKernel> = {

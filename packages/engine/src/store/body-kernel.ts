@@ -82,6 +82,8 @@ const ALIGN = 8;
 const SHARED_MAXIMUM_PAGES = 32768;
 
 const compiled: { private?: object | null; shared?: object | null } = {};
+/** Which build `compiled` holds, per memory kind: for bodyKernelBuild. */
+const compiledSimd: { private?: boolean; shared?: boolean } = {};
 let enabled = true;
 let simdWanted = true;
 
@@ -97,8 +99,15 @@ export function kernelModule(shared: boolean): object | null {
     // The SIMD build where this runtime compiles it (the same bits, see moveInBox), else the plain one.
     const simd = simdWanted ? compileKernel(shared ? BODY_KERNEL_SHARED_SIMD_WASM : BODY_KERNEL_SIMD_WASM) : null;
     compiled[key] = simd ?? compileKernel(shared ? BODY_KERNEL_SHARED_WASM : BODY_KERNEL_WASM);
+    compiledSimd[key] = simd !== null;
   }
   return compiled[key]!;
+}
+
+/** Which build of the body kernel a private memory's kernels run, or null without WebAssembly: for tests; not part of the public API. */
+export function bodyKernelBuild(): 'simd' | 'plain' | null {
+  if (kernelModule(false) === null) return null;
+  return compiledSimd.private ? 'simd' : 'plain';
 }
 
 /**
