@@ -5,6 +5,7 @@ import { SHAPE_STRIDE, ShapeField, type ShapeStore } from '../store/shape-store.
 import { ContactBuffer } from '../store/contact-buffer.js';
 import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
+import { boxesApart, ORIENTED_BOX } from './oriented-boxes.js';
 import { grownCapacity, grow } from '../util/grow.js';
 import type { StaticTree } from '../broadphase/static-tree.js';
 import { ContactList, Pose, RECYCLE, Recycle, WORLD } from './contact-list.js';
@@ -366,6 +367,8 @@ export class ShapeNarrowPhase implements PairConsumer {
           touching = true;
           continue;
         }
+        // The boxes apart: the pair function would find no point (nor a sensor an overlap).
+        if (boxesApart(x, y, c, s, i, shapes.box, sa * ORIENTED_BOX, j, shapes.box, sb * ORIENTED_BOX, margin)) continue;
         this.shapePairs++;
         pose[Pose.ax] = x[i];
         pose[Pose.ay] = y[i];

@@ -1,5 +1,6 @@
 import { MAX_POLYGON_VERTICES, type Geometry, type ShapeKindCode } from '../shapes/geometry.js';
 import { grownCapacity, grow } from '../util/grow.js';
+import { ORIENTED_BOX, setBox } from '../narrowphase/oriented-boxes.js';
 import { JOINT_HANDLES, SHAPE_HANDLES, SHAPE_MAX_GENERATION, SLOT_SPACE } from './handles.js';
 
 /** What a new shape is made of, validated: geometry in its body's frame, and material and filter. */
@@ -67,6 +68,8 @@ export class ShapeStore {
   centroidX = new Float64Array(0);
   centroidY = new Float64Array(0);
   extent = new Float64Array(0);
+  /** The shape's box, turning with its body (see oriented-boxes.ts). */
+  box = new Float64Array(0);
   /** Area per unit density, its centroid and polar moment about that centroid: for the body's mass. */
   area = new Float64Array(0);
   areaInertia = new Float64Array(0);
@@ -116,6 +119,7 @@ export class ShapeStore {
     this.centroidX[slot] = centroidX;
     this.centroidY[slot] = centroidY;
     this.extent[slot] = g.extentFrom(centroidX, centroidY);
+    this.fitBox(slot);
     this.count++;
     this.version++;
     return slot;
@@ -139,7 +143,25 @@ export class ShapeStore {
     }
     this.centroidX[slot] += dx;
     this.centroidY[slot] += dy;
+    this.fitBox(slot);
     this.version++;
+  }
+
+  /** Sets a shape's box from its vertices and rounding. */
+  private fitBox(slot: number): void {
+    const record = this.record;
+    const r = this.radius[slot];
+    let loX = Infinity;
+    let loY = Infinity;
+    let hiX = -Infinity;
+    let hiY = -Infinity;
+    for (let i = 0, at = slot * STRIDE + SHAPE_VERTICES; i < this.vertexCount[slot]; i++, at += VERTEX) {
+      loX = Math.min(loX, record[at] - r);
+      loY = Math.min(loY, record[at + 1] - r);
+      hiX = Math.max(hiX, record[at] + r);
+      hiY = Math.max(hiY, record[at + 1] + r);
+    }
+    setBox(this.box, slot * ORIENTED_BOX, loX, loY, hiX, hiY);
   }
 
   /** Copies a shape's geometry into `g` (in its body's centre-of-mass frame). */
@@ -200,7 +222,7 @@ export class ShapeStore {
   }
 
   memoryBytes(): number {
-    return this.capacity * (4 * 2 + 4 + 4 * 3 + 8 * 12 + 8 * STRIDE);
+    return this.capacity * (4 * 2 + 4 + 4 * 3 + 8 * 12 + 8 * ORIENTED_BOX + 8 * STRIDE);
   }
 
   private grow(needed: number): void {
@@ -224,6 +246,7 @@ export class ShapeStore {
     this.centroidY = grow(this.centroidY, capacity);
     this.extent = grow(this.extent, capacity);
     this.area = grow(this.area, capacity);
+    this.box = grow(this.box, capacity * ORIENTED_BOX);
     this.areaInertia = grow(this.areaInertia, capacity);
     this.capacity = capacity;
   }
