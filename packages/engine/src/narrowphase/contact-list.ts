@@ -14,7 +14,7 @@ export const WORLD = -1;
  * Each slot holds its manifold (normal, one or two points with anchors relative to each body's
  * centre of mass: a manifold without points is never listed, which the soft step's kernel relies
  * on) and what the solver accumulated on it. A contact whose manifold is kept
- * (`refresh`, see ShapeNarrowPhase.recycle) is updated where it lies, a few fields, instead of
+ * (see ShapeNarrowPhase.recycle) is updated where it lies, a few fields, instead of
  * being copied into a new list: piles at rest keep nearly all their contacts, and copying a
  * contact's forty-odd fields was a third of a 5,050-box pyramid's narrow-phase. A recomputed one
  * (`rewrite`) inherits its impulses point by point where the same features touch again (warm
@@ -204,49 +204,8 @@ export class ContactList {
     this.list(k);
   }
 
-  /**
-   * Contact k, listed last step, keeping its manifold (recycled), listed next: same normal,
-   * points, ids, impulses and anchors, with separations brought up to date from how the anchors
-   * moved apart along the normal since the manifold was computed, as the soft step's sub-steps
-   * do: each body turned by (dac, das) and (dbc, dbs) since, now centred at (ax, ay), (bx, by),
-   * all in `pose` (its cosine and sine slots holding the turns).
-   */
-  refresh(k: number): void {
-    const pose = this.pose;
-    const ax = pose[Pose.ax];
-    const ay = pose[Pose.ay];
-    const dac = pose[Pose.ac];
-    const das = pose[Pose.as];
-    const bx = pose[Pose.bx];
-    const by = pose[Pose.by];
-    const dbc = pose[Pose.bc];
-    const dbs = pose[Pose.bs];
-    const n = this.pointCount[k];
-    const nx = this.normalX[k];
-    const ny = this.normalY[k];
-    const dcx = bx - ax;
-    const dcy = by - ay;
-    const pt = this.points;
-    for (let p = 0; p < n; p++) {
-      const o = (2 * k + p) * POINT_STRIDE;
-      const rAx0 = pt[o + AAX];
-      const rAy0 = pt[o + AAY];
-      const rBx0 = pt[o + ABX];
-      const rBy0 = pt[o + ABY];
-      const rAx = dac * rAx0 - das * rAy0;
-      const rAy = das * rAx0 + dac * rAy0;
-      const rBx = dbc * rBx0 - dbs * rBy0;
-      const rBy = dbs * rBx0 + dbc * rBy0;
-      pt[o + SEPARATION] = pt[o + BASE_SEPARATION] + (dcx + rBx - rAx) * nx + (dcy + rBy - rAy) * ny;
-      pt[o + PX] = ax + rAx;
-      pt[o + PY] = ay + rAy;
-      pt[o + TOTAL_NORMAL_IMPULSE] = 0;
-      pt[o + APPROACH_SPEED] = 0;
-    }
-    this.list(k);
-  }
-
-  private list(k: number): void {
+  /** Lists contact k in this step's order: a new one, or one kept from last step (see ShapeNarrowPhase.recycle). */
+  list(k: number): void {
     if (this.count === this.order.length) this.order = grow(this.order, grownCapacity(this.order.length, this.count + 1));
     this.order[this.count++] = k;
     this.listed[k] = this.epoch;

@@ -8,7 +8,7 @@ import { BodyFlag } from '../store/rigid-columns.js';
 import { boxesApart, ORIENTED_BOX } from './oriented-boxes.js';
 import { grownCapacity, grow } from '../util/grow.js';
 import type { StaticTree } from '../broadphase/static-tree.js';
-import { ContactList, Pose, RECYCLE, Recycle, WORLD } from './contact-list.js';
+import { ContactList, ContactPoint, Pose, POINT_STRIDE, RECYCLE, Recycle, WORLD } from './contact-list.js';
 import { Manifold } from './manifold.js';
 import { WorldShape } from './world-shape.js';
 import { collide } from './dispatch.js';
@@ -435,12 +435,18 @@ export class ShapeNarrowPhase implements PairConsumer {
     const sa = rigid.firstShape[i];
     const sb = rigid.firstShape[j];
     if (sa < 0 || sb < 0) return -1;
-    const pose = this.current.pose;
-    pose[Pose.keyA] = shapes.handleOf(sa);
-    pose[Pose.keyB] = shapes.handleOf(sb);
-    const q = this.find(p, i, j);
-    return q >= 0 && this.recycle(q, i, j) ? 1 : 0;
+    const keyA = shapes.handleOf(sa);
+    const keyB = shapes.handleOf(sb);
+    const list = this.current;
+    const { previousOrder, previousCount, bodyA, bodyB } = list;
+    for (let n = p; n < previousCount; n++) {
+      const k = previousOrder[n];
+      if (bodyA[k] !== i || bodyB[k] !== j) break;
+      if (list.keyA[k] === keyA && list.keyB[k] === keyB) return this.recycle(k, i, j) ? 1 : 0;
+    }
+    return 0;
   }
+
 
   private collideWorld(i: number, entry: number, shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number, p: number): number {
     const bodies = this.bodies;
@@ -529,55 +535,81 @@ export class ShapeNarrowPhase implements PairConsumer {
    * v3's contact recycling. It holds where neither body moved fast, each turned less than about 11
    * degrees since the manifold was computed, and B moved relative to A (its centre, and its
    * farthest point through the turn) less than the recycle distance. Kept manifolds keep their
-   * anchors and take their separations from how the anchors moved, as the sub-steps do (see
-   * ContactList.refresh): resting contacts then do not jitter with each new computation of their
+   * anchors and take their separations from how the anchors moved, as the sub-steps do: resting contacts then do not jitter with each new computation of their
    * points (a stack of 15 boxes leaned 0.23 m without it, Box2D's 0.001), and piles at rest skip
    * the pair functions. The test and the keeping share one reading of the poses and the cache.
    */
   private recycle(q: number, i: number, j: number): boolean {
     const list = this.current;
     const bodies = this.bodies;
-    const { x, y, radius } = bodies;
+    const { x, y, radius, type } = bodies;
     const rigid = bodies.rigid!;
     const { c, s } = rigid;
-    if (this.fastBody[i] === 1 || (j !== WORLD && this.fastBody[j] === 1)) return false;
+    const world = j === WORLD;
+    if (this.fastBody[i] === 1 || (!world && this.fastBody[j] === 1)) return false;
     const ac = c[i];
     const as = s[i];
-    const bc = j === WORLD ? 1 : c[j];
-    const bs = j === WORLD ? 0 : s[j];
+    const bc = world ? 1 : c[j];
+    const bs = world ? 0 : s[j];
     const r = list.recycle;
     const o = q * RECYCLE;
+    const cachedAc = r[o + Recycle.ac];
+    const cachedAs = r[o + Recycle.as];
+    const cachedBc = r[o + Recycle.bc];
+    const cachedBs = r[o + Recycle.bs];
     // Each body's turn since the cache, q q0^-1: its cosines first, for the test.
-    const dac = ac * r[o + Recycle.ac] + as * r[o + Recycle.as];
-    const dbc = bc * r[o + Recycle.bc] + bs * r[o + Recycle.bs];
+    const dac = ac * cachedAc + as * cachedAs;
+    const dbc = bc * cachedBc + bs * cachedBs;
     if (!(Math.min(dac, dbc) > RECYCLE_COS)) return false;
-    const bx = j === WORLD ? 0 : x[j];
-    const by = j === WORLD ? 0 : y[j];
-    const dx = bx - x[i];
-    const dy = by - y[i];
+    const ax = x[i];
+    const ay = y[i];
+    const bx = world ? 0 : x[j];
+    const by = world ? 0 : y[j];
+    const dx = bx - ax;
+    const dy = by - ay;
     const rx = ac * dx + as * dy;
     const ry = -as * dx + ac * dy;
     const rc = ac * bc + as * bs;
     const rs = ac * bs - as * bc;
     // The relative rotation's change since the cache: sin of the angle between rs/rc and the cached one.
     const turn = rs * r[o + Recycle.c] - rc * r[o + Recycle.s];
-    const extentA = bodies.type[i] === TypeCode.static ? 0 : radius[i] - this.margin;
-    const extentB = j === WORLD || bodies.type[j] === TypeCode.static ? 0 : radius[j] - this.margin;
-    const moved = Math.sqrt((rx - r[o + Recycle.x]) * (rx - r[o + Recycle.x]) + (ry - r[o + Recycle.y]) * (ry - r[o + Recycle.y]));
+    const extentA = type[i] === TypeCode.static ? 0 : radius[i] - this.margin;
+    const extentB = world || type[j] === TypeCode.static ? 0 : radius[j] - this.margin;
+    const ex = rx - r[o + Recycle.x];
+    const ey = ry - r[o + Recycle.y];
+    const moved = Math.sqrt(ex * ex + ey * ey);
     if (!(moved + Math.max(extentA, extentB) * Math.abs(turn) < this.recycleDistance)) return false;
-    const pose = list.pose;
-    pose[Pose.ax] = x[i];
-    pose[Pose.ay] = y[i];
-    pose[Pose.ac] = dac;
-    pose[Pose.as] = as * r[o + Recycle.ac] - ac * r[o + Recycle.as];
-    pose[Pose.bx] = bx;
-    pose[Pose.by] = by;
-    pose[Pose.bc] = dbc;
-    pose[Pose.bs] = bs * r[o + Recycle.bc] - bc * r[o + Recycle.bs];
-    list.refresh(q);
+    // Kept: listed again with its separations brought up to date, each anchor turned as its body
+    // turned since, (dac, das) and (dbc, dbs). Here rather than in a ContactList method, which V8
+    // did not inline: the call and the pose passed through memory were a ninth of a resting
+    // pyramid's narrow-phase.
+    const das = as * cachedAc - ac * cachedAs;
+    const dbs = bs * cachedBc - bc * cachedBs;
+    const n = list.pointCount[q];
+    const nx = list.normalX[q];
+    const ny = list.normalY[q];
+    const pt = list.points;
+    for (let p = 0; p < n; p++) {
+      const at = (2 * q + p) * POINT_STRIDE;
+      const rAx0 = pt[at + ContactPoint.anchorAX];
+      const rAy0 = pt[at + ContactPoint.anchorAY];
+      const rBx0 = pt[at + ContactPoint.anchorBX];
+      const rBy0 = pt[at + ContactPoint.anchorBY];
+      const rAx = dac * rAx0 - das * rAy0;
+      const rAy = das * rAx0 + dac * rAy0;
+      const rBx = dbc * rBx0 - dbs * rBy0;
+      const rBy = dbs * rBx0 + dbc * rBy0;
+      pt[at + ContactPoint.separation] = pt[at + ContactPoint.baseSeparation] + (dx + rBx - rAx) * nx + (dy + rBy - rAy) * ny;
+      pt[at + ContactPoint.x] = ax + rAx;
+      pt[at + ContactPoint.y] = ay + rAy;
+      pt[at + ContactPoint.totalNormalImpulse] = 0;
+      pt[at + ContactPoint.approachSpeed] = 0;
+    }
+    list.list(q);
     this.recycled++;
     return true;
   }
+
 
   /**
    * Notes the bodies whose contacts are always recomputed (fastBody): those that move more than
