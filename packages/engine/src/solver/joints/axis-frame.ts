@@ -13,7 +13,7 @@ const { axialMass: AXIAL_MASS, lower: LOWER, lowerImpulse: LOWER_IMPULSE, spring
  * (`speed` out; `along`, `across`, `angular` in): V8 boxes numbers passed to or returned from a
  * call it does not inline.
  */
-export const axisFrame = { ax: 1, ay: 0, rAx: 0, rAy: 0, rBx: 0, rBy: 0, dx: 0, dy: 0, translation: 0, a1: 0, a2: 0, s1: 0, s2: 0, speed: 0, along: 0, across: 0, angular: 0 };
+export const axisFrame = { ax: 1, ay: 0, rAx: 0, rAy: 0, rBx: 0, rBy: 0, dx: 0, dy: 0, translation: 0, a1: 0, a2: 0, s1: 0, s2: 0, speed: 0, along: 0, across: 0, angular: 0, heldAcross: 0, heldAngular: 0 };
 export type AxisFrame = typeof axisFrame;
 
 export function currentAxisFrame(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number): AxisFrame {
@@ -55,6 +55,8 @@ function fillArms(f: AxisFrame): void {
   // Across the axis, n = (-ay, ax).
   f.s1 = ux * ax + uy * ay;
   f.s2 = f.rBx * ax + f.rBy * ay;
+  f.heldAcross = 0;
+  f.heldAngular = 0;
 }
 
 /** Relative speed along the axis, into f.speed. */
@@ -84,10 +86,64 @@ function applyAxisImpulse(r: Float64Array, o: number, states: Float64Array, sa: 
   states[sb + W] += r[o + INV_INERTIA_B] * (along * f.a2 + across * f.s2 + angular);
 }
 
-/** Applies an impulse along the axis alone. */
+/**
+ * A slider's effective mass along its axis with its constraints across the axis and in angle
+ * held, into the record's axial mass; and the impulses across the axis and in angle, per unit of
+ * impulse along it, that hold them meanwhile, into f.heldAcross and f.heldAngular, for pushAlong.
+ *
+ * A limit, motor or spring that pushed along the axis alone, with the mass of the bodies' motion
+ * along it (their spins about their centres included, as Box2D's prismatic joint does), would be
+ * partly undone by the block across it wherever B's anchor lies off its centre: the push turns
+ * the body, the angle's constraint turns it back, and what stopped it along the axis goes with the
+ * turn. A slider whose anchor lay 0.5 from its centre, launched at 20 m/s into its limit 1 away,
+ * went 1.21 out; 2 from its centre at 60 m/s, 7.0. Within the block K of (along, across, angle),
+ * the response along the axis with the rest held is the Schur complement det K / det K2 of the
+ * held block K2, and the held impulses per unit along are -K2^-1 k (pinnedTurn in
+ * revolute-joint.ts is the pin's version). With m = mA + mB and the arms a1, a2 along and s1, s2
+ * across (see fillArms), both determinants are sums of positive terms (Cauchy-Binet), so far arms
+ * lose no digits to cancellation:
+ *
+ *   det K2 = m (iA + iB) + iA iB (s1 - s2)^2
+ *   det K  = m^2 (iA + iB) + m iA iB ((s1 - s2)^2 + (a1 - a2)^2)
+ *
+ * Where they fail (neither body turns, or not finite), the push is along the axis alone.
+ */
+export function holdAcross(r: Float64Array, o: number, f: AxisFrame): void {
+  const mA = r[o + INV_MASS_A];
+  const mB = r[o + INV_MASS_B];
+  const iA = r[o + INV_INERTIA_A];
+  const iB = r[o + INV_INERTIA_B];
+  const { a1, a2, s1, s2 } = f;
+  const m = mA + mB;
+  const iAB = iA * iB;
+  const ds = s1 - s2;
+  const da = a1 - a2;
+  const det2 = m * (iA + iB) + iAB * ds * ds;
+  const det3 = m * (m * (iA + iB) + iAB * (ds * ds + da * da));
+  const mass = det2 / det3;
+  const across = (-iAB * da * ds) / det2;
+  const angular = -(m * (iA * a1 + iB * a2) + iAB * ds * (s1 * a2 - s2 * a1)) / det2;
+  if (mass > 0 && mass < Infinity && Number.isFinite(across) && Number.isFinite(angular)) {
+    r[o + AXIAL_MASS] = mass;
+    f.heldAcross = across;
+    f.heldAngular = angular;
+  } else {
+    const k = m + iA * a1 * a1 + iB * a2 * a2;
+    r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;
+    f.heldAcross = 0;
+    f.heldAngular = 0;
+  }
+}
+
+/**
+ * Applies an impulse f.along along the axis, with the impulses across it and in angle that
+ * f.heldAcross and f.heldAngular give per unit along: a slider's block held (see holdAcross),
+ * none for a wheel, whose frame leaves them 0.
+ */
 export function pushAlong(r: Float64Array, o: number, states: Float64Array, sa: number, sb: number, f: AxisFrame): void {
-  f.across = 0;
-  f.angular = 0;
+  // Exactly +0 where nothing is held, as a push along the axis alone has always had.
+  f.across = f.heldAcross === 0 ? 0 : f.along * f.heldAcross;
+  f.angular = f.heldAngular === 0 ? 0 : f.along * f.heldAngular;
   applyAxisImpulse(r, o, states, sa, sb, f);
 }
 

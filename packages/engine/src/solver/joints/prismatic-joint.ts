@@ -1,16 +1,10 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
 import { measureAngle, prepareSpringLimitMotor, WELL_POSED, type JointKernel } from './joint-kernel.js';
-import { axialLimits, axialSpeed, axialSpring, currentAxisFrame, normalSpeed, push, pushAlong, startAxisFrame, type AxisFrame } from './axis-frame.js';
+import { axialLimits, axialSpeed, axialSpring, currentAxisFrame, holdAcross, normalSpeed, push, pushAlong, startAxisFrame } from './axis-frame.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angle: ANGLE, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axialMass: AXIAL_MASS, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorSpeed: MOTOR_SPEED, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
-
-/** The effective mass along the axis, from the arms of frame f (the block across it is formed in each solve). */
-function axialMass(r: Float64Array, o: number, f: AxisFrame): void {
-  const k = r[o + INV_MASS_A] + r[o + INV_MASS_B] + r[o + INV_INERTIA_A] * f.a1 * f.a1 + r[o + INV_INERTIA_B] * f.a2 * f.a2;
-  r[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;
-}
 
 const sliderBlock = new Float64Array(2);
 
@@ -52,7 +46,7 @@ function solveSliderBlock(m: number, iA: number, iB: number, s1: number, s2: num
  * A prismatic joint (a slider): B keeps A's angle (plus the reference) and its anchor stays on
  * the line through A's anchor along A's axis, both as one 2x2 block; along the line, an optional
  * spring towards translation 0, a motor of bounded force and translation limits (Box2D v3's
- * prismatic joint).
+ * prismatic joint), each pushing along the axis with the block held (see holdAcross).
  */
 export const prismaticJoint: JointKernel = {
   readsAngle() {
@@ -60,21 +54,23 @@ export const prismaticJoint: JointKernel = {
   },
 
   prepare(r, o, step) {
-    axialMass(r, o, startAxisFrame(r, o));
+    holdAcross(r, o, startAxisFrame(r, o));
     prepareSpringLimitMotor(r, o, step);
   },
 
   refresh(r, o, states) {
-    axialMass(r, o, currentAxisFrame(r, o, states, r[o + STATE_A], r[o + STATE_B]));
+    holdAcross(r, o, currentAxisFrame(r, o, states, r[o + STATE_A], r[o + STATE_B]));
   },
 
   warmStart(r, o, states) {
     const sa = r[o + STATE_A];
     const sb = r[o + STATE_B];
     const f = currentAxisFrame(r, o, states, sa, sb);
-    f.along = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
-    f.across = r[o + AXIAL_IMPULSE];
-    f.angular = r[o + ANGULAR_IMPULSE];
+    holdAcross(r, o, f);
+    const along = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    f.along = along;
+    f.across = r[o + AXIAL_IMPULSE] + along * f.heldAcross;
+    f.angular = r[o + ANGULAR_IMPULSE] + along * f.heldAngular;
     push(r, o, states, sa, sb, f);
   },
 
@@ -82,6 +78,7 @@ export const prismaticJoint: JointKernel = {
     const sa = r[o + STATE_A];
     const sb = r[o + STATE_B];
     const f = currentAxisFrame(r, o, states, sa, sb);
+    holdAcross(r, o, f);
     const axialMass = r[o + AXIAL_MASS];
     if (r[o + HERTZ] > 0) axialSpring(r, o, states, sa, sb, f);
     if (r[o + ENABLE_MOTOR] === 1) {
@@ -145,11 +142,14 @@ export const prismaticJoint: JointKernel = {
 
   reaction(r, o, inverseH) {
     const along = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
-    const across = r[o + AXIAL_IMPULSE];
+    // What held the slider across the axis and in angle while the push along it acted (see holdAcross).
+    const f = startAxisFrame(r, o);
+    holdAcross(r, o, f);
+    const across = r[o + AXIAL_IMPULSE] + along * f.heldAcross;
     const ax = r[o + WORLD_AXIS_X];
     const ay = r[o + WORLD_AXIS_Y];
     r[o + FORCE_X] = (along * ax - across * ay) * inverseH;
     r[o + FORCE_Y] = (along * ay + across * ax) * inverseH;
-    r[o + TORQUE] = r[o + ANGULAR_IMPULSE] * inverseH;
+    r[o + TORQUE] = (r[o + ANGULAR_IMPULSE] + along * f.heldAngular) * inverseH;
   },
 };
