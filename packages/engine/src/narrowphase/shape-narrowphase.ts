@@ -447,7 +447,6 @@ export class ShapeNarrowPhase implements PairConsumer {
     return 0;
   }
 
-
   private collideWorld(i: number, entry: number, shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number, p: number): number {
     const bodies = this.bodies;
     const rigid = bodies.rigid!;
@@ -535,9 +534,9 @@ export class ShapeNarrowPhase implements PairConsumer {
    * v3's contact recycling. It holds where neither body moved fast, each turned less than about 11
    * degrees since the manifold was computed, and B moved relative to A (its centre, and its
    * farthest point through the turn) less than the recycle distance. Kept manifolds keep their
-   * anchors and take their separations from how the anchors moved, as the sub-steps do: resting contacts then do not jitter with each new computation of their
-   * points (a stack of 15 boxes leaned 0.23 m without it, Box2D's 0.001), and piles at rest skip
-   * the pair functions. The test and the keeping share one reading of the poses and the cache.
+   * anchors and take their separations from how the anchors moved, as the sub-steps do: resting
+   * contacts then do not jitter with each new computation of their points (a stack of 15 boxes
+   * leaned 0.23 m without it, Box2D's 0.001), and piles at rest skip the pair functions. The test and the keeping share one reading of the poses and the cache.
    */
   private recycle(q: number, i: number, j: number): boolean {
     const list = this.current;
@@ -609,7 +608,6 @@ export class ShapeNarrowPhase implements PairConsumer {
     this.recycled++;
     return true;
   }
-
 
   /**
    * Notes the bodies whose contacts are always recomputed (fastBody): those that move more than
