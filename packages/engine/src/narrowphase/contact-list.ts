@@ -139,6 +139,14 @@ export class ContactList {
   /** The step a slot was last listed in (see begin), so that finish frees the rest. */
   private listed = new Uint32Array(0);
   private epoch = 0;
+  /**
+   * Whether this step's list is last step's: the same contacts in the same slots (set by finish).
+   * The soft step then keeps its colouring, which depends on nothing else but the awake bodies.
+   */
+  unchanged = false;
+  /** Contacts added since begin, and whether begin moved the slots (compact). */
+  private added = 0;
+  private moved = false;
   /** How many times compact has moved the contacts. */
   compactions = 0;
   /** The step of the last compact, and the columns it swapped out, reused by the next. */
@@ -150,6 +158,8 @@ export class ContactList {
    * last step's slots lie scattered (see compact), they are first moved into its order.
    */
   begin(): void {
+    this.added = 0;
+    this.moved = false;
     if (compacting && this.epoch - this.compactedAt >= COMPACT_EVERY && this.scattered()) this.compact();
     const last = this.order;
     this.order = this.previousOrder;
@@ -183,6 +193,7 @@ export class ContactList {
     const { order, count } = this;
     this.compactedAt = this.epoch;
     this.compactions++;
+    this.moved = true;
     const self = this as unknown as Record<ColumnName, Column>;
     for (let c = 0; c < COLUMNS.length; c++) {
       const name = COLUMNS[c][0];
@@ -207,6 +218,9 @@ export class ContactList {
   finish(): void {
     const { previousOrder, listed, epoch } = this;
     const count = this.previousCount;
+    // Nothing added, nothing moved and as many as last step: last step's contacts, every one, in
+    // the same slots and so in the same order.
+    this.unchanged = this.added === 0 && !this.moved && this.count === count;
     // Before the loop, so that nothing follows it (see ShapeNarrowPhase.collidePairs).
     this.previousCount = 0;
     for (let n = 0; n < count; n++) {
@@ -217,6 +231,7 @@ export class ContactList {
 
   /** Drops every contact (a world whose contacts no longer mean anything, say after a reset). */
   clear(): void {
+    this.unchanged = false;
     this.count = 0;
     this.previousCount = 0;
     this.slotCount = 0;
@@ -232,6 +247,7 @@ export class ContactList {
     const keyA = pose[Pose.keyA];
     const keyB = pose[Pose.keyB];
     let k: number;
+    this.added++;
     if (this.freeCount > 0) k = this.freeSlots[--this.freeCount];
     else {
       if (this.slotCount === this.capacity) this.grow(this.slotCount + 1);

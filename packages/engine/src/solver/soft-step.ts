@@ -111,6 +111,12 @@ const LANES = 2;
 const STRIDE_PRIMES = [7919, 7927, 7933, 7937];
 
 
+let reusingColours = true;
+/** Whether the soft step keeps last step's colouring where nothing it depends on changed (see colourAgain): for tests that compare the bits with and without. */
+export function setColourReuse(on: boolean): void {
+  reusingColours = on;
+}
+
 /** The most a body turns in one step, as in Box2D (B2_MAX_ROTATION): a quarter of a half turn. */
 const MAX_ROTATION = 0.25 * Math.PI;
 
@@ -166,6 +172,11 @@ export class SoftStep {
   private order = new Int32Array(0);
   private used = new Uint32Array(0);
   private readonly colourStart = new Int32Array(COLOURS + 2);
+  /** Steps that kept the last colouring (see colourAgain). */
+  coloursKept = 0;
+  /** The awake bodies the last colouring was made for (see colourAgain), and whether there is one. */
+  private colouredAwake = new Int32Array(0);
+  private colouredCount = -1;
   /** Bias rate, mass scale and impulse scale of contacts between moving bodies, and of those with a static one. */
   private readonly softness = new Float64Array(3);
   private readonly staticSoftness = new Float64Array(3);
@@ -329,7 +340,7 @@ export class SoftStep {
     // moving body, and colours are solved in turn (see `colour`). Contacts with a static body
     // take colours from the top down, so that they come last and have the last word, and a pile
     // does not sink into the ground.
-    this.colour(contacts, count);
+    if (this.colourAgain(contacts)) this.colour(contacts, count);
     const lanes = this.laneCount;
     if (this.constraints.length < (lanes >> 1) * PAIR) {
       const capacity = grownCapacity(this.constraints.length / PAIR, lanes >> 1);
@@ -428,6 +439,38 @@ export class SoftStep {
       }
     }
   }
+
+  /**
+   * Whether the contacts need colouring: not where the list is last step's (ContactList.unchanged)
+   * and the same bodies are awake in the same order, the colouring's only inputs, which would give
+   * last step's lanes again. A pile at rest keeps its contacts step after step; colouring them was
+   * half a millisecond of a 5,050-box pyramid's 9.4.
+   */
+  private colourAgain(contacts: ContactList): boolean {
+    if (reusingColours && contacts.unchanged && this.awakeCount === this.colouredCount && this.sameAwake()) {
+      this.coloursKept++;
+      return false;
+    }
+    if (this.colouredAwake.length < this.awakeCount) this.colouredAwake = new Int32Array(this.awake.length);
+    this.colouredCount = this.awakeCount;
+    this.rememberAwake();
+    return true;
+  }
+
+  // The two loops below have functions of their own with nothing after the loop (see greedyColours).
+
+  /** Whether the awake bodies are those of the last colouring, in order. */
+  private sameAwake(): boolean {
+    const { awake, awakeCount, colouredAwake } = this;
+    for (let k = 0; k < awakeCount; k++) if (awake[k] !== colouredAwake[k]) return false;
+    return true;
+  }
+
+  private rememberAwake(): void {
+    const { awake, awakeCount, colouredAwake } = this;
+    for (let k = 0; k < awakeCount; k++) colouredAwake[k] = awake[k];
+  }
+
 
   /**
    * Gives each contact with a moving body a colour (greedy: the lowest free for both bodies), and
