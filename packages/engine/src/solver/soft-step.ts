@@ -174,7 +174,7 @@ export class SoftStep {
   private readonly colourStart = new Int32Array(COLOURS + 2);
   /** Steps that kept the last colouring (see colourAgain). */
   coloursKept = 0;
-  /** The awake bodies the last colouring was made for (see colourAgain), and whether there is one. */
+  /** The awake bodies the last colouring was made for, and how many (-1: none yet); see colourAgain. */
   private colouredAwake = new Int32Array(0);
   private colouredCount = -1;
   /** Bias rate, mass scale and impulse scale of contacts between moving bodies, and of those with a static one. */
@@ -470,7 +470,6 @@ export class SoftStep {
     const { awake, awakeCount, colouredAwake } = this;
     for (let k = 0; k < awakeCount; k++) colouredAwake[k] = awake[k];
   }
-
 
   /**
    * Gives each contact with a moving body a colour (greedy: the lowest free for both bodies), and
