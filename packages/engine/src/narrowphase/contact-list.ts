@@ -1,4 +1,4 @@
-import { grownCapacity, grow } from '../util/grow.js';
+import { allocateLike, grownCapacity, grow, type Column } from '../util/grow.js';
 import type { Manifold } from './manifold.js';
 
 /** `bodyB` of a contact with a world shape (a segment or a wall of the box) rather than a body. */
@@ -71,8 +71,7 @@ export function setContactCompaction(on: boolean): void {
   compacting = on;
 }
 
-type Column = Int32Array | Uint32Array | Uint8Array | Float64Array;
-/** Every per-slot column, with its doubles (or integers) per slot: what compact moves. */
+/** Every per-slot column, with its doubles (or integers) per slot: what grow sizes and compact moves. */
 const COLUMNS = [
   ['bodyA', 1],
   ['bodyB', 1],
@@ -200,7 +199,7 @@ export class ContactList {
       const stride = COLUMNS[c][1];
       const from = self[name];
       let into = this.spare[name];
-      if (into === undefined || into.length !== from.length) into = new (from.constructor as new (n: number) => Column)(from.length);
+      if (into === undefined || into.length !== from.length) into = allocateLike(from, from.length);
       for (let n = 0; n < count; n++) {
         const source = order[n] * stride;
         const target = n * stride;
@@ -378,24 +377,10 @@ export class ContactList {
 
   private grow(needed: number): void {
     const c = grownCapacity(this.capacity, needed);
-    this.bodyA = grow(this.bodyA, c);
-    this.bodyB = grow(this.bodyB, c);
-    this.shapeA = grow(this.shapeA, c);
-    this.shapeB = grow(this.shapeB, c);
-    this.keyA = grow(this.keyA, c);
-    this.keyB = grow(this.keyB, c);
-    this.pointCount = grow(this.pointCount, c);
-    this.normalX = grow(this.normalX, c);
-    this.normalY = grow(this.normalY, c);
-    this.friction = grow(this.friction, c);
-    this.restitution = grow(this.restitution, c);
-    this.rollingResistance = grow(this.rollingResistance, c);
-    this.rollingImpulse = grow(this.rollingImpulse, c);
-    this.points = grow(this.points, 2 * POINT_STRIDE * c);
-    this.id = grow(this.id, 2 * c);
-    this.recycle = grow(this.recycle, RECYCLE * c);
+    const self = this as unknown as Record<ColumnName, Column>;
+    for (let k = 0; k < COLUMNS.length; k++) self[COLUMNS[k][0]] = grow(self[COLUMNS[k][0]], COLUMNS[k][1] * c);
     this.freeSlots = grow(this.freeSlots, c);
-    this.listed = grow(this.listed, c);
     this.capacity = c;
   }
+
 }

@@ -435,6 +435,8 @@ export class ShapeNarrowPhase implements PairConsumer {
     const sa = rigid.firstShape[i];
     const sb = rigid.firstShape[j];
     if (sa < 0 || sb < 0) return -1;
+    // find's loop with the keys in locals rather than through the pose array: 1.46-1.51 -> 1.40-1.44
+    // ms for the resting pyramid's narrow-phase (four alternations of builds).
     const keyA = shapes.handleOf(sa);
     const keyB = shapes.handleOf(sb);
     const list = this.current;
@@ -580,8 +582,8 @@ export class ShapeNarrowPhase implements PairConsumer {
     if (!(moved + Math.max(extentA, extentB) * Math.abs(turn) < this.recycleDistance)) return false;
     // Kept: listed again with its separations brought up to date, each anchor turned as its body
     // turned since, (dac, das) and (dbc, dbs). Here rather than in a ContactList method, which V8
-    // did not inline: the call and the pose passed through memory were a ninth of a resting
-    // pyramid's narrow-phase.
+    // did not inline: the call and the pose passed through memory took the resting pyramid's
+    // narrow-phase from 1.37-1.42 to 1.52-1.54 ms.
     const das = as * cachedAc - ac * cachedAs;
     const dbs = bs * cachedBc - bc * cachedBs;
     const n = list.pointCount[q];

@@ -53,13 +53,11 @@ export const prismaticJoint: JointKernel = {
     return true;
   },
 
+  // No refresh: warmStart and solve take the axial mass from where the bodies stand at each pass
+  // (holdAcross), which is what a refresh would do before them.
   prepare(r, o, step) {
     holdAcross(r, o, startAxisFrame(r, o));
     prepareSpringLimitMotor(r, o, step);
-  },
-
-  refresh(r, o, states) {
-    holdAcross(r, o, currentAxisFrame(r, o, states, r[o + STATE_A], r[o + STATE_B]));
   },
 
   warmStart(r, o, states) {
