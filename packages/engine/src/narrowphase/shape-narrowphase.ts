@@ -14,6 +14,46 @@ import { WorldShape } from './world-shape.js';
 import { collide } from './dispatch.js';
 import type { JointStore } from '../joints/joint-store.js';
 
+/** Candidate pairs readAhead loads at a time: their records and poses (some 160 KB) stay in a core's L2 until the pairs are tested. */
+const READ_AHEAD = 256;
+/** Doubles in a 64-byte cache line. */
+const LINE = 8;
+/** Where readAhead leaves its sums, so that V8 keeps the loads. */
+const readAheadSink = new Float64Array(READ_AHEAD);
+
+/**
+ * Loads the memory that candidate pairs lo/hi[from..to) are about to read: both bodies' poses,
+ * and each body's first shape's oriented box and record, every cache line of it. Its iterations
+ * are independent short runs of loads, which the core keeps many of in flight at once; in the
+ * pair loop each pair's misses wait behind the work of the pair before it. JavaScript has no
+ * prefetch, so the loads are summed into readAheadSink. Reading a few pairs ahead inside the
+ * pair loop instead is slower: there the sum waits on its loads among the pair's own work. What
+ * this gains, and where it loses, is in docs/engine.md, "Performance with shapes".
+ */
+function readAhead(bodies: BodyStore, shapes: ShapeStore, lo: Int32Array, hi: Int32Array, from: number, to: number): void {
+  const { x, y } = bodies;
+  const { c, s, firstShape } = bodies.rigid!;
+  const { record, box } = shapes;
+  for (let k = from; k < to; k++) {
+    const i = lo[k];
+    const j = hi[k];
+    let sum = x[i] + y[i] + c[i] + s[i] + x[j] + y[j] + c[j] + s[j];
+    const sa = firstShape[i];
+    const sb = firstShape[j];
+    if (sa >= 0) {
+      const r = sa * SHAPE_STRIDE;
+      sum += box[sa * ORIENTED_BOX] + record[r + SHAPE_STRIDE - 1];
+      for (let o = 0; o < SHAPE_STRIDE; o += LINE) sum += record[r + o];
+    }
+    if (sb >= 0) {
+      const r = sb * SHAPE_STRIDE;
+      sum += box[sb * ORIENTED_BOX] + record[r + SHAPE_STRIDE - 1];
+      for (let o = 0; o < SHAPE_STRIDE; o += LINE) sum += record[r + o];
+    }
+    readAheadSink[k - from] = sum;
+  }
+}
+
 /** Kept manifolds: each body turned less than acos(0.98), about 11 degrees, since (Box2D's B2_CONTACT_RECYCLE_COS_ANGLE). */
 const RECYCLE_COS = 0.98;
 
@@ -249,10 +289,15 @@ export class ShapeNarrowPhase implements PairConsumer {
     const { lo, hi, count } = this.candidates;
     let w = 0;
     let p = 0;
-    // No software prefetch of the shape records of pairs ahead: JavaScript has no prefetch, and
-    // loads kept alive by summing them make a chain the core waits on, which cost more than the
-    // misses they hid (see docs/engine.md, "Performance with shapes").
+    // Where no manifold is kept every pair reads its shapes' records; where they are kept most
+    // pairs read none, and reading ahead only adds loads (see readAhead).
+    const ahead = this.recycleDistance === 0;
+    let readTo = 0;
     for (let k = 0; k <= count; k++) {
+      if (ahead && k === readTo && k < count) {
+        readTo = Math.min(k + READ_AHEAD, count);
+        readAhead(this.bodies, shapes, lo, hi, k, readTo);
+      }
       const i = k < count ? lo[k] : Infinity;
       // World pairs of bodies below i come first, after those bodies' body pairs.
       while (w < this.worldCount && this.worldBody[w] < i) {
