@@ -250,6 +250,31 @@ describe('continuous collision with shapes', () => {
     }
   });
 
+  it('a bullet does not pass through a thin plank coming at it, whatever the two speeds', () => {
+    // Swept against where the plank ended the step alone, a bullet meeting a plank that closes on
+    // it finds the plank already behind it.
+    for (const speed of [30, 120, 2000, 10000]) {
+      for (const plankSpeed of [-10, -50, -1000]) {
+        for (const kind of ['box', 'circle'] as const) {
+          const world = new World({ restitution: 0 });
+          const shot =
+            kind === 'box'
+              ? world.createBox({ x: 0, y: 0, width: 0.1, height: 0.1, vx: speed, bullet: true })
+              : world.createCircle({ x: 0, y: 0, radius: 0.05, vx: speed, bullet: true });
+          const plank = world.createBox({ x: 10, y: 0, width: 0.05, height: 2, vx: plankSpeed });
+          let crossed = false;
+          for (let s = 0; s < 120; s++) {
+            world.step(DT);
+            if (world.getBody(shot).x > world.getBody(plank).x) crossed = true;
+          }
+          expect(crossed, `${kind} at ${speed} m/s, plank at ${plankSpeed}`).toBe(false);
+          // The plank took the shot's momentum: restitution 0, so the two move on together.
+          expect(world.getBody(plank).vx, `${kind} at ${speed} m/s, plank at ${plankSpeed}`).toBeGreaterThan(plankSpeed);
+        }
+      }
+    }
+  });
+
   it('a fast box sliding along the ground is not stopped by the ground it rests on', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, friction: 0 });
     world.createBox({ x: 0, y: 1, width: 4000, height: 2, type: 'static' });

@@ -31,9 +31,13 @@ const segmentDistance = new SegmentDistance();
  * through something thin. Its motion over the step (centre in a line, rotation interpolated) is
  * swept against every static thing its swept box overlaps in the static tree, shape by shape, and
  * it is put back at the earliest time of impact, keeping its velocity: the next step's contact,
- * found at that pose, stops or bounces it. Bullets are swept against moving bodies too (at where
- * they ended the step), so that a fast projectile cannot pass through a thin dynamic plank;
- * other pairs of moving bodies are not, as the report argues, since their order would matter.
+ * found at that pose, stops or bounces it. Bullets are swept against moving bodies too, so that a
+ * fast projectile cannot pass through a thin dynamic plank, even one coming at it: against a body
+ * that moved, the bullet's sweep is its motion relative to that body's travel, with the body
+ * held where it ended the step (its turn within the step is not swept), and a bullet stopped by
+ * it is put where that relative sweep meets it. Other pairs of moving bodies are not swept, nor
+ * two bullets against each other, as in Box2D and as the report argues, since their order would
+ * matter.
  * The box's walls need no sweep: each is as thick as the box is wide, so nothing passes through
  * one in a step, and the route's containment puts a body that went into one back at its face.
  *
@@ -59,6 +63,9 @@ export class ContinuousShapes {
   private hitY = 0;
   private hitRestitution = 0;
   private hitShape = -1;
+  // Where the body being swept goes at its best impact: its centre on the sweep that found it.
+  private hitCentreX = 0;
+  private hitCentreY = 0;
 
   /** Keeps every body's pose at the start of the step. */
   remember(bodies: BodyStore): void {
@@ -99,6 +106,9 @@ export class ContinuousShapes {
     this.swept = 0;
     this.hitCount = 0;
     const { x0, y0, c0, s0 } = this;
+    // How far any moving body travelled in the step (-1: not yet measured): bullets look this much
+    // farther around their own sweep for bodies that came at them.
+    let travel = -1;
     // Bullets go second, against the others where they ended up.
     const passes = queries !== null ? 2 : 1;
     for (let pass = 0; pass < passes; pass++) {
@@ -158,22 +168,28 @@ export class ContinuousShapes {
           best = this.earliest(shapes, rigid.firstShape[i], best, slop, restitution, CORE * minExtent[i]);
         }
         if (bullet && queries) {
+          if (travel < 0) travel = this.largestTravel(bodies);
           this.found.length = 0;
-          queries.slotsInBox(queryVersion, minX, minY, maxX, maxY, this.found);
+          queries.slotsInBox(queryVersion, minX - travel, minY - travel, maxX + travel, maxY + travel, this.found);
           for (let f = 0; f < this.found.length; f++) {
             const j = this.found[f];
             if (j === i || type[j] === TypeCode.static || (flags[j] & BodyFlag.bullet) !== 0) continue;
             if ((bodies.category[i] & bodies.mask[j]) === 0 || (bodies.category[j] & bodies.mask[i]) === 0) continue;
+            // In the frame that travels with j: the bullet starts where it stood relative to j.
+            sweep.x0 = x0[i] + (x[j] - x0[j]);
+            sweep.y0 = y0[i] + (y[j] - y0[j]);
             for (let t = rigid.firstShape[j]; t >= 0; t = shapes.next[t]) {
               if (shapes.sensor[t]) continue;
               other.fromStore(shapes, t, x[j], y[j], c[j], s[j]);
               best = this.earliest(shapes, rigid.firstShape[i], best, slop, shapes.restitution[t], CORE * minExtent[i]);
             }
           }
+          sweep.x0 = x0[i];
+          sweep.y0 = y0[i];
         }
         if (best < 1) {
-          x[i] = sweep.x0 + best * (sweep.x1 - sweep.x0);
-          y[i] = sweep.y0 + best * (sweep.y1 - sweep.y0);
+          x[i] = this.hitCentreX;
+          y[i] = this.hitCentreY;
           sweepRotation(sweep, best, rotation);
           c[i] = rotation[0];
           s[i] = rotation[1];
@@ -247,6 +263,9 @@ export class ContinuousShapes {
     this.hitY = impact.y;
     this.hitRestitution = otherRestitution;
     this.hitShape = shape;
+    const sweep = this.sweep;
+    this.hitCentreX = sweep.x0 + toi * (sweep.x1 - sweep.x0);
+    this.hitCentreY = sweep.y0 + toi * (sweep.y1 - sweep.y0);
     return toi;
   }
 
@@ -272,6 +291,19 @@ export class ContinuousShapes {
     bodies.vx[i] += j * m * mx;
     bodies.vy[i] += j * m * my;
     rigid.angularVelocity[i] = w + inertia * rn * j;
+  }
+
+  /** The longest travel, along x or y, of a moving body that is not a bullet in this step. */
+  private largestTravel(bodies: BodyStore): number {
+    const { x, y, type, slotCount } = bodies;
+    const flags = bodies.rigid!.flags;
+    const { x0, y0 } = this;
+    let travel = 0;
+    for (let j = 0; j < slotCount; j++) {
+      if ((type[j] !== TypeCode.dynamic && type[j] !== TypeCode.kinematic) || (flags[j] & BodyFlag.bullet) !== 0) continue;
+      travel = Math.max(travel, Math.abs(x[j] - x0[j]), Math.abs(y[j] - y0[j]));
+    }
+    return travel;
   }
 
   private layers(bodies: BodyStore, i: number, shapes: ShapeStore, shape: number): boolean {
