@@ -118,6 +118,26 @@ describe('events with shapes', () => {
     // It fell straight through: free fall, untouched by the sensor.
     expect(world.getBody(box).vy).toBeCloseTo(10 * 2, 6);
   });
+  it('a sensor reports the shapes of dynamic bodies alone, whatever body carries it', () => {
+    for (const carrier of ['dynamic', 'kinematic', 'static'] as const) {
+      const world = new World({ friction: 0.5 });
+      const body = world.createBody({ x: 0, y: 0, type: carrier });
+      // A dynamic carrier needs mass: a solid box out of everyone's way.
+      if (carrier === 'dynamic') world.addShape(body, { kind: 'box', width: 1, height: 1, offsetX: 10 });
+      const sensor = world.addShape(body, { kind: 'circle', radius: 2, sensor: true });
+      world.createBox({ x: 0, y: 1, width: 4, height: 1, type: 'static' });
+      world.createBox({ x: 0, y: -1, width: 1, height: 1, type: 'kinematic' });
+      const visitor = world.createBox({ x: 1, y: 0, width: 0.5, height: 0.5 });
+      world.step(DT);
+      const e = world.contactEvents();
+      const seen: number[] = [];
+      for (let k = 0; k < e.sensorBeginCount; k++) {
+        expect(e.sensorBeginSensor[k], carrier).toBe(sensor);
+        seen.push(world.getShape(e.sensorBeginVisitor[k]).body);
+      }
+      expect(seen, carrier).toEqual([visitor]);
+    }
+  });
   it('an overlap ends when its visitor falls asleep, on a static sensor and a kinematic one alike, and begins again when it wakes', () => {
     for (const type of ['static', 'kinematic'] as const) {
       const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, sleeping: true });

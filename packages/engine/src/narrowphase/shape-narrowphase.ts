@@ -395,6 +395,13 @@ export class ShapeNarrowPhase implements PairConsumer {
         const sensorB = record[rb + ShapeField.sensor];
         const sensing = sensorA !== sensorB;
         if (sensorA === 1 && sensorB === 1) continue;
+        if (sensing) {
+          // A sensor reports the shapes of dynamic bodies alone. A sleeping visitor's overlap
+          // ends, as it does with a static sensor, whose pair with a sleeper is never tested: a
+          // moving kinematic sensor would otherwise keep it.
+          const visitor = sensorA === 1 ? j : i;
+          if (bodies.type[visitor] !== TypeCode.dynamic || bodies.asleep[visitor]) continue;
+        }
         if (compound) {
           const ax = x[i] + c[i] * shapes.centroidX[sa] - s[i] * shapes.centroidY[sa];
           const ay = y[i] + s[i] * shapes.centroidX[sa] + c[i] * shapes.centroidY[sa];
@@ -427,10 +434,7 @@ export class ShapeNarrowPhase implements PairConsumer {
         const b = this.shapeB.fromPose(shapes, sb, pose, Pose.bx);
         const m = this.manifold;
         if (sensing) {
-          // A sensor reports overlap (any point closer than 0) and takes no contact. A sleeping
-          // visitor's overlap ends, as it does with a static sensor, whose pair with a sleeper is
-          // never tested: a moving kinematic sensor would otherwise keep it.
-          if (bodies.asleep[sensorA === 1 ? j : i]) continue;
+          // A sensor reports overlap (any point closer than 0) and takes no contact.
           collide(a, b, 0, slop, m);
           if (m.pointCount > 0 && (m.separation[0] < 0 || (m.pointCount === 2 && m.separation[1] < 0))) {
             if (sensorA === 1) this.noteSensor(sa, sb);
