@@ -1195,7 +1195,12 @@ export class World {
     return analytics.angularMomentum(this.bodies);
   }
 
-  /** 16 hex digits identifying the exact bits of every body's state; equal across runtimes. */
+  /**
+   * 16 hex digits identifying the exact bits of every body's motion: its slot, type, position,
+   * velocity, rotation and angular velocity; equal across runtimes. Not what no step changes (mass,
+   * shapes, materials, flags, joints): worlds built differently can hash alike, and `snapshot()`'s
+   * bytes compare whole worlds.
+   */
   stateHash(): string {
     return analytics.stateHash(this.bodies);
   }

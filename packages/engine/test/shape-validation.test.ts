@@ -27,8 +27,10 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
   it('polygons: not convex, too many vertices, duplicates, collinear points, no area', () => {
     refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 2, y: 0 }, { x: 1, y: 0.5 }, { x: 2, y: 2 }, { x: 0, y: 2 }] }), RangeError, /convex.*vertices\[2\] \(1, 0.5\)/);
     refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: Array.from({ length: 9 }, (_, k) => ({ x: Math.cos(k), y: Math.sin(k) })) }), RangeError, /3 to 8 points, got 9/);
-    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }] }), RangeError, /distinct: vertices\[2\] \(1, 0\) repeats vertices\[1\]/);
-    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 2, y: 0 }, { x: 1, y: 1 }] }), RangeError, /collinear: vertices\[1\] \(1, 0\)/);
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }] }), RangeError, /distinct, .*: vertices\[2\] \(1, 0\) lies 0 from vertices\[1\]/);
+    // Distinct but within a millionth of the polygon's size: the message says so, with the distance.
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1e-7, y: 0 }, { x: 1e-7, y: 1 }, { x: 0, y: 1 }] }), RangeError, /farther apart than 0\.000001 of the polygon's size \(1\): vertices\[1\] \(1e-7, 0\) lies 1e-7 from vertices\[0\]/);
+    refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 2, y: 0 }, { x: 1, y: 1 }] }), RangeError, /collinear, .*: vertices\[1\] \(1, 0\) lies 0 from it/);
     refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 2, y: 2 }] }), RangeError, /no area/);
     refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: NaN }, { x: 0, y: 1 }] }), TypeError, /vertices\[1\]\.y must be a finite number, got NaN/);
     refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: 'square' as never }), TypeError, /vertices must be an array/);

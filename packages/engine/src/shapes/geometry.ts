@@ -314,8 +314,8 @@ export function areaProperties(g: Geometry, out: AreaProperties): AreaProperties
 export type PolygonProblem =
   | { problem: 'count'; count: number }
   | { problem: 'area' }
-  | { problem: 'duplicate'; index: number; other: number }
-  | { problem: 'collinear'; index: number }
+  | { problem: 'duplicate'; index: number; other: number; distance: number; size: number }
+  | { problem: 'collinear'; index: number; distance: number; size: number }
   | { problem: 'concave'; index: number; edge: number };
 
 /** Points this close to each other, or to the line through their neighbours, relative to the polygon's size, are rejected. */
@@ -338,7 +338,7 @@ export function checkPolygon(xs: Float64Array, ys: Float64Array, count: number):
     for (let j = i + 1; j < count; j++) {
       const dx = xs[j] - xs[i];
       const dy = ys[j] - ys[i];
-      if (dx * dx + dy * dy <= tolerance * tolerance) return { problem: 'duplicate', index: j, other: i };
+      if (dx * dx + dy * dy <= tolerance * tolerance) return { problem: 'duplicate', index: j, other: i, distance: Math.sqrt(dx * dx + dy * dy), size };
     }
   }
   // From the first point, not the frame's origin: products of far coordinates would round away
@@ -365,7 +365,7 @@ export function checkPolygon(xs: Float64Array, ys: Float64Array, count: number):
     const length = Math.sqrt(ex * ex + ey * ey);
     // Distance of point i from the line through its neighbours, positive outside.
     const bulge = ((xs[i] - xs[p]) * ey - (ys[i] - ys[p]) * ex) / length;
-    if (Math.abs(bulge) <= tolerance) return { problem: 'collinear', index: reversed ? count - 1 - i : i };
+    if (Math.abs(bulge) <= tolerance) return { problem: 'collinear', index: reversed ? count - 1 - i : i, distance: Math.abs(bulge), size };
     // Inside the line through its neighbours: a reflex corner, the point where convexity fails.
     if (bulge < 0) return { problem: 'concave', index: reversed ? count - 1 - i : i, edge: reversed ? count - 1 - n : p };
   }

@@ -3,7 +3,7 @@ import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import type { NewShape } from '../store/shape-store.js';
 import { cosSin } from '../math/trig.js';
-import { areaProperties, checkPolygon, emptyAreaProperties, Geometry, MAX_POLYGON_VERTICES } from './geometry.js';
+import { areaProperties, checkPolygon, emptyAreaProperties, Geometry, MAX_POLYGON_VERTICES, POLYGON_TOLERANCE } from './geometry.js';
 import { boundedNonNegative, boundedNumber, boundedPositive, describeValue, finiteNumber, nonNegativeNumber, plainObject, knownKeys, MAX_SHAPE_REACH } from '../util/validate.js';
 import { bodyType, flag, layerBits, restitutionNumber, staticVelocity, type Vector } from '../options.js';
 
@@ -246,9 +246,13 @@ function polygonPoints(input: unknown): void {
     case 'area':
       throw new RangeError(`vertices enclose no area: the points ${input.map((_, k) => `(${(input[k] as Vector).x}, ${(input[k] as Vector).y})`).join(', ')} lie on one line or one spot, or their outline crosses itself so that its parts cancel`);
     case 'duplicate':
-      throw new RangeError(`vertices must be distinct: ${original(check.index)} repeats vertices[${check.other}]`);
+      throw new RangeError(
+        `vertices must be distinct, farther apart than ${POLYGON_TOLERANCE} of the polygon's size (${check.size}): ${original(check.index)} lies ${check.distance} from vertices[${check.other}]`,
+      );
     case 'collinear':
-      throw new RangeError(`vertices must not be collinear: ${original(check.index)} lies on the line through its neighbours; remove it`);
+      throw new RangeError(
+        `vertices must not be collinear, each farther than ${POLYGON_TOLERANCE} of the polygon's size (${check.size}) from the line through its neighbours: ${original(check.index)} lies ${check.distance} from it; remove it`,
+      );
     case 'concave':
       throw new RangeError(
         `vertices must form a convex polygon in order: ${original(check.index)} lies on the inner side of the line through vertices[${check.edge}] and its neighbour (a reflex corner, or edges that cross)`,
