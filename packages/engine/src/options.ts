@@ -47,8 +47,11 @@ export interface WorldOptions {
    * The contact solver of a world with shapes: 'soft', Box2D v3's soft step with sub-steps, which
    * holds stacks and piles; 'elastic', the report's single pass of exact impulses, which keeps the
    * kinetic energy of frictionless elastic collisions but cannot hold a stack; or 'auto' (the
-   * default): the report's circle engine while the world holds only frictionless circles, and
-   * the soft step once it has any other shape, friction, or a body made with createBody.
+   * default): the report's circle engine while the world holds only frictionless circles; once it
+   * has any other shape, friction or a body made with createBody, the elastic pass while it is an
+   * elastic gas (no gravity, no joints, nothing that takes contacts with friction, rolling
+   * resistance or restitution below 1, its own friction 0 and restitution at least 1) and the soft
+   * step otherwise, decided at every step.
    */
   solver?: 'auto' | 'elastic' | 'soft' | undefined;
   /** Sub-steps of the soft step. Default 4, as Box2D v3. An integer in [1, 64]. */

@@ -205,7 +205,24 @@ export class World {
   /** The route the next step takes: 'circles' (the report's engine) or 'shapes', and with it the solver. */
   get route(): { route: 'circles' | 'shapes'; solver: 'elastic' | 'soft' } {
     if (!this.shapes.engaged) return { route: 'circles', solver: 'elastic' };
-    return { route: 'shapes', solver: this.shapeRoute!.settings.solver };
+    return { route: 'shapes', solver: this.shapeSolver() };
+  }
+
+  /**
+   * The solver the shape route's next step uses: the one asked for, or with 'auto' the elastic
+   * pass while the world is an elastic gas (no gravity, no joints, the world's friction 0 and
+   * restitution at least 1, and so its walls and defaults, and every shape and segment that takes
+   * contacts frictionless, without rolling resistance, at restitution 1 or more: the report's
+   * scenes with shapes, whose energy that pass keeps), the soft step otherwise. A function of the
+   * world as it stands, checked at every step, so a restored snapshot makes the same choice.
+   */
+  private shapeSolver(): 'elastic' | 'soft' {
+    const asked = this.resolved.solver;
+    if (asked !== 'auto') return asked;
+    const g = this.pipeline.settings.gravity;
+    const material = this.defaultFriction === 0 && this.defaultRestitution >= 1;
+    const gas = g.x === 0 && g.y === 0 && material && (this.joints === null || this.joints.count === 0) && this.shapes.store.inelastic === 0 && this.segments.inelastic === 0;
+    return gas ? 'elastic' : 'soft';
   }
 
   /**
@@ -942,6 +959,13 @@ export class World {
     if (dt > MAX_DT) throw new RangeError(`dt must be at most ${MAX_DT} s (so that a step cannot overflow), got ${dt}`);
     this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
     if (this.shapeRoute) {
+      const solver = this.shapeSolver();
+      // Kept manifolds and impulses belong to the solver that made them (the elastic pass keeps
+      // none, and its impulses are whole collisions): the other starts from fresh contacts.
+      if (solver !== this.shapeRoute.settings.solver) {
+        this.shapeRoute.settings.solver = solver;
+        this.shapeRoute.narrow.current.clear();
+      }
       if (this.joints !== null) this.beginJointEvents();
       this.shapeRoute.run(dt, this.pipeline.broadPhase, this.staticVersion, this.pipeline.stats, this.queries, this.geometryVersion, this.pipeline.events, this.pipeline.settings.solver.hitThreshold);
       limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);

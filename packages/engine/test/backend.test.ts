@@ -48,7 +48,7 @@ describe('world.backend says what steps the world', () => {
     setSoftStepKernelEnabled(false);
     try {
       const off = build();
-      const box = new World();
+      const box = new World({ solver: 'soft' });
       box.createBox({ x: 0, y: 0, width: 1, height: 1 });
       expect(off.backend.bodyKernel).toEqual({ running: false, why: 'switched off (setBodyKernelEnabled)' });
       expect(off.backend.gridKernel).toEqual({ running: false, why: 'switched off (setGridKernelEnabled)' });

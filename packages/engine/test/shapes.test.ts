@@ -191,7 +191,7 @@ describe('bodies and shapes', () => {
   });
 
   it('torque, angular impulse and damping change the spin as I w = impulse', () => {
-    const world = new World();
+    const world = new World({ solver: 'soft' });
     const h = world.createBox({ x: 0, y: 0, width: 2, height: 2 });
     const inertia = world.getBody(h).inertia;
     world.applyAngularImpulse(h, 3);
@@ -215,7 +215,7 @@ describe('bodies and shapes', () => {
     const circles = new World();
     const ball = circles.createCircle({ x: 0, y: 0, radius: 0.5, vx: 10, linearDamping: c });
     for (const substeps of [1, 4, 8]) {
-      const world = new World({ substeps });
+      const world = new World({ substeps, solver: 'soft' });
       const box = world.createBox({ x: 0, y: 0, width: 1, height: 1, vx: 10, angularVelocity: 3, linearDamping: c, angularDamping: c });
       for (let s = 0; s < 60; s++) world.step(1 / 60);
       const factor = (1 + c / (60 * substeps)) ** (-60 * substeps);
@@ -260,9 +260,52 @@ describe('bodies and shapes', () => {
     const mixed = new World();
     mixed.createCircle({ x: 0, y: 0, radius: 1 });
     mixed.createBox({ x: 5, y: 0, width: 1, height: 1 });
-    expect(mixed.route).toEqual({ route: 'shapes', solver: 'soft' });
-    expect(new World({ friction: 0.5 }).route.route).toBe('shapes');
+    expect(mixed.route.route).toBe('shapes');
+    expect(new World({ friction: 0.5 }).route).toEqual({ route: 'shapes', solver: 'soft' });
     expect(new World({ solver: 'elastic', friction: 0.5 }).route).toEqual({ route: 'shapes', solver: 'elastic' });
+  });
+
+  it("'auto' takes the elastic pass while the world is an elastic gas, and the soft step once anything in it can lose energy", () => {
+    const world = new World({ bounds: { width: 100, height: 100 } });
+    const a = world.createBox({ x: 10, y: 10, width: 1, height: 1 });
+    const b = world.createCircle({ x: 20, y: 10, radius: 1 });
+    const solver = (): string => world.route.solver;
+    // No gravity, frictionless shapes and walls, restitution 1: the report's gas, whose energy the elastic pass keeps.
+    expect(solver()).toBe('elastic');
+    const rough = world.createBox({ x: 30, y: 10, width: 1, height: 1, friction: 0.5 });
+    expect(solver()).toBe('soft');
+    world.destroyBody(rough);
+    expect(solver()).toBe('elastic');
+    const soft = world.createCapsule({ x: 40, y: 10, length: 1, radius: 0.2, restitution: 0.9 });
+    expect(solver()).toBe('soft');
+    world.destroyBody(soft);
+    const rolling = world.createBody({ x: 50, y: 10 });
+    world.addShape(rolling, { kind: 'circle', radius: 1, rollingResistance: 0.1 });
+    expect(solver()).toBe('soft');
+    world.destroyBody(rolling);
+    // A sensor takes no contacts: its material cannot lose energy.
+    world.createBox({ x: 60, y: 10, width: 1, height: 1, friction: 0.5, sensor: true });
+    expect(solver()).toBe('elastic');
+    world.setGravity(0, 10);
+    expect(solver()).toBe('soft');
+    world.setGravity(0, 0);
+    expect(solver()).toBe('elastic');
+    const segment = world.createSegment({ x1: 0, y1: 50, x2: 100, y2: 50, thickness: 1, friction: 0.3 });
+    expect(solver()).toBe('soft');
+    world.destroySegment(segment);
+    expect(solver()).toBe('elastic');
+    const joint = world.createJoint({ kind: 'distance', bodyA: a, bodyB: b, length: 10 });
+    expect(solver()).toBe('soft');
+    world.destroyJoint(joint);
+    expect(solver()).toBe('elastic');
+    // A world whose own material (its walls', its defaults) loses energy, or a solver asked for, decide it too.
+    const lossy = new World({ bounds: { width: 100, height: 100 }, restitution: 0.5 });
+    lossy.createBox({ x: 10, y: 10, width: 1, height: 1, restitution: 1 });
+    expect(lossy.route.solver).toBe('soft');
+    expect(new World({ friction: 0.1 }).route.solver).toBe('soft');
+    const asked = new World({ solver: 'soft' });
+    asked.createBox({ x: 10, y: 10, width: 1, height: 1 });
+    expect(asked.route.solver).toBe('soft');
   });
 });
 

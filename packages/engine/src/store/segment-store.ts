@@ -35,6 +35,8 @@ export class SegmentStore {
   generation = new Uint32Array(0);
   /** Bumped on every add and remove, so the segment grid knows to rebuild. */
   version = 0;
+  /** Live segments with friction or restitution below 1 (see World's solver 'auto'). */
+  inelastic = 0;
   private freeSlots: number[] = [];
 
   add(segment: NewSegment): number {
@@ -50,6 +52,7 @@ export class SegmentStore {
     this.thickness[slot] = segment.thickness;
     this.restitution[slot] = segment.restitution;
     this.friction[slot] = segment.friction;
+    if (segment.friction > 0 || segment.restitution < 1) this.inelastic++;
     this.category[slot] = segment.category;
     this.mask[slot] = segment.mask;
     this.live[slot] = 1;
@@ -69,6 +72,7 @@ export class SegmentStore {
   }
 
   remove(slot: number): void {
+    if (this.friction[slot] > 0 || this.restitution[slot] < 1) this.inelastic--;
     this.live[slot] = 0;
     this.count--;
     this.version++;

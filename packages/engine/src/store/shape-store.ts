@@ -75,6 +75,8 @@ export class ShapeStore {
   areaInertia = new Float64Array(0);
   /** Bumped whenever shapes are added, removed or changed, for structures that index them. */
   version = 0;
+  /** Live shapes that take contacts and can lose energy in them: friction, rolling resistance or restitution below 1 (see World's solver 'auto'). */
+  inelastic = 0;
   private freeSlots: number[] = [];
 
   /** Stores a shape for body `slot`; returns the shape's slot. The caller links it to the body. */
@@ -96,6 +98,7 @@ export class ShapeStore {
     this.friction[slot] = shape.friction;
     this.restitution[slot] = shape.restitution;
     this.rollingResistance[slot] = shape.rollingResistance;
+    if (this.losesEnergy(slot)) this.inelastic++;
     this.category[slot] = shape.category;
     this.mask[slot] = shape.mask;
     const record = this.record;
@@ -126,12 +129,18 @@ export class ShapeStore {
   }
 
   remove(slot: number): void {
+    if (this.losesEnergy(slot)) this.inelastic--;
     this.live[slot] = 0;
     this.count--;
     this.version++;
     if (this.generation[slot] + 1 >= SHAPE_MAX_GENERATION) return;
     this.generation[slot]++;
     this.freeSlots.push(slot);
+  }
+
+  /** Whether shape `slot` takes contacts (not a sensor) in which it can lose energy. */
+  private losesEnergy(slot: number): boolean {
+    return this.sensor[slot] === 0 && (this.friction[slot] > 0 || this.rollingResistance[slot] > 0 || this.restitution[slot] < 1);
   }
 
   /** Moves every vertex and centroid of a shape by (dx, dy) in its body's frame. */
