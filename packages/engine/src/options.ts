@@ -455,6 +455,7 @@ export function shapeRouteSettings(resolved: ResolvedWorldOptions, gravity: Vect
   return {
     gravity,
     box: resolved.bounds,
+    // With 'auto', World.step sets this before every step (see World.shapeSolver).
     solver: resolved.solver === 'elastic' ? 'elastic' : 'soft',
     integrator: resolved.integrator,
     soft: {
@@ -471,7 +472,9 @@ export function shapeRouteSettings(resolved: ResolvedWorldOptions, gravity: Vect
       contactSlop: resolved.contactSlop,
     },
     // The elastic pass works on overlaps alone, so its bodies need no speculative reach: a margin
-    // would only widen every bounding circle and send more pairs to the narrow-phase.
+    // would only widen every bounding circle and send more pairs to the narrow-phase. 'auto' keeps
+    // the soft step's reach even while it takes the elastic pass, since it can move to the soft
+    // step at any step and the bounding radii are set when shapes are made.
     margin: resolved.solver === 'elastic' ? 0 : 4 * slop,
     slop,
     wallFriction: resolved.friction,
