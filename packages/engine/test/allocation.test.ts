@@ -38,17 +38,20 @@ async function engineBytesPerStep(world: World, steps: number): Promise<{ bytes:
 }
 
 /**
- * engineBytesPerStep, measured once more on the same world when the first window allocated
- * anything to speak of, and the lesser of the two: a function V8 deoptimised inside a window
- * (a branch first taken there, or its optimised code late on a loaded machine) boxes its numbers
- * until it is compiled again, which shows in one window, while an allocation per body or pair
- * shows in every window. (An allocation made only in bursts, one window in two, would pass.)
+ * engineBytesPerStep, measured again on the same world while a window allocated anything to speak
+ * of (up to four windows), and the least of them: a function V8 deoptimised inside a window (a
+ * branch first taken there, or its optimised code late on a loaded machine) boxes its numbers
+ * until it is compiled again, which shows in some windows, while an allocation per body or pair
+ * shows in every window. On a CI machine running other test files beside this one, recompiling
+ * has been seen to lag through two windows. (An allocation made only in bursts would pass.)
  */
 async function leastBytesPerStep(world: World, steps: number): Promise<{ bytes: number; where: string }> {
-  const first = await engineBytesPerStep(world, steps);
-  if (first.bytes < 512) return first;
-  const second = await engineBytesPerStep(world, steps);
-  return second.bytes < first.bytes ? second : first;
+  let least = await engineBytesPerStep(world, steps);
+  for (let window = 1; window < 4 && least.bytes >= 512; window++) {
+    const next = await engineBytesPerStep(world, steps);
+    if (next.bytes < least.bytes) least = next;
+  }
+  return least;
 }
 
 /** Boxes on prismatic joints (limit, motor, spring) above the ground, each carrying a wheel on a wheel joint; no segments. */
