@@ -59,6 +59,20 @@ export class WorldShape {
     return this;
   }
 
+  /** This shape made a copy of `from`. */
+  copy(from: WorldShape): this {
+    this.kind = from.kind;
+    this.count = from.count;
+    this.radius = from.radius;
+    for (let i = 0; i < from.count; i++) {
+      this.x[i] = from.x[i];
+      this.y[i] = from.y[i];
+      this.nx[i] = from.nx[i];
+      this.ny[i] = from.ny[i];
+    }
+    return this;
+  }
+
   /** A circle of radius r at (cx, cy). */
   circle(cx: number, cy: number, r: number): this {
     this.kind = ShapeKind.circle;

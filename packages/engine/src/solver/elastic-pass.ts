@@ -1,9 +1,13 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { ContactList, ContactPoint, POINT_STRIDE, WORLD } from '../narrowphase/contact-list.js';
+import { twoPointImpulses } from './two-point-impulses.js';
 
 // The contact point record's fields as this module's own constants, which V8 folds into the code.
 const { anchorAX: PT_ANCHOR_AX, anchorAY: PT_ANCHOR_AY, anchorBX: PT_ANCHOR_BX, anchorBY: PT_ANCHOR_BY, approachSpeed: PT_APPROACH_SPEED, normalImpulse: PT_NORMAL_IMPULSE, separation: PT_SEPARATION, totalNormalImpulse: PT_TOTAL_NORMAL_IMPULSE } = ContactPoint;
+
+/** twoPointImpulses' answer. */
+const impulses = new Float64Array(2);
 
 export interface ElasticSettings {
   restitutionThreshold: number;
@@ -18,8 +22,7 @@ export interface ElasticSettings {
  * 1. takes the collision impulse that reverses its points' approach, scaled by restitution e
  *    (the largest of the two shapes', 0 below the threshold): with one point,
  *    j = -(1 + e) vn / K, K = 1/ma + 1/mb + (ra x n)^2 / Ia + (rb x n)^2 / Ib; with two, the
- *    two-point problem is solved as a block (both points, or one, or none take an impulse), so
- *    that a box landing flat bounces flat instead of rocking. Every point that takes an impulse
+ *    two-point problem is solved as a block (twoPointImpulses). Every point that takes an impulse
  *    leaves with -e times its approach speed, so at e = 1 without friction each contact keeps
  *    the kinetic energy, linear plus rotational, to round-off (see the energy test);
  * 2. with friction, a Coulomb impulse along the tangent at each point, at most mu times its
@@ -109,38 +112,9 @@ export class ElasticPass {
         } else {
           const k11 = mA + mB + iA * rn1a * rn1a + iB * rn1b * rn1b;
           const k01 = mA + mB + iA * rn0a * rn1a + iB * rn0b * rn1b;
-          const det = k00 * k11 - k01 * k01;
-          // Each point's target: u' >= -e u, with complementarity; try both, then each alone.
-          const b0 = scale * u0;
-          const b1 = scale * u1;
-          let solved = false;
-          if (det > 1e-9 * k00 * k11) {
-            const q0 = (-k11 * b0 + k01 * b1) / det;
-            const q1 = (k01 * b0 - k00 * b1) / det;
-            if (q0 >= 0 && q1 >= 0) {
-              p0 = q0;
-              p1 = q1;
-              solved = true;
-            }
-          }
-          // A released point's speed is checked with a tolerance for round-off: a flat face (or
-          // fixed rotation) makes the two points move alike, and a target met to the last bit
-          // must count as met.
-          const tolerance = 1e-9 * (Math.abs(b0) + Math.abs(b1));
-          if (!solved && k00 > 0) {
-            const q0 = -b0 / k00;
-            if (q0 >= 0 && k01 * q0 + b1 >= -tolerance) {
-              p0 = q0;
-              solved = true;
-            }
-          }
-          if (!solved && k11 > 0) {
-            const q1 = -b1 / k11;
-            if (q1 >= 0 && k01 * q1 + b0 >= -tolerance) {
-              p1 = q1;
-              solved = true;
-            }
-          }
+          twoPointImpulses(k00, k11, k01, scale * u0, scale * u1, impulses);
+          p0 = impulses[0];
+          p1 = impulses[1];
         }
         if (p0 !== 0 || p1 !== 0) {
           const px = (p0 + p1) * nx;
