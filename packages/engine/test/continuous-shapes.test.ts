@@ -327,4 +327,18 @@ describe('continuous collision with shapes', () => {
       expect(world.kineticEnergy()).toBeCloseTo(0.5 * 0.01 * speed * speed, 9);
     }
   });
+  it.each(['elastic', 'soft'] as const)('a box struck into a thin wall it touches does not go through it (%s)', (solver) => {
+    for (const speed of [5, 20]) {
+      for (const gap of [0, 0.001, 0.01]) {
+        const world = new World({ restitution: 1, friction: 0, solver });
+        world.createBox({ x: -0.025, y: 0, width: 0.05, height: 40, type: 'static' });
+        const near = world.createBox({ x: 0.05 + gap, y: 0, width: 0.1, height: 0.1 });
+        world.createBox({ x: 1, y: 0, width: 0.1, height: 0.1, vx: -speed });
+        for (let s = 0; s < 60; s++) {
+          world.step(DT);
+          expect(world.getBody(near).x, `${speed} m/s, ${gap} m away, step ${s}`).toBeGreaterThan(0);
+        }
+      }
+    }
+  });
 });

@@ -255,7 +255,11 @@ export class ContinuousShapes {
         best = this.note(toi, best, otherRestitution, t);
         continue;
       }
-      best = this.note(timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, core), best, otherRestitution, t);
+      // The core disc too may start the step touching, where a contact's push left the body deep
+      // in a thin wall (the elastic pass pushes each contact's bodies apart forgetting the others):
+      // then its centroid alone, as a point, so that the body cannot go on through.
+      const coreImpact = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, core);
+      best = this.note(coreImpact !== TOUCHING ? coreImpact : timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, 0), best, otherRestitution, t);
       // The corners of a polygon, and the ends of a capsule's core, that start the step clear
       // and end it inside the other shape or past it: the contact holds only the points near at
       // the step's start, and a long body turning about one of them can carry the far ones
