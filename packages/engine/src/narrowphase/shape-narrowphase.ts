@@ -22,8 +22,8 @@ const LINE = 8;
 const readAheadSink = new Float64Array(READ_AHEAD);
 
 /**
- * Loads the memory that candidate pairs lo/hi[from..to) are about to read: both bodies' poses,
- * and each body's first shape's oriented box and record, every cache line of it. Its iterations
+ * Loads the memory that candidate pairs lo/hi[from..to) are about to read: both bodies' poses and
+ * shape counts, and each body's first shape's oriented box and record, every cache line of it. Its iterations
  * are independent short runs of loads, which the core keeps many of in flight at once; in the
  * pair loop each pair's misses wait behind the work of the pair before it. JavaScript has no
  * prefetch, so the loads are summed into readAheadSink. Reading a few pairs ahead inside the
@@ -32,12 +32,12 @@ const readAheadSink = new Float64Array(READ_AHEAD);
  */
 function readAhead(bodies: BodyStore, shapes: ShapeStore, lo: Int32Array, hi: Int32Array, from: number, to: number): void {
   const { x, y } = bodies;
-  const { c, s, firstShape } = bodies.rigid!;
+  const { c, s, firstShape, shapeCount } = bodies.rigid!;
   const { record, box } = shapes;
   for (let k = from; k < to; k++) {
     const i = lo[k];
     const j = hi[k];
-    let sum = x[i] + y[i] + c[i] + s[i] + x[j] + y[j] + c[j] + s[j];
+    let sum = x[i] + y[i] + c[i] + s[i] + x[j] + y[j] + c[j] + s[j] + shapeCount[i] + shapeCount[j];
     const sa = firstShape[i];
     const sb = firstShape[j];
     if (sa >= 0) {
@@ -448,7 +448,8 @@ export class ShapeNarrowPhase implements PairConsumer {
         const friction = Math.sqrt(shapes.friction[sa] * shapes.friction[sb]);
         const restitution = Math.max(shapes.restitution[sa], shapes.restitution[sb]);
         // Box2D's rule: the larger coefficient times the larger radius, a lever arm for the torque.
-        const rolling = Math.max(shapes.rollingResistance[sa], shapes.rollingResistance[sb]) * Math.max(shapes.radius[sa], shapes.radius[sb]);
+        const resistance = Math.max(shapes.rollingResistance[sa], shapes.rollingResistance[sb]);
+        const rolling = resistance > 0 ? resistance * Math.max(record[ra + ShapeField.radius], record[rb + ShapeField.radius]) : 0;
         let k = q;
         pose[Pose.friction] = friction;
         pose[Pose.restitution] = restitution;
