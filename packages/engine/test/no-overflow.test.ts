@@ -394,12 +394,14 @@ describe('no NaN or infinity from finite input', () => {
     }
   });
 
-  it('shapeless bodies all at one point (radius 0, no margin) step and answer queries on every broad-phase', () => {
-    // Found by an audit: cells of size 0 made the grid NaN columns wide, and its kernel divided by zero.
+  it.each([0, 1e-300, 1e-310, 5e-324])('shapeless bodies all at or next to one point (%s; radius 0, no margin) step and answer queries on every broad-phase', (at) => {
+    // Found by audits: cells of size 0 made the grid NaN columns wide, and its kernel divided by
+    // zero; so did cells a few ulps of 1e-300 wide (padded for coordinates that small), whose inverse
+    // overflows, at every later step too.
     for (const broadphase of ['maxgrid', 'hgrid', 'auto', 'naive'] as const) {
       for (const bounds of [null, { width: 10, height: 10 }]) {
         const world = new World({ solver: 'elastic', broadphase, bounds });
-        for (let k = 0; k < 3; k++) world.createBody({ x: 0, y: 0, bullet: k === 2 });
+        for (let k = 0; k < 3; k++) world.createBody({ x: at, y: k === 1 ? at : 0, bullet: k === 2 });
         for (let s = 0; s < 3; s++) {
           world.step(1 / 60);
           assertFinite(world, bounds, { op: 'step', dt: 1 / 60 });

@@ -121,8 +121,9 @@ export class CellGrid {
   /** Sizes the grid and its buffers for `n` bodies, without binning them (see `build`). */
   layout(minX: number, minY: number, maxX: number, maxY: number, minCellSize: number, cellBudget: number, n: number): void {
     // Bodies of radius 0 (shapeless, with no margin to pad them) all at one point ask for cells of
-    // size 0, whose inverse would make the grid NaN columns wide: any size then does.
-    let cellSize = minCellSize > 0 ? minCellSize : 1;
+    // size 0, or near 1e-300 only a few ulps wide, whose inverse (infinite) would make the grid
+    // NaN columns wide: any size then does.
+    let cellSize = minCellSize > 0 && 1 / minCellSize < Infinity ? minCellSize : 1;
     let inv = 1 / cellSize;
     let columns = Math.floor((maxX - minX) * inv) + 1;
     let rows = Math.floor((maxY - minY) * inv) + 1;
