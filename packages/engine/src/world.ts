@@ -53,7 +53,7 @@ import { StepPipeline } from './step/pipeline.js';
 import { checkWorkerCount, DEFAULT_MIN_BODIES, ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
 import type { CircleIntegratorName, IntegratorName } from './integrate/integrator.js';
-import { MAX_DT, MAX_MAGNITUDE, MAX_SHAPE_REACH, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
+import { MAX_DT, MIN_DT, MAX_MAGNITUDE, MAX_SHAPE_REACH, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
 import { flag } from './options.js';
 import { copyOptions, field, holdsObject, numberField, readSnapshot, writeOnto, writeSnapshot } from './snapshot/world-snapshot.js';
 import {
@@ -952,11 +952,15 @@ export class World {
     return this.pipeline.parallel?.threads ?? 1;
   }
 
-  /** Advances the world by `dt` seconds. Allocates nothing once buffers have grown to the scene. */
+  /**
+   * Advances the world by `dt` seconds: 0, or within [1e-100, 1e6] (a RangeError otherwise).
+   * Allocates nothing once buffers have grown to the scene.
+   */
   step(dt: number): void {
     finiteNumber('dt', dt);
     if (dt < 0) throw new RangeError(`dt must be >= 0, got ${dt}`);
     if (dt > MAX_DT) throw new RangeError(`dt must be at most ${MAX_DT} s (so that a step cannot overflow), got ${dt}`);
+    if (dt > 0 && dt < MIN_DT) throw new RangeError(`dt must be 0 or at least ${MIN_DT} s (so that a step cannot overflow), got ${dt}`);
     this.disturbances.wakeTouching(this.bodies, this.queries, this.geometryVersion, this.pipeline.settings.solver.contactSlop);
     if (this.shapeRoute) {
       const solver = this.shapeSolver();

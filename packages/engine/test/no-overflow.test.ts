@@ -413,6 +413,35 @@ describe('no NaN or infinity from finite input', () => {
     }
   });
 
+  it('a step shorter than 1e-100 s (but 0) is refused by name, the world unchanged; springs stay finite at 1e-100', () => {
+    // Found by an audit: a spring's bias rate is 1 / its sub-step, infinite below 1 / DBL_MAX, and a
+    // step that rounded a sub-step to 0 made damped springs and target joints 0 / 0.
+    for (const substeps of [1, 64]) {
+      const world = new World({ substeps });
+      const ground = world.createBox({ x: 0, y: 5, width: 20, height: 1, type: 'static' });
+      const a = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+      const b = world.createBox({ x: 2, y: 0, width: 1, height: 1 });
+      const c = world.createBox({ x: 4, y: 0, width: 1, height: 1 });
+      world.createJoint({ kind: 'distance', bodyA: a, bodyB: b, hertz: 5 });
+      world.createJoint({ kind: 'distance', bodyA: a, bodyB: c, hertz: 5, dampingRatio: 0.5 });
+      world.createJoint({ kind: 'revolute', bodyA: ground, bodyB: a, anchorA: { x: 0, y: -5 }, hertz: 5, lowerAngle: -1, upperAngle: 1 });
+      world.createJoint({ kind: 'wheel', bodyA: b, bodyB: c });
+      world.createJoint({ kind: 'weld', bodyA: ground, bodyB: c, linearHertz: 3, angularHertz: 2 });
+      world.createJoint({ kind: 'target', body: b, target: { x: 3, y: 1 } });
+      const before = world.snapshot();
+      for (const dt of [1e-101, 1e-307, 1e-310, 5e-324]) {
+        expect(() => world.step(dt)).toThrow(new RangeError(`dt must be 0 or at least 1e-100 s (so that a step cannot overflow), got ${dt}`));
+      }
+      expect(Buffer.from(world.snapshot()).equals(Buffer.from(before))).toBe(true);
+      for (const dt of [0, 1e-100, 1e-60, 1e-20]) {
+        for (let s = 0; s < 3; s++) {
+          world.step(dt);
+          assertFinite(world, null, { op: 'step', dt });
+        }
+      }
+    }
+  });
+
   it('a joint anchor farther from its body than a shape may reach (1e50) is refused by name, the world unchanged', () => {
     const world = new World();
     const a = world.createBox({ x: 0, y: 0, width: 1, height: 1 });

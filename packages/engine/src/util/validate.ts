@@ -35,6 +35,11 @@ export const MAX_MAGNITUDE = 1e100;
 export const MAX_SHAPE_REACH = 1e50;
 /** The longest step: a million seconds. */
 export const MAX_DT = 1e6;
+/**
+ * The shortest step but 0: 1 / MAX_MAGNITUDE. A spring's bias rate is 1 / its sub-step, infinite
+ * below 1 / the largest double, and a sub-step rounded to 0 makes a damped one 0 / 0.
+ */
+export const MIN_DT = 1 / MAX_MAGNITUDE;
 /** The most a restitution may multiply an approach speed by. */
 export const MAX_RESTITUTION = 1000;
 
