@@ -413,6 +413,18 @@ describe('no NaN or infinity from finite input', () => {
     }
   });
 
+  it('a tiny dense polygon whose inertia rounds to a subnormal steps finite on the ground', () => {
+    // Found by an audit: its inertia came out 1e-323, and 1 / that is infinite.
+    const world = new World({ gravity: { x: 0, y: 10 } });
+    const tiny = world.createPolygon({ x: 0, y: 0, density: 1e100, vertices: [{ x: 2e-100, y: 0 }, { x: -1e-100, y: 1.7320508075688774e-100 }, { x: 0, y: -1.7320508075688768e-97 }] });
+    world.createBox({ x: 0, y: 0.5, width: 2, height: 1, type: 'static' });
+    expect(world.getBody(tiny).inertia).toBeLessThan(1e-300);
+    for (let s = 0; s < 30; s++) {
+      world.step(1 / 60);
+      assertFinite(world, null, { op: 'step', dt: 1 / 60 });
+    }
+  });
+
   it('a step shorter than 1e-100 s (but 0) is refused by name, the world unchanged; springs stay finite at 1e-100', () => {
     // Found by an audit: a spring's bias rate is 1 / its sub-step, infinite below 1 / DBL_MAX, and a
     // step that rounded a sub-step to 0 made damped springs and target joints 0 / 0.

@@ -439,5 +439,8 @@ export class BodyStore {
 /** 1 / inertia for a dynamic body free to turn; 0 for one with fixed rotation or no inertia. */
 function inverseInertia(rigid: RigidColumns, slot: number): number {
   const inertia = rigid.inertia[slot];
-  return inertia > 0 && (rigid.flags[slot] & BodyFlag.fixedRotation) === 0 ? 1 / inertia : 0;
+  // An inertia rounded to a subnormal (a dense shape 1e-100 across) has no finite inverse: such a
+  // body does not turn, as one whose inertia rounded to 0.
+  const inverse = 1 / inertia;
+  return inertia > 0 && inverse < Infinity && (rigid.flags[slot] & BodyFlag.fixedRotation) === 0 ? inverse : 0;
 }
