@@ -287,8 +287,9 @@ export class World {
    * A new world from `snapshot()`'s bytes, stepping to the same bits as the world they came from
    * (without worker threads: start them again). A corrupt, cut, or future-format snapshot, or one
    * an engine with another state layout wrote, is a RangeError saying so; nothing is built. So is
-   * one whose hash holds but whose bodies hold a value no step reaches (a NaN or infinite
-   * coordinate, velocity, mass or force, a negative mass, a rotation that is not a unit vector).
+   * one whose hash holds but whose gravity or bodies hold a value no step reaches (a NaN or
+   * infinite coordinate, velocity, mass or force, a negative mass, a rotation that is not a unit
+   * vector).
    */
   static restore(snapshot: Uint8Array): World {
     const read = readSnapshot(snapshot);
@@ -1837,10 +1838,14 @@ export class World {
 
   /**
    * The snapshot's hash catches damage, not a payload rewritten with a consistent hash: before a
-   * restored world is handed out, every live body's state must be one that steps could reach, so
-   * that no NaN or infinity enters a step through a snapshot.
+   * restored world is handed out, its gravity and every live body's state must be ones that steps
+   * could reach, so that no NaN or infinity enters a step through a snapshot.
    */
   private checkRestoredBodies(): void {
+    const { x: gx, y: gy } = this.pipeline.settings.gravity;
+    if (!(Math.abs(gx) <= MAX_MAGNITUDE && Math.abs(gy) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`snapshot is corrupt: gravity (${gx}, ${gy}) is beyond ${MAX_MAGNITUDE}, where no step can take it`);
+    }
     const b = this.bodies;
     const rigid = b.rigid;
     const columns: [string, Float64Array][] = [['x', b.x], ['y', b.y], ['vx', b.vx], ['vy', b.vy], ['radius', b.radius], ['mass', b.mass], ['invMass', b.invMass], ['forceX', b.forceX], ['forceY', b.forceY]];

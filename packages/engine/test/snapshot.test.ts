@@ -320,5 +320,24 @@ describe('snapshots', () => {
       rehash(fine);
       expect(World.restore(fine).getBody(h).x).toBe(5);
     });
+
+    it('gravity no step could use, under a consistent hash, is refused by name', () => {
+      // Found by an audit: the live gravity (a copy of the creation options' is checked with them)
+      // came back NaN, and the first step spread it to every body.
+      const world = new World({ gravity: { x: 0, y: 9.8125 }, solver: 'soft' });
+      world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+      world.setGravity(0, 9.8130859375);
+      const clean = world.snapshot();
+      for (const bad of [Number.NaN, Number.POSITIVE_INFINITY, 1e300]) {
+        const forged = clean.slice();
+        new DataView(forged.buffer).setFloat64(findDouble(clean, 9.8130859375), bad, true);
+        rehash(forged);
+        expect(() => World.restore(forged)).toThrow(new RangeError(`snapshot is corrupt: gravity (0, ${bad}) is beyond 1e+100, where no step can take it`));
+        const before = world.stateHash();
+        expect(() => world.restore(forged)).toThrow(/snapshot is corrupt: gravity/);
+        expect(world.stateHash()).toBe(before);
+        expect(world.gravity).toEqual({ x: 0, y: 9.8130859375 });
+      }
+    });
   });
 });
