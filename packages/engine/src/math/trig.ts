@@ -62,7 +62,7 @@ export function cosSin(angle: number, out: Float64Array | number[]): void {
   const s = sinKernel(r);
   // The quadrant, k mod 4 in [0, 4): |k| is at most 2^20 + 1 here, so the low two bits of its
   // 32-bit two's complement are exactly that, also for negative k. (`%` on a double compiles to a
-  // call in V8, some 20 ns: a fast-spinning body's turn takes this path at every step.)
+  // call in V8, and a fast-spinning body's turn takes this path at every step.)
   const quadrant = (k | 0) & 3;
   if (quadrant === 0) {
     out[0] = c;

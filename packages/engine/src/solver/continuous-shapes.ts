@@ -296,9 +296,9 @@ export class ContinuousShapes {
    * below the threshold). The impact's own witness point alone where that contact has no point
    * (the impact found by a corner's crossing, say, then already past the surface's end).
    *
-   * The witness point alone for every impact spun bodies that met a face flat: one that starts a
-   * step within the slop of a face is swept as a core disc and by its corners, whose impact is a
-   * single point, and 0.1 m boxes struck flat at 10 m/s left spinning at 240 rad/s.
+   * Not the witness point alone: a body that starts a step within the slop of a face is swept as a
+   * core disc and by its corners, whose impact is a single point, and an impulse there alone would
+   * spin a body that meets the face flat.
    */
   private bounce(bodies: BodyStore, shapes: ShapeStore, i: number, threshold: number, slop: number): void {
     const rigid = bodies.rigid!;
@@ -306,7 +306,7 @@ export class ContinuousShapes {
     const py = bodies.y[i];
     moving.fromStore(shapes, this.hitShape, px, py, rigid.c[i], rigid.s[i]);
     collide(moving, hitOther, 4 * slop, slop, manifold);
-    let n = 0;
+    let n = 1;
     // The normal from the body towards the other thing, and each point's arm.
     let nx = this.hitNx;
     let ny = this.hitNy;
@@ -320,13 +320,12 @@ export class ContinuousShapes {
       const first = manifold.pointCount === 2 && manifold.separation[1] < manifold.separation[0] ? 1 : 0;
       r0x = manifold.x[first] - px;
       r0y = manifold.y[first] - py;
-      n = 1;
       if (manifold.pointCount === 2 && manifold.separation[1 - first] <= manifold.separation[first] + TOGETHER * slop) {
         r1x = manifold.x[1 - first] - px;
         r1y = manifold.y[1 - first] - py;
         n = 2;
       }
-    } else n = 1;
+    }
     const m = bodies.invMass[i];
     const inertia = rigid.invInertia[i];
     const vx = bodies.vx[i];
