@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { World } from '../src/index.js';
-import { cos, sin, atan2, cosSin } from '../src/math/trig.js';
+import { cos, sin, atan2, cosSin, turn } from '../src/math/trig.js';
 
 describe('deterministic trigonometry (the engine never calls Math.sin in a step)', () => {
   it('cos, sin and atan2 agree with the runtime to a few ulps over many turns', () => {
@@ -28,6 +28,44 @@ describe('deterministic trigonometry (the engine never calls Math.sin in a step)
     }
     // The reduction by pi/2 in three parts keeps some 1e-10 at a million radians.
     expect(worst).toBeLessThan(1e-9);
+  });
+
+  it('turn by up to a quarter turn gives the bits of the rotation cosSin makes, on both sides of its bounds', () => {
+    const c = new Float64Array(1);
+    const s = new Float64Array(1);
+    const angleIO = new Float64Array(1);
+    const out = new Float64Array(2);
+    const angles: number[] = [];
+    for (let k = 0; k <= 2000; k++) angles.push(0.1 + (k / 2000) * 0.8);
+    // Eight doubles each side of the bounds turn switches at: 1/8, and where angle * 2 / pi rounds to 1.
+    const bits = new Float64Array(1);
+    const ints = new BigInt64Array(bits.buffer);
+    for (const edge of [0.125, Math.PI / 4, 0.5 / 0.6366197723675814]) {
+      for (let k = -8; k <= 8; k++) {
+        bits[0] = edge;
+        ints[0] += BigInt(k);
+        angles.push(bits[0]);
+      }
+    }
+    let compared = 0;
+    for (const a of angles) {
+      for (const angle of [a, -a]) {
+        const c0 = 0.6;
+        const s0 = -0.8;
+        c[0] = c0;
+        s[0] = s0;
+        angleIO[0] = angle;
+        turn(c, s, 0, angleIO);
+        if (Math.abs(angle) < 0.125) continue;
+        cosSin(angle, out);
+        const c2 = c0 * out[0] - s0 * out[1];
+        const s2 = s0 * out[0] + c0 * out[1];
+        const f = 1.5 - 0.5 * (c2 * c2 + s2 * s2);
+        expect([c[0], s[0]], `${angle}`).toEqual([c2 * f, s2 * f]);
+        compared++;
+      }
+    }
+    expect(compared).toBeGreaterThan(3000);
   });
 
   it('rotations built from an angle are unit length and turn +x towards +y for positive angles', () => {
