@@ -304,7 +304,7 @@ export class World {
     const capacity = numberField(field(state, 'bodies', 'capacity'));
     if (capacity > 0) world.bodies.reserve(capacity);
     writeOnto(world, read);
-    world.checkRestoredBodies();
+    world.checkRestoredState();
     // Columns a parallel step had moved onto shared memory come back to this thread's own.
     if (world.bodies.shared) world.bodies.setShared(false);
     if (world.pipeline.contacts.shared) world.pipeline.contacts.setShared(false);
@@ -1841,7 +1841,7 @@ export class World {
    * restored world is handed out, its gravity and every live body's state must be ones that steps
    * could reach, so that no NaN or infinity enters a step through a snapshot.
    */
-  private checkRestoredBodies(): void {
+  private checkRestoredState(): void {
     const { x: gx, y: gy } = this.pipeline.settings.gravity;
     if (!(Math.abs(gx) <= MAX_MAGNITUDE && Math.abs(gy) <= MAX_MAGNITUDE)) {
       throw new RangeError(`snapshot is corrupt: gravity (${gx}, ${gy}) is beyond ${MAX_MAGNITUDE}, where no step can take it`);

@@ -186,9 +186,10 @@ const SMALL_TURN = 0.125;
 
 /**
  * Turns the rotation (c[i], s[i]) by the angle in angleIO[0] (an array, since V8 boxes a number
- * passed to a call it does not inline, one allocation per body and step) exactly: by cos(angle) and sin(angle) from the short
- * Taylor series (to angle^11 and angle^10) where |angle| < 1/8, as a step's turn nearly always is,
- * from cosSin's longer series within a quarter turn, and from cosSin itself beyond. The product is renormalised by one Newton step towards 1/length
+ * passed to a call it does not inline, one allocation per body and step) exactly: by cos(angle)
+ * and sin(angle) from the short Taylor series (to angle^11 and angle^10) where |angle| < 1/8, as a
+ * step's turn nearly always is, from cosSin's longer series within a quarter turn, and from cosSin
+ * itself beyond. The product is renormalised by one Newton step towards 1/length
  * (1.5 - length^2/2), exact to round-off for a length within 1e-8 of 1, which round-off keeps it:
  * a rotation turned a million times stays a rotation, and costs no square root or division.
  */
@@ -200,15 +201,18 @@ export function turn(c: Float64Array, s: Float64Array, i: number, angleIO: Float
     const z = angle * angle;
     sa = angle + angle * z * (S3 + z * (S5 + z * (S7 + z * (S9 + z * S11))));
     ca = 1 + z * (C2 + z * (C4 + z * (C6 + z * (C8 + z * C10))));
-  } else if (angle * TWO_OVER_PI >= -0.5 && angle * TWO_OVER_PI < 0.5) {
-    // Within a quarter turn cosSin rounds angle * 2 / pi to 0 and reduces by nothing: its series
-    // of the angle itself, the same bits without the reduction and the call.
-    ca = cosKernel(angle);
-    sa = sinKernel(angle);
   } else {
-    cosSin(angle, scratch);
-    ca = scratch[0];
-    sa = scratch[1];
+    const quarters = angle * TWO_OVER_PI;
+    if (quarters >= -0.5 && quarters < 0.5) {
+      // Within a quarter turn cosSin rounds angle * 2 / pi to 0 and reduces by nothing: its series
+      // of the angle itself, the same bits without the reduction and the call.
+      ca = cosKernel(angle);
+      sa = sinKernel(angle);
+    } else {
+      cosSin(angle, scratch);
+      ca = scratch[0];
+      sa = scratch[1];
+    }
   }
   const c0 = c[i];
   const s0 = s[i];

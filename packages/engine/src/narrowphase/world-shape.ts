@@ -59,7 +59,7 @@ export class WorldShape {
     return this;
   }
 
-  /** This shape made a copy of `from`. */
+  /** Makes this shape a copy of `from`. */
   copy(from: WorldShape): this {
     this.kind = from.kind;
     this.count = from.count;

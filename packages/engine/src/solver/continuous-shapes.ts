@@ -29,6 +29,11 @@ const CORE = 0.25;
  * meet it together in the elastic pass's bounce: a box arriving flat bounces on both corners.
  */
 const TOGETHER = 1;
+/**
+ * How far, in slops, the bounce's contact looks for points: the sweep leaves the body one slop
+ * (give or take a quarter) from what it met, and a flat face's far corner a little farther.
+ */
+const BOUNCE_REACH = 4;
 
 const rotation = new Float64Array(2);
 const other = new WorldShape();
@@ -305,7 +310,7 @@ export class ContinuousShapes {
     const px = bodies.x[i];
     const py = bodies.y[i];
     moving.fromStore(shapes, this.hitShape, px, py, rigid.c[i], rigid.s[i]);
-    collide(moving, hitOther, 4 * slop, slop, manifold);
+    collide(moving, hitOther, BOUNCE_REACH * slop, slop, manifold);
     let n = 1;
     // The normal from the body towards the other thing, and each point's arm.
     let nx = this.hitNx;
