@@ -191,7 +191,12 @@ export class SoftStep {
   }
 
   solve(bodies: BodyStore, contacts: ContactList, gx: number, gy: number, dt: number, settings: SoftSettings, joints: JointSolver | null): void {
-    if (dt === 0) return;
+    if (dt === 0) {
+      // This step's contacts, which the next step's may equal (ContactList.unchanged), go
+      // uncoloured: the colouring is not theirs.
+      this.colouredCount = -1;
+      return;
+    }
     this.gatherBodies(bodies, settings.maxLinearSpeed, MAX_ROTATION / dt);
     const substeps = settings.substeps;
     const h = dt / substeps;
