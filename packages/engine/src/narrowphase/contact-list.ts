@@ -89,6 +89,7 @@ const COLUMNS = [
   ['points', 2 * POINT_STRIDE],
   ['id', 2],
   ['recycle', RECYCLE],
+  ['kept', 1],
   ['listed', 1],
 ] as const;
 type ColumnName = (typeof COLUMNS)[number][0];
@@ -130,6 +131,11 @@ export class ContactList {
    * to A then, in one run of memory, since recycling reads them all of a contact at once.
    */
   recycle = new Float64Array(0);
+  /**
+   * Per contact, 1 where this step's list kept its manifold from last step's (see keep): its
+   * normal, anchors, material and point count are those the solver last prepared it with.
+   */
+  kept = new Uint8Array(0);
   private capacity = 0;
   /** Slots handed out so far; those below it not in use are on the free list. */
   private slotCount = 0;
@@ -305,11 +311,18 @@ export class ContactList {
     this.list(k);
   }
 
-  /** Lists contact k in this step's order: a new one, or one kept from last step (see ShapeNarrowPhase.recycle). */
-  list(k: number): void {
+  /** Lists contact k, listed last step, with its manifold kept (see ShapeNarrowPhase.recycle). */
+  keep(k: number): void {
+    this.list(k);
+    this.kept[k] = 1;
+  }
+
+  /** Lists contact k in this step's order, with a manifold computed this step. */
+  private list(k: number): void {
     if (this.count === this.order.length) this.order = grow(this.order, grownCapacity(this.order.length, this.count + 1));
     this.order[this.count++] = k;
     this.listed[k] = this.epoch;
+    this.kept[k] = 0;
   }
 
   /** Slot k's manifold: normal, points, anchors from the centres (ax, ay), (bx, by), separations, ids. */
@@ -372,7 +385,7 @@ export class ContactList {
   memoryBytes(): number {
     let spare = 0;
     for (const [name] of COLUMNS) spare += this.spare[name]?.byteLength ?? 0;
-    return this.capacity * (4 * 4 + 8 * 2 + 1 + 8 * 14 + 4 + 4) + 2 * this.capacity * (8 * POINT_STRIDE + 4) + this.order.byteLength + this.previousOrder.byteLength + spare;
+    return this.capacity * (4 * 4 + 8 * 2 + 1 + 8 * 14 + 4 + 4 + 1) + 2 * this.capacity * (8 * POINT_STRIDE + 4) + this.order.byteLength + this.previousOrder.byteLength + spare;
   }
 
   private grow(needed: number): void {

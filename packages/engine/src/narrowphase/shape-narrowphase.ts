@@ -656,7 +656,7 @@ export class ShapeNarrowPhase implements PairConsumer {
       pt[at + ContactPoint.totalNormalImpulse] = 0;
       pt[at + ContactPoint.approachSpeed] = 0;
     }
-    list.list(q);
+    list.keep(q);
     this.recycled++;
     return true;
   }

@@ -17,8 +17,9 @@ export const ENGINE_VERSION = '0.1.0';
 
 // Kernels own WebAssembly instances over memories a step fills afresh; a parallel step owns threads.
 for (const ctor of [BodyKernel, GridKernel, SoftStepKernel, ContactSorter, ParallelStep]) hostResource(ctor);
-// The soft step gathers these afresh each step, into its kernel's memory where it has one.
-transientFields(SoftStep, ['states', 'constraints', 'pairs']);
+// The soft step gathers these afresh each step, into its kernel's memory where it has one; so a
+// restored world's lanes hold no preparation to bring up to date (lanesPrepared stays false).
+transientFields(SoftStep, ['states', 'constraints', 'pairs', 'lanesPrepared']);
 transientFields(PointDistanceJoints, ['rows', 'pairs']);
 // A broad-phase's chunk of candidates is handed on within the step that found them.
 transientFields(PairSink, ['a', 'b', 'consumerMs']);

@@ -117,6 +117,12 @@ export function setColourReuse(on: boolean): void {
   reusingColours = on;
 }
 
+let reusingConstraints = true;
+/** Whether prepare keeps the fields of kept contacts' constraints that it would write again with the same bits (see prepare): for tests that compare the bits with and without. */
+export function setConstraintReuse(on: boolean): void {
+  reusingConstraints = on;
+}
+
 /** The most a body turns in one step, as in Box2D (B2_MAX_ROTATION): a quarter of a half turn. */
 const MAX_ROTATION = 0.25 * Math.PI;
 
@@ -174,9 +180,21 @@ export class SoftStep {
   private readonly colourStart = new Int32Array(COLOURS + 2);
   /** Steps that kept the last colouring (see colourAgain). */
   coloursKept = 0;
+  /** Contacts whose lanes prepare brought up to date rather than wrote anew, over all steps (see prepare). */
+  get lanesKept(): number {
+    return this.laneCounts[0];
+  }
+  /** lanesKept, counted in a typed array inside prepare's loop so that nothing follows the loop (see ShapeNarrowPhase.collidePairs). */
+  private readonly laneCounts = new Float64Array(1);
   /** The awake bodies the last colouring was made for, and how many (-1: none yet); see colourAgain. */
   private colouredAwake = new Int32Array(0);
   private colouredCount = -1;
+  /**
+   * Whether every lane holds what the last prepare wrote into it: the colouring it was made for
+   * is still the current one, and no array was replaced since. Not part of a snapshot (the
+   * lanes are not): a restored world prepares every lane afresh.
+   */
+  private lanesPrepared = false;
   /** Bias rate, mass scale and impulse scale of contacts between moving bodies, and of those with a static one. */
   private readonly softness = new Float64Array(3);
   private readonly staticSoftness = new Float64Array(3);
@@ -193,7 +211,7 @@ export class SoftStep {
   solve(bodies: BodyStore, contacts: ContactList, gx: number, gy: number, dt: number, settings: SoftSettings, joints: JointSolver | null): void {
     if (dt === 0) {
       // This step's contacts, which the next step's may equal (ContactList.unchanged), go
-      // uncoloured: the colouring is not theirs.
+      // uncoloured: the colouring is not theirs (nor, then, the lanes).
       this.colouredCount = -1;
       return;
     }
@@ -255,7 +273,10 @@ export class SoftStep {
       return;
     }
     if (this.states.length < states) this.states = new Float64Array(states);
-    if (this.constraints.length < constraints) this.constraints = new Float64Array(constraints);
+    if (this.constraints.length < constraints) {
+      this.constraints = new Float64Array(constraints);
+      this.lanesPrepared = false;
+    }
     if (this.pairs.length < pairs) this.pairs = new Int32Array(pairs);
   }
 
@@ -345,13 +366,24 @@ export class SoftStep {
     // moving body, and colours are solved in turn (see `colour`). Contacts with a static body
     // take colours from the top down, so that they come last and have the last word, and a pile
     // does not sink into the ground.
-    if (this.colourAgain(contacts)) this.colour(contacts, count);
+    if (this.colourAgain(contacts)) {
+      this.colour(contacts, count);
+      this.lanesPrepared = false;
+    }
     const lanes = this.laneCount;
     if (this.constraints.length < (lanes >> 1) * PAIR) {
       const capacity = grownCapacity(this.constraints.length / PAIR, lanes >> 1);
       this.reserve(0, capacity * PAIR, 4 * capacity);
     }
     const { constraints, pairs, order, states, laneAt } = this;
+    // A kept contact (ContactList.kept) in the lane it had last step, on bodies of the same
+    // masses, has the normal, material, anchors and point count its lane was prepared with, and
+    // needs only the fields that change from step to step (its separations, impulses and
+    // velocities) written again: the rest would be written with the same bits. All of a pile at
+    // rest is kept, and this skips most of preparing it.
+    const reuse = reusingConstraints && this.lanesPrepared;
+    this.lanesPrepared = true;
+    const laneCounts = this.laneCounts;
     for (let i = 0; i < lanes; i++) {
       if (order[i] >= 0) continue;
       // The empty lane of a colour's last pair: no points, on the dummy body.
@@ -382,6 +414,50 @@ export class SoftStep {
       const mB = ib === 0 ? 0 : invMass[b];
       const iB = ib === 0 ? 0 : invInertia[b];
       const soft = ia === 0 || ib === 0 ? staticSoftness : softness;
+      if (
+        reuse &&
+        contacts.kept[k] === 1 &&
+        constraints[c + MA] === mA &&
+        constraints[c + IA] === iA &&
+        constraints[c + MB] === mB &&
+        constraints[c + IB] === iB &&
+        constraints[c + BIAS_RATE] === soft[0] &&
+        constraints[c + MASS_SCALE] === soft[1] &&
+        constraints[c + IMPULSE_SCALE] === soft[2]
+      ) {
+        constraints[c + ROLLING_IMPULSE] = contacts.rollingImpulse[k];
+        const nx = constraints[c + NX];
+        const ny = constraints[c + NY];
+        const sa = ia * BODY;
+        const sb = ib * BODY;
+        const vAx = states[sa + VX];
+        const vAy = states[sa + VY];
+        const wA = states[sa + W];
+        const vBx = states[sb + VX];
+        const vBy = states[sb + VY];
+        const wB = states[sb + W];
+        const pointCount = constraints[c + POINTS];
+        for (let p = 0; p < pointCount; p++) {
+          const point = (2 * k + p) * POINT_STRIDE;
+          const q = c + P + p * POINT;
+          const rAx = constraints[q + RAX];
+          const rAy = constraints[q + RAY];
+          const rBx = constraints[q + RBX];
+          const rBy = constraints[q + RBY];
+          constraints[q + BASE_SEPARATION] = contacts.points[point + PT_SEPARATION] - ((rBx - rAx) * nx + (rBy - rAy) * ny);
+          constraints[q + NORMAL_IMPULSE] = contacts.points[point + PT_NORMAL_IMPULSE];
+          constraints[q + TANGENT_IMPULSE] = contacts.points[point + PT_TANGENT_IMPULSE];
+          constraints[q + MAX_NORMAL_IMPULSE] = 0;
+          const dvx = vBx - wB * rBy - (vAx - wA * rAy);
+          const dvy = vBy + wB * rBx - (vAy + wA * rAx);
+          const vn = dvx * nx + dvy * ny;
+          constraints[q + RELATIVE_VELOCITY] = vn;
+          constraints[q + IMPACT_VELOCITY] = 0;
+          contacts.points[point + PT_APPROACH_SPEED] = -vn;
+        }
+        laneCounts[0]++;
+        continue;
+      }
       constraints[c + BIAS_RATE] = soft[0];
       constraints[c + MASS_SCALE] = soft[1];
       constraints[c + IMPULSE_SCALE] = soft[2];
