@@ -52,7 +52,7 @@ import type { JointEventsView, JointState, JointViews } from './world-types.js';
 import { StepPipeline } from './step/pipeline.js';
 import { checkWorkerCount, DEFAULT_MIN_BODIES, ParallelStep } from './parallel/parallel-step.js';
 import type { StepStats } from './step/stats.js';
-import type { CircleIntegratorName, IntegratorName } from './integrate/integrator.js';
+import { INTEGRATOR_NAMES, type CircleIntegratorName, type IntegratorName } from './integrate/integrator.js';
 import { MAX_DT, MIN_DT, MAX_MAGNITUDE, MAX_SHAPE_REACH, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
 import { flag } from './options.js';
 import { copyOptions, field, holdsObject, numberField, readSnapshot, writeOnto, writeSnapshot } from './snapshot/world-snapshot.js';
@@ -79,6 +79,32 @@ const rotation = new Float64Array(2);
 /** The circle route's integrator for a world's choice ('rk4' worlds take the shape route, so any serves). */
 function circleIntegrator(name: IntegratorName): CircleIntegratorName {
   return name === 'rk4' ? 'semi-implicit-euler' : name;
+}
+
+/** Settings a public setter (or the step itself) changes, which a restored world need not share with its options. */
+const SETTER_PATHS = new Set(['settings.step.gravity', 'settings.shapes.gravity', 'settings.shapes.integrator', 'settings.shapes.solver', 'settings.resolved.gravity']);
+
+/** A deep copy of plain objects and values, so that a later write to the original leaves it as it was. */
+function plainCopy(value: unknown): unknown {
+  if (value === null || typeof value !== 'object') return value;
+  const out: Record<string, unknown> = {};
+  for (const [key, item] of Object.entries(value)) out[key] = plainCopy(item);
+  return out;
+}
+
+/** Where `actual` first differs from `expected` (numbers by Object.is), as 'path is value', or null; paths in `skip` are not compared. */
+function firstDifference(expected: unknown, actual: unknown, path: string, skip: ReadonlySet<string>): string | null {
+  if (skip.has(path)) return null;
+  if (expected !== null && typeof expected === 'object') {
+    if (actual === null || typeof actual !== 'object') return `${path} is ${describeValue(actual)}`;
+    const keys = new Set([...Object.keys(expected), ...Object.keys(actual)]);
+    for (const key of keys) {
+      const found = firstDifference((expected as Record<string, unknown>)[key], (actual as Record<string, unknown>)[key], `${path}.${key}`, skip);
+      if (found !== null) return found;
+    }
+    return null;
+  }
+  return Object.is(expected, actual) ? null : `${path} is ${describeValue(actual)}`;
 }
 const box4 = new Float64Array(4);
 const pose4 = new Float64Array(4);
@@ -289,11 +315,17 @@ export class World {
    * an engine with another state layout wrote, is a RangeError saying so; nothing is built. So is
    * one whose hash holds but whose gravity or bodies hold a value no step reaches (a NaN or
    * infinite coordinate, velocity, mass or force, a negative mass, a rotation that is not a unit
-   * vector).
+   * vector), whose options are refused, or whose settings are not what its options give.
    */
   static restore(snapshot: Uint8Array): World {
     const read = readSnapshot(snapshot);
-    const world = new World(read.options as WorldOptions);
+    let world: World;
+    try {
+      world = new World(read.options as WorldOptions);
+    } catch (error) {
+      // Options that were accepted when the world was made, rewritten under a consistent hash.
+      throw new RangeError(`snapshot is corrupt: its options are refused (${(error as Error).message})`);
+    }
     const state = read.state;
     if (holdsObject(field(state, 'bodies', 'rigid'))) world.useRigid();
     if (holdsObject(field(state, 'shapeRoute'))) world.engage();
@@ -303,8 +335,10 @@ export class World {
     if (broadphase?.t === 'value' && typeof broadphase.v === 'string' && broadphase.v !== world.broadphase) world.setBroadphase(broadphase.v as BroadPhaseName);
     const capacity = numberField(field(state, 'bodies', 'capacity'));
     if (capacity > 0) world.bodies.reserve(capacity);
+    // What the options give, before the snapshot's state is written over it.
+    const settings = plainCopy(world.settingsTree());
     writeOnto(world, read);
-    world.checkRestoredState();
+    world.checkRestoredState(settings);
     // Columns a parallel step had moved onto shared memory come back to this thread's own.
     if (world.bodies.shared) world.bodies.setShared(false);
     if (world.pipeline.contacts.shared) world.pipeline.contacts.setShared(false);
@@ -1837,15 +1871,42 @@ export class World {
   }
 
   /**
+   * The copies of the options a world keeps, which only they fix (see checkRestoredState): the
+   * resolved options themselves, what was made from them, and the stages' settings.
+   */
+  private settingsTree(): Record<string, unknown> {
+    const route = this.shapeRoute;
+    return {
+      resolved: this.resolved,
+      bounds: this.bounds,
+      box: this.bodies.box,
+      defaults: { restitution: this.defaultRestitution, friction: this.defaultFriction },
+      step: this.pipeline.settings,
+      shapes: route?.settings ?? null,
+      walls: route ? { box: route.world.box, thickness: route.world.wallThickness } : null,
+      joints: this.joints?.settings ?? null,
+    };
+  }
+
+  /**
    * The snapshot's hash catches damage, not a payload rewritten with a consistent hash: before a
    * restored world is handed out, its gravity and every live body's state must be ones that steps
-   * could reach, so that no NaN or infinity enters a step through a snapshot.
+   * could reach, so that no NaN or infinity enters a step through a snapshot. Its settings must be
+   * what its options give (`settings`, read before the state was written), but for those a setter
+   * changes: gravity, within bounds, and the integrator, one of the names; and the shape route's
+   * solver, which each step derives again.
    */
-  private checkRestoredState(): void {
+  private checkRestoredState(settings: unknown): void {
     const { x: gx, y: gy } = this.pipeline.settings.gravity;
     if (!(Math.abs(gx) <= MAX_MAGNITUDE && Math.abs(gy) <= MAX_MAGNITUDE)) {
       throw new RangeError(`snapshot is corrupt: gravity (${gx}, ${gy}) is beyond ${MAX_MAGNITUDE}, where no step can take it`);
     }
+    const choice = this.integratorChoice;
+    if (!(INTEGRATOR_NAMES as readonly unknown[]).includes(choice) || this.pipeline.integrator !== circleIntegrator(choice) || (this.shapeRoute !== null && this.shapeRoute.settings.integrator !== choice) || (this.joints !== null && this.joints.integrator !== choice)) {
+      throw new RangeError(`snapshot is corrupt: its integrator (${describeValue(choice)}) is not one of ${INTEGRATOR_NAMES.join(', ')}, or its stages disagree on it`);
+    }
+    const differs = firstDifference(settings, plainCopy(this.settingsTree()), 'settings', SETTER_PATHS);
+    if (differs !== null) throw new RangeError(`snapshot is corrupt: ${differs}, not what its options give`);
     const b = this.bodies;
     const rigid = b.rigid;
     const columns: [string, Float64Array][] = [['x', b.x], ['y', b.y], ['vx', b.vx], ['vy', b.vy], ['radius', b.radius], ['mass', b.mass], ['invMass', b.invMass], ['forceX', b.forceX], ['forceY', b.forceY]];

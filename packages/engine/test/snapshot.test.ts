@@ -321,6 +321,61 @@ describe('snapshots', () => {
       expect(World.restore(fine).getBody(h).x).toBe(5);
     });
 
+    it('settings other than the options give, under a consistent hash, are refused by name', () => {
+      // Settings are copied from the options when the world is made; the options are validated on
+      // restore, the copies are compared with what those options give again.
+      const world = new World({ gravity: { x: 0, y: 10 }, solver: 'soft', contactHertz: 29.8046875, sleepTime: 0.6123046875, jointHertz: 0.4140625, bounds: { width: 40, height: 30 } });
+      const box = world.createBox({ x: 5, y: 5, width: 1, height: 1 });
+      world.createJoint({ kind: 'revolute', bodyA: world.createBody({ x: 5, y: 4, type: 'static' }), bodyB: box });
+      world.step(1 / 60);
+      const clean = world.snapshot();
+      const cases: [number, number, RegExp][] = [
+        [29.8046875, Number.NaN, /snapshot is corrupt: settings\.shapes\.soft\.contactHertz is NaN, not what its options give/],
+        // A value the options could have given is refused too: these options did not.
+        [29.8046875, 31, /settings\.shapes\.soft\.contactHertz is 31,/],
+        [0.6123046875, -1, /settings\.(resolved\.sleepTime|step\.sleeping\.time|shapes\.sleeping\.time) is -1,/],
+        [0.4140625, 1e300, /settings\.(resolved\.jointHertz|joints\.hertz) is 1e\+300,/],
+      ];
+      const view = new DataView(clean.buffer, clean.byteOffset, clean.byteLength);
+      for (const [value, bad, message] of cases) {
+        // The value's every copy (the options', the settings', any other) rewritten in turn: each
+        // is refused, and one of them by the settings check.
+        const messages: string[] = [];
+        for (let at = 16; at + 8 <= clean.length; at++) {
+          if (view.getFloat64(at, true) !== value) continue;
+          const forged = clean.slice();
+          new DataView(forged.buffer).setFloat64(at, bad, true);
+          rehash(forged);
+          const before = world.stateHash();
+          expect(() => world.restore(forged)).toThrow(RangeError);
+          expect(world.stateHash()).toBe(before);
+          try {
+            World.restore(forged);
+          } catch (error) {
+            messages.push((error as Error).message);
+          }
+        }
+        expect(messages.length).toBeGreaterThan(1);
+        expect(messages.some((m) => message.test(m)), messages.join('\n')).toBe(true);
+      }
+      // The integrator's name, in each place it is kept, rewritten into one that is not a name.
+      // Strings are UTF-16 code units.
+      const name = [...'semi-implicit-euler'].flatMap((ch) => [ch.charCodeAt(0), 0]);
+      let copies = 0;
+      for (let at = 16; at + name.length <= clean.length; at++) {
+        if (!name.every((byte, k) => clean[at + k] === byte)) continue;
+        copies++;
+        const forged = clean.slice();
+        forged[at + name.length - 2] = 'x'.charCodeAt(0);
+        rehash(forged);
+        expect(() => World.restore(forged)).toThrow(/snapshot is corrupt: .*(integrator|semi-implicit-eulex)/);
+      }
+      expect(copies).toBeGreaterThan(2);
+      // Gravity, which setGravity moves, may differ from the options; the untouched snapshot restores.
+      world.setGravity(0, 9.5);
+      expect(World.restore(world.snapshot()).gravity).toEqual({ x: 0, y: 9.5 });
+    });
+
     it('gravity no step could use, under a consistent hash, is refused by name', () => {
       // Found by an audit: the live gravity (a copy of the creation options' is checked with them)
       // came back NaN, and the first step spread it to every body.

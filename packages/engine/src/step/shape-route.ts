@@ -68,7 +68,7 @@ export class ShapeRoute {
   readonly islands = new IslandSleep();
   readonly continuous = new ContinuousShapes();
   private treeVersion = -1;
-  private readonly world: WorldShapes;
+  readonly world: WorldShapes;
 
   constructor(
     private readonly bodies: BodyStore,
