@@ -59,8 +59,8 @@ export interface WorldOptions {
   /**
    * Length units per meter, as Box2D's b2SetLengthUnitsPerMeter and Rapier's length_unit: the
    * soft step's tolerances (linear slop 0.005 m, speculative distance 0.02 m, push-out speed
-   * 3 m/s, restitution threshold 1 m/s, sleep speed 0.05 m/s, top speed 400 m/s) are scaled by it.
-   * Default 1 (meters). The lab's pixel scenes use 50.
+   * 3 m/s, restitution threshold 1 m/s, sleep speed 0.05 m/s, top speed 400 m/s, at most 1e100)
+   * are scaled by it. Within [1e-100, 1e100]; default 1 (meters). The lab's pixel scenes use 50.
    */
   lengthUnit?: number | undefined;
   /** Stiffness of the soft step's contacts, as a frequency in hertz. Default 30 (Box2D). */
@@ -288,7 +288,7 @@ export function resolveWorldOptions(input: unknown): ResolvedWorldOptions {
     friction: options.friction === undefined ? 0 : boundedNonNegative('friction', options.friction),
     solver: options.solver === undefined ? 'auto' : oneOf('solver', options.solver, ['auto', 'elastic', 'soft'] as const),
     substeps: options.substeps === undefined ? 4 : iterationCount('substeps', options.substeps),
-    lengthUnit: options.lengthUnit === undefined ? 1 : positiveNumber('lengthUnit', options.lengthUnit),
+    lengthUnit: options.lengthUnit === undefined ? 1 : boundedPositive('lengthUnit', options.lengthUnit),
     contactHertz: options.contactHertz === undefined ? 30 : positiveNumber('contactHertz', options.contactHertz),
     contactDampingRatio: options.contactDampingRatio === undefined ? 10 : boundedNonNegative('contactDampingRatio', options.contactDampingRatio),
     jointHertz: options.jointHertz === undefined ? 60 : boundedPositive('jointHertz', options.jointHertz),
@@ -464,7 +464,8 @@ export function shapeRouteSettings(resolved: ResolvedWorldOptions, gravity: Vect
       contactDampingRatio: resolved.contactDampingRatio,
       contactPushSpeed: 3 * unit,
       restitutionThreshold: resolved.restitutionThresholdGiven ?? 1 * unit,
-      maxLinearSpeed: resolved.maxLinearSpeed ?? 400 * unit,
+      // Within the speeds a step keeps finite, however large the unit.
+      maxLinearSpeed: resolved.maxLinearSpeed ?? Math.min(400 * unit, MAX_MAGNITUDE),
     },
     elastic: {
       restitutionThreshold: resolved.restitutionThresholdGiven ?? 0,

@@ -315,6 +315,99 @@ describe('no NaN or infinity from finite input', () => {
     expect(cases).toBe(24);
   });
 
+  it('joints at the extremes an audit found: limits between bodies far apart or at 1e100 m/s, far anchors on tiny bodies, stiff springs at dt 1e-100', () => {
+    // Each case is accepted input that took a state to NaN: a joint's solve pushes in stages whose
+    // spins cancel exactly in theory and by some 1e-16 x impulse x arm in doubles, which the next
+    // stage multiplies (limits, blocks); a limit's kept impulse fed by that growth within a step;
+    // and an impulse times a far arm overflowing before it met a body's inverse inertia of 0.
+    type Case = [string, () => { world: World; dt: number; steps: number }];
+    const box = (world: World, x: number, y: number, width: number, more: Record<string, unknown> = {}): number => world.createBox({ x, y, width, height: width / 2, ...more });
+    const cases: Case[] = [];
+    // The speed limit given, or made from the largest length unit.
+    for (const [limit, options] of [['speed limit 1e100', { maxLinearSpeed: 1e100 }], ['length unit 1e100', { lengthUnit: 1e100 }], ['length unit 2.5e98', { lengthUnit: 2.5e98 }]] as const) {
+      for (const kind of ['prismatic', 'wheel'] as const) {
+        cases.push([`${kind} limits, unit boxes at 1e100 m/s, ${limit}`, () => {
+          const world = new World({ ...options, gravity: { x: 0, y: 10 } });
+          const a = world.createBox({ x: 0, y: 0, width: 1, height: 1, vx: 1e100 });
+          const b = world.createBox({ x: 3, y: 0, width: 1, height: 1, vy: -1e100 });
+          world.createJoint({ kind, bodyA: a, bodyB: b, lowerTranslation: -1, upperTranslation: 1 });
+          return { world, dt: 1 / 60, steps: 5 };
+        }]);
+      }
+    }
+    for (const [bx, by] of [[1e99, 0], [0, 1e99]]) {
+      cases.push([`prismatic limits, unit boxes, B at (${bx}, ${by}) off A's turned axis`, () => {
+        const world = new World({ gravity: { x: 0, y: 10 } });
+        const a = box(world, 0, 0, 1, { angle: 0.1 });
+        const b = box(world, bx, by, 1);
+        world.createJoint({ kind: 'prismatic', bodyA: a, bodyB: b, lowerTranslation: -1, upperTranslation: 1 });
+        return { world, dt: 1 / 60, steps: 30 };
+      }]);
+    }
+    cases.push(['revolute limits, a 1e-20 box pinned 1e20 out', () => {
+      const world = new World({ gravity: { x: 0, y: 10 } });
+      const a = box(world, 0, 0, 1);
+      const b = box(world, 0, 0, 1e-20);
+      world.createJoint({ kind: 'revolute', bodyA: a, bodyB: b, anchorB: { x: 1e20, y: 0 }, lowerAngle: -0.5, upperAngle: 0.5 });
+      return { world, dt: 1 / 60, steps: 30 };
+    }]);
+    cases.push(['revolute lower limit, a light 1e6 box pinned 7e49 out, a tiny fixed-rotation box', () => {
+      const world = new World();
+      const a = box(world, 0, 0, 1e6, { angle: 0.5, density: 1e-100 });
+      const b = box(world, 0, 0, 1e-20, { fixedRotation: true });
+      world.createJoint({ kind: 'revolute', bodyA: a, bodyB: b, anchorA: { x: 7e49, y: 0 }, lowerAngle: -1 });
+      return { world, dt: 1 / 60, steps: 10 };
+    }]);
+    cases.push(['revolute upper limit and a motor of 1e100 rad/s, a tiny box 1e40 out, 64 sub-steps', () => {
+      const world = new World({ substeps: 64 });
+      const bare = world.createBody({ x: 0, y: 0 });
+      const tiny = box(world, 0, 0, 1e-20);
+      const joint = world.createJoint({ kind: 'revolute', bodyA: bare, bodyB: tiny, anchorB: { x: 0, y: 1e40 }, upperAngle: 1 });
+      world.setJointMotor(joint, 1e100, 1e10);
+      return { world, dt: 1 / 60, steps: 30 };
+    }]);
+    for (const kind of ['wheel', 'prismatic'] as const) {
+      cases.push([`${kind} spring of 1e100 Hz from a static box to a fixed-rotation one 1e99 away, dt 1e-100`, () => {
+        const world = new World({ substeps: 1 });
+        const ground = world.createBox({ x: 0, y: 0, width: 1, height: 1, type: 'static' });
+        const body = world.createBox({ x: 1e99, y: 0, width: 1, height: 1, mass: 1e50, fixedRotation: true });
+        world.createJoint({ kind, bodyA: ground, bodyB: body, axis: { x: 1, y: 1 }, hertz: 1e100 });
+        return { world, dt: 1e-100, steps: 3 };
+      }]);
+    }
+    cases.push(['distance spring of 1e100 Hz to a kinematic body anchored 1e40 out, dt 1e-100', () => {
+      const world = new World({ substeps: 1 });
+      const k = world.createBody({ x: 0, y: -1e99, type: 'kinematic' });
+      const a = box(world, 0, 0, 1e50);
+      world.createJoint({ kind: 'distance', bodyA: a, bodyB: k, anchorB: { x: 0, y: 1e40 }, hertz: 1e100, dampingRatio: 0 });
+      world.setTransform(a, 1e30, -1e99, 0);
+      return { world, dt: 1e-100, steps: 3 };
+    }]);
+    cases.push(['weld springs of 1e100 Hz to a kinematic box anchored 1e50 out, dt 1e-100', () => {
+      const world = new World({ substeps: 1 });
+      const k = box(world, 0, 0, 1e-20, { type: 'kinematic' });
+      const d = box(world, 0, 0, 1e-20, { density: 1e100 });
+      world.createJoint({ kind: 'weld', bodyA: d, bodyB: k, anchorB: { x: 1e50, y: 0 }, linearHertz: 1e100, angularHertz: 1e100 });
+      world.setTransform(k, 0, 1e99, 0);
+      return { world, dt: 1e-100, steps: 3 };
+    }]);
+    const failures: string[] = [];
+    for (const [label, make] of cases) {
+      const { world, dt, steps } = make();
+      try {
+        for (let s = 0; s < steps; s++) {
+          world.step(dt);
+          assertFinite(world, null, { op: 'step', dt });
+        }
+      } catch (e) {
+        failures.push(`${label}: ${(e as Error).message}`);
+      }
+    }
+    expect(failures).toEqual([]);
+    // Beyond the largest length unit, refused by name.
+    expect(() => new World({ lengthUnit: 1e101 })).toThrow(/lengthUnit must be within \[1e-100, 1e\+100\].*got 1e\+101/);
+  });
+
   it('a weld to a compound whose only shape lies 8e48 out, beside a box of mass 1e100, under the strongest gravity, stays finite', () => {
     // The contacts with the heavy box spin the light triangle at 4e115 rad/s within a sub-step,
     // and the weld's point block, its arm 8e48 on a body of inverse inertia 8e49, cancels its

@@ -6,7 +6,7 @@ import { GasPressure } from './gas-pressure.js';
 import type { IntegratorName } from '../integrate/integrator.js';
 import type { JointStore } from '../joints/joint-store.js';
 import { BODY, DYNAMIC, FAR_ARM, holdState, makeSoft } from './solver-body.js';
-import type { JointKernel, JointStepContext } from './joints/joint-kernel.js';
+import { holdIO, type JointKernel, type JointStepContext } from './joints/joint-kernel.js';
 import { distanceJoint } from './joints/distance-joint.js';
 import { isPointDistanceJoint, PointDistanceJoints } from './joints/point-distance-joints.js';
 import type { SoftStepKernel } from './soft-step-kernel.js';
@@ -340,15 +340,19 @@ export class JointSolver {
   solve(states: Float64Array, useBias: boolean): void {
     const { store, active, activeCount, step, limits, farArms } = this;
     const r = store.record;
+    holdIO[1] = limits[0];
+    holdIO[2] = limits[1];
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
       const o = j * JOINT_STRIDE;
       const joint = JOINT_KERNELS[store.kind[j]];
       // The relax pass follows the sub-step's move (the solve with the bias shares the warm start's positions).
       if (!useBias && farArms[k] === 1 && joint.refresh !== undefined) joint.refresh(r, o, states);
+      holdIO[0] = farArms[k];
       joint.solve(r, o, states, step, useBias);
       if (farArms[k] === 1) holdWithinLimits(states, r, o, limits);
     }
+    holdIO[0] = 0;
     this.points.solve(states, useBias);
   }
 

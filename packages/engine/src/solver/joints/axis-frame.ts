@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
 import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
-import { applyLimit, limitIO, turnAnchors, type JointStepContext } from './joint-kernel.js';
+import { applyLimit, holdPushed, limitIO, turnAnchors, type JointStepContext } from './joint-kernel.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { axialMass: AXIAL_MASS, lower: LOWER, lowerImpulse: LOWER_IMPULSE, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, upper: UPPER, upperImpulse: UPPER_IMPULSE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
@@ -78,12 +78,16 @@ function applyAxisImpulse(r: Float64Array, o: number, states: Float64Array, sa: 
   const py = along * f.ay + across * f.ax;
   const mA = r[o + INV_MASS_A];
   const mB = r[o + INV_MASS_B];
+  // No moment on a body that does not turn (see warmStartPoint).
+  const iA = r[o + INV_INERTIA_A];
+  const iB = r[o + INV_INERTIA_B];
   states[sa + VX] -= mA * px;
   states[sa + VY] -= mA * py;
-  states[sa + W] -= r[o + INV_INERTIA_A] * (along * f.a1 + across * f.s1 + angular);
+  if (iA !== 0) states[sa + W] -= iA * (along * f.a1 + across * f.s1 + angular);
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
-  states[sb + W] += r[o + INV_INERTIA_B] * (along * f.a2 + across * f.s2 + angular);
+  if (iB !== 0) states[sb + W] += iB * (along * f.a2 + across * f.s2 + angular);
+  holdPushed(states, sa, sb);
 }
 
 /**

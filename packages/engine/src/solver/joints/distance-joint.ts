@@ -147,8 +147,11 @@ function apply(r: Float64Array, o: number, states: Float64Array, sa: number, sb:
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
   if (f.point) return;
-  states[sa + W] -= r[o + INV_INERTIA_A] * (f.rAx * py - f.rAy * px);
-  states[sb + W] += r[o + INV_INERTIA_B] * (f.rBx * py - f.rBy * px);
+  // No moment on a body that does not turn (see warmStartPoint).
+  const iA = r[o + INV_INERTIA_A];
+  const iB = r[o + INV_INERTIA_B];
+  if (iA !== 0) states[sa + W] -= iA * (f.rAx * py - f.rAy * px);
+  if (iB !== 0) states[sb + W] += iB * (f.rBx * py - f.rBy * px);
 }
 
 /** One end of the range, its gap C >= 0 in limitIO[0]: `sign` 1 for the lower end (pushing apart), -1 for the upper. */

@@ -1,6 +1,6 @@
 import { atan2Into } from '../../math/trig.js';
 import { J } from '../../joints/joint-layout.js';
-import { DPX, DPY, DQC, DQS, VX, VY, W } from '../solver-body.js';
+import { DPX, DPY, DQC, DQS, DYNAMIC, VX, VY, W, holdState } from '../solver-body.js';
 import { softSpring, Spring } from '../spring-frequency.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
@@ -80,6 +80,23 @@ const springIO = new Float64Array(8);
 export const limitIO = new Float64Array(4);
 
 /**
+ * Whether the joint being solved has far arms (JointSolver sets it per joint: 1 or 0), and the
+ * speed limits, linear and angular. A far-arm joint's solve pushes its bodies in stages (point,
+ * limits, block) whose moments cancel in exact arithmetic and leave some 1e-16 x impulse x arm
+ * of spin in doubles; the next stage reads that spin and, through an arm of many radii of
+ * gyration, can carry it past the largest double within one solve. Such a joint's pushes hold
+ * their bodies within the limits after each stage (holdPushed), not only after the solve.
+ */
+export const holdIO = new Float64Array(3);
+
+/** After a push of joint stage: holds both bodies within the speed limits where holdIO says the joint has far arms. */
+export function holdPushed(states: Float64Array, sa: number, sb: number): void {
+  if (holdIO[0] !== 1) return;
+  if (states[sa + DYNAMIC] === 1) holdState(states, sa, holdIO[1], holdIO[2]);
+  if (states[sb + DYNAMIC] === 1) holdState(states, sb, holdIO[1], holdIO[2]);
+}
+
+/**
  * The new total impulse of a one-sided limit C >= 0, into r[o + field], with C and its speed
  * along it in limitIO[0..1] and its effective mass in limitIO[3]: apart (C > 0) it lets the
  * gap close within the sub-step and no more (speculative, as contacts do); past it, the soft push
@@ -135,12 +152,16 @@ export function warmStartPoint(r: Float64Array, o: number, states: Float64Array,
   const py = r[o + LINEAR_IMPULSE_Y];
   const mA = r[o + INV_MASS_A];
   const mB = r[o + INV_MASS_B];
+  // A body that does not turn (static, kinematic, fixed rotation) takes no moment: its inverse
+  // inertia of 0 times a moment that overflowed (a stiff spring's impulse at a far arm) is NaN.
+  const iA = r[o + INV_INERTIA_A];
+  const iB = r[o + INV_INERTIA_B];
   states[sa + VX] -= mA * px;
   states[sa + VY] -= mA * py;
-  states[sa + W] -= r[o + INV_INERTIA_A] * (rAx * py - rAy * px + angular);
+  if (iA !== 0) states[sa + W] -= iA * (rAx * py - rAy * px + angular);
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
-  states[sb + W] += r[o + INV_INERTIA_B] * (rBx * py - rBy * px + angular);
+  if (iB !== 0) states[sb + W] += iB * (rBx * py - rBy * px + angular);
 }
 
 /** The softness of a rigid velocity constraint: no bias, full mass, no impulse decay (the relax pass). */
@@ -206,10 +227,11 @@ export function solvePoint(r: Float64Array, o: number, states: Float64Array, sof
   r[o + LINEAR_IMPULSE_Y] += py;
   states[sa + VX] = vAx - mA * px;
   states[sa + VY] = vAy - mA * py;
-  states[sa + W] = wA - iA * (rAx * py - rAy * px);
+  states[sa + W] = iA === 0 ? wA : wA - iA * (rAx * py - rAy * px);
   states[sb + VX] = vBx + mB * px;
   states[sb + VY] = vBy + mB * py;
-  states[sb + W] = wB + iB * (rBx * py - rBy * px);
+  states[sb + W] = iB === 0 ? wB : wB + iB * (rBx * py - rBy * px);
+  holdPushed(states, sa, sb);
 }
 
 /**

@@ -1,6 +1,6 @@
 import { J } from '../../joints/joint-layout.js';
 import { DQC, DQS, VX, VY, W } from '../solver-body.js';
-import { applyLimit, limitIO, measureAngle, prepareSpringLimitMotor, RIGID, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
+import { applyLimit, holdPushed, limitIO, measureAngle, prepareSpringLimitMotor, RIGID, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angle: ANGLE, invMassA: INV_MASS_A, invMassB: INV_MASS_B, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lower: LOWER, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorSpeed: MOTOR_SPEED, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upper: UPPER, upperImpulse: UPPER_IMPULSE } = J;
@@ -193,10 +193,14 @@ function applyTurn(r: Float64Array, o: number, states: Float64Array): void {
   const rBy = armsIO[3];
   const mA = r[o + INV_MASS_A];
   const mB = r[o + INV_MASS_B];
+  // No moment on a body that does not turn (see warmStartPoint).
+  const iA = r[o + INV_INERTIA_A];
+  const iB = r[o + INV_INERTIA_B];
   states[sa + VX] -= mA * px;
   states[sa + VY] -= mA * py;
-  states[sa + W] -= r[o + INV_INERTIA_A] * (rAx * py - rAy * px + angular);
+  if (iA !== 0) states[sa + W] -= iA * (rAx * py - rAy * px + angular);
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
-  states[sb + W] += r[o + INV_INERTIA_B] * (rBx * py - rBy * px + angular);
+  if (iB !== 0) states[sb + W] += iB * (rBx * py - rBy * px + angular);
+  holdPushed(states, sa, sb);
 }

@@ -34,7 +34,8 @@ export const targetJoint: JointKernel = {
     const py = r[o + LINEAR_IMPULSE_Y];
     states[sb + VX] += r[o + INV_MASS_B] * px;
     states[sb + VY] += r[o + INV_MASS_B] * py;
-    states[sb + W] += r[o + INV_INERTIA_B] * (rBx * py - rBy * px + r[o + ANGULAR_IMPULSE]);
+    // No moment on a body that does not turn (see warmStartPoint).
+    if (r[o + INV_INERTIA_B] !== 0) states[sb + W] += r[o + INV_INERTIA_B] * (rBx * py - rBy * px + r[o + ANGULAR_IMPULSE]);
   },
 
   solve(r, o, states, step) {
@@ -90,7 +91,7 @@ export const targetJoint: JointKernel = {
     const py = totalY - oldY;
     vx += mB * px;
     vy += mB * py;
-    w += iB * (rBx * py - rBy * px);
+    if (iB !== 0) w += iB * (rBx * py - rBy * px);
     states[sb + VX] = vx;
     states[sb + VY] = vy;
     states[sb + W] = w;
