@@ -55,7 +55,7 @@ import type { StepStats } from './step/stats.js';
 import { INTEGRATOR_NAMES, type CircleIntegratorName, type IntegratorName } from './integrate/integrator.js';
 import { MAX_DT, MIN_DT, MAX_MAGNITUDE, MAX_SHAPE_REACH, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
 import { flag } from './options.js';
-import { copyOptions, field, holdsObject, numberField, readSnapshot, writeOnto, writeSnapshot } from './snapshot/world-snapshot.js';
+import { copyOptions, field, firstDifference, holdsObject, numberField, readSnapshot, writeOnto, writeSnapshot } from './snapshot/world-snapshot.js';
 import {
   bodyType,
   broadphaseName,
@@ -83,29 +83,6 @@ function circleIntegrator(name: IntegratorName): CircleIntegratorName {
 
 /** Settings a public setter (or the step itself) changes, which a restored world need not share with its options. */
 const SETTER_PATHS = new Set(['settings.step.gravity', 'settings.shapes.gravity', 'settings.shapes.integrator', 'settings.shapes.solver', 'settings.resolved.gravity']);
-
-/** A deep copy of plain objects and values, so that a later write to the original leaves it as it was. */
-function plainCopy(value: unknown): unknown {
-  if (value === null || typeof value !== 'object') return value;
-  const out: Record<string, unknown> = {};
-  for (const [key, item] of Object.entries(value)) out[key] = plainCopy(item);
-  return out;
-}
-
-/** Where `actual` first differs from `expected` (numbers by Object.is), as 'path is value', or null; paths in `skip` are not compared. */
-function firstDifference(expected: unknown, actual: unknown, path: string, skip: ReadonlySet<string>): string | null {
-  if (skip.has(path)) return null;
-  if (expected !== null && typeof expected === 'object') {
-    if (actual === null || typeof actual !== 'object') return `${path} is ${describeValue(actual)}`;
-    const keys = new Set([...Object.keys(expected), ...Object.keys(actual)]);
-    for (const key of keys) {
-      const found = firstDifference((expected as Record<string, unknown>)[key], (actual as Record<string, unknown>)[key], `${path}.${key}`, skip);
-      if (found !== null) return found;
-    }
-    return null;
-  }
-  return Object.is(expected, actual) ? null : `${path} is ${describeValue(actual)}`;
-}
 const box4 = new Float64Array(4);
 const pose4 = new Float64Array(4);
 // Scratch outside the world, so that a call refused after using it leaves the snapshot's bytes as they were.
@@ -336,7 +313,7 @@ export class World {
     const capacity = numberField(field(state, 'bodies', 'capacity'));
     if (capacity > 0) world.bodies.reserve(capacity);
     // What the options give, before the snapshot's state is written over it.
-    const settings = plainCopy(world.settingsTree());
+    const settings = copyOptions(world.settingsTree());
     writeOnto(world, read);
     world.checkRestoredState(settings);
     // Columns a parallel step had moved onto shared memory come back to this thread's own.
@@ -1905,7 +1882,7 @@ export class World {
     if (!(INTEGRATOR_NAMES as readonly unknown[]).includes(choice) || this.pipeline.integrator !== circleIntegrator(choice) || (this.shapeRoute !== null && this.shapeRoute.settings.integrator !== choice) || (this.joints !== null && this.joints.integrator !== choice)) {
       throw new RangeError(`snapshot is corrupt: its integrator (${describeValue(choice)}) is not one of ${INTEGRATOR_NAMES.join(', ')}, or its stages disagree on it`);
     }
-    const differs = firstDifference(settings, plainCopy(this.settingsTree()), 'settings', SETTER_PATHS);
+    const differs = firstDifference(settings, copyOptions(this.settingsTree()), 'settings', SETTER_PATHS);
     if (differs !== null) throw new RangeError(`snapshot is corrupt: ${differs}, not what its options give`);
     const b = this.bodies;
     const rigid = b.rigid;

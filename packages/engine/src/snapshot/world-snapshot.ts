@@ -11,6 +11,7 @@ import { StaticTree } from '../broadphase/static-tree.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
 import { PairSink } from '../store/pair-sink.js';
 import { StepStatsRecord, TIMINGS } from '../step/stats.js';
+import { describeValue } from '../util/validate.js';
 
 /** The engine's version, written into every snapshot so that a refusal can say who wrote it. */
 export const ENGINE_VERSION = '0.1.0';
@@ -94,4 +95,19 @@ export function copyOptions(value: unknown): unknown {
   const out: Record<string, unknown> = {};
   for (const [key, item] of Object.entries(value)) out[key] = copyOptions(item);
   return out;
+}
+
+/** Where `actual` first differs from `expected`, plain data both (numbers by Object.is), as 'path is value', or null; paths in `skip` are not compared. */
+export function firstDifference(expected: unknown, actual: unknown, path: string, skip: ReadonlySet<string>): string | null {
+  if (skip.has(path)) return null;
+  if (expected !== null && typeof expected === 'object') {
+    if (actual === null || typeof actual !== 'object') return `${path} is ${describeValue(actual)}`;
+    const keys = new Set([...Object.keys(expected), ...Object.keys(actual)]);
+    for (const key of keys) {
+      const found = firstDifference((expected as Record<string, unknown>)[key], (actual as Record<string, unknown>)[key], `${path}.${key}`, skip);
+      if (found !== null) return found;
+    }
+    return null;
+  }
+  return Object.is(expected, actual) ? null : `${path} is ${describeValue(actual)}`;
 }

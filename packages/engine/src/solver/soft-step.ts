@@ -377,10 +377,10 @@ export class SoftStep {
     }
     const { constraints, pairs, order, states, laneAt } = this;
     // A kept contact (ContactList.kept) in the lane it had last step, on bodies of the same
-    // masses, has the normal, material, anchors and point count its lane was prepared with, and
-    // needs only the fields that change from step to step (its separations, impulses and
-    // velocities) written again: the rest would be written with the same bits. All of a pile at
-    // rest is kept, and this skips most of preparing it.
+    // masses, at the same softness, has the normal, material, anchors and point count its lane
+    // was prepared with, and needs only the fields that change from step to step (its
+    // separations, impulses and velocities) written again: the rest would be written with the
+    // same bits. All of a pile at rest is kept, and this skips most of preparing it.
     const reuse = reusingConstraints && this.lanesPrepared;
     this.lanesPrepared = true;
     const laneCounts = this.laneCounts;
@@ -414,7 +414,7 @@ export class SoftStep {
       const mB = ib === 0 ? 0 : invMass[b];
       const iB = ib === 0 ? 0 : invInertia[b];
       const soft = ia === 0 || ib === 0 ? staticSoftness : softness;
-      if (
+      const kept =
         reuse &&
         contacts.kept[k] === 1 &&
         constraints[c + MA] === mA &&
@@ -423,59 +423,28 @@ export class SoftStep {
         constraints[c + IB] === iB &&
         constraints[c + BIAS_RATE] === soft[0] &&
         constraints[c + MASS_SCALE] === soft[1] &&
-        constraints[c + IMPULSE_SCALE] === soft[2]
-      ) {
-        constraints[c + ROLLING_IMPULSE] = contacts.rollingImpulse[k];
-        const nx = constraints[c + NX];
-        const ny = constraints[c + NY];
-        const sa = ia * BODY;
-        const sb = ib * BODY;
-        const vAx = states[sa + VX];
-        const vAy = states[sa + VY];
-        const wA = states[sa + W];
-        const vBx = states[sb + VX];
-        const vBy = states[sb + VY];
-        const wB = states[sb + W];
-        const pointCount = constraints[c + POINTS];
-        for (let p = 0; p < pointCount; p++) {
-          const point = (2 * k + p) * POINT_STRIDE;
-          const q = c + P + p * POINT;
-          const rAx = constraints[q + RAX];
-          const rAy = constraints[q + RAY];
-          const rBx = constraints[q + RBX];
-          const rBy = constraints[q + RBY];
-          constraints[q + BASE_SEPARATION] = contacts.points[point + PT_SEPARATION] - ((rBx - rAx) * nx + (rBy - rAy) * ny);
-          constraints[q + NORMAL_IMPULSE] = contacts.points[point + PT_NORMAL_IMPULSE];
-          constraints[q + TANGENT_IMPULSE] = contacts.points[point + PT_TANGENT_IMPULSE];
-          constraints[q + MAX_NORMAL_IMPULSE] = 0;
-          const dvx = vBx - wB * rBy - (vAx - wA * rAy);
-          const dvy = vBy + wB * rBx - (vAy + wA * rAx);
-          const vn = dvx * nx + dvy * ny;
-          constraints[q + RELATIVE_VELOCITY] = vn;
-          constraints[q + IMPACT_VELOCITY] = 0;
-          contacts.points[point + PT_APPROACH_SPEED] = -vn;
-        }
-        laneCounts[0]++;
-        continue;
-      }
-      constraints[c + BIAS_RATE] = soft[0];
-      constraints[c + MASS_SCALE] = soft[1];
-      constraints[c + IMPULSE_SCALE] = soft[2];
+        constraints[c + IMPULSE_SCALE] === soft[2];
       const nx = contacts.normalX[k];
       const ny = contacts.normalY[k];
-      constraints[c + NX] = nx;
-      constraints[c + NY] = ny;
-      constraints[c + FRICTION] = contacts.friction[k];
-      constraints[c + RESTITUTION] = contacts.restitution[k];
-      constraints[c + ROLLING] = contacts.rollingResistance[k];
+      if (kept) laneCounts[0]++;
+      else {
+        constraints[c + BIAS_RATE] = soft[0];
+        constraints[c + MASS_SCALE] = soft[1];
+        constraints[c + IMPULSE_SCALE] = soft[2];
+        constraints[c + NX] = nx;
+        constraints[c + NY] = ny;
+        constraints[c + FRICTION] = contacts.friction[k];
+        constraints[c + RESTITUTION] = contacts.restitution[k];
+        constraints[c + ROLLING] = contacts.rollingResistance[k];
+        constraints[c + ROLLING_MASS] = contacts.rollingResistance[k] > 0 && iA + iB > 0 ? 1 / (iA + iB) : 0;
+        constraints[c + MA] = mA;
+        constraints[c + IA] = iA;
+        constraints[c + MB] = mB;
+        constraints[c + IB] = iB;
+        constraints[c + POINTS] = contacts.pointCount[k];
+      }
       constraints[c + ROLLING_IMPULSE] = contacts.rollingImpulse[k];
-      constraints[c + ROLLING_MASS] = contacts.rollingResistance[k] > 0 && iA + iB > 0 ? 1 / (iA + iB) : 0;
-      constraints[c + MA] = mA;
-      constraints[c + IA] = iA;
-      constraints[c + MB] = mB;
-      constraints[c + IB] = iB;
       const pointCount = contacts.pointCount[k];
-      constraints[c + POINTS] = pointCount;
       const sa = ia * BODY;
       const sb = ib * BODY;
       const vAx = states[sa + VX];
@@ -489,28 +458,39 @@ export class SoftStep {
       for (let p = 0; p < pointCount; p++) {
         const point = (2 * k + p) * POINT_STRIDE;
         const q = c + P + p * POINT;
-        const shortA = armScale(contacts.points[point + PT_ANCHOR_AX], contacts.points[point + PT_ANCHOR_AY], mA, iA);
-        const shortB = armScale(contacts.points[point + PT_ANCHOR_BX], contacts.points[point + PT_ANCHOR_BY], mB, iB);
-        const rAx = contacts.points[point + PT_ANCHOR_AX] * shortA;
-        const rAy = contacts.points[point + PT_ANCHOR_AY] * shortA;
-        const rBx = contacts.points[point + PT_ANCHOR_BX] * shortB;
-        const rBy = contacts.points[point + PT_ANCHOR_BY] * shortB;
-        constraints[q + RAX] = rAx;
-        constraints[q + RAY] = rAy;
-        constraints[q + RBX] = rBx;
-        constraints[q + RBY] = rBy;
+        let rAx: number;
+        let rAy: number;
+        let rBx: number;
+        let rBy: number;
+        if (kept) {
+          rAx = constraints[q + RAX];
+          rAy = constraints[q + RAY];
+          rBx = constraints[q + RBX];
+          rBy = constraints[q + RBY];
+        } else {
+          const shortA = armScale(contacts.points[point + PT_ANCHOR_AX], contacts.points[point + PT_ANCHOR_AY], mA, iA);
+          const shortB = armScale(contacts.points[point + PT_ANCHOR_BX], contacts.points[point + PT_ANCHOR_BY], mB, iB);
+          rAx = contacts.points[point + PT_ANCHOR_AX] * shortA;
+          rAy = contacts.points[point + PT_ANCHOR_AY] * shortA;
+          rBx = contacts.points[point + PT_ANCHOR_BX] * shortB;
+          rBy = contacts.points[point + PT_ANCHOR_BY] * shortB;
+          constraints[q + RAX] = rAx;
+          constraints[q + RAY] = rAy;
+          constraints[q + RBX] = rBx;
+          constraints[q + RBY] = rBy;
+          const rnA = rAx * ny - rAy * nx;
+          const rnB = rBx * ny - rBy * nx;
+          const kNormal = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+          constraints[q + NORMAL_MASS] = kNormal > 0 ? 1 / kNormal : 0;
+          const rtA = rAx * ty - rAy * tx;
+          const rtB = rBx * ty - rBy * tx;
+          const kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
+          constraints[q + TANGENT_MASS] = kTangent > 0 ? 1 / kTangent : 0;
+        }
         constraints[q + BASE_SEPARATION] = contacts.points[point + PT_SEPARATION] - ((rBx - rAx) * nx + (rBy - rAy) * ny);
         constraints[q + NORMAL_IMPULSE] = contacts.points[point + PT_NORMAL_IMPULSE];
         constraints[q + TANGENT_IMPULSE] = contacts.points[point + PT_TANGENT_IMPULSE];
         constraints[q + MAX_NORMAL_IMPULSE] = 0;
-        const rnA = rAx * ny - rAy * nx;
-        const rnB = rBx * ny - rBy * nx;
-        const kNormal = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-        constraints[q + NORMAL_MASS] = kNormal > 0 ? 1 / kNormal : 0;
-        const rtA = rAx * ty - rAy * tx;
-        const rtB = rBx * ty - rBy * tx;
-        const kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
-        constraints[q + TANGENT_MASS] = kTangent > 0 ? 1 / kTangent : 0;
         const dvx = vBx - wB * rBy - (vAx - wA * rAy);
         const dvy = vBy + wB * rBx - (vAy + wA * rAx);
         const vn = dvx * nx + dvy * ny;

@@ -89,7 +89,7 @@ export const limitIO = new Float64Array(4);
  */
 export const holdIO = new Float64Array(3);
 
-/** After a push of joint stage: holds both bodies within the speed limits where holdIO says the joint has far arms. */
+/** After a stage's push: holds both bodies within the speed limits where holdIO says the joint has far arms. */
 export function holdPushed(states: Float64Array, sa: number, sb: number): void {
   if (holdIO[0] !== 1) return;
   if (states[sa + DYNAMIC] === 1) holdState(states, sa, holdIO[1], holdIO[2]);
