@@ -10,7 +10,7 @@
 // writes its bodies back only when they are dynamic, and the dummy never is.
 //
 // Clamps use f64x2.pmin and pmax (b < a ? b : a, a < b ? b : a), one x86 instruction each,
-// where min and max take a dozen to give NaN and -0 < +0 their IEEE meaning. They give the bits
+// where V8 spends eight on min and max to give NaN and -0 < +0 their IEEE meaning. They give the bits
 // of the TypeScript's Math.min and Math.max here: no operand is NaN in a finite state, and no clamp
 // meets a -0 against a +0: accumulated impulses start at +0 and stay at or above it, so a total is
 // -0 only from two -0 terms, and a friction limit's ends are +0 and -0 only where the clamped
