@@ -20,6 +20,11 @@ class Collector implements PairConsumer {
   }
 }
 
+/** The broad-phase auto used for the world's last step. */
+function broadPhaseOf(world: World): string {
+  return (world as unknown as { pipeline: { broadPhase: { current: { name: string } } } }).pipeline.broadPhase.current.name;
+}
+
 function candidates(store: BodyStore, name: (typeof BROADPHASE_NAMES)[number]): string[] {
   const collector = new Collector();
   const sink = new PairSink(collector, () => 0);
@@ -151,6 +156,67 @@ describe('broad-phase contract', () => {
     sink.begin();
     grid.findPairs(store, sink);
     expect(grid.geometry.columns * grid.geometry.rows).toBeLessThanOrEqual(4 * 101 + 64);
+  });
+});
+
+describe('hashgrid (Max Grid cells in a hash table)', () => {
+  it('finds every touching pair, once, whatever the extent: crowds far apart, coordinates to 1e12, tangent pairs, radius 0 points', () => {
+    // Clusters of circles at any place up to 1e12 from the origin and of any size from 1e-3 to
+    // 1e3, each with a tangent partner beside it and below it, and points of radius 0 on top of
+    // each other: the cells' coordinates reach 2^41, and hash to shared buckets.
+    const cluster = fc.record({
+      x: fc.double({ min: -1e12, max: 1e12, noNaN: true }),
+      y: fc.double({ min: -1e12, max: 1e12, noNaN: true }),
+      r: fc.double({ min: 1e-3, max: 1e3, noNaN: true }),
+      count: fc.integer({ min: 1, max: 12 }),
+    });
+    fc.assert(
+      fc.property(fc.array(cluster, { minLength: 1, maxLength: 10 }), fc.array(fc.nat(200), { maxLength: 10 }), (clusters, holes) => {
+        const list: { x: number; y: number; r: number }[] = [];
+        for (const c of clusters) {
+          for (let k = 0; k < c.count; k++) {
+            const x = c.x + (k % 4) * 1.5 * c.r;
+            const y = c.y + Math.floor(k / 4) * 1.5 * c.r;
+            list.push({ x, y, r: c.r }, { x: x + 2 * c.r, y, r: c.r }, { x, y: y + 2 * c.r, r: c.r });
+          }
+          list.push({ x: c.x, y: c.y, r: 0 }, { x: c.x, y: c.y, r: 0 });
+        }
+        const store = storeOf(list, holes);
+        const found = candidates(store, 'hashgrid');
+        const set = new Set(found);
+        expect(set.size).toBe(found.length);
+        for (let i = 0; i < store.slotCount; i++) {
+          if (store.type[i] === TypeCode.free) continue;
+          for (let j = i + 1; j < store.slotCount; j++) {
+            if (store.type[j] === TypeCode.free) continue;
+            const dx = store.x[j] - store.x[i];
+            const dy = store.y[j] - store.y[i];
+            const reach = store.radius[i] + store.radius[j];
+            if (dx * dx + dy * dy <= reach * reach) expect(set.has(`${i},${j}`), `${i},${j}`).toBe(true);
+          }
+        }
+      }),
+      { numRuns: 60, seed: 11 },
+    );
+  });
+
+  it('examines as few pairs per body with two crowds a million units apart as Max Grid does with the crowds side by side', () => {
+    const build = (broadphase: 'hashgrid' | 'maxgrid', apart: number) => {
+      const world = new World({ broadphase });
+      for (let k = 0; k < 3000; k++) {
+        const off = k < 1500 ? 0 : apart;
+        const j = k % 1500;
+        world.createCircle({ x: off + (j % 50) * 9, y: off + Math.floor(j / 50) * 9, radius: 2, vx: (k % 7) - 3, vy: (k % 5) - 2 });
+      }
+      world.step(1 / 60);
+      return world;
+    };
+    const near = build('maxgrid', 500);
+    const far = build('hashgrid', 1e6);
+    const farGrid = build('maxgrid', 1e6);
+    expect(far.stats.pairTests).toBeLessThan(2 * near.stats.pairTests);
+    expect(farGrid.stats.pairTests).toBeGreaterThan(100 * far.stats.pairTests);
+    expect(far.stateHash()).toBe(farGrid.stateHash());
   });
 });
 
@@ -319,7 +385,7 @@ describe('mixed sizes (report 3.2: Max Grid degrades when sizes differ by an ord
 });
 
 describe('auto, when the grid examines too much (two crowds far apart make its cells huge)', () => {
-  it('turns to the persistent sweep, keeps the bits, and goes back to the grid once it pays again', () => {
+  it('turns to the hashed grid, keeps the bits, and goes back to the grid once it pays again', () => {
     // Two crowds of 1500, a million units apart: neither is an outlier the extent can leave out,
     // so a grid of about one cell per body has cells far larger than either crowd.
     const build = (broadphase: 'auto' | 'maxgrid') => {
@@ -343,7 +409,8 @@ describe('auto, when the grid examines too much (two crowds far apart make its c
       auto.world.step(1 / 60);
       grid.world.step(1 / 60);
       expect(auto.world.gridGeometry()).toBeNull();
-      expect(auto.world.stats.pairTests).toBeLessThan(grid.world.stats.pairTests / 50);
+      expect(broadPhaseOf(auto.world)).toBe('hashgrid');
+      expect(auto.world.stats.pairTests).toBeLessThan(grid.world.stats.pairTests / 100);
       expect(auto.world.stateHash()).toBe(grid.world.stateHash());
     }
     // With one crowd left the grid fits it again: after the wait, auto retries it and keeps it.
@@ -366,7 +433,37 @@ describe('auto, when the grid examines too much (two crowds far apart make its c
     expect(world.stats.pairTests).toBeLessThan(10 * 3000);
   });
 
-  it('goes back to the grid when the sweep examines about as much (every body bursting from one spot)', () => {
+  it('turns to the persistent sweep where sizes crowd the hashed cells too, and keeps the bits', () => {
+    // Two crowds a million units apart, each of small circles among a few large ones: cells as
+    // wide as the large ones hold dozens of small ones.
+    const build = (broadphase: 'auto' | 'maxgrid') => {
+      const world = new World({ broadphase });
+      for (let k = 0; k < 3000; k++) {
+        const off = k < 1500 ? 0 : 1e6;
+        const j = k % 1500;
+        world.createCircle({ x: off + (j % 50) * 9, y: off + Math.floor(j / 50) * 9, radius: j % 300 === 0 ? 60 : 2, vx: (k % 7) - 3, vy: (k % 5) - 2 });
+      }
+      return world;
+    };
+    const auto = build('auto');
+    const grid = build('maxgrid');
+    const used: string[] = [];
+    const examined: number[] = [];
+    for (let s = 0; s < 5; s++) {
+      auto.step(1 / 60);
+      grid.step(1 / 60);
+      used.push(broadPhaseOf(auto));
+      examined.push(auto.stats.pairTests);
+      expect(auto.stateHash()).toBe(grid.stateHash());
+    }
+    // What auto chose after each step: the grid examined hundreds of pairs per body, the hashed
+    // grid half as many, and the sweep a fiftieth.
+    expect(used).toEqual(['hashgrid', 'sap-persistent', 'sap-persistent', 'sap-persistent', 'sap-persistent']);
+    expect(examined[1]).toBeGreaterThan(examined[0] / 4);
+    expect(examined[4]).toBeLessThan(examined[0] / 8);
+  });
+
+  it('goes back to the grid when its replacement examines about as much (every body bursting from one spot)', () => {
     const worlds = (['auto', 'maxgrid'] as const).map((broadphase) => {
       const world = new World({ broadphase });
       for (let k = 0; k < 1000; k++) world.createCircle({ x: (k % 31) / 16, y: Math.floor(k / 31) / 16, radius: 1 });
@@ -375,12 +472,32 @@ describe('auto, when the grid examines too much (two crowds far apart make its c
     const used: string[] = [];
     for (let s = 0; s < 6; s++) {
       for (const world of worlds) world.step(1 / 60);
-      used.push((worlds[0] as unknown as { pipeline: { broadPhase: { current: { name: string } } } }).pipeline.broadPhase.current.name);
+      used.push(broadPhaseOf(worlds[0]));
       expect(worlds[0].stateHash()).toBe(worlds[1].stateHash());
     }
     // One step on the sweep, which examined nearly as many pairs as the grid, then the grid again.
     expect(used[0]).toBe('sap-persistent');
-    expect(used.slice(2).every((name) => name !== 'sap-persistent')).toBe(true);
+    expect(used.slice(2).every((name) => name === 'hgrid')).toBe(true);
+  });
+
+  it('goes back to Max Grid when the hashed grid and the sweep examine about as much (a crowd in one spot among bodies spread wide)', () => {
+    // Max Grid caps its cells at about 4 per body, so over the spread bodies' extent its cells
+    // are some 7 times the diameter and the crowd fills one; the hashed cells are the diameter
+    // itself, and the crowd, a point, still fills one.
+    const worlds = (['auto', 'maxgrid'] as const).map((broadphase) => {
+      const world = new World({ broadphase });
+      for (let k = 0; k < 1000; k++) world.createCircle({ x: (k % 32) * 30, y: Math.floor(k / 32) * 30, radius: 1 });
+      for (let k = 0; k < 600; k++) world.createCircle({ x: 480 + (k % 25) / 100, y: 480 + Math.floor(k / 25) / 100, radius: 1 });
+      return world;
+    });
+    const used: string[] = [];
+    for (let s = 0; s < 4; s++) {
+      for (const world of worlds) world.step(1 / 60);
+      used.push(broadPhaseOf(worlds[0]));
+      expect(worlds[0].stateHash()).toBe(worlds[1].stateHash());
+    }
+    // What auto chose after each step: the hashed grid, then the sweep, then the grid again.
+    expect(used).toEqual(['hashgrid', 'sap-persistent', 'maxgrid', 'maxgrid']);
   });
 });
 
@@ -400,8 +517,8 @@ describe('the default broad-phase where a grid used to fall off a cliff', () => 
       crowd(world, 3000, 10, 10);
       return world;
     }],
-    // The grid's cells span both crowds: auto sweeps instead, examining about 25 pairs per body.
-    ['two crowds a million units apart', 64, () => {
+    // The grid's cells span both crowds: auto hashes its cells instead.
+    ['two crowds a million units apart', 10, () => {
       const world = new World();
       crowd(world, 1500, 0, 0);
       crowd(world, 1500, 1e6, 1e6);

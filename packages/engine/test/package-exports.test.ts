@@ -18,7 +18,7 @@ describe('package exports', () => {
       console.log(JSON.stringify({ names: BROADPHASE_NAMES, bodies: w.bodyCount, isWorld: w instanceof World }));
     `;
     const out = execFileSync(process.execPath, ['--input-type=module', '-e', script], { cwd: root }).toString();
-    expect(JSON.parse(out)).toEqual({ names: ['naive', 'sap', 'sap-xy', 'sap-persistent', 'maxgrid', 'hgrid', 'auto'], bodies: 50, isWorld: true });
+    expect(JSON.parse(out)).toEqual({ names: ['naive', 'sap', 'sap-xy', 'sap-persistent', 'maxgrid', 'hgrid', 'hashgrid', 'auto'], bodies: 50, isWorld: true });
     expect(existsSync(`${root}packages/engine/dist/index.d.ts`)).toBe(true);
     // The worker script's own export, imported where it has no worker to serve: it does nothing.
     expect(execFileSync(process.execPath, ['--input-type=module', '-e', "await import('@maxgrid/engine/worker'); console.log('loaded')"], { cwd: root }).toString().trim()).toBe('loaded');

@@ -4,6 +4,7 @@ import type { PairSink } from '../store/pair-sink.js';
 import { MaxGridBroadPhase } from './maxgrid.js';
 import { HierarchicalGridBroadPhase } from './hgrid.js';
 import { PersistentSapBroadPhase } from './sap-persistent.js';
+import { HashGridBroadPhase } from './hash-grid.js';
 import { LiveExtent } from './live-extent.js';
 
 /**
@@ -34,15 +35,22 @@ export const CROWDING_FOR_HGRID = 5;
 const RECHOOSE_EVERY = 30;
 
 /**
- * Pairs a grid may examine per body before auto turns to the persistent sweep. A grid holds at
- * most 4n + 64 cells over its extent, which it fits to all but a few bodies (extent-fit.ts), so
- * a few far-away bodies or a huge empty box cost nothing; but two crowds of 10,000 a million
- * units apart still share cells a million units wide, and examined 5,000 pairs per body, stepping
- * far slower on maxgrid and hgrid than on sap-persistent, whose sweep does not depend on the extent
- * (docs/engine.md, Numbers). Sparse scenes examine about 2 pairs per body; crowded `mixed` on
- * hgrid stays under 10.
+ * Pairs a grid may examine per body before auto turns to a broad-phase that does not depend on the
+ * extent: the hashed grid in place of Max Grid, the persistent sweep in place of the hierarchical
+ * grid. A grid holds at most 4n + 64 cells over its extent, which it fits to all but a few bodies
+ * (extent-fit.ts), so a few far-away bodies or a huge empty box cost nothing; but two crowds of
+ * 10,000 a million units apart still share cells a million units wide, and examined 5,000 pairs
+ * per body (docs/engine.md, Numbers). Sparse scenes examine about 2 pairs per body; crowded
+ * `mixed` on hgrid stays under 10.
  */
 export const EXAMINED_PER_BODY_FOR_SWEEP = 64;
+
+/**
+ * SWEEP_MARGIN for the hashed grid: it examines Max Grid's neighbourhoods, at a few times the
+ * cost per pair of the dense grid's kernel (its buckets lie apart in memory), and far crowds
+ * then examine some 100 times fewer pairs than on the grid.
+ */
+const HASH_MARGIN = 4;
 
 /**
  * How many times fewer pairs the sweep must examine than the grid it replaced, or auto goes back to
@@ -57,9 +65,11 @@ const LONGEST_RETRY = 32 * RECHOOSE_EVERY;
 
 /**
  * Picks a broad-phase from the scene: Max Grid while its cells stay sparse, the hierarchical grid
- * when a few large circles make them crowded, and the persistent sweep when the chosen grid
- * examined more than EXAMINED_PER_BODY_FOR_SWEEP pairs per body (cells the extent made huge),
- * unless the sweep then examines nearly as many (SWEEP_MARGIN); the grid is retried after
+ * when a few large circles make them crowded, and when the chosen grid examined more than
+ * EXAMINED_PER_BODY_FOR_SWEEP pairs per body (cells the extent made huge) the hashed grid in place
+ * of Max Grid, and the persistent sweep in place of the hierarchical grid or of a hashed grid that
+ * examined too much itself or nearly as much as the grid (HASH_MARGIN), unless the sweep then
+ * examines nearly as many as the grid (SWEEP_MARGIN); the grid is retried after
  * RECHOOSE_EVERY steps, then after twice as many each time it fails again. Every broad-phase
  * yields the same contacts in the same canonical order, so switching between them never changes
  * the result, only the cost.
@@ -69,6 +79,7 @@ export class AutoBroadPhase implements BroadPhase {
   private readonly uniform = new MaxGridBroadPhase();
   private readonly mixed = new HierarchicalGridBroadPhase();
   private readonly sweep = new PersistentSapBroadPhase();
+  private readonly hashed = new HashGridBroadPhase();
   private readonly extent = new LiveExtent();
   private chosenFor = -1;
   private stepsSinceChoice = 0;
@@ -94,11 +105,17 @@ export class AutoBroadPhase implements BroadPhase {
    * the sweep. The parallel step, which runs the chosen Max Grid itself, reports here too.
    */
   noteExamined(used: BroadPhase, examined: number, bodies: BodyStore): void {
-    if (used === this.sweep) {
-      // The sweep must examine far fewer pairs than the grid it replaced to be worth keeping: when
-      // every body starts in one spot, both examine alike and the grid is the faster (see
-      // SWEEP_MARGIN). Else back to that grid until the next choice.
-      if (examined * SWEEP_MARGIN > this.gridExamined) {
+    if (used === this.sweep || used === this.hashed) {
+      // A replacement must examine far fewer pairs than the grid it replaced to be worth
+      // keeping: when every body starts in one spot, each examines alike and the grid is the
+      // faster (see SWEEP_MARGIN). Else the sweep after the hashed grid, and the grid after the
+      // sweep, until the next choice.
+      if (used === this.hashed) {
+        // Hashed cells are as wide as the largest body: crowds far apart whose sizes differ
+        // crowd them as they crowd Max Grid's (the choice by crowding saw the extent's empty
+        // space, not the crowds), and the sweep, which does not care, is tried next.
+        if (examined * HASH_MARGIN > this.gridExamined || examined > EXAMINED_PER_BODY_FOR_SWEEP * bodies.proxyCount) this.current = this.sweep;
+      } else if (examined * SWEEP_MARGIN > this.gridExamined) {
         this.current = this.lastGrid;
         this.gridKept = true;
       }
@@ -108,7 +125,8 @@ export class AutoBroadPhase implements BroadPhase {
     if (examined > EXAMINED_PER_BODY_FOR_SWEEP * bodies.proxyCount) {
       this.gridExamined = examined;
       this.lastGrid = used;
-      this.current = this.sweep;
+      // Max Grid's cells without its extent, or for sizes that crowd them, the sweep.
+      this.current = used === this.uniform ? this.hashed : this.sweep;
       this.rechooseAfter = Math.min(2 * this.rechooseAfter, LONGEST_RETRY);
     } else {
       this.rechooseAfter = RECHOOSE_EVERY;
@@ -121,7 +139,7 @@ export class AutoBroadPhase implements BroadPhase {
     if (due || this.chosenFor !== bodies.membershipVersion) {
       // Bodies coming or going do not cut short a wait on the sweep: a spawner would otherwise
       // bring back the slow grid for one step each time.
-      const waiting = (this.current === this.sweep || this.gridKept) && !due;
+      const waiting = (this.current === this.sweep || this.current === this.hashed || this.gridKept) && !due;
       const kept = this.current;
       this.choose(bodies);
       if (waiting) {
@@ -135,7 +153,7 @@ export class AutoBroadPhase implements BroadPhase {
   }
 
   memoryBytes(): number {
-    return this.uniform.memoryBytes() + this.mixed.memoryBytes() + this.sweep.memoryBytes() + this.extent.memoryBytes();
+    return this.uniform.memoryBytes() + this.mixed.memoryBytes() + this.sweep.memoryBytes() + this.hashed.memoryBytes() + this.extent.memoryBytes();
   }
 
   private choose(bodies: BodyStore): void {

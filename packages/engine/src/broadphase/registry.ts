@@ -5,6 +5,7 @@ import { SapXyBroadPhase } from './sap-xy.js';
 import { PersistentSapBroadPhase } from './sap-persistent.js';
 import { MaxGridBroadPhase } from './maxgrid.js';
 import { HierarchicalGridBroadPhase } from './hgrid.js';
+import { HashGridBroadPhase } from './hash-grid.js';
 import { AutoBroadPhase } from './auto.js';
 
 export const BROADPHASES = {
@@ -14,6 +15,7 @@ export const BROADPHASES = {
   'sap-persistent': () => new PersistentSapBroadPhase(),
   maxgrid: () => new MaxGridBroadPhase(),
   hgrid: () => new HierarchicalGridBroadPhase(),
+  hashgrid: () => new HashGridBroadPhase(),
   auto: () => new AutoBroadPhase(),
 } satisfies Record<string, () => BroadPhase>;
 
