@@ -655,6 +655,42 @@ describe('no NaN or infinity from finite input', () => {
     }
   });
 
+  it('shapes of any size across segments up to 2e100 long, anywhere, stay finite and the step never throws', () => {
+    // A segment's closest point to a shape multiplies squared lengths together (its parameter's
+    // numerator and denominator), past the largest double for lengths beyond about 1e77.
+    const extent = fc.constantFrom(1e-3, 1, 1e12, 1e50, 1e60, 1e80, 1e99, 1e100);
+    const place = fc.constantFrom(0, 1, -1, 1e50, -1e99, 1e100);
+    fc.assert(
+      fc.property(
+        fc.record({ x1: place, y1: place, x2: place, y2: place, half: extent }),
+        fc.constantFrom('circle' as const, 'capsule' as const, 'box' as const),
+        fc.record({ size: extent, angle: fc.constantFrom(0, 0.001, 1), bullet: fc.boolean(), vy: fc.constantFrom(0, 10, 1e6) }),
+        fc.constantFrom('soft' as const, 'elastic' as const),
+        fc.constantFrom(1 / 60, 0),
+        (segment, kind, body, solver, dt) => {
+          const world = new World({ solver, friction: 0.5, gravity: { x: 0, y: 10 } });
+          // Either the segment given, or one of length 2 * half through the origin.
+          const { x1, y1, x2, y2 } = segment.x1 === segment.x2 && segment.y1 === segment.y2 ? { x1: -segment.half, y1: 1, x2: segment.half, y2: 0 } : segment;
+          world.createSegment({ x1, y1, x2, y2 });
+          const size = Math.min(body.size, 1e49);
+          const common = { x: 0, y: 0, angle: body.angle, vy: body.vy, bullet: body.bullet };
+          if (kind === 'circle') world.createCircle({ ...common, radius: size, friction: 0.5 });
+          else if (kind === 'capsule') world.createCapsule({ ...common, length: Math.min(2 * size, 1e50), radius: 2 });
+          else world.createBox({ ...common, width: size, height: size });
+          for (let s = 0; s < 3; s++) {
+            world.step(dt);
+            assertFinite(world, null, { op: 'step', dt });
+          }
+          const contacts = world.contactPoints();
+          for (let k = 0; k < contacts.count; k++) {
+            expect([contacts.x[k], contacts.y[k], contacts.separation[k]].every(Number.isFinite), `contact ${k}`).toBe(true);
+          }
+        },
+      ),
+      { numRuns: 400, seed: 23 },
+    );
+  });
+
   it('capsules whose cores round to a point (too short for where they lie) meet as circles, finite', () => {
     const cases = [
       { x: 1e17, y: 1e17, length: 3 },

@@ -41,14 +41,27 @@ export class SegmentDistance {
     const p2y = g[5];
     const q2x = g[6];
     const q2y = g[7];
-    const d1x = q1x - p1x;
-    const d1y = q1y - p1y;
-    const d2x = q2x - p2x;
-    const d2y = q2y - p2y;
-    const rx = p1x - p2x;
-    const ry = p1y - p2y;
-    const a = d1x * d1x + d1y * d1y;
-    const e = d2x * d2x + d2y * d2y;
+    let d1x = q1x - p1x;
+    let d1y = q1y - p1y;
+    let d2x = q2x - p2x;
+    let d2y = q2y - p2y;
+    let rx = p1x - p2x;
+    let ry = p1y - p2y;
+    let a = d1x * d1x + d1y * d1y;
+    let e = d2x * d2x + d2y * d2y;
+    if (a + e + (rx * rx + ry * ry) > HUGE) {
+      // The parameters below multiply squared lengths together, past the largest double for
+      // lengths beyond about 1e77: they are found from the segments scaled by a power of two,
+      // which changes no bit of s and t, and the points from the segments themselves.
+      d1x *= SHRINK;
+      d1y *= SHRINK;
+      d2x *= SHRINK;
+      d2y *= SHRINK;
+      rx *= SHRINK;
+      ry *= SHRINK;
+      a = d1x * d1x + d1y * d1y;
+      e = d2x * d2x + d2y * d2y;
+    }
     const f = d2x * rx + d2y * ry;
     let s = 0;
     let t = 0;
@@ -78,16 +91,21 @@ export class SegmentDistance {
     }
     this.fraction1 = s;
     this.fraction2 = t;
-    this.x1 = p1x + s * d1x;
-    this.y1 = p1y + s * d1y;
-    this.x2 = p2x + t * d2x;
-    this.y2 = p2y + t * d2y;
+    this.x1 = p1x + s * (q1x - p1x);
+    this.y1 = p1y + s * (q1y - p1y);
+    this.x2 = p2x + t * (q2x - p2x);
+    this.y2 = p2y + t * (q2y - p2y);
     const dx = this.x2 - this.x1;
     const dy = this.y2 - this.y1;
     this.distanceSquared = dx * dx + dy * dy;
     return this;
   }
 }
+
+/** Above this sum of squared lengths the products of two of them could overflow (see compute). */
+const HUGE = 1e150;
+/** 2^-300: lengths up to 1e101 become about 1e10. */
+const SHRINK = 2 ** -300;
 
 function clamp01(v: number): number {
   return v < 0 ? 0 : v > 1 ? 1 : v;
