@@ -691,6 +691,21 @@ describe('no NaN or infinity from finite input', () => {
     );
   });
 
+  it("a joint's reported force and torque stay finite when an impulse over a sub-step of 1e-100 s would not, and the world restores", () => {
+    const world = new World();
+    const a = world.createCircle({ x: 1e100, y: 0, angularVelocity: 100, radius: 1 });
+    const b = world.createCircle({ x: 0, y: 0, radius: 1e30 });
+    const joint = world.createJoint({ kind: 'prismatic', bodyA: a, bodyB: b, lowerTranslation: -0.3, upperTranslation: 1e30 });
+    world.step(1e-100);
+    const reported = world.getJoint(joint);
+    expect([reported.force.x, reported.force.y, reported.torque].every(Number.isFinite)).toBe(true);
+    expect(Math.abs(reported.torque)).toBe(Number.MAX_VALUE);
+    const restored = World.restore(world.snapshot());
+    expect(restored.getJoint(joint).torque).toBe(reported.torque);
+    restored.step(1 / 60);
+    assertFinite(restored, null, { op: 'step', dt: 1 / 60 });
+  });
+
   it('capsules whose cores round to a point (too short for where they lie) meet as circles, finite', () => {
     const cases = [
       { x: 1e17, y: 1e17, length: 3 },

@@ -366,6 +366,7 @@ export class JointSolver {
       const j = active[k];
       JOINT_KERNELS[store.kind[j]].reaction(r, j * JOINT_STRIDE, step.inverseH);
     }
+    boundReactions(store);
   }
 
   get count(): number {
@@ -375,4 +376,25 @@ export class JointSolver {
   memoryBytes(): number {
     return this.active.byteLength + 3 * this.pointSlots.byteLength + this.points.memoryBytes() + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
   }
+}
+
+/**
+ * Holds every joint's reported force and torque within the doubles: each is an impulse over the
+ * sub-step, and a finite impulse over a sub-step of 1e-100 s can exceed the largest double. The
+ * bodies never see these numbers; getJoint, the break thresholds and snapshots do. Its own
+ * function with nothing after its loop (see listJoints).
+ */
+function boundReactions(store: JointStore): void {
+  const r = store.record;
+  for (let j = 0; j < store.slotCount; j++) {
+    if (store.live[j] === 0) continue;
+    const o = j * JOINT_STRIDE;
+    r[o + FORCE_X] = bounded(r[o + FORCE_X]);
+    r[o + FORCE_Y] = bounded(r[o + FORCE_Y]);
+    r[o + TORQUE] = bounded(r[o + TORQUE]);
+  }
+}
+
+function bounded(v: number): number {
+  return v > Number.MAX_VALUE ? Number.MAX_VALUE : v < -Number.MAX_VALUE ? -Number.MAX_VALUE : v;
 }
