@@ -59,6 +59,28 @@ describe('queries with shapes', () => {
     // From inside a shape the ray ignores it.
     expect(world.rayCast(5, 0, 5, 10)).toBeNull();
   });
+
+  it('rays: a unit outward normal on round shapes of any size, where the entry point rounds onto the core', () => {
+    // A radius of 1e-20 beside a cast 2 long: the entry point rounds to the centre, or onto the
+    // capsule's core, and a normal taken from it has length 0.
+    for (const radius of [1e-40, 1e-20, 1e-8, 1, 1e6]) {
+      const w = new World({ friction: 0.5 });
+      const circle = w.createCircle({ x: 5, y: 0, radius, friction: 0.5 });
+      const capsule = w.createCapsule({ x: 5, y: 10 * radius + 10, length: 4, radius });
+      const casts = [
+        // straight down onto the circle, and the capsule's side, then its end from the right
+        { from: [5, -1 - radius], to: [5, 1 + radius], handle: circle, normal: [0, -1] },
+        { from: [6, 9 * radius + 9], to: [6, 11 * radius + 11], handle: capsule, normal: [0, -1] },
+        { from: [10 + 3 * radius, 10 * radius + 10], to: [0, 10 * radius + 10], handle: capsule, normal: [1, 0] },
+      ];
+      for (const { from, to, handle, normal } of casts) {
+        const hit = w.rayCast(from[0], from[1], to[0], to[1])!;
+        expect(hit?.handle, `radius ${radius}`).toBe(handle);
+        expect(hit.normalX, `radius ${radius}`).toBeCloseTo(normal[0], 12);
+        expect(hit.normalY, `radius ${radius}`).toBeCloseTo(normal[1], 12);
+      }
+    }
+  });
 });
 
 describe('shape queries with a few bodies far from the crowd', () => {

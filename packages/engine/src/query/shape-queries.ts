@@ -2,7 +2,7 @@ import type { ShapeStore } from '../store/shape-store.js';
 import { ShapeKind } from '../shapes/geometry.js';
 import { WorldShape } from '../narrowphase/world-shape.js';
 import { ShapeDistance } from '../narrowphase/distance.js';
-import { rayCircle } from './ray-circle.js';
+import { rayCircle, rayCircleEntry } from './ray-circle.js';
 import { rayCapsule } from './ray-capsule.js';
 import { poseOf, shapeBounds } from '../shapes/bounds.js';
 
@@ -52,7 +52,7 @@ export function rayShape(shapes: ShapeStore, slot: number, px: number, py: numbe
   const r = g.radius;
   if (g.kind === ShapeKind.circle) {
     const t = rayCircle(x1, y1, dx, dy, g.x[0], g.y[0], r);
-    if (t >= 0) setNormalFrom(x1 + t * dx - g.x[0], y1 + t * dy - g.y[0]);
+    if (t >= 0) normalAtCircle(x1, y1, dx, dy, g.x[0], g.y[0], r);
     return t;
   }
   if (g.kind === ShapeKind.capsule || r > 0) {
@@ -66,15 +66,25 @@ export function rayShape(shapes: ShapeStore, slot: number, px: number, py: numbe
       const t = rayCapsule(x1, y1, dx, dy, g.x[i], g.y[i], g.x[j], g.y[j], r);
       if (t >= 0 && (best < 0 || t < best)) {
         best = t;
-        // The normal from the edge's closest point to the entry point.
+        // The normal from the edge's closest point to the entry point: from the shape's geometry
+        // rather than that point, which rounds at the start's distance and, past a radius that
+        // is small beside it, onto the core itself (a normal of length 0).
         const hx = x1 + t * dx;
         const hy = y1 + t * dy;
         const ex = g.x[j] - g.x[i];
         const ey = g.y[j] - g.y[i];
         const lengthSq = ex * ex + ey * ey;
-        let u = lengthSq > 0 ? ((hx - g.x[i]) * ex + (hy - g.y[i]) * ey) / lengthSq : 0;
-        u = u < 0 ? 0 : u > 1 ? 1 : u;
-        setNormalFrom(hx - (g.x[i] + u * ex), hy - (g.y[i] + u * ey));
+        const u = lengthSq > 0 ? ((hx - g.x[i]) * ex + (hy - g.y[i]) * ey) / lengthSq : 0;
+        if (u > 0 && u < 1) {
+          // The side of the band the ray came from.
+          const length = Math.sqrt(lengthSq);
+          const side = (x1 - g.x[i]) * ey - (y1 - g.y[i]) * ex > 0 ? 1 : -1;
+          rayNormal.x = (side * ey) / length;
+          rayNormal.y = (-side * ex) / length;
+        } else {
+          const end = u <= 0 ? i : j;
+          normalAtCircle(x1, y1, dx, dy, g.x[end], g.y[end], r);
+        }
       }
     }
     return best;
@@ -110,8 +120,30 @@ export function rayShape(shapes: ShapeStore, slot: number, px: number, py: numbe
   return enter;
 }
 
-function setNormalFrom(x: number, y: number): void {
-  const length = Math.sqrt(x * x + y * y);
-  rayNormal.x = length > 0 ? x / length : 0;
-  rayNormal.y = length > 0 ? y / length : 0;
+const entry = { x: 0, y: 0 };
+
+/**
+ * The outward normal where the ray enters the circle at (cx, cy) of radius r: from its entry
+ * relative to the centre (rayCircleEntry), which stays on the circle however far the ray starts
+ * and however small the circle; for a circle of radius 0, the ray's direction reversed.
+ */
+function normalAtCircle(x1: number, y1: number, dx: number, dy: number, cx: number, cy: number, r: number): void {
+  rayCircleEntry(x1, y1, dx, dy, cx, cy, r, entry);
+  if (!unitNormal(entry.x, entry.y)) unitNormal(-dx, -dy);
+}
+
+/**
+ * (x, y) over its length into rayNormal, scaled by a power of two first where squaring it would
+ * underflow or overflow (a radius below 1e-154); false for (0, 0).
+ */
+function unitNormal(x: number, y: number): boolean {
+  const largest = Math.max(Math.abs(x), Math.abs(y));
+  if (largest === 0) return false;
+  const scale = largest < 2 ** -500 ? 2 ** 600 : largest > 2 ** 500 ? 2 ** -600 : 1;
+  const sx = x * scale;
+  const sy = y * scale;
+  const length = Math.sqrt(sx * sx + sy * sy);
+  rayNormal.x = sx / length;
+  rayNormal.y = sy / length;
+  return true;
 }
