@@ -230,6 +230,17 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
     expect(circles.bodyCount).toBe(1);
   });
 
+  it('a box or polygon too small beside its offset for its vertices to keep their places (a unit box 1e17 out)', () => {
+    const world = new World();
+    const body = world.createBody({ x: 0, y: 0 });
+    world.addShape(body, { kind: 'circle', radius: 1 });
+    refuses(world, () => world.addShape(body, { kind: 'box', width: 1, height: 1, offsetX: 1e17 }), RangeError, /box shape with width 1, height 1 at offsetX 100000000000000000 rounds to an outline/);
+    refuses(world, () => world.addShape(body, { kind: 'polygon', vertices: square, offsetY: -1e16 }), RangeError, /polygon shape with its vertices at offsetY -10000000000000000/);
+    refuses(world, () => world.addShape(body, { kind: 'box', width: 1e-6, height: 1e-6, offsetX: 1e11, offsetAngle: 1 }), RangeError, /rounds to an outline/);
+    // Far, and large enough to keep its shape: accepted.
+    expect(world.addShape(body, { kind: 'box', width: 1, height: 1, offsetX: 1e12 })).toBeGreaterThanOrEqual(0);
+  });
+
   it('a polygon whose outline crosses itself is refused for what it is', () => {
     const world = new World();
     refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 1, y: 0 }, { x: 0, y: 1 }] }), RangeError, /crosses itself/);

@@ -211,9 +211,28 @@ export function resolveGeometry(kind: string, o: Record<string, unknown>, out: G
   if (offsetAngle !== 0 || offsetX !== 0 || offsetY !== 0) {
     cosSin(offsetAngle, rotation);
     out.transform(rotation[0], rotation[1], offsetX, offsetY);
+    if (kind !== 'capsule') checkPlaced(kind, o, out);
   }
   checkReach(kind, o, out);
   return out;
+}
+
+/**
+ * A RangeError where a polygon or box, moved to its offset, is no longer the polygon it was: its
+ * vertices round to the offset's precision, and a shape small beside its offset (a unit box 1e17
+ * out) collapses to a line or a point, with no area or mass. A capsule whose core so rounds to a
+ * point is a circle, and collides as one.
+ */
+function checkPlaced(kind: string, o: Record<string, unknown>, g: Geometry): void {
+  const check = checkPolygon(g.x, g.y, g.count);
+  // Moving a polygon keeps its winding: one that rounded into the other has no outline left.
+  if (check.problem === null && !check.reversed) return;
+  const sizes = ['width', 'height', 'radius'].filter((k) => o[k] !== undefined).map((k) => `${k} ${describeValue(o[k])}`);
+  if (o.vertices !== undefined) sizes.push('its vertices');
+  const offset = ['offsetX', 'offsetY', 'offsetAngle'].filter((k) => o[k] !== undefined).map((k) => `${k} ${describeValue(o[k])}`);
+  throw new RangeError(
+    `a ${kind} shape with ${sizes.join(', ')} at ${offset.join(', ')} rounds to an outline that is no longer that polygon (${check.problem ?? 'turned over'}): it is too small beside its offset for a double to place its vertices; move the body there instead, or make the shape larger`,
+  );
 }
 
 /** A RangeError naming the shape's sizes where it reaches farther than MAX_SHAPE_REACH from its body's origin. */
