@@ -428,6 +428,7 @@ export class World {
    */
   addShape(handle: number, options: ShapeOptions): number {
     const slot = this.slot(handle);
+    const membership = this.bodies.membershipVersion;
     const o = plainObject('shape options', options);
     const kind = o.kind;
     if (typeof kind !== 'string' || !['circle', 'box', 'polygon', 'capsule'].includes(kind)) {
@@ -437,6 +438,7 @@ export class World {
     knownKeys(`${kind} shape options`, o, ['kind', ...geometryKeys, ...MATERIAL_KEYS]);
     const geometry = resolveGeometry(kind, o, new Geometry());
     const shape = resolveMaterial(o, this.materialDefaults(), geometry);
+    this.assertBodiesKept(membership, 'shape options');
     if (!this.shapes.store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} shapes at once`);
     // Everything checked before the world takes the shape route, so that a refused shape leaves
     // it as it was. Until then the body is a circle centred on its origin, which becomes its
@@ -458,6 +460,17 @@ export class World {
     this.shapesChanged(slot);
     this.noteShape(s);
     return this.shapes.store.handleOf(s);
+  }
+
+  /**
+   * Refuses options whose reading (a getter) created or destroyed bodies since `membership` was
+   * read: a handle checked before may no longer name the body it did, and its slot may be free or
+   * another body's.
+   */
+  private assertBodiesKept(membership: number, what: string): void {
+    if (this.bodies.membershipVersion !== membership) {
+      throw new TypeError(`${what}: reading them created or destroyed bodies (a getter with side effects?), so the handles they name may no longer be the bodies they were; pass plain values`);
+    }
   }
 
   /** Removes a shape from its body, whose mass and centre follow; the body stays, with its other shapes. */
@@ -594,8 +607,9 @@ export class World {
     return this.shapes.store.count;
   }
 
-  /** Whether a handle names a live body: false once it is destroyed, even if its slot is reused. */
+  /** Whether a handle names a live body: false once it is destroyed, even if its slot is reused; a TypeError for what is not a finite number. */
   hasBody(handle: number): boolean {
+    finiteNumber('handle', handle);
     return this.bodies.slotOf(handle) >= 0;
   }
 
@@ -673,11 +687,13 @@ export class World {
 
   /** The slot of a live body in the bulk views, or -1 for a stale or unknown handle. */
   slotOfHandle(handle: number): number {
+    finiteNumber('handle', handle);
     return this.bodies.slotOf(handle);
   }
 
   /** The handle of the body in a slot of the bulk views, or -1 for a free slot. */
   handleAtSlot(slot: number): number {
+    finiteNumber('slot', slot);
     const b = this.bodies;
     if (!Number.isInteger(slot) || slot < 0 || slot >= b.slotCount || b.type[slot] === TypeCode.free) return -1;
     return b.handleOf(slot);
@@ -685,6 +701,7 @@ export class World {
 
   /** The handle of the shape in a slot of the shape views, or -1. */
   shapeHandleAtSlot(slot: number): number {
+    finiteNumber('slot', slot);
     const store = this.shapes.store;
     if (!Number.isInteger(slot) || slot < 0 || slot >= store.slotCount || store.live[slot] !== 1) return -1;
     return store.handleOf(slot);
@@ -1004,7 +1021,9 @@ export class World {
    */
   createJoint(options: JointOptions): number {
     if (this.resolved.solver === 'elastic') throw new RangeError("joints need the soft step: this world was made with solver 'elastic'; use 'auto' or 'soft'");
+    const membership = this.bodies.membershipVersion;
     const resolved = resolveJoint(options, this.jointWorld);
+    this.assertBodiesKept(membership, 'joint options');
     const store = this.joints?.store;
     if (store !== undefined && !store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} joints at once`);
     this.engage();
@@ -1027,6 +1046,7 @@ export class World {
 
   /** Whether a handle names a live joint: false once it is destroyed, breaks, or goes with one of its bodies. */
   hasJoint(handle: number): boolean {
+    finiteNumber('handle', handle);
     return this.joints !== null && this.joints.store.slotOf(handle) >= 0;
   }
 

@@ -241,6 +241,56 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
     expect(world.addShape(body, { kind: 'box', width: 1, height: 1, offsetX: 1e12 })).toBeGreaterThanOrEqual(0);
   });
 
+  it('options whose getters create or destroy bodies are refused: the handles checked may no longer be those bodies', () => {
+    const world = new World();
+    const a = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+    const b = world.createBox({ x: 3, y: 0, width: 1, height: 1 });
+    expect(() =>
+      world.createJoint({
+        kind: 'distance',
+        bodyA: a,
+        get bodyB() {
+          world.destroyBody(a);
+          return b;
+        },
+      }),
+    ).toThrow(/joint options: reading them created or destroyed bodies/);
+    expect(world.jointCount).toBe(0);
+    // a's slot, reused, takes no joint
+    const c = world.createCircle({ x: 100, y: 0, radius: 1 });
+    expect(world.jointsOf(c)).toEqual([]);
+    const d = world.createBody({ x: 0, y: 10 });
+    expect(() =>
+      world.addShape(d, {
+        kind: 'box',
+        height: 1,
+        get width() {
+          world.destroyBody(d);
+          return 1;
+        },
+      }),
+    ).toThrow(TypeError);
+    expect(world.shapeCount).toBe(2);
+  });
+
+  it('handle lookups refuse what is not a finite number, and answer false or -1 for numbers that name nothing', () => {
+    const world = new World();
+    const h = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+    for (const bad of ['0', NaN, Infinity, {}, null, undefined, true]) {
+      expect(() => world.hasBody(bad as unknown as number), String(bad)).toThrow(/handle must be a finite number/);
+      expect(() => world.hasJoint(bad as unknown as number), String(bad)).toThrow(TypeError);
+      expect(() => world.slotOfHandle(bad as unknown as number), String(bad)).toThrow(TypeError);
+      expect(() => world.handleAtSlot(bad as unknown as number), String(bad)).toThrow(/slot must be a finite number/);
+      expect(() => world.shapeHandleAtSlot(bad as unknown as number), String(bad)).toThrow(TypeError);
+    }
+    expect(world.hasBody(h)).toBe(true);
+    expect(world.hasBody(h + 0.5)).toBe(false);
+    expect(world.hasBody(-1)).toBe(false);
+    expect(world.hasJoint(0)).toBe(false);
+    expect(world.slotOfHandle(1e9)).toBe(-1);
+    expect(world.handleAtSlot(7)).toBe(-1);
+  });
+
   it('a polygon whose outline crosses itself is refused for what it is', () => {
     const world = new World();
     refuses(world, () => world.createPolygon({ x: 0, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 1 }, { x: 1, y: 0 }, { x: 0, y: 1 }] }), RangeError, /crosses itself/);
