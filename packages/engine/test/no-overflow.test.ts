@@ -706,6 +706,20 @@ describe('no NaN or infinity from finite input', () => {
     assertFinite(restored, null, { op: 'step', dt: 1 / 60 });
   });
 
+  it('a pressure ring 1e106 across (its bodies thrown there at 1e100 m/s for 1e6 s) under a pressure of 1e99 stays finite', () => {
+    const world = new World();
+    const a = world.createCircle({ x: 0, y: 0, vx: -1e100, vy: -1e100, radius: 1 });
+    const b = world.createCircle({ x: 1, y: 0, vx: 1e100, radius: 1 });
+    const c = world.createCircle({ x: 0, y: 1, vy: 1e100, radius: 1 });
+    world.step(1e6);
+    expect(world.getBody(b).x).toBe(1e106);
+    world.createJoint({ kind: 'pressure', bodies: [a, b, c], pressure: 1e99 });
+    for (let s = 0; s < 5; s++) {
+      world.step(1 / 60);
+      assertFinite(world, null, { op: 'step', dt: 1 / 60 });
+    }
+  });
+
   it('capsules whose cores round to a point (too short for where they lie) meet as circles, finite', () => {
     const cases = [
       { x: 1e17, y: 1e17, length: 3 },

@@ -96,8 +96,10 @@ export class GasPressure {
       const rest = r[o + LENGTH];
       const area = Math.max(Math.abs(0.5 * twice), LEAST_AREA * rest);
       // The pressure, with the sense of the ring's winding folded in: (ey, -ex) points out of a
-      // ring of positive area, (-ey, ex) out of one of negative area.
-      const p = ((twice >= 0 ? 1 : -1) * r[o + STIFFNESS] * rest) / area;
+      // ring of positive area, (-ey, ex) out of one of negative area. The areas' ratio first, at
+      // most 1 / LEAST_AREA: the pressure times an area 1e212 wide (a ring 1e106 across) is past
+      // the largest double.
+      const p = (twice >= 0 ? 1 : -1) * r[o + STIFFNESS] * (rest / area);
       const share = 0.5 * h * p;
       for (let i = from; i < to; i++) {
         const j = i + 1 === to ? from : i + 1;
