@@ -137,7 +137,7 @@ export class AutoBroadPhase implements BroadPhase {
   select(bodies: BodyStore): BroadPhase {
     const due = ++this.stepsSinceChoice >= this.rechooseAfter;
     if (due || this.chosenFor !== bodies.membershipVersion) {
-      // Bodies coming or going do not cut short a wait on the sweep: a spawner would otherwise
+      // Bodies coming or going do not cut short a wait on a replacement: a spawner would otherwise
       // bring back the slow grid for one step each time.
       const waiting = (this.current === this.sweep || this.current === this.hashed || this.gridKept) && !due;
       const kept = this.current;

@@ -33,8 +33,8 @@ const BUCKETS_PER_BODY = 2;
  * extent, so two crowds far apart make it choose between memory for the empty space between them
  * and cells wide enough to hold a whole crowd (Max Grid caps its cells at 4 per body and
  * enlarges them: two crowds of 10,000 a million units apart examined 5,000 pairs per body). Here
- * the table has as many buckets as there are bodies, whatever the extent, and a crowd far away
- * costs what it costs near: O(n) with sizes alike.
+ * the table has at least twice as many buckets as there are bodies, whatever the extent, and a
+ * crowd far away costs what it costs near: O(n) with sizes alike.
  *
  * Cells are floor((p - min) / cellSize) along each axis, with the cell size of Max Grid
  * (LiveExtent.cellSizeFor: padded so that touching circles are never more than one cell apart);
@@ -42,7 +42,8 @@ const BUCKETS_PER_BODY = 2;
  * in a double, so neighbouring cells are always distinct. A bucket can hold bodies of several
  * cells; each body carries its cell, and a scan takes only the bodies of the cell it looks for,
  * so every pair is pushed once. Bodies are binned by counting sort into bucket order, copying
- * their positions and radii so that a scan reads memory in order, as CellGrid does.
+ * their cells, positions and radii beside each other, so that a scan reads each body it looks at
+ * from one run of memory.
  *
  * The padded overlap test is CellGrid's, so the pairs pushed are Max Grid's pairs, in another
  * order (the step sorts them canonically).
@@ -54,7 +55,7 @@ export class HashGridBroadPhase implements BroadPhase {
   private bucketOf = new Int32Array(0);
   private cellX = new Float64Array(0);
   private cellY = new Float64Array(0);
-  /** The bodies in bucket order, BODY doubles each (see Sorted): one run of memory per body a scan looks at. */
+  /** The bodies in bucket order, BODY doubles each (CELL_X to SLOT): one run of memory per body a scan looks at. */
   private sorted = new Float64Array(0);
   private shift = 32;
   /** The five cells' body ranges in bucket order, [from, to) each, for the cell being scanned. */
