@@ -35,6 +35,20 @@ function candidates(store: BodyStore, name: (typeof BROADPHASE_NAMES)[number]): 
   return collector.pairs;
 }
 
+/** Every pair of live bodies whose circles touch or overlap is in `found` ("lo,hi" keys). */
+function expectEveryTouchingPair(store: BodyStore, found: Set<string>): void {
+  for (let i = 0; i < store.slotCount; i++) {
+    if (store.type[i] === TypeCode.free) continue;
+    for (let j = i + 1; j < store.slotCount; j++) {
+      if (store.type[j] === TypeCode.free) continue;
+      const dx = store.x[j] - store.x[i];
+      const dy = store.y[j] - store.y[i];
+      const reach = store.radius[i] + store.radius[j];
+      if (dx * dx + dy * dy <= reach * reach) expect(found.has(`${i},${j}`), `${i},${j}`).toBe(true);
+    }
+  }
+}
+
 const circles = fc.array(
   fc.record({
     x: fc.double({ min: -1000, max: 1000, noNaN: true }),
@@ -58,16 +72,7 @@ describe('broad-phase contract', () => {
           expect(store.type[i]).not.toBe(TypeCode.free);
           expect(store.type[j]).not.toBe(TypeCode.free);
         }
-        for (let i = 0; i < store.slotCount; i++) {
-          if (store.type[i] === TypeCode.free) continue;
-          for (let j = i + 1; j < store.slotCount; j++) {
-            if (store.type[j] === TypeCode.free) continue;
-            const dx = store.x[j] - store.x[i];
-            const dy = store.y[j] - store.y[i];
-            const reach = store.radius[i] + store.radius[j];
-            if (dx * dx + dy * dy <= reach * reach) expect(set.has(`${i},${j}`)).toBe(true);
-          }
-        }
+        expectEveryTouchingPair(store, set);
       }),
       { numRuns: 150, seed: 99 },
     );
@@ -185,16 +190,7 @@ describe('hashgrid (Max Grid cells in a hash table)', () => {
         const found = candidates(store, 'hashgrid');
         const set = new Set(found);
         expect(set.size).toBe(found.length);
-        for (let i = 0; i < store.slotCount; i++) {
-          if (store.type[i] === TypeCode.free) continue;
-          for (let j = i + 1; j < store.slotCount; j++) {
-            if (store.type[j] === TypeCode.free) continue;
-            const dx = store.x[j] - store.x[i];
-            const dy = store.y[j] - store.y[i];
-            const reach = store.radius[i] + store.radius[j];
-            if (dx * dx + dy * dy <= reach * reach) expect(set.has(`${i},${j}`), `${i},${j}`).toBe(true);
-          }
-        }
+        expectEveryTouchingPair(store, set);
       }),
       { numRuns: 60, seed: 11 },
     );
