@@ -391,6 +391,24 @@ describe('no NaN or infinity from finite input', () => {
       world.setTransform(k, 0, 1e99, 0);
       return { world, dt: 1e-100, steps: 3 };
     }]);
+    // A joint that cannot be met takes more impulse every sub-step, which the step's bound on its
+    // kept impulses met only at the next step: 64 sub-steps of a long step outgrew the doubles.
+    cases.push(['wheel joint between circles a box was pushed through at 1000 m/s, dt 1000 s in 64 sub-steps', () => {
+      const world = new World({ substeps: 64 });
+      const a = world.createCircle({ x: 1, y: 1, radius: 2 });
+      world.createBox({ x: 1, y: 1, vx: -1000, width: 2, height: 2 });
+      const b = world.createCircle({ x: 0, y: 1, radius: 5 });
+      world.createJoint({ kind: 'wheel', bodyA: b, bodyB: a });
+      return { world, dt: 1000, steps: 3 };
+    }]);
+    cases.push(['prismatic limits from a heavy circle to a fixed-rotation capsule 1e100 away, a step of 1/60 s then of 1e-100 s', () => {
+      const world = new World();
+      const a = world.createCapsule({ x: -1e100, y: 0, angle: -0.3, fixedRotation: true, length: 1e10, radius: 5 });
+      const b = world.createCircle({ x: 0, y: 0, mass: 1e94, radius: 1 });
+      world.createJoint({ kind: 'prismatic', bodyA: b, bodyB: a, lowerTranslation: -1e30, upperTranslation: 1e30 });
+      world.step(1 / 60);
+      return { world, dt: 1e-100, steps: 2 };
+    }]);
     const failures: string[] = [];
     for (const [label, make] of cases) {
       const { world, dt, steps } = make();
@@ -691,7 +709,7 @@ describe('no NaN or infinity from finite input', () => {
     );
   });
 
-  it("a joint's reported force and torque stay finite when an impulse over a sub-step of 1e-100 s would not, and the world restores", () => {
+  it("a joint's reported force and torque (its kept impulses over the sub-step) stay finite at dt 1e-100, and the world restores", () => {
     const world = new World();
     const a = world.createCircle({ x: 1e100, y: 0, angularVelocity: 100, radius: 1 });
     const b = world.createCircle({ x: 0, y: 0, radius: 1e30 });
@@ -699,7 +717,6 @@ describe('no NaN or infinity from finite input', () => {
     world.step(1e-100);
     const reported = world.getJoint(joint);
     expect([reported.force.x, reported.force.y, reported.torque].every(Number.isFinite)).toBe(true);
-    expect(Math.abs(reported.torque)).toBe(Number.MAX_VALUE);
     const restored = World.restore(world.snapshot());
     expect(restored.getJoint(joint).torque).toBe(reported.torque);
     restored.step(1 / 60);

@@ -35,7 +35,7 @@ const KERNEL_OF: Record<Exclude<JointKindName, 'spring' | 'pressure'>, JointKern
 const JOINT_KERNELS: readonly JointKernel[] = JOINT_KIND_NAMES.map((name) => (name === 'spring' || name === 'pressure' ? null! : KERNEL_OF[name]));
 
 /** The accumulated impulses of a joint, and whether each is angular (a torque's) rather than linear. */
-const IMPULSES = [LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE, SPRING_IMPULSE_SUM, MOTOR_IMPULSE, LOWER_IMPULSE, UPPER_IMPULSE, AXIAL_IMPULSE];
+const IMPULSES: readonly number[] = [LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE, SPRING_IMPULSE_SUM, MOTOR_IMPULSE, LOWER_IMPULSE, UPPER_IMPULSE, AXIAL_IMPULSE];
 const ANGULAR: Record<number, readonly number[]> = {
   [JointKind.distance]: [],
   [JointKind.revolute]: [SPRING_IMPULSE_SUM, MOTOR_IMPULSE, LOWER_IMPULSE, UPPER_IMPULSE],
@@ -50,8 +50,9 @@ const ANGULAR: Record<number, readonly number[]> = {
  * speed limits in one sub-step. A joint that cannot be met (made far from its constraint, or
  * against another joint) takes more impulse every sub-step; warm-started from it, the next
  * sub-step's velocities would grow without bound, to infinity and NaN. Met joints never come near.
+ * The bounds, linear and angular, go to bounds[0..1] for holdImpulses.
  */
-function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64Array): void {
+function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64Array, bounds: Float64Array, at: number): void {
   const maxSpeed = limits[0];
   const maxAngular = limits[1];
   const inverseMass = r[o + INV_MASS_A] + r[o + INV_MASS_B];
@@ -63,13 +64,29 @@ function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64
     pinnedTurnAtStart(r, o);
     angular = 2 * maxAngular * turnIO[TURN_MASS];
   }
-  const angularFields = ANGULAR[kind];
+  bounds[at] = linear;
+  bounds[at + 1] = angular;
+  clampImpulses(r, o, kind, linear, angular);
+}
+
+/** Per joint kind, bit k set where IMPULSES[k] is angular (see ANGULAR): holdImpulses runs per joint and sub-step. */
+const ANGULAR_BITS = (() => {
+  const bits = new Uint8Array(JOINT_KIND_NAMES.length);
+  for (const [kind, fields] of Object.entries(ANGULAR)) {
+    for (const field of fields) bits[Number(kind)] |= 1 << IMPULSES.indexOf(field);
+  }
+  return bits;
+})();
+
+/** Each of joint o's kept impulses within `linear` or `angular`, as it is a force's or a torque's. */
+function clampImpulses(r: Float64Array, o: number, kind: number, linear: number, angular: number): void {
+  const bits = ANGULAR_BITS[kind];
   for (let k = 0; k < IMPULSES.length; k++) {
-    const field = IMPULSES[k];
-    const most = angularFields.includes(field) ? angular : linear;
-    const value = r[o + field];
-    if (value > most) r[o + field] = most;
-    else if (value < -most) r[o + field] = -most;
+    const most = ((bits >> k) & 1) === 1 ? angular : linear;
+    const at = o + IMPULSES[k];
+    const value = r[at];
+    if (value > most) r[at] = most;
+    else if (value < -most) r[at] = -most;
   }
 }
 
@@ -117,7 +134,7 @@ export interface JointSettings {
 }
 
 /** Where listJoints counts the joints it lists: general, point distance, spring and pressure joints. */
-const Listed = { active: 0, points: 1, springs: 2, pressure: 3 } as const;
+const Listed = { active: 0, points: 1, springs: 2, pressure: 3, farArms: 4 } as const;
 
 /**
  * The joints' part of the soft step (SoftStep calls each stage where Box2D v3 does: joints before
@@ -128,6 +145,8 @@ const Listed = { active: 0, points: 1, springs: 2, pressure: 3 } as const;
  * step (static or asleep) is skipped and keeps its impulses.
  */
 export class JointSolver {
+  /** Per joint slot, the bounds boundImpulses found for its kept impulses this step: linear, angular. */
+  private bounds = new Float64Array(0);
   private readonly step: JointStepContext = { h: 0, inverseH: 0, soft: new Float64Array(3), spinSoft: new Float64Array(3) };
   /** Live joints some body of which moves this step, in slot order. */
   private active = new Int32Array(0);
@@ -148,7 +167,7 @@ export class JointSolver {
   /** The speed limits (linear, angular) for boundImpulses and holdWithinLimits, then how far two bodies can part in the step (see farArms). */
   private readonly limits = new Float64Array(3);
   /** How many joints listJoints listed of each kind of solve (see Listed). */
-  private readonly listed = new Int32Array(4);
+  private readonly listed = new Int32Array(5);
   /** How the springs are integrated: the world's integrator. */
   integrator: IntegratorName = 'semi-implicit-euler';
 
@@ -193,6 +212,7 @@ export class JointSolver {
       this.pointSlots = new Int32Array(this.active.length);
       this.pointA = new Int32Array(this.active.length);
       this.pointB = new Int32Array(this.active.length);
+      this.bounds = new Float64Array(2 * this.active.length);
     }
     this.limits[0] = maxSpeed;
     this.limits[1] = maxAngular;
@@ -248,7 +268,9 @@ export class JointSolver {
       this.prepareJoint(bodies, j, o, ia, ib);
       if (store.kind[j] === JointKind.spring) this.springSlots[listed[Listed.springs]++] = j;
       else {
-        this.farArms[listed[Listed.active]] = farArms(r, o, this.limits[2]) ? 1 : 0;
+        const far = farArms(r, o, this.limits[2]);
+        this.farArms[listed[Listed.active]] = far ? 1 : 0;
+        if (far) listed[Listed.farArms]++;
         this.active[listed[Listed.active]++] = j;
       }
     }
@@ -306,7 +328,7 @@ export class JointSolver {
       r[o + DELTA_ANGLE] = angle;
     }
     if (store.kind[j] !== JointKind.spring) {
-      boundImpulses(r, o, store.kind[j], this.limits);
+      boundImpulses(r, o, store.kind[j], this.limits, this.bounds, 2 * j);
       JOINT_KERNELS[store.kind[j]].prepare(r, o, step);
     }
   }
@@ -356,6 +378,25 @@ export class JointSolver {
     this.points.solve(states, useBias);
   }
 
+  /**
+   * After each sub-step: the kept impulses within their bounds again (see boundImpulses), of the
+   * joints with far arms (see farArms), and of every joint where a body ended the sub-step past
+   * the speed limits (`held`). A joint that cannot be met takes more impulse every sub-step, and
+   * at 64 sub-steps of a long step, or at a step of 1e-100 s between bodies 1e100 apart, its warm
+   * start outgrew the largest double before the next step's prepare bounded it. Met joints never
+   * come near the bounds, and a scene without far arms whose bodies keep to the limits skips this.
+   */
+  holdImpulses(held: boolean): void {
+    const { store, active, activeCount, bounds, farArms } = this;
+    if (!held && this.listed[Listed.farArms] === 0) return;
+    const r = store.record;
+    for (let k = 0; k < activeCount; k++) {
+      if (!held && farArms[k] === 0) continue;
+      const j = active[k];
+      clampImpulses(r, j * JOINT_STRIDE, store.kind[j], bounds[2 * j], bounds[2 * j + 1]);
+    }
+  }
+
   /** After the sub-steps: each joint's force and torque on body B over the last sub-step. */
   finish(states: Float64Array): void {
     const { store, active, activeCount, step, points } = this;
@@ -366,7 +407,6 @@ export class JointSolver {
       const j = active[k];
       JOINT_KERNELS[store.kind[j]].reaction(r, j * JOINT_STRIDE, step.inverseH);
     }
-    boundReactions(store);
   }
 
   get count(): number {
@@ -374,27 +414,6 @@ export class JointSolver {
   }
 
   memoryBytes(): number {
-    return this.active.byteLength + 3 * this.pointSlots.byteLength + this.points.memoryBytes() + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
+    return this.active.byteLength + this.bounds.byteLength + 3 * this.pointSlots.byteLength + this.points.memoryBytes() + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
   }
-}
-
-/**
- * Holds every joint's reported force and torque within the doubles: each is an impulse over the
- * sub-step, and a finite impulse over a sub-step of 1e-100 s can exceed the largest double. The
- * bodies never see these numbers; getJoint, the break thresholds and snapshots do. Its own
- * function with nothing after its loop (see listJoints).
- */
-function boundReactions(store: JointStore): void {
-  const r = store.record;
-  for (let j = 0; j < store.slotCount; j++) {
-    if (store.live[j] === 0) continue;
-    const o = j * JOINT_STRIDE;
-    r[o + FORCE_X] = bounded(r[o + FORCE_X]);
-    r[o + FORCE_Y] = bounded(r[o + FORCE_Y]);
-    r[o + TORQUE] = bounded(r[o + TORQUE]);
-  }
-}
-
-function bounded(v: number): number {
-  return v > Number.MAX_VALUE ? Number.MAX_VALUE : v < -Number.MAX_VALUE ? -Number.MAX_VALUE : v;
 }

@@ -248,7 +248,9 @@ export class SoftStep {
       // A joint made far from its constraint (or torn by a collision) can throw its bodies faster
       // than the speed limit in the relax pass, and the next sub-step's warm start and solve
       // would amplify that towards infinity: each sub-step starts within the limits.
-      if (joints !== null) this.limitVelocities(settings.maxLinearSpeed, maxAngular);
+      // A body past them marks a joint that cannot be met, whose kept impulses then grow every
+      // sub-step: held within their bounds again before the next warm start (see holdImpulses).
+      if (joints !== null) joints.holdImpulses(this.limitVelocities(settings.maxLinearSpeed, maxAngular));
     }
     this.applyRestitution(settings.restitutionThreshold);
     this.store(contacts);
@@ -932,9 +934,23 @@ export class SoftStep {
   }
 
   /** The speed limits integratePositions applies, without moving the bodies. */
-  private limitVelocities(maxLinearSpeed: number, maxAngular: number): void {
+  /** Holds every moving body within the speed limits; whether any was beyond them. */
+  private limitVelocities(maxLinearSpeed: number, maxAngular: number): boolean {
     const { awakeCount, states } = this;
-    for (let k = 0; k < awakeCount; k++) holdState(states, (k + 1) * BODY, maxLinearSpeed, maxAngular);
+    const maxSpeedSq = maxLinearSpeed * maxLinearSpeed;
+    const maxAngularSq = maxAngular * maxAngular;
+    let held = false;
+    for (let k = 0; k < awakeCount; k++) {
+      const b = (k + 1) * BODY;
+      const vx = states[b + VX];
+      const vy = states[b + VY];
+      const w = states[b + W];
+      if (vx * vx + vy * vy > maxSpeedSq || w * w > maxAngularSq) {
+        holdState(states, b, maxLinearSpeed, maxAngular);
+        held = true;
+      }
+    }
+    return held;
   }
 
   /** A fixed rotation's spin is 0 throughout (gatherBodies, integrateVelocities), and its inertia infinite. */
