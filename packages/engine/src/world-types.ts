@@ -147,7 +147,11 @@ export interface JointState {
   torque: number;
   /** The anchors' distance apart. */
   length: number;
-  /** B's angle less A's, less the reference angle, in [-pi, pi]. */
+  /**
+   * B's angle less A's, less the reference angle: within [-pi, pi], except for a revolute joint
+   * with limits, which follows its angle across ±pi and may wind any number of turns the free way
+   * (see docs/engine.md, Joints).
+   */
   angle: number;
   /** B's anchor's distance from A's along the axis (prismatic, wheel), or 0. */
   translation: number;

@@ -493,6 +493,56 @@ describe('joints', () => {
     expect(Math.abs(soft.getBody(beam2).angle - sag)).toBeLessThan(1e-3);
   });
 
+  it('a weld holds a small body far from its anchor: no sag, a blow stopped, and its angular spring at its frequency', () => {
+    // A 5 cm disc welded 1 m and 3 m out from a wall: its weight at that arm is a torque the weld's
+    // angle must hold with the turn about the anchor, not the disc's own spin.
+    for (const arm of [1, 3]) {
+      const world = new World({ gravity: { x: 0, y: 10 } });
+      const wall = world.createBody({ x: 0, y: 0, type: 'static' });
+      const disc = world.createCircle({ x: arm, y: 0, radius: 0.05, mass: 1 });
+      const weld = world.createJoint({ kind: 'weld', bodyA: wall, bodyB: disc });
+      for (let s = 0; s < 600; s++) world.step(1 / 60);
+      const body = world.getBody(disc);
+      expect(Math.abs(Math.atan2(body.y, body.x)), `arm ${arm}: sag`).toBeLessThan(1e-3);
+      const held = world.getJoint(weld);
+      expect(held.force.y, `arm ${arm}`).toBeCloseTo(-10, 3);
+      expect(held.torque, `arm ${arm}`).toBeCloseTo(-10 * arm, 3);
+    }
+    // The same disc struck at 10 m/s across its arm, no gravity: stopped where it was.
+    const struck = new World({ gravity: { x: 0, y: 0 } });
+    const wall = struck.createBody({ x: 0, y: 0, type: 'static' });
+    const disc = struck.createCircle({ x: 1, y: 0, radius: 0.05, mass: 1, vy: 10 });
+    struck.createJoint({ kind: 'weld', bodyA: wall, bodyB: disc, anchorA: { x: 0, y: 0 } });
+    let farthest = 0;
+    for (let s = 0; s < 300; s++) {
+      struck.step(1 / 60);
+      const body = struck.getBody(disc);
+      farthest = Math.max(farthest, Math.hypot(body.x - 1, body.y));
+    }
+    expect(farthest).toBeLessThan(0.05);
+    // A bar 2.2 m long welded 1 m from its centre, on an undamped angular spring: it swings about
+    // the anchor at the spring's frequency (the turn's mass includes the bar's about the anchor).
+    for (const hertz of [1, 4]) {
+      const world = new World({ gravity: { x: 0, y: 0 } });
+      const ground = world.createBody({ x: 0, y: 0, type: 'static' });
+      const bar = world.createBox({ x: 1, y: 0, width: 2.2, height: 0.1 });
+      world.createJoint({ kind: 'weld', bodyA: ground, bodyB: bar, anchorA: { x: 0, y: 0 }, angularHertz: hertz, dampingRatio: 0 });
+      world.setAngularVelocity(bar, 0.01);
+      const dt = 1 / 240;
+      const upward: number[] = [];
+      let previous = 0;
+      for (let s = 1; s <= 240 * 6; s++) {
+        world.step(dt);
+        const angle = world.getBody(bar).angle;
+        if (previous < 0 && angle >= 0) upward.push(s * dt);
+        previous = angle;
+      }
+      const period = (upward[upward.length - 1] - upward[0]) / (upward.length - 1);
+      expect(1 / period, `${hertz} Hz`).toBeCloseTo(hertz, 1);
+      expect(Math.abs(1 / period - hertz) / hertz, `${hertz} Hz`).toBeLessThan(0.01);
+    }
+  });
+
   it('a weld with an anchor left out keeps the pose it was made in', () => {
     for (const omit of ['both', 'anchorA', 'anchorB'] as const) {
       const world = new World({ gravity: { x: 0, y: 0 } });

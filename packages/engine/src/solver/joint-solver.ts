@@ -10,7 +10,8 @@ import { holdIO, type JointKernel, type JointStepContext } from './joints/joint-
 import { distanceJoint } from './joints/distance-joint.js';
 import { isPointDistanceJoint, PointDistanceJoints } from './joints/point-distance-joints.js';
 import type { SoftStepKernel } from './soft-step-kernel.js';
-import { pinnedTurnAtStart, revoluteJoint, TURN_MASS, turnIO } from './joints/revolute-joint.js';
+import { revoluteJoint } from './joints/revolute-joint.js';
+import { pinnedTurnAtStart, TURN_MASS, turnIO } from './joints/pinned-turn.js';
 import { prismaticJoint } from './joints/prismatic-joint.js';
 import { weldJoint } from './joints/weld-joint.js';
 import { wheelJoint } from './joints/wheel-joint.js';
@@ -59,8 +60,9 @@ function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64
   const inverseInertia = r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B];
   const linear = inverseMass > 0 ? (2 * maxSpeed) / inverseMass : 0;
   let angular = inverseInertia > 0 ? (2 * maxAngular) / inverseInertia : 0;
-  // A revolute joint's spring, motor and limits turn its bodies about the pin, with that turn's mass.
-  if (kind === JointKind.revolute && inverseInertia > 0) {
+  // A revolute joint's spring, motor and limits, and a weld's angle, turn the bodies about the
+  // anchors, with that turn's mass.
+  if ((kind === JointKind.revolute || kind === JointKind.weld) && inverseInertia > 0) {
     pinnedTurnAtStart(r, o);
     angular = 2 * maxAngular * turnIO[TURN_MASS];
   }
