@@ -5,6 +5,7 @@ import { World, type ContactEventsView } from '../src/index.js';
 import { setGridKernelEnabled } from '../src/broadphase/grid-kernel.js';
 import { setBodyKernelEnabled } from '../src/store/body-kernel.js';
 import { setSoftStepKernelEnabled } from '../src/solver/soft-step-kernel.js';
+import { applyState, captureState } from '../src/snapshot/state-graph.js';
 
 const DT = 1 / 60;
 
@@ -261,9 +262,26 @@ describe('snapshots', () => {
 
     it('not a snapshot, or bytes past its end', () => {
       expectRefusedInPlace(new Uint8Array(64), /not a maxgrid snapshot/);
+      // A short file of another kind is not called a truncated snapshot.
+      expectRefusedInPlace(new TextEncoder().encode('{"bodies":[]}'), /not a maxgrid snapshot/);
       const longer = new Uint8Array(bytes.length + 3);
       longer.set(bytes);
       expectRefusedInPlace(longer, /3 bytes past its end/);
+    });
+
+    it('a layout that differs names the fields that differ, not every field', () => {
+      class Part {
+        a = 1;
+        b = 2;
+        c = 3;
+      }
+      const saved = captureState({ part: new Part() });
+      class Changed {
+        a = 1;
+        b = 2;
+        d = 4;
+      }
+      expect(() => applyState({ part: new Changed() }, saved)).toThrow(/^world\.part has d here but not in the snapshot; c in the snapshot but not here$/);
     });
 
     it('a future format version', () => {

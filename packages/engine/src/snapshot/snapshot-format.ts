@@ -364,10 +364,11 @@ function corrupt(reason: string): RangeError {
 
 /** Checks and reads a snapshot's bytes whole; a RangeError says what is wrong with them. */
 export function decodeSnapshot(bytes: Uint8Array, engineVersion: string): SnapshotContent {
-  if (bytes.length < HEADER_BYTES) throw new RangeError(`snapshot is truncated: ${bytes.length} bytes, shorter than its ${HEADER_BYTES}-byte header`);
-  for (let i = 0; i < MAGIC.length; i++) {
+  // The magic of what bytes there are first: a short file of another kind is not a truncated snapshot.
+  for (let i = 0; i < MAGIC.length && i < bytes.length; i++) {
     if (bytes[i] !== MAGIC[i]) throw new RangeError('snapshot is not a maxgrid snapshot: its first bytes are not "MXGS"');
   }
+  if (bytes.length < HEADER_BYTES) throw new RangeError(`snapshot is truncated: ${bytes.length} bytes, shorter than its ${HEADER_BYTES}-byte header`);
   const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
   const version = view.getUint16(4, true);
   if (version > FORMAT_VERSION) {

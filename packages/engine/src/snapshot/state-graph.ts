@@ -216,7 +216,11 @@ export function applyState(root: object, tree: StateValue): void {
         if (node.name !== '') {
           const saved = new Set(node.fields.map(([key]) => key));
           if (keys.length !== saved.size || keys.some((key) => !saved.has(key))) {
-            throw new StateMismatch(`${path} has fields ${keys.join(', ')} here, ${[...saved].join(', ')} in the snapshot`);
+            // The fields that differ, not both lists: a class holds dozens of fields.
+            const here = keys.filter((key) => !saved.has(key));
+            const there = [...saved].filter((key) => !keys.includes(key));
+            const parts = [here.length > 0 ? `${here.join(', ')} here but not in the snapshot` : '', there.length > 0 ? `${there.join(', ')} in the snapshot but not here` : ''];
+            throw new StateMismatch(`${path} has ${parts.filter((part) => part !== '').join('; ')}`);
           }
         }
         if (node.name === '') for (const key of keys) if (!node.fields.some(([k]) => k === key)) delete out[key];
