@@ -941,7 +941,8 @@ export class World {
    * `adaptive: false` always uses the threads, for measuring them.
    *
    * `workerUrl` (a URL or a string) names the worker script, for builds that do not emit the
-   * engine's own: Vite and webpack 5 do by themselves; with esbuild, build
+   * engine's own: Vite 8 and webpack 5 do by themselves (Vite 7's dev server with
+   * `optimizeDeps.exclude` of the engine); with esbuild, build
    * `@maxgrid/engine/worker` as an entry point of its own and pass the URL it is served at.
    */
   async startWorkers(

@@ -94,7 +94,8 @@ function browserStartFailure(script: WorkerScript | undefined, detail: string | 
   const here = import.meta.url;
   return (
     `worker thread failed to start: the browser could not load or run the engine's worker script ${absolute(new URL('./worker-entry.js', here).href)} ` +
-    `(beside ${here}, the module that started it)${because}. Vite and webpack 5 emit it by themselves; with a bundler that does not (esbuild, for one), ` +
+    `(beside ${here}, the module that started it)${because}. Vite 8 and webpack 5 emit it by themselves (Vite 7's dev server does not: add ` +
+    "optimizeDeps: { exclude: ['@maxgrid/engine'] } to vite.config); with a bundler that does not (esbuild, for one), " +
     'build @maxgrid/engine/worker as an entry point of its own and pass its URL: startWorkers(n, { workerUrl })'
   );
 }
