@@ -11,10 +11,10 @@ const { angle: ANGLE, angularHertz: ANGULAR_HERTZ, angularImpulse: ANGULAR_IMPUL
  * Rigid by default (the joints' soft push back in the biased pass); a linear or angular frequency
  * makes that part a spring of its own, acting in both passes (Box2D v3's weld joint). The angle
  * turns the bodies about the anchors, with the mass of that turn (pinned-turn.ts), as a revolute
- * joint's spring and limits do: Box2D's turn of the spins alone, with the mass 1 / (iA + iB), is
- * undone by the point constraint wherever an anchor lies off a centre, and a 5 cm disc welded 1 m
- * out sagged 0.11 rad under its weight, a blow tore it 7.7 m off, and an angular spring there
- * oscillated at half its frequency.
+ * joint's spring and limits do: a turn of the spins alone, with the mass 1 / (iA + iB) as in
+ * Box2D, is undone by the point constraint wherever an anchor lies off a centre, so that a small
+ * body welded far out sags under its weight and an angular spring there runs slow (figures in
+ * docs/engine.md, Joints).
  */
 export const weldJoint: JointKernel = {
   readsAngle() {
