@@ -409,6 +409,18 @@ describe('no NaN or infinity from finite input', () => {
       world.step(1 / 60);
       return { world, dt: 1e-100, steps: 2 };
     }]);
+    // The angular limit, pi / 4 a step, is 8e99 rad/s at dt 1e-100: the box turned that fast
+    // about an arm of 1e99 moved its end at 1e199 m/s, whose products overflowed.
+    for (const kind of ['prismatic', 'wheel'] as const) {
+      cases.push([`${kind} limits from a box 1e30 tall to a circle of radius 1e10 1e99 away, dt 1e-100`, () => {
+        const world = new World({ gravity: { x: 0, y: 10 } });
+        const a = world.createBox({ x: 0, y: 0, width: 1, height: 1e30 });
+        const b = world.createBody({ x: -1e99, y: 1e99 });
+        world.addShape(b, { kind: 'circle', radius: 1e10 });
+        world.createJoint({ kind, bodyA: a, bodyB: b, axis: { x: 1, y: 0.8 }, lowerTranslation: -1, upperTranslation: 1 });
+        return { world, dt: 1e-100, steps: 5 };
+      }]);
+    }
     const failures: string[] = [];
     for (const [label, make] of cases) {
       const { world, dt, steps } = make();

@@ -110,14 +110,45 @@ function farArms(r: Float64Array, o: number, travel: number): boolean {
   return arm2 * r[o + INV_INERTIA_A] > far2 * r[o + INV_MASS_A] || arm2 * r[o + INV_INERTIA_B] > far2 * r[o + INV_MASS_B];
 }
 
-/** Caps joint o's dynamic bodies at the speed limits (limits[0] linear, limits[1] angular): see farArms. */
-function holdWithinLimits(states: Float64Array, r: Float64Array, o: number, limits: Float64Array): void {
-  holdBody(states, r[o + STATE_A], limits);
-  holdBody(states, r[o + STATE_B], limits);
+/**
+ * How many times the linear speed limit a far-armed joint's anchor may move at through its
+ * body's spin (see spinCaps): a met joint's anchors move together, each within about twice
+ * the limit.
+ */
+const ANCHOR_SPEEDS = 4;
+
+/**
+ * The spins, into caps[at] (A) and caps[at + 1] (B), past which joint o's far arms would move an
+ * anchor faster than ANCHOR_SPEEDS times the linear speed limit, or the angular limit where that
+ * is lower. The angular limit alone, pi / 4 a step, bounds no anchor: at a step of 1e-100 s it
+ * is 8e99 rad/s, which an arm of 1e99 turns into 1e199 m/s, and the products of such speeds
+ * pass the largest double (a prismatic joint between a box 1e30 tall and a body 1e99 away
+ * reached NaN in two steps). The arm of each spin is the one the joint's impulses turn it by: a
+ * sliding joint's (prismatic, wheel) reaches from A's centre to B's anchor, and lengthens by
+ * how far the bodies part within the step (`travel`); every other kind's is the anchor's own.
+ * A body's spin about its own anchor (a disc on a long rope) is not bounded here.
+ */
+function spinCaps(r: Float64Array, o: number, kind: number, limits: Float64Array, caps: Float64Array, at: number): void {
+  const reach = ANCHOR_SPEEDS * limits[0];
+  let armA: number;
+  if (kind === JointKind.prismatic || kind === JointKind.wheel) {
+    const dx = r[o + DELTA_CENTER_X] + r[o + R_BX];
+    const dy = r[o + DELTA_CENTER_Y] + r[o + R_BY];
+    armA = Math.sqrt(dx * dx + dy * dy) + limits[2];
+  } else {
+    armA = Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]);
+  }
+  const armB = Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]);
+  caps[at] = armA * limits[1] > reach ? reach / armA : limits[1];
+  caps[at + 1] = armB * limits[1] > reach ? reach / armB : limits[1];
 }
 
-function holdBody(states: Float64Array, s: number, limits: Float64Array): void {
-  if (states[s + DYNAMIC] === 1) holdState(states, s, limits[0], limits[1]);
+/** Caps joint o's dynamic bodies at the linear speed limit and the spins of spinCaps (caps[at], caps[at + 1]): see farArms. */
+function holdWithinLimits(states: Float64Array, r: Float64Array, o: number, maxSpeed: number, caps: Float64Array, at: number): void {
+  const sa = r[o + STATE_A];
+  const sb = r[o + STATE_B];
+  if (states[sa + DYNAMIC] === 1) holdState(states, sa, maxSpeed, caps[at]);
+  if (states[sb + DYNAMIC] === 1) holdState(states, sb, maxSpeed, caps[at + 1]);
 }
 
 /** Wakes every sleeping body of a ring of which some body moves. */
@@ -154,6 +185,8 @@ export class JointSolver {
   private active = new Int32Array(0);
   /** Per active joint, 1 where its lever arms are far (see farArms). */
   private farArms = new Uint8Array(0);
+  /** Per active joint with far arms, the spins its bodies are held within (see spinCaps): A's at 2k, B's at 2k + 1. */
+  private spinCaps = new Float64Array(0);
   private activeCount = 0;
   /** The point distance joints (ropes, jellies, blobs), solved apart in colours; their slots, in slot order. */
   private readonly points = new PointDistanceJoints();
@@ -209,6 +242,7 @@ export class JointSolver {
     if (this.active.length < store.slotCount) {
       this.active = new Int32Array(Math.max(store.slotCount, 2 * this.active.length));
       this.farArms = new Uint8Array(this.active.length);
+      this.spinCaps = new Float64Array(2 * this.active.length);
       this.springSlots = new Int32Array(this.active.length);
       this.pressureSlots = new Int32Array(this.active.length);
       this.pointSlots = new Int32Array(this.active.length);
@@ -272,7 +306,10 @@ export class JointSolver {
       else {
         const far = farArms(r, o, this.limits[2]);
         this.farArms[listed[Listed.active]] = far ? 1 : 0;
-        if (far) listed[Listed.farArms]++;
+        if (far) {
+          listed[Listed.farArms]++;
+          spinCaps(r, o, store.kind[j], this.limits, this.spinCaps, 2 * listed[Listed.active]);
+        }
         this.active[listed[Listed.active]++] = j;
       }
     }
@@ -348,7 +385,7 @@ export class JointSolver {
 
   /** Each sub-step: the other joints in slot order, then the point distance joints colour by colour. */
   warmStart(states: Float64Array): void {
-    const { store, active, activeCount, limits, farArms } = this;
+    const { store, active, activeCount, limits, farArms, spinCaps } = this;
     const r = store.record;
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
@@ -356,16 +393,15 @@ export class JointSolver {
       const joint = JOINT_KERNELS[store.kind[j]];
       if (farArms[k] === 1 && joint.refresh !== undefined) joint.refresh(r, o, states);
       joint.warmStart(r, o, states);
-      if (farArms[k] === 1) holdWithinLimits(states, r, o, limits);
+      if (farArms[k] === 1) holdWithinLimits(states, r, o, limits[0], spinCaps, 2 * k);
     }
     this.points.warmStart(states);
   }
 
   solve(states: Float64Array, useBias: boolean): void {
-    const { store, active, activeCount, step, limits, farArms } = this;
+    const { store, active, activeCount, step, limits, farArms, spinCaps } = this;
     const r = store.record;
     holdIO[1] = limits[0];
-    holdIO[2] = limits[1];
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
       const o = j * JOINT_STRIDE;
@@ -373,8 +409,12 @@ export class JointSolver {
       // The relax pass follows the sub-step's move (the solve with the bias shares the warm start's positions).
       if (!useBias && farArms[k] === 1 && joint.refresh !== undefined) joint.refresh(r, o, states);
       holdIO[0] = farArms[k];
+      if (farArms[k] === 1) {
+        holdIO[2] = spinCaps[2 * k];
+        holdIO[3] = spinCaps[2 * k + 1];
+      }
       joint.solve(r, o, states, step, useBias);
-      if (farArms[k] === 1) holdWithinLimits(states, r, o, limits);
+      if (farArms[k] === 1) holdWithinLimits(states, r, o, limits[0], spinCaps, 2 * k);
     }
     holdIO[0] = 0;
     this.points.solve(states, useBias);

@@ -80,20 +80,20 @@ const springIO = new Float64Array(8);
 export const limitIO = new Float64Array(4);
 
 /**
- * Whether the joint being solved has far arms (JointSolver sets it per joint: 1 or 0), and the
- * speed limits, linear and angular. A far-arm joint's solve pushes its bodies in stages (point,
+ * Whether the joint being solved has far arms (JointSolver sets it per joint: 1 or 0), the
+ * linear speed limit, and the spins its bodies A and B are held within. A far-arm joint's solve pushes its bodies in stages (point,
  * limits, block) whose moments cancel in exact arithmetic and leave some 1e-16 x impulse x arm
  * of spin in doubles; the next stage reads that spin and, through an arm of many radii of
  * gyration, can carry it past the largest double within one solve. Such a joint's pushes hold
  * their bodies within the limits after each stage (holdPushed), not only after the solve.
  */
-export const holdIO = new Float64Array(3);
+export const holdIO = new Float64Array(4);
 
 /** After a stage's push: holds both bodies within the speed limits where holdIO says the joint has far arms. */
 export function holdPushed(states: Float64Array, sa: number, sb: number): void {
   if (holdIO[0] !== 1) return;
   if (states[sa + DYNAMIC] === 1) holdState(states, sa, holdIO[1], holdIO[2]);
-  if (states[sb + DYNAMIC] === 1) holdState(states, sb, holdIO[1], holdIO[2]);
+  if (states[sb + DYNAMIC] === 1) holdState(states, sb, holdIO[1], holdIO[3]);
 }
 
 /**
