@@ -56,6 +56,7 @@ import { INTEGRATOR_NAMES, type CircleIntegratorName, type IntegratorName } from
 import { MAX_DT, MIN_DT, MAX_MAGNITUDE, MAX_SHAPE_REACH, boundedNumber, describeValue, finiteNumber, knownKeys, nonNegativeInteger, nonNegativeNumber, plainObject } from './util/validate.js';
 import { flag } from './options.js';
 import { copyOptions, field, firstDifference, holdsObject, numberField, readSnapshot, writeOnto, writeSnapshot } from './snapshot/world-snapshot.js';
+import { transientFields } from './snapshot/state-graph.js';
 import {
   bodyType,
   broadphaseName,
@@ -319,15 +320,6 @@ export class World {
     // Columns a parallel step had moved onto shared memory come back to this thread's own.
     if (world.bodies.shared) world.bodies.setShared(false);
     if (world.pipeline.contacts.shared) world.pipeline.contacts.setShared(false);
-    // Caches keyed on these versions (views of columns, grids, trees) were copied as they were in
-    // the original, over its memory: new versions make each remake itself over this world's.
-    world.bodies.layoutVersion++;
-    world.bodies.membershipVersion++;
-    world.bodies.staticFlips++;
-    world.shapes.store.version++;
-    world.segments.version++;
-    world.staticVersion++;
-    world.geometryVersion++;
     return world;
   }
 
@@ -1964,3 +1956,7 @@ export class World {
   }
 }
 
+// What reading calls fill (views, contact points, joint views, debug lines) is filled again by
+// each call, and workerStarts counts this object's thread starts: neither is the world's state,
+// and left out of snapshots, reading a world leaves its snapshot's bytes as they were.
+transientFields(World, ['viewsRecord', 'shapeViewsRecord', 'contactPointsRecord', 'jointViewsRecord', 'debugDraw', 'workerStarts']);

@@ -62,6 +62,36 @@ describe('snapshots', () => {
     expect(trace(inPlace, 40)).toEqual(expected);
   });
 
+  it.each(CASES)("%s: the bytes follow the state alone: reading calls leave them, a restored world gives them back and steps on to its original's", (_name, make) => {
+    const original = stepped(make, 20);
+    const bytes = original.snapshot();
+    // Every call that reads the world, each filling what it answers with.
+    original.views();
+    original.jointViews();
+    original.contactPoints();
+    original.debugRender();
+    original.queryPoint(0, 0);
+    original.queryAABB(-1e3, -1e3, 1e3, 1e3);
+    original.rayCast(-1e3, -1e3, 1e3, 1e3);
+    original.rayCastAll(-1e3, 1e3, 1e3, -1e3);
+    original.stateHash();
+    original.kineticEnergy();
+    expect(original.snapshot()).toEqual(bytes);
+    const restored = World.restore(bytes);
+    expect(restored.snapshot()).toEqual(bytes);
+    const inPlace = stepped(make, 35);
+    inPlace.restore(bytes);
+    expect(inPlace.snapshot()).toEqual(bytes);
+    for (let s = 0; s < 30; s++) {
+      original.step(DT);
+      restored.step(DT);
+      inPlace.step(DT);
+    }
+    const after = original.snapshot();
+    expect(restored.snapshot()).toEqual(after);
+    expect(inPlace.snapshot()).toEqual(after);
+  });
+
   it('without the WebAssembly kernels too, and a snapshot crosses between the two', () => {
     const names = ['uniform', 'funnel', 'pyramid', 'bridge', 'blobs'];
     for (const [name, make] of CASES.filter(([n]) => names.includes(n))) {
@@ -77,6 +107,7 @@ describe('snapshots', () => {
         expect(trace(plain, 30), name).toEqual(expected);
         const back = stepped(make, 20);
         const plainBytes = back.snapshot();
+        expect(plainBytes, `${name}: the same bytes without kernels`).toEqual(bytes);
         setGridKernelEnabled(true);
         setBodyKernelEnabled(true);
         setSoftStepKernelEnabled(true);
@@ -288,6 +319,16 @@ describe('snapshots', () => {
       const future = bytes.slice();
       new DataView(future.buffer).setUint16(4, 2, true);
       expectRefusedInPlace(future, /format version 2 is newer than this engine .* reads \(1\)/);
+    });
+
+    it('any flipped bit of the header, its reserved field included', () => {
+      for (let at = 0; at < 16; at++) {
+        for (let bit = 0; bit < 8; bit++) {
+          const bad = bytes.slice();
+          bad[at] ^= 1 << bit;
+          expect(() => World.restore(bad), `byte ${at}, bit ${bit}`).toThrow(RangeError);
+        }
+      }
     });
 
     it('any flipped byte of the payload', () => {

@@ -375,6 +375,9 @@ export function decodeSnapshot(bytes: Uint8Array, engineVersion: string): Snapsh
     throw new RangeError(`snapshot format version ${version} is newer than this engine (${engineVersion}) reads (${FORMAT_VERSION}); restore it with the engine that wrote it or a later one`);
   }
   if (version < 1) throw new RangeError(`snapshot format version ${version} does not exist`);
+  // Outside the hash, as the rest of the header is: checked, so that no flipped byte passes.
+  const reserved = view.getUint16(6, true);
+  if (reserved !== 0) throw corrupt(`its reserved header field is ${reserved}, not 0`);
   const length = view.getUint32(8, true);
   if (bytes.length < HEADER_BYTES + length) throw new RangeError(`snapshot is truncated: ${bytes.length} bytes, its header says ${HEADER_BYTES + length}`);
   if (bytes.length > HEADER_BYTES + length) throw new RangeError(`snapshot has ${bytes.length - HEADER_BYTES - length} bytes past its end (${HEADER_BYTES + length} bytes)`);

@@ -82,7 +82,9 @@ export function hostResource(ctor: Function): void {
  * kernel's memory): the target world keeps its own.
  */
 export function transientFields(ctor: Function, fields: string[]): void {
-  TRANSIENT.set(ctor, new Set(fields));
+  const known = TRANSIENT.get(ctor);
+  if (known === undefined) TRANSIENT.set(ctor, new Set(fields));
+  else for (const field of fields) known.add(field);
 }
 
 /**
@@ -206,8 +208,9 @@ export function applyState(root: object, tree: StateValue): void {
         } else if (target === null || typeof target !== 'object' || isPlainObject(target) || (PARTS.has(node.name) && !(target instanceof PARTS.get(node.name)!))) {
           const part = PARTS.get(node.name);
           if (part === undefined) throw new StateMismatch(`${path} is ${target === null ? 'null' : typeof target} here, a ${node.name} in the snapshot`);
-          out = Object.create(part.prototype) as Record<string, unknown>;
-          for (const [key] of node.fields) out[key] = undefined;
+          // Made by its constructor (the parts take no arguments), so that the fields left out
+          // of snapshots (see transientFields) hold a new part's values.
+          out = new (part as new () => Record<string, unknown>)();
         } else {
           out = target as Record<string, unknown>;
         }

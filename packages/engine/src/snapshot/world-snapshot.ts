@@ -11,6 +11,10 @@ import { StaticTree } from '../broadphase/static-tree.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
 import { PairSink } from '../store/pair-sink.js';
 import { StepStatsRecord, TIMINGS } from '../step/stats.js';
+import { BodyStore } from '../store/body-store.js';
+import { ContactBuffer } from '../store/contact-buffer.js';
+import { ThreadKernels } from '../parallel/kernels.js';
+import { Queries } from '../query/queries.js';
 import { describeValue } from '../util/validate.js';
 
 /** The engine's version, written into every snapshot so that a refusal can say who wrote it. */
@@ -22,10 +26,41 @@ for (const ctor of [BodyKernel, GridKernel, SoftStepKernel, ContactSorter, Paral
 // restored world's lanes hold no preparation to bring up to date (lanesPrepared stays false).
 transientFields(SoftStep, ['states', 'constraints', 'pairs', 'lanesPrepared']);
 transientFields(PointDistanceJoints, ['rows', 'pairs']);
+// Fields that hold a kernel, or null before one is made or where the runtime lacks WebAssembly:
+// left out whichever they hold, so that the bytes are the same with or without kernels, and
+// before or after a kernel is first made.
+transientFields(BodyStore, ['kernel']);
+transientFields(CellGrid, ['kernel', 'arena']);
+transientFields(SoftStep, ['kernel']);
+transientFields(PointDistanceJoints, ['kernel']);
+transientFields(ContactBuffer, ['sorter']);
+// Whether kernels were wanted where the world was made, and what only one path fills (the kernel
+// scan's pair count, the TypeScript sort's scratch): the restoring runtime's own.
+transientFields(CellGrid, ['kernelWanted', 'pairsFound']);
+transientFields(ContactBuffer, ['sorterWanted', 'scratchLo', 'scratchHi', 'counts', 'buckets']);
+transientFields(ThreadKernels, ['sorter']);
+// How often the soft step kept its colouring and its lanes' preparation: measurements of its
+// shortcuts, which a restored world starts without.
+transientFields(SoftStep, ['laneCounts', 'coloursKept']);
 // A broad-phase's chunk of candidates is handed on within the step that found them.
 transientFields(PairSink, ['a', 'b', 'consumerMs']);
 // Timings measure the machine, not the world: left out, a snapshot is the same bytes wherever it is taken.
 transientFields(StepStatsRecord, TIMINGS);
+// A grid made over the body columns remakes its views of them where its notes of their layout
+// (the store's version it was made at, the kernel views it holds) are a new grid's: so a restored
+// grid works over the restored world's memory rather than over copies of the original's. Its own
+// count of remakes is the grid's history, not state, and is left out with them; every other
+// cache's note of a version is saved with the version, so that a restored world keeps its caches
+// and steps on to the same bytes as its original.
+transientFields(CellGrid, ['layoutVersion', 'kernelViews', 'sourceStore', 'sourceLayout']);
+// The grid's buffers are filled afresh by every build (a step bins every body again), and their
+// lengths are the grid's history (the most bodies and cells it has held): left out, a world that
+// was restored bins into buffers of its own and snapshots to the bytes of one that was not.
+transientFields(CellGrid, ['cellStart', 'sortedSlot', 'sortedX', 'sortedY', 'sortedR', 'binOf', 'sourceX', 'sourceY', 'sourceR', 'listSource', 'listOffset', 'listView', 'bandedBins']);
+// What queries build to answer (a grid of the positions, remade after every change, and the
+// nearest hit of the last ray) is read by nothing else, so asking a question leaves a snapshot
+// as it was.
+transientFields(Queries, ['live', 'grid', 'builtVersion', 'stamp', 'epoch', 'reachMinX', 'reachMinY', 'reachMaxX', 'reachMaxY', 'examined', 'bestFraction', 'bestSlot', 'bestHandle', 'bestNormalX', 'bestNormalY', 'hits', 'hitCount', 'spareHits']);
 lazyPart('StaticTree', StaticTree);
 lazyPart('CellGrid', CellGrid);
 
