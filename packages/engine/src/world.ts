@@ -176,8 +176,10 @@ export class World {
 
   /** An empty world; options left out take the defaults WorldOptions lists (no box, no gravity, elastic, frictionless). */
   constructor(options: WorldOptions = {}) {
-    const resolved = resolveWorldOptions(options);
-    this.creation = copyOptions(options) as Record<string, unknown>;
+    // Read once, into a copy that is both checked and kept.
+    const input = plainObject('World options', options);
+    const resolved = resolveWorldOptions(input);
+    this.creation = copyOptions(input) as Record<string, unknown>;
     this.resolved = resolved;
     this.bounds = resolved.bounds;
     this.bodies.box = resolved.bounds;
@@ -348,8 +350,9 @@ export class World {
    * the world to the shape route.
    */
   createCircle(options: CircleOptions): number {
-    const body = resolveCircle(options, this.defaultRestitution);
-    const o = options as unknown as Record<string, unknown>;
+    // Read once: every check below reads the copy.
+    const o = plainObject('circle options', options);
+    const body = resolveCircle(o, this.defaultRestitution);
     const spin = resolveBody({ x: body.x, y: body.y, angle: o.angle, angularVelocity: o.angularVelocity, fixedRotation: o.fixedRotation, bullet: o.bullet, angularDamping: o.angularDamping, type: o.type });
     const material = resolveMaterial(o, this.materialDefaults(), scratchGeometry.setCircle(0, 0, body.radius));
     material.restitution = body.restitution;
@@ -942,7 +945,8 @@ export class World {
     options: { minBodies?: number | undefined; adaptive?: boolean | undefined; workerUrl?: string | { readonly href: string } | undefined } = {},
   ): Promise<void> {
     checkWorkerCount(workerCount);
-    knownKeys('startWorkers options', plainObject('startWorkers options', options), ['minBodies', 'adaptive', 'workerUrl']);
+    options = plainObject('startWorkers options', options);
+    knownKeys('startWorkers options', options, ['minBodies', 'adaptive', 'workerUrl']);
     const minBodies = options.minBodies === undefined ? DEFAULT_MIN_BODIES : nonNegativeInteger('minBodies', options.minBodies);
     if (options.adaptive !== undefined && typeof options.adaptive !== 'boolean') throw new TypeError(`startWorkers option adaptive must be a boolean, got ${String(options.adaptive)}`);
     const script: unknown = options.workerUrl;
@@ -1015,8 +1019,11 @@ export class World {
   createJoint(options: JointOptions): number {
     if (this.resolved.solver === 'elastic') throw new RangeError("joints need the soft step: this world was made with solver 'elastic'; use 'auto' or 'soft'");
     const membership = this.bodies.membershipVersion;
-    const resolved = resolveJoint(options, this.jointWorld);
+    // Read once (the copy), and refused before any handle in it is looked up where that reading
+    // created or destroyed bodies.
+    const copy = plainObject('joint options', options);
     this.assertBodiesKept(membership, 'joint options');
+    const resolved = resolveJoint(copy, this.jointWorld);
     const store = this.joints?.store;
     if (store !== undefined && !store.hasRoom()) throw new RangeError(`a world holds at most ${SLOT_SPACE} joints at once`);
     this.engage();

@@ -241,6 +241,47 @@ describe('bad shapes are refused by name, and the world is left as it was', () =
     expect(world.addShape(body, { kind: 'box', width: 1, height: 1, offsetX: 1e12 })).toBeGreaterThanOrEqual(0);
   });
 
+  it('options are read once each, nested ones included, and the value read is the value used', () => {
+    const reads = new Map<string, number>();
+    /** `value` with each key a getter that counts its reads, under `path`; plain objects and arrays within likewise. */
+    const counted = <T,>(path: string, value: T): T => {
+      if (typeof value !== 'object' || value === null) return value;
+      const out: Record<string, unknown> = Array.isArray(value) ? ([] as unknown as Record<string, unknown>) : {};
+      for (const [key, item] of Object.entries(value)) {
+        const inner = counted(`${path}.${key}`, item);
+        Object.defineProperty(out, key, {
+          enumerable: true,
+          get: () => {
+            reads.set(`${path}.${key}`, (reads.get(`${path}.${key}`) ?? 0) + 1);
+            return inner;
+          },
+        });
+      }
+      return out as T;
+    };
+    const world = new World(counted('World', { gravity: { x: 0, y: 10 }, friction: 0.5, restitution: 0.2, restitutionThreshold: 1, sleepSpeed: 0.1 }));
+    const a = world.createCircle(counted('createCircle', { x: 0, y: 0, radius: 1, restitution: 0.5, type: 'dynamic' as const, mass: 2, vx: 1, friction: 0.3 }));
+    const b = world.createBox(counted('createBox', { x: 3, y: 0, width: 1, height: 2, mass: 4, angle: 0.5 }));
+    world.createPolygon(counted('createPolygon', { x: 6, y: 0, vertices: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }], radius: 0.1 }));
+    world.addShape(b, counted('addShape', { kind: 'capsule' as const, length: 1, radius: 0.2, offsetX: 1, density: 2 }));
+    world.createJoint(counted('revolute', { kind: 'revolute' as const, bodyA: a, bodyB: b, anchorA: { x: 1, y: 0 }, anchorB: { x: -1, y: 0 }, lowerAngle: -1, upperAngle: 1 }));
+    world.createJoint(counted('distance', { kind: 'distance' as const, bodyA: a, bodyB: b, length: 3 }));
+    expect([...reads].filter(([, n]) => n !== 1)).toEqual([]);
+    expect(reads.size).toBeGreaterThan(40);
+    // A getter that answers differently at each read gives the world what was checked.
+    let n = 0;
+    const body = world.createBox({
+      x: 0,
+      y: 20,
+      width: 1,
+      height: 1,
+      get mass() {
+        return n++ === 0 ? 3 : Number.NaN;
+      },
+    });
+    expect(world.getBody(body).mass).toBe(3);
+  });
+
   it('options whose getters create or destroy bodies are refused: the handles checked may no longer be those bodies', () => {
     const world = new World();
     const a = world.createBox({ x: 0, y: 0, width: 1, height: 1 });

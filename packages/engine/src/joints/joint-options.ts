@@ -132,7 +132,7 @@ export interface TargetJointOptions {
   hertz?: number | undefined;
   /** Default 0.7. */
   dampingRatio?: number | undefined;
-  /** The largest pull. Default 1000 times the body's weight under the world's gravity (or its mass, without gravity). */
+  /** The largest pull. Default 1000 times the body's mass times the world's gravity, or times 1 where the gravity is weaker (none included). */
   maxForce?: number | undefined;
   breakForce?: number | undefined;
   breakTorque?: number | undefined;

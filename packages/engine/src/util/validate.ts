@@ -97,11 +97,37 @@ export function plainObject(field: string, value: unknown): Record<string, unkno
   // Only own keys are checked against the known names, so a Map or an object inheriting options
   // would pass its misspellings (or all its entries) unread.
   // A plain object's prototype is null or an Object.prototype (of any realm: its own is null).
+  if (!hasPlainPrototype(value)) throw new TypeError(`${field} must be a plain object, got ${describeInstance(value)}`);
+  return copyOwn(value, 0) as Record<string, unknown>;
+}
+
+function hasPlainPrototype(value: object): boolean {
   const prototype: unknown = Object.getPrototypeOf(value);
-  if (prototype !== null && Object.getPrototypeOf(prototype) !== null) {
-    throw new TypeError(`${field} must be a plain object, got ${describeInstance(value)}`);
+  return prototype === null || Object.getPrototypeOf(prototype) === null;
+}
+
+/** How deep copyOwn copies: options hold a vertex list of points at most, two levels down. */
+const COPY_DEPTH = 3;
+/** Longer arrays are left as they are, for the checks of their length to refuse unread. */
+const COPY_LENGTH = 64;
+
+/**
+ * A copy of an options object, each own key read once (a getter runs once), and the plain
+ * objects and short arrays in it copied the same way: the checks and the world then read the copy,
+ * so the value checked is the value used. Anything else (class instances, long arrays) is kept
+ * as it is, for the checks to refuse.
+ */
+function copyOwn(value: object, depth: number): Record<string, unknown> | unknown[] {
+  const copyItem = (item: unknown): unknown =>
+    depth + 1 < COPY_DEPTH && typeof item === 'object' && item !== null && (Array.isArray(item) ? item.length <= COPY_LENGTH : hasPlainPrototype(item)) ? copyOwn(item, depth + 1) : item;
+  if (Array.isArray(value)) {
+    const out: unknown[] = [];
+    for (let i = 0; i < value.length; i++) out.push(copyItem(value[i]));
+    return out;
   }
-  return value as Record<string, unknown>;
+  const out: Record<string, unknown> = {};
+  for (const key of Object.keys(value)) out[key] = copyItem((value as Record<string, unknown>)[key]);
+  return out;
 }
 
 /** Rejects misspelt option names, which would otherwise be ignored without a word. */
