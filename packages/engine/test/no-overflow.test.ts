@@ -421,6 +421,68 @@ describe('no NaN or infinity from finite input', () => {
         return { world, dt: 1e-100, steps: 5 };
       }]);
     }
+    // Bodies that part by many times a joint's arms within a step leave its masses, prepared at
+    // the step's start, far too small: each pass overshot, and the spins grew to 1e173 (random
+    // scenes an audit reduced).
+    cases.push(['wheel joint from a pentagon 1e5 times lighter than the triangle 3 m away, in a box, at 400 m/s, dt 0.5', () => {
+      const world = new World({ gravity: { x: -257.7511064296542, y: 0.9955533071030347 }, substeps: 8, bounds: { width: 8.299109959700607, height: 6.034432445376843 } });
+      const tri = world.createPolygon({ x: 1.1966880296225235, y: 5.369402324259228, density: 103.5104363204893, vertices: [{ x: 0.23647625704019873, y: 0 }, { x: -0.11823812852009931, y: 0.20479444598867083 }, { x: -0.11823812852009948, y: -0.20479444598867078 }] });
+      world.createCapsule({ x: 5.361494086366298, y: 4.260298894008914, density: 0.10372897081770349, length: 0.18208059152895525, radius: 0.19211913862310145 });
+      const pent = world.createPolygon({ x: 2.2282483922308574, y: 2.09347747248169, density: 0.001136238648957886, vertices: [{ x: 0.12473026512296062, y: 0 }, { x: 0.038543771635887625, y: 0.11862553142441382 }, { x: -0.10090890419736792, y: 0.07331461035380649 }, { x: -0.10090890419736794, y: -0.07331461035380646 }, { x: 0.0385437716358876, y: -0.11862553142441383 }] });
+      world.createJoint({ kind: 'wheel', bodyA: pent, bodyB: tri, axis: { x: 1, y: 0 } });
+      return { world, dt: 0.5, steps: 80 };
+    }]);
+    cases.push(['weld from a falling disc of radius 8.6 to a dense capsule 14 m away, dt 0.5', () => {
+      const world = new World({ gravity: { x: -10.614644782163928, y: 2679.8484129084904 }, substeps: 3 });
+      world.createBox({ x: 0, y: 50, width: 1000, height: 0.0020777730956649232, angle: 0.22455595689825714, type: 'static' });
+      const comp = world.createBody({ x: 7.207106113433838, y: 18.659679174423218 });
+      world.addShape(comp, { kind: 'box', width: 0.018125852950698226, height: 0.006041950983566076, density: 733.6586119585365 });
+      world.addShape(comp, { kind: 'circle', radius: 0.004531463237674557, offsetX: 0.018125852950698226, density: 7336.586119585365 });
+      const disc = world.createCircle({ x: -28.72640287876129, y: -28.93107257783413, vy: 163.7221378015603, radius: 8.604815067638446, density: 0.4051253137215061 });
+      const cap = world.createCapsule({ x: -20.523844242095947, y: -18.448599264025688, angle: 4.184595297090709, density: 105.85117806600259, length: 0.034943928249941816, radius: 0.0068379478274889285 });
+      world.createJoint({ kind: 'weld', bodyA: disc, bodyB: cap });
+      return { world, dt: 0.5, steps: 90 };
+    }]);
+    // A turn about the anchors cancels all but a sliver of its moment on a body whose anchor
+    // lies far out in its radii of gyration; from stale arms, or past the rounding of that
+    // sliver, the rest became spin, times the body's inverse inertia, at every pass.
+    const farTriangle = (world: World): { a: number; b: number } => {
+      world.createSegment({ x1: -100, y1: 40, x2: 100, y2: 54.91781225427985 });
+      const a = world.createBox({ x: 15.224012464284897, y: -31.467947781085968, vx: -90.61039591321267, density: 0.04692824269397097, width: 5.2103036811562236, height: 5.2103036811562236, fixedRotation: true });
+      const b = world.createPolygon({ x: -7.2236936539411545, y: 7.611932754516602, density: 0.36597856004459495, vertices: [{ x: 0.009452442465962184, y: 0 }, { x: -0.00472622123298109, y: 0.008186055303334076 }, { x: -0.004726221232981096, y: -0.008186055303334074 }] });
+      return { a, b };
+    };
+    const sideways = { gravity: { x: -49.46211126664351, y: 2.2736003653923738 } };
+    cases.push(['weld from a fast fixed-rotation box to a 9 mm triangle 42 m away (its anchor there)', () => {
+      const world = new World(sideways);
+      const { a, b } = farTriangle(world);
+      world.createJoint({ kind: 'weld', bodyA: a, bodyB: b });
+      return { world, dt: 1 / 60, steps: 160 };
+    }]);
+    for (const extra of [{ hertz: 5, dampingRatio: 0.5 }, { hertz: 30, dampingRatio: 0, lowerAngle: -0.1, upperAngle: 0.1 }]) {
+      cases.push([`revolute ${JSON.stringify(extra)} from a fast box to a 9 mm triangle pinned 36 m out`, () => {
+        const world = new World(sideways);
+        const { a, b } = farTriangle(world);
+        world.createJoint({ kind: 'revolute', bodyA: a, bodyB: b, anchorB: { x: 30, y: -20 }, ...extra });
+        return { world, dt: 1 / 60, steps: 200 };
+      }]);
+    }
+    cases.push(['weld from a fixed-rotation box to a 0.1 m square 17 m away, dt 0.5', () => {
+      const world = new World({ gravity: { x: -0.22408902389865837, y: 374.3936611589853 } });
+      world.createBox({ x: 0, y: 50, width: 1000, height: 0.06836111497904208, angle: -0.051757088396698236, type: 'static' });
+      const a = world.createBox({ x: -25.048397049307823, y: -5.959696918725967, vx: -0.17385163783952645, vy: 1.3436166697991416, density: 1.6579984295395014, width: 0.2586023145313202, height: 0.2586023145313202, fixedRotation: true });
+      const b = world.createPolygon({ x: -10.243190243840218, y: 3.118634968996048, vx: 3.8666336913323676, vy: 27.20025772033676, density: 0.8709426789069494, vertices: [{ x: 0.1064073018143574, y: 0 }, { x: 0, y: 0.1064073018143574 }, { x: -0.1064073018143574, y: 0 }, { x: 0, y: -0.1064073018143574 }] });
+      world.createJoint({ kind: 'weld', bodyA: a, bodyB: b });
+      return { world, dt: 0.5, steps: 110 };
+    }]);
+    cases.push(['weld from a heavy box to a capsule of radius 5 mm 24 m away, under strong gravity', () => {
+      const world = new World({ gravity: { x: 1696.735201735466, y: 6886.905098091116 } });
+      world.createBox({ x: 0, y: 50, width: 1000, height: 0.8555292270099888, type: 'static' });
+      const a = world.createBox({ x: 4.913905307650566, y: -14.329296290874481, density: 203.35838932994534, width: 3.77993622794688, height: 3.77993622794688 });
+      const b = world.createCapsule({ x: 25.09827594459057, y: -2.635045439004898, density: 55.714052758744174, length: 0.11417580154612651, radius: 0.005226003196267073 });
+      world.createJoint({ kind: 'weld', bodyA: a, bodyB: b });
+      return { world, dt: 1 / 60, steps: 60 };
+    }]);
     const failures: string[] = [];
     for (const [label, make] of cases) {
       const { world, dt, steps } = make();

@@ -135,13 +135,13 @@ export function prepareSpringLimitMotor(r: Float64Array, o: number, step: JointS
 }
 
 /**
- * Applies the joint's linear impulse at the anchors (where they are now) and its angular impulse
- * to B (A takes the opposite): a revolute joint's spring, motor and limits, a weld's angular part.
- * (The kind is passed rather than the angular impulse: a double passed to a call V8 does not
- * inline is boxed, an allocation per joint per sub-step.)
+ * Applies the joint's linear impulse at the anchors (where they are now): the point's alone. The
+ * angular impulse of a revolute joint's spring, motor and limits, or of a weld's angle, is applied
+ * apart, as a turn about the anchors (warmStartTurn in pinned-turn.ts).
  */
-export function warmStartPoint(r: Float64Array, o: number, states: Float64Array, revolute: boolean): void {
-  const angular = revolute ? r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE] : r[o + ANGULAR_IMPULSE];
+export function warmStartPoint(r: Float64Array, o: number, states: Float64Array): void {
+  // Added to each moment below as the angular impulses' sum of 0 was: a moment of -0 comes out +0.
+  const angular = 0;
   const sa = r[o + STATE_A];
   const sb = r[o + STATE_B];
   const rAx = states[sa + DQC] * r[o + R_AX] - states[sa + DQS] * r[o + R_AY];

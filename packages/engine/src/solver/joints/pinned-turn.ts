@@ -3,17 +3,19 @@ import { DQC, DQS, VX, VY, W } from '../solver-body.js';
 import { holdPushed } from './joint-kernel.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
-const { invMassA: INV_MASS_A, invMassB: INV_MASS_B, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, stateA: STATE_A, stateB: STATE_B } = J;
+const { invMassA: INV_MASS_A, invMassB: INV_MASS_B, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, stateA: STATE_A, stateB: STATE_B } = J;
 
 // A turn of a joint's two bodies about the point that joins them, for the joints whose anchors
 // meet (revolute: its spring, motor and limits; weld: its angle).
 
 /** Where pinnedTurn leaves its results and applyTurn takes its impulse (V8 boxes numbers passed to or returned from calls it does not inline). */
-export const turnIO = new Float64Array(4);
+export const turnIO = new Float64Array(5);
 export const TURN_MASS = 0;
 export const TURN_X = 1;
 export const TURN_Y = 2;
 export const TURN_IMPULSE = 3;
+/** The joint's PINNED_REACH, set by the joint before it calls in here. */
+export const TURN_REACH = 4;
 
 /**
  * The effective mass of the bodies' relative turn with the anchors held together, into
@@ -65,6 +67,20 @@ export function pinnedTurnAtStart(r: Float64Array, o: number): void {
   turnAbout(r, o);
 }
 
+/**
+ * How far an anchor may lie from a body's centre, as i |r|^2 over the joint's m (about the square
+ * of the arm in the body's radii of gyration), for a turn about the anchors; past it the joint
+ * turns the spins alone (Box2D's). The turn's linear part cancels all but m / (m + i |r|^2) of
+ * its moment, and what the pin's soft solve and the bodies' turn within a pass leave of that
+ * cancellation comes back as spin, multiplied by that ratio. A revolute joint's limits, motor and
+ * spring hold to 1e6: a 1 cm disc on its limit 2 m out is at 8e4, and a 9 mm triangle 36 m out
+ * on a spring, at 7e7, reached NaN. A weld's angle, rigid and pushed at every pass, to 1e4: a
+ * 5 cm disc welded 1 m out is at 800 (3 m: 7,200); a 0.1 m square welded 17 m out (8e4) and a
+ * capsule of radius 5 mm 24 m out (6e5) reached NaN.
+ */
+export const REVOLUTE_REACH = 1e6;
+export const WELD_REACH = 1e4;
+
 /** The arms from each centre to the anchors, (rAx, rAy, rBx, rBy), that turnAbout and applyTurn read. */
 const armsIO = new Float64Array(4);
 
@@ -87,7 +103,9 @@ function turnAbout(r: Float64Array, o: number): void {
   const mass = det2 / det3;
   const ux = (iAB * dx * cross + m * (iA * rAy + iB * rBy)) / det2;
   const uy = (iAB * dy * cross - m * (iA * rAx + iB * rBx)) / det2;
-  if (mass > 0 && mass < Infinity && Number.isFinite(ux) && Number.isFinite(uy)) {
+  // Past the joint's reach (see REVOLUTE_REACH) the spins alone.
+  const reach = Math.max(iA * (rAx * rAx + rAy * rAy), iB * (rBx * rBx + rBy * rBy));
+  if (mass > 0 && mass < Infinity && Number.isFinite(ux) && Number.isFinite(uy) && reach <= turnIO[TURN_REACH] * m) {
     turnIO[TURN_MASS] = mass;
     turnIO[TURN_X] = ux;
     turnIO[TURN_Y] = uy;
@@ -100,7 +118,9 @@ function turnAbout(r: Float64Array, o: number): void {
 
 /**
  * The angular impulse turnIO[TURN_IMPULSE] on B (A takes the opposite), with the linear impulse
- * at the anchors that pinnedTurn found keeps their relative speed. The push is warmStartPoint's,
+ * at the anchors that pinnedTurn found keeps their relative speed. That linear part is not added
+ * to the joint's kept linear impulse, which is the point's alone: the kept angular impulse
+ * carries it (see warmStartTurn). The push is warmStartPoint's,
  * written out: one function for both, its numbers through a scratch array, took the joint grid's
  * 19,794 pins from 15.0 to 16.0 ms a step, the same bits.
  */
@@ -110,8 +130,6 @@ export function applyTurn(r: Float64Array, o: number, states: Float64Array): voi
   const angular = turnIO[TURN_IMPULSE];
   const px = turnIO[TURN_X] * angular;
   const py = turnIO[TURN_Y] * angular;
-  r[o + LINEAR_IMPULSE_X] += px;
-  r[o + LINEAR_IMPULSE_Y] += py;
   const rAx = armsIO[0];
   const rAy = armsIO[1];
   const rBx = armsIO[2];
@@ -128,4 +146,38 @@ export function applyTurn(r: Float64Array, o: number, states: Float64Array): voi
   states[sb + VY] += mB * py;
   if (iB !== 0) states[sb + W] += iB * (rBx * py - rBy * px + angular);
   holdPushed(states, sa, sb);
+}
+
+/**
+ * The warm start of the angular impulse turnIO[TURN_IMPULSE] that a joint keeps apart from its
+ * point's (a revolute joint's spring, motor and limits, a weld's angle): a turn about the
+ * anchors, its linear part taken from the arms as they lie now. That part cancels nearly all of
+ * the turn's moment on a body whose anchor lies many radii of gyration out; kept with the
+ * point's impulse instead, from arms a sub-step old, it left the rest of that moment times the
+ * body's inverse inertia as spin, which grew at every sub-step (a 9 mm triangle welded 42 m out
+ * reached 1e196 rad/s; a revolute spring there, NaN).
+ */
+export function warmStartTurn(r: Float64Array, o: number, states: Float64Array): void {
+  if (turnIO[TURN_IMPULSE] === 0 || r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B] === 0) return;
+  const angular = turnIO[TURN_IMPULSE];
+  pinnedTurn(r, o, states);
+  turnIO[TURN_IMPULSE] = angular;
+  applyTurn(r, o, states);
+}
+
+/**
+ * The linear impulse at the anchors that the kept angular impulse `turnIO[TURN_IMPULSE]` carries
+ * with its turn, from the arms as the step started, into turnIO[TURN_X..TURN_Y]: with the
+ * point's, the force that holds the anchors together (the joints' reactions).
+ */
+export function turnLinearAtStart(r: Float64Array, o: number): void {
+  const angular = turnIO[TURN_IMPULSE];
+  if (angular === 0 || r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B] === 0) {
+    turnIO[TURN_X] = 0;
+    turnIO[TURN_Y] = 0;
+    return;
+  }
+  pinnedTurnAtStart(r, o);
+  turnIO[TURN_X] *= angular;
+  turnIO[TURN_Y] *= angular;
 }

@@ -1,7 +1,7 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
 import { applyLimit, limitIO, measureAngle, prepareSpringLimitMotor, RIGID, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
-import { applyTurn, pinnedTurn, turnIO, TURN_IMPULSE, TURN_MASS, TURN_X, TURN_Y } from './pinned-turn.js';
+import { applyTurn, pinnedTurn, REVOLUTE_REACH, turnIO, turnLinearAtStart, TURN_IMPULSE, TURN_MASS, TURN_REACH, TURN_X, TURN_Y, warmStartTurn } from './pinned-turn.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angle: ANGLE, invMassA: INV_MASS_A, invMassB: INV_MASS_B, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lower: LOWER, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorSpeed: MOTOR_SPEED, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upper: UPPER, upperImpulse: UPPER_IMPULSE } = J;
@@ -25,7 +25,10 @@ export const revoluteJoint: JointKernel = {
   },
 
   warmStart(r, o, states) {
-    warmStartPoint(r, o, states, true);
+    warmStartPoint(r, o, states);
+    turnIO[TURN_REACH] = REVOLUTE_REACH;
+    turnIO[TURN_IMPULSE] = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    warmStartTurn(r, o, states);
   },
 
   solve(r, o, states, step, useBias) {
@@ -38,6 +41,7 @@ export const revoluteJoint: JointKernel = {
       solvePoint(r, o, states, useBias ? step.soft : RIGID, 0);
       return;
     }
+    turnIO[TURN_REACH] = REVOLUTE_REACH;
     pinnedTurn(r, o, states);
     const mass = turnIO[TURN_MASS];
     if (sprung) {
@@ -57,14 +61,9 @@ export const revoluteJoint: JointKernel = {
       turnIO[TURN_IMPULSE] = total - accumulated;
       applyTurn(r, o, states);
     }
-    // The pin's soft solve decays the impulse it keeps; the share of it that holds the anchors
-    // together while the spring, motor and limits turn the bodies is theirs to keep.
-    const share = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
-    r[o + LINEAR_IMPULSE_X] -= turnIO[TURN_X] * share;
-    r[o + LINEAR_IMPULSE_Y] -= turnIO[TURN_Y] * share;
+    // The turns' linear parts stay theirs (applyTurn, keep false): the pin's soft solve decays
+    // its own kept impulse alone, and the warm start takes those parts again from the arms.
     solvePoint(r, o, states, useBias ? step.soft : RIGID, 0);
-    r[o + LINEAR_IMPULSE_X] += turnIO[TURN_X] * share;
-    r[o + LINEAR_IMPULSE_Y] += turnIO[TURN_Y] * share;
     if (!limited) return;
     measureAngle(r, o, states);
     const angle = r[o + ANGLE];
@@ -83,8 +82,13 @@ export const revoluteJoint: JointKernel = {
   },
 
   reaction(r, o, inverseH) {
-    r[o + FORCE_X] = r[o + LINEAR_IMPULSE_X] * inverseH;
-    r[o + FORCE_Y] = r[o + LINEAR_IMPULSE_Y] * inverseH;
-    r[o + TORQUE] = (r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE]) * inverseH;
+    // The force holds the anchors together: the pin's impulse and the turns' linear parts.
+    const turn = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    turnIO[TURN_IMPULSE] = turn;
+    turnIO[TURN_REACH] = REVOLUTE_REACH;
+    turnLinearAtStart(r, o);
+    r[o + FORCE_X] = (r[o + LINEAR_IMPULSE_X] + turnIO[TURN_X]) * inverseH;
+    r[o + FORCE_Y] = (r[o + LINEAR_IMPULSE_Y] + turnIO[TURN_Y]) * inverseH;
+    r[o + TORQUE] = turn * inverseH;
   },
 };

@@ -1,7 +1,7 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
 import { measureAngle, RIGID, softFromRecord, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
-import { applyTurn, pinnedTurn, turnIO, TURN_IMPULSE, TURN_MASS, TURN_X, TURN_Y } from './pinned-turn.js';
+import { applyTurn, pinnedTurn, turnIO, turnLinearAtStart, TURN_IMPULSE, TURN_MASS, TURN_REACH, TURN_X, TURN_Y, warmStartTurn, WELD_REACH } from './pinned-turn.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angle: ANGLE, angularHertz: ANGULAR_HERTZ, angularImpulse: ANGULAR_IMPULSE, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, linearHertz: LINEAR_HERTZ, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, softBias: SOFT_BIAS, softImpulse: SOFT_IMPULSE, softMass: SOFT_MASS, springBias: SPRING_BIAS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE } = J;
@@ -27,7 +27,10 @@ export const weldJoint: JointKernel = {
   },
 
   warmStart(r, o, states) {
-    warmStartPoint(r, o, states, false);
+    warmStartPoint(r, o, states);
+    turnIO[TURN_REACH] = WELD_REACH;
+    turnIO[TURN_IMPULSE] = r[o + ANGULAR_IMPULSE];
+    warmStartTurn(r, o, states);
   },
 
   solve(r, o, states, step, useBias) {
@@ -53,25 +56,24 @@ export const weldJoint: JointKernel = {
       solvePoint(r, o, states, pointSoft, pointAt);
       return;
     }
+    turnIO[TURN_REACH] = WELD_REACH;
     pinnedTurn(r, o, states);
     const accumulated = r[o + ANGULAR_IMPULSE];
     const impulse = -turnIO[TURN_MASS] * massScale * (wB - wA + bias) - impulseScale * accumulated;
     r[o + ANGULAR_IMPULSE] = accumulated + impulse;
     turnIO[TURN_IMPULSE] = impulse;
+    // Its linear part stays the angle's: the point's soft solve decays its own kept impulse alone.
     applyTurn(r, o, states);
-    // The share of the point's kept impulse that holds the anchors together while the angle
-    // turns the bodies is the angle's to keep (as a revolute joint's spring's, see there).
-    const share = r[o + ANGULAR_IMPULSE];
-    r[o + LINEAR_IMPULSE_X] -= turnIO[TURN_X] * share;
-    r[o + LINEAR_IMPULSE_Y] -= turnIO[TURN_Y] * share;
     solvePoint(r, o, states, pointSoft, pointAt);
-    r[o + LINEAR_IMPULSE_X] += turnIO[TURN_X] * share;
-    r[o + LINEAR_IMPULSE_Y] += turnIO[TURN_Y] * share;
   },
 
   reaction(r, o, inverseH) {
-    r[o + FORCE_X] = r[o + LINEAR_IMPULSE_X] * inverseH;
-    r[o + FORCE_Y] = r[o + LINEAR_IMPULSE_Y] * inverseH;
+    // The force holds the anchors together: the point's impulse and the angle's turn's linear part.
+    turnIO[TURN_IMPULSE] = r[o + ANGULAR_IMPULSE];
+    turnIO[TURN_REACH] = WELD_REACH;
+    turnLinearAtStart(r, o);
+    r[o + FORCE_X] = (r[o + LINEAR_IMPULSE_X] + turnIO[TURN_X]) * inverseH;
+    r[o + FORCE_Y] = (r[o + LINEAR_IMPULSE_Y] + turnIO[TURN_Y]) * inverseH;
     r[o + TORQUE] = r[o + ANGULAR_IMPULSE] * inverseH;
   },
 };
