@@ -141,6 +141,8 @@ export function hashWithPath(
 /** What a world's query code exposes to tests: its per-body tests, its grid and its work counter. */
 interface QueriesInside {
   examined: number;
+  /** The query's mask, which the per-body tests below apply to each shape. */
+  mask: number;
   grid: { originX: number; originY: number; cellSize: number; columns: number; rows: number };
   contains(slot: number, px: number, py: number): boolean;
   overlaps(slot: number, minX: number, minY: number, maxX: number, maxY: number): boolean;
@@ -163,6 +165,7 @@ function bodiesOf(world: World): BodyStore {
 export const bruteQueries = {
   point(world: World, px: number, py: number, mask: number): number[] {
     const q = queriesOf(world);
+    q.mask = mask;
     const bodies = bodiesOf(world);
     return world.handles().filter((h) => {
       const s = bodies.slotOf(h);
@@ -171,6 +174,7 @@ export const bruteQueries = {
   },
   box(world: World, minX: number, minY: number, maxX: number, maxY: number, mask: number): number[] {
     const q = queriesOf(world);
+    q.mask = mask;
     const bodies = bodiesOf(world);
     return world.handles().filter((h) => {
       const s = bodies.slotOf(h);
@@ -179,6 +183,7 @@ export const bruteQueries = {
   },
   rayAll(world: World, x1: number, y1: number, x2: number, y2: number, mask: number): RayHit[] {
     const q = queriesOf(world);
+    q.mask = mask;
     const bodies = bodiesOf(world);
     const hits: RayHit[] = [];
     for (const h of world.handles()) {

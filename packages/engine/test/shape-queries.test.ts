@@ -83,6 +83,50 @@ describe('queries with shapes', () => {
   });
 });
 
+describe('query masks and far rays on shapes', () => {
+  it("a mask names shapes, not bodies: a compound answers for the shapes in the mask's layers alone", () => {
+    const world = new World();
+    const body = world.createBody({ x: 0, y: 0 });
+    world.addShape(body, { kind: 'box', width: 2, height: 2, category: 2 });
+    world.addShape(body, { kind: 'circle', radius: 1, offsetX: 5, category: 4 });
+    expect(world.queryPoint(0, 0, { mask: 4 })).toEqual([]);
+    expect(world.queryPoint(0, 0, { mask: 2 })).toEqual([body]);
+    expect(world.queryPoint(5, 0, { mask: 4 })).toEqual([body]);
+    expect(world.queryAABB(-0.5, -0.5, 0.5, 0.5, { mask: 4 })).toEqual([]);
+    expect(world.queryAABB(-0.5, -0.5, 0.5, 0.5, { mask: 6 })).toEqual([body]);
+    // Across both: the layer-4 circle's face at x = 4, not the box's at x = -1.
+    const hit = world.rayCast(-10, 0, 10, 0, { mask: 4 })!;
+    expect(hit.x).toBeCloseTo(4, 12);
+    expect(hit.normalX).toBeCloseTo(-1, 12);
+    expect(world.rayCast(-10, 0, 10, 0, { mask: 2 })!.x).toBeCloseTo(-1, 12);
+    expect(world.rayCastAll(-10, 0, 10, 0, { mask: 4 }).map((h) => h.x)).toEqual([hit.x]);
+  });
+
+  it('a ray from 1e15 away enters a shape on its surface, not where the fraction rounds to', () => {
+    const world = new World();
+    const circle = world.createCircle({ x: 0, y: 0, radius: 1, friction: 0.5 });
+    world.createBox({ x: 10, y: 10, width: 2, height: 2, angle: 0.3 });
+    world.createCapsule({ x: 20, y: 0, length: 2, radius: 0.5, angle: 1 });
+    const onCircle = world.rayCast(-1e15, 0.3, 1e15, 0.3)!;
+    expect(onCircle.handle).toBe(circle);
+    expect(Math.hypot(onCircle.x, onCircle.y)).toBeCloseTo(1, 12);
+    expect(onCircle.y).toBeCloseTo(0.3, 12);
+    // The box: its entry lies on one of its faces.
+    const onBox = world.rayCast(-1e15, 10.2, 15, 10.2)!;
+    const c = Math.cos(0.3);
+    const sn = Math.sin(0.3);
+    const lx = c * (onBox.x - 10) + sn * (onBox.y - 10);
+    const ly = -sn * (onBox.x - 10) + c * (onBox.y - 10);
+    expect(Math.max(Math.abs(lx), Math.abs(ly))).toBeCloseTo(1, 12);
+    // The capsule's round end or side: at its radius from the core.
+    const onCapsule = world.rayCast(20.1, -1e15, 20.1, 1e15)!;
+    const ax = Math.cos(1);
+    const ay = Math.sin(1);
+    const u = Math.max(-1, Math.min(1, (onCapsule.x - 20) * ax + onCapsule.y * ay));
+    expect(Math.hypot(onCapsule.x - 20 - u * ax, onCapsule.y - u * ay)).toBeCloseTo(0.5, 12);
+  });
+});
+
 describe('shape queries with a few bodies far from the crowd', () => {
   it('find what testing every body finds, for points, boxes and rays in, across and beyond the grid', () => {
     // The grid's extent left bodies out (binned into its edge cells) in a good share of the worlds.

@@ -3,7 +3,7 @@ import { CellGrid } from '../broadphase/cell-grid.js';
 import { LiveExtent } from '../broadphase/live-extent.js';
 import { rayCircle, rayCircleEntry } from './ray-circle.js';
 import type { ShapeStore } from '../store/shape-store.js';
-import { rayNormal, rayShape, shapeContains, shapeOverlapsBox } from './shape-queries.js';
+import { rayNormal, rayPoint, rayShape, shapeContains, shapeOverlapsBox } from './shape-queries.js';
 
 /** Where a ray enters a body: the point, the outward surface normal there, and the body's handle. */
 export interface RayHit {
@@ -44,6 +44,11 @@ export class Queries {
   private reachMaxY = 0;
   /** Cell entries the last query read, before any test: how much of the grid it searched, for tests. */
   examined = 0;
+  /**
+   * The query's mask, tested against each body's category (the union of its shapes') and then
+   * each shape's own: a compound body answers for the shapes the mask names, not for the others.
+   */
+  private mask = 0xffffffff;
 
   /** A world's shapes once it has them: bodies are then tested shape by shape, their bounding circles only narrowing the search. */
   shapes: ShapeStore | null = null;
@@ -59,7 +64,9 @@ export class Queries {
     const shapes = this.shapes;
     if (shapes === null || !inCircle) return inCircle;
     const rigid = bodies.rigid!;
+    const mask = this.mask;
     for (let k = rigid.firstShape[slot]; k >= 0; k = shapes.next[k]) {
+      if ((shapes.category[k] & mask) === 0) continue;
       if (shapeContains(shapes, k, bodies.x[slot], bodies.y[slot], rigid.c[slot], rigid.s[slot], px, py)) return true;
     }
     return false;
@@ -76,13 +83,15 @@ export class Queries {
     const shapes = this.shapes;
     if (shapes === null || !nearCircle) return nearCircle;
     const rigid = bodies.rigid!;
+    const mask = this.mask;
     for (let k = rigid.firstShape[slot]; k >= 0; k = shapes.next[k]) {
+      if ((shapes.category[k] & mask) === 0) continue;
       if (shapeOverlapsBox(shapes, k, cx, cy, rigid.c[slot], rigid.s[slot], minX, minY, maxX, maxY)) return true;
     }
     return false;
   }
 
-  /** The fraction at which the ray enters body `slot` (its circle or first shape hit), or -1; the normal in rayNormal for shapes. */
+  /** The fraction at which the ray enters body `slot` (its circle or first shape hit), or -1; the normal in rayNormal and the point in rayPoint for shapes. */
   private rayBody(slot: number, x1: number, y1: number, dx: number, dy: number): number {
     const bodies = this.bodies;
     const shapes = this.shapes;
@@ -91,20 +100,29 @@ export class Queries {
     let best = -1;
     let nx = 0;
     let ny = 0;
+    let hx = 0;
+    let hy = 0;
+    const mask = this.mask;
     for (let k = rigid.firstShape[slot]; k >= 0; k = shapes.next[k]) {
+      if ((shapes.category[k] & mask) === 0) continue;
       const t = rayShape(shapes, k, bodies.x[slot], bodies.y[slot], rigid.c[slot], rigid.s[slot], x1, y1, dx, dy);
       if (t >= 0 && (best < 0 || t < best)) {
         best = t;
         nx = rayNormal.x;
         ny = rayNormal.y;
+        hx = rayPoint.x;
+        hy = rayPoint.y;
       }
     }
     rayNormal.x = nx;
     rayNormal.y = ny;
+    rayPoint.x = hx;
+    rayPoint.y = hy;
     return best;
   }
 
   point(version: number, px: number, py: number, mask: number, out: number[]): number[] {
+    this.mask = mask;
     this.examined = 0;
     if (!this.prepare(version) || !this.reaches(px, py, px, py)) return out;
     const { grid, bodies } = this;
@@ -137,6 +155,7 @@ export class Queries {
   }
 
   private inBox(version: number, minX: number, minY: number, maxX: number, maxY: number, mask: number, out: number[], handles: boolean): number[] {
+    this.mask = mask;
     this.examined = 0;
     if (!this.prepare(version) || !this.reaches(minX, minY, maxX, maxY)) return out;
     const { grid, bodies } = this;
@@ -167,6 +186,8 @@ export class Queries {
     const t = this.bestFraction;
     rayNormal.x = this.bestNormalX;
     rayNormal.y = this.bestNormalY;
+    rayPoint.x = this.bestPointX;
+    rayPoint.y = this.bestPointY;
     return this.write(into ?? blankHit(), this.bestSlot, t, x1, y1, x2 - x1, y2 - y1);
   }
 
@@ -197,14 +218,16 @@ export class Queries {
   private bestHandle = -1;
   private bestNormalX = 0;
   private bestNormalY = 0;
+  private bestPointX = 0;
+  private bestPointY = 0;
 
   /** A hit on a circle (from its centre), or on a shape (at the entry, with rayShape's normal). */
   private write(hit: RayHit, slot: number, t: number, x1: number, y1: number, dx: number, dy: number): RayHit {
     if (this.shapes === null) return writeHit(hit, this.bodies, slot, t, x1, y1, dx, dy);
     hit.handle = this.bodies.handleOf(slot);
     hit.fraction = t;
-    hit.x = x1 + t * dx;
-    hit.y = y1 + t * dy;
+    hit.x = rayPoint.x;
+    hit.y = rayPoint.y;
     hit.normalX = rayNormal.x;
     hit.normalY = rayNormal.y;
     return hit;
@@ -220,6 +243,7 @@ export class Queries {
    * can touch while its point clamps there (see the class comment).
    */
   private walk(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, all: boolean): void {
+    this.mask = mask;
     this.examined = 0;
     if (!this.prepare(version)) return;
     const { grid } = this;
@@ -289,6 +313,8 @@ export class Queries {
           this.bestHandle = bodies.handleOf(slot);
           this.bestNormalX = rayNormal.x;
           this.bestNormalY = rayNormal.y;
+          this.bestPointX = rayPoint.x;
+          this.bestPointY = rayPoint.y;
         }
       }
     }

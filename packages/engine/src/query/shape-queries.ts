@@ -15,6 +15,11 @@ const pose = new Float64Array(4);
 
 /** Where the last rayShape hit entered: the outward unit normal there. */
 export const rayNormal = { x: 0, y: 0 };
+/**
+ * And the point itself, taken from the shape's geometry: the start plus the fraction times the
+ * ray rounds at the start's distance (a ray from 1e15 away) and would leave the surface.
+ */
+export const rayPoint = { x: 0, y: 0 };
 
 /** Whether shape `slot` of a body at (px, py) turned (c, s) contains the point (boundary included). */
 export function shapeContains(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, qx: number, qy: number): boolean {
@@ -81,6 +86,8 @@ export function rayShape(shapes: ShapeStore, slot: number, px: number, py: numbe
           const side = (x1 - g.x[i]) * ey - (y1 - g.y[i]) * ex > 0 ? 1 : -1;
           rayNormal.x = (side * ey) / length;
           rayNormal.y = (-side * ex) / length;
+          rayPoint.x = g.x[i] + u * ex + r * rayNormal.x;
+          rayPoint.y = g.y[i] + u * ey + r * rayNormal.y;
         } else {
           const end = u <= 0 ? i : j;
           normalAtCircle(x1, y1, dx, dy, g.x[end], g.y[end], r);
@@ -117,6 +124,12 @@ export function rayShape(shapes: ShapeStore, slot: number, px: number, py: numbe
   if (entering < 0) return -1;
   rayNormal.x = g.nx[entering];
   rayNormal.y = g.ny[entering];
+  // Onto the entering edge's line.
+  const hx = x1 + enter * dx;
+  const hy = y1 + enter * dy;
+  const off = rayNormal.x * (hx - g.x[entering]) + rayNormal.y * (hy - g.y[entering]);
+  rayPoint.x = hx - off * rayNormal.x;
+  rayPoint.y = hy - off * rayNormal.y;
   return enter;
 }
 
@@ -125,11 +138,14 @@ const entry = { x: 0, y: 0 };
 /**
  * The outward normal where the ray enters the circle at (cx, cy) of radius r: from its entry
  * relative to the centre (rayCircleEntry), which stays on the circle however far the ray starts
- * and however small the circle; for a circle of radius 0, the ray's direction reversed.
+ * and however small the circle; for a circle of radius 0, the ray's direction reversed. The
+ * entry itself into rayPoint.
  */
 function normalAtCircle(x1: number, y1: number, dx: number, dy: number, cx: number, cy: number, r: number): void {
   rayCircleEntry(x1, y1, dx, dy, cx, cy, r, entry);
   if (!unitNormal(entry.x, entry.y)) unitNormal(-dx, -dy);
+  rayPoint.x = cx + entry.x;
+  rayPoint.y = cy + entry.y;
 }
 
 /**
