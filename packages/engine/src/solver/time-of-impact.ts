@@ -47,8 +47,8 @@ function placeVertex(shapes: ShapeStore, slot: number, vertex: number, px: numbe
 
 /**
  * Whether vertex `vertex` of shape `slot` passes into or through `other` over the sweep: clear of
- * its core at the start, and at the end within it or on its far side (the direction between the
- * closest points turned around). A vertex that merely comes to touch, as the ends of a stick
+ * its core at the start, on the body's side of it, and at the end within it or on its far side
+ * (the direction between the closest points turned around). A vertex that merely comes to touch, as the ends of a stick
  * spinning on the ground do, is left to the contacts.
  */
 export function vertexCrosses(shapes: ShapeStore, slot: number, sweep: Sweep, other: WorldShape, vertex: number): boolean {
@@ -60,6 +60,15 @@ export function vertexCrosses(shapes: ShapeStore, slot: number, sweep: Sweep, ot
   if (!(d0 > 0)) return false;
   const nx = distance.x2 - distance.x1;
   const ny = distance.y2 - distance.y1;
+  // A vertex that starts on the far side of a thin shape from the body's centre (a corner a
+  // bounce left a hair past a segment of no thickness) is coming back, not going through: swept,
+  // it was put back at half its gap step after step, and the body stayed at the segment while
+  // its velocity carried it away.
+  const cx = shapes.centroidX[slot];
+  const cy = shapes.centroidY[slot];
+  moving.circle(sweep.x0 + sweep.c0 * cx - sweep.s0 * cy, sweep.y0 + sweep.s0 * cx + sweep.c0 * cy, 0);
+  distance.compute(moving, other);
+  if (distance.distance > 0 && nx * (distance.x2 - distance.x1) + ny * (distance.y2 - distance.y1) < 0) return false;
   rotation[0] = sweep.c1;
   rotation[1] = sweep.s1;
   placeVertex(shapes, slot, vertex, sweep.x1, sweep.y1);
