@@ -297,6 +297,40 @@ describe('continuous collision with shapes', () => {
     }
   });
 
+  it("the elastic pass's sweep bounces with friction, and its bounces are hit events", () => {
+    // A box sliding along a wall as it meets it: swept (fast) or not (slow), friction takes from
+    // its slide along the wall and turns it, and the hit is listed at its approach speed.
+    for (const wall of ['box', 'segment'] as const) {
+      const slides: number[] = [];
+      for (const vx of [10, 20, 60]) {
+        const world = new World({ solver: 'elastic', friction: 0.6, restitution: 1, hitEventThreshold: 1 });
+        const segment = wall === 'segment' ? world.createSegment({ x1: 5, y1: -50, x2: 5, y2: 50 }) : -1;
+        const block = wall === 'box' ? world.createBox({ x: 5.05, y: 0, width: 0.1, height: 100, type: 'static' }) : -1;
+        const box = world.createBox({ x: 0, y: 0, width: 1, height: 1, vx, vy: 3 });
+        let hit = 0;
+        let swept = 0;
+        for (let s = 0; s < 60 && world.getBody(box).vx > 0; s++) {
+          world.step(1 / 60);
+          swept += world.stats.sweptBodies;
+          const e = world.contactEvents();
+          for (let k = 0; k < e.hitCount; k++) if (e.hitA[k] === Math.min(box, block) && e.hitB[k] === Math.max(box, block)) hit = e.hitSpeed[k];
+          for (let k = 0; k < e.segmentHitCount; k++) if (e.segmentHitBody[k] === box && e.segmentHitSegment[k] === segment) hit = e.segmentHitSpeed[k];
+        }
+        const b = world.getBody(box);
+        expect(b.vx, `${wall} ${vx}`).toBeCloseTo(-vx, 9);
+        expect(hit, `${wall} ${vx}: the hit`).toBeCloseTo(vx, 6);
+        if (vx >= 20) expect(swept, `${wall} ${vx}`).toBeGreaterThan(0);
+        // Friction slowed the slide along the wall and spun the box: at most mu (1 + e) vx of slide taken.
+        expect(b.vy, `${wall} ${vx}`).toBeLessThan(2.5);
+        expect(b.vy, `${wall} ${vx}`).toBeGreaterThan(0);
+        expect(Math.abs(b.angularVelocity), `${wall} ${vx}`).toBeGreaterThan(1);
+        slides.push(b.vy);
+      }
+      // Swept or not, the same impact takes about the same slide.
+      expect(Math.max(...slides) - Math.min(...slides), wall).toBeLessThan(0.5);
+    }
+  });
+
   it('a fast box sliding along the ground is not stopped by the ground it rests on', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, friction: 0 });
     world.createBox({ x: 0, y: 1, width: 4000, height: 2, type: 'static' });

@@ -12,6 +12,7 @@ import { grownCapacity } from '../util/grow.js';
 import { Manifold } from '../narrowphase/manifold.js';
 import { collide } from '../narrowphase/dispatch.js';
 import { twoPointImpulses } from './two-point-impulses.js';
+import type { ContactEvents } from '../store/contact-events.js';
 import { impact, sweepRotation, timeOfImpact, TOUCHING, vertexCrosses, type Sweep } from './time-of-impact.js';
 
 /** A body moving less than this fraction of its smallest extent in a step is left to the contacts (Box2D's safety factor). */
@@ -75,13 +76,21 @@ export class ContinuousShapes {
   swept = 0;
   hits = new Int32Array(16);
   hitCount = 0;
-  // The best impact of the body being swept: normal (moving -> other), point, the other's restitution, the moving shape.
+  // The best impact of the body being swept: normal (moving -> other), point, the other's
+  // restitution and friction, the moving shape, and what it met (a shape slot, or a segment as
+  // SEGMENT_ENTRY + its slot).
   private hitNx = 0;
   private hitNy = 0;
   private hitX = 0;
   private hitY = 0;
   private hitRestitution = 0;
+  private hitFriction = 0;
   private hitShape = -1;
+  private hitEntry = -1;
+  // The material and entry of the thing being tested against (note takes them for an impact).
+  private otherRestitution = 0;
+  private otherFriction = 0;
+  private otherEntry = -1;
   // Where the body being swept goes at its best impact: its centre on the sweep that found it.
   private hitCentreX = 0;
   private hitCentreY = 0;
@@ -117,6 +126,8 @@ export class ContinuousShapes {
     slop: number,
     bounce: boolean,
     restitutionThreshold: number,
+    events: ContactEvents | null = null,
+    hitThreshold = Infinity,
   ): number {
     const { x, y, type, asleep, radius, slotCount } = bodies;
     const rigid = bodies.rigid!;
@@ -170,21 +181,23 @@ export class ContinuousShapes {
         const found = tree.queryBox();
         for (let f = 0; f < found; f++) {
           const entry = tree.found[f];
-          let restitution: number;
           if (entry < SEGMENT_ENTRY) {
             const owner = shapes.body[entry];
             if (!this.layers(bodies, i, shapes, entry)) continue;
             other.fromStore(shapes, entry, x[owner], y[owner], c[owner], s[owner]);
-            restitution = shapes.restitution[entry];
+            this.otherRestitution = shapes.restitution[entry];
+            this.otherFriction = shapes.friction[entry];
           } else {
             const g = entry - SEGMENT_ENTRY;
             const seg = world.segments;
             if ((bodies.category[i] & seg.mask[g]) === 0 || (seg.category[g] & bodies.mask[i]) === 0) continue;
             other.segment(seg, g);
-            restitution = seg.restitution[g];
+            this.otherRestitution = seg.restitution[g];
+            this.otherFriction = seg.friction[g];
           }
           if (this.outOfReach(slop + 0.25 * slop)) continue;
-          best = this.earliest(shapes, rigid.firstShape[i], best, slop, restitution, CORE * minExtent[i]);
+          this.otherEntry = entry;
+          best = this.earliest(shapes, rigid.firstShape[i], best, slop, CORE * minExtent[i]);
         }
         if (bullet && queries) {
           if (travel < 0) travel = this.largestTravel(bodies);
@@ -200,7 +213,10 @@ export class ContinuousShapes {
             for (let t = rigid.firstShape[j]; t >= 0; t = shapes.next[t]) {
               if (shapes.sensor[t]) continue;
               other.fromStore(shapes, t, x[j], y[j], c[j], s[j]);
-              best = this.earliest(shapes, rigid.firstShape[i], best, slop, shapes.restitution[t], CORE * minExtent[i]);
+              this.otherRestitution = shapes.restitution[t];
+              this.otherFriction = shapes.friction[t];
+              this.otherEntry = t;
+              best = this.earliest(shapes, rigid.firstShape[i], best, slop, CORE * minExtent[i]);
             }
           }
           sweep.x0 = x0[i];
@@ -213,7 +229,7 @@ export class ContinuousShapes {
           c[i] = rotation[0];
           s[i] = rotation[1];
           this.noteHit(i);
-          if (bounce && this.hitShape >= 0) this.bounce(bodies, shapes, i, restitutionThreshold, slop);
+          if (bounce && this.hitShape >= 0) this.bounce(bodies, shapes, world, i, restitutionThreshold, slop, events, hitThreshold);
         }
       }
     }
@@ -252,39 +268,41 @@ export class ContinuousShapes {
   }
 
   /** The earliest impact of the body's shapes with `other` before `best`, noting where it happened. */
-  private earliest(shapes: ShapeStore, first: number, best: number, slop: number, otherRestitution: number, core: number): number {
+  private earliest(shapes: ShapeStore, first: number, best: number, slop: number, core: number): number {
     for (let t = first; t >= 0; t = shapes.next[t]) {
       if (shapes.sensor[t]) continue;
       const toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop);
       if (toi !== TOUCHING) {
-        best = this.note(toi, best, otherRestitution, t);
+        best = this.note(toi, best, t);
         continue;
       }
       // The core disc too may start the step touching, where a contact's push left the body deep
       // in a thin wall (the elastic pass pushes each contact's bodies apart forgetting the others):
       // then its centroid alone, as a point, so that the body cannot go on through.
       const coreImpact = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, core);
-      best = this.note(coreImpact !== TOUCHING ? coreImpact : timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, 0), best, otherRestitution, t);
+      best = this.note(coreImpact !== TOUCHING ? coreImpact : timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, 0), best, t);
       // The corners of a polygon, and the ends of a capsule's core, that start the step clear
       // and end it inside the other shape or past it: the contact holds only the points near at
       // the step's start, and a long body turning about one of them can carry the far ones
       // through a thin wall within the step, which then pushes the body on through.
       if (shapes.kind[t] === ShapeKind.circle) continue;
       for (let v = 0; v < shapes.vertexCount[t]; v++) {
-        if (vertexCrosses(shapes, t, this.sweep, other, v)) best = this.note(timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, -1, v), best, otherRestitution, t);
+        if (vertexCrosses(shapes, t, this.sweep, other, v)) best = this.note(timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, -1, v), best, t);
       }
     }
     return best;
   }
 
   /** The earlier of `best` and an impact at `toi` (< 0: none) of shape `shape`, noting where the impact happened. */
-  private note(toi: number, best: number, otherRestitution: number, shape: number): number {
+  private note(toi: number, best: number, shape: number): number {
     if (!(toi >= 0 && toi < best)) return best;
+    this.hitFriction = this.otherFriction;
+    this.hitEntry = this.otherEntry;
     this.hitNx = impact.nx;
     this.hitNy = impact.ny;
     this.hitX = impact.x;
     this.hitY = impact.y;
-    this.hitRestitution = otherRestitution;
+    this.hitRestitution = this.otherRestitution;
     this.hitShape = shape;
     hitOther.copy(other);
     const sweep = this.sweep;
@@ -305,7 +323,7 @@ export class ContinuousShapes {
    * core disc and by its corners, whose impact is a single point, and an impulse there alone would
    * spin a body that meets the face flat.
    */
-  private bounce(bodies: BodyStore, shapes: ShapeStore, i: number, threshold: number, slop: number): void {
+  private bounce(bodies: BodyStore, shapes: ShapeStore, world: WorldShapes, i: number, threshold: number, slop: number, events: ContactEvents | null, hitThreshold: number): void {
     const rigid = bodies.rigid!;
     const px = bodies.x[i];
     const py = bodies.y[i];
@@ -355,9 +373,46 @@ export class ContinuousShapes {
       p0 = impulses[0];
       p1 = impulses[1];
     }
-    bodies.vx[i] = vx - m * (p0 + p1) * nx;
-    bodies.vy[i] = vy - m * (p0 + p1) * ny;
-    rigid.angularVelocity[i] = w - inertia * (p0 * rn0 + p1 * rn1);
+    let wx = vx - m * (p0 + p1) * nx;
+    let wy = vy - m * (p0 + p1) * ny;
+    let ww = w - inertia * (p0 * rn0 + p1 * rn1);
+    // Then Coulomb friction at each point, at most mu times its normal impulse, as the pass does.
+    const mu = Math.sqrt(shapes.friction[this.hitShape] * this.hitFriction);
+    if (mu > 0) {
+      const tx = ny;
+      const ty = -nx;
+      for (let p = 0; p < n; p++) {
+        const limit = mu * (p === 0 ? p0 : p1);
+        if (!(limit > 0)) continue;
+        const rx = p === 0 ? r0x : r1x;
+        const ry = p === 0 ? r0y : r1y;
+        const slip = (wx - ww * ry) * tx + (wy + ww * rx) * ty;
+        const rt = rx * ty - ry * tx;
+        const kt = m + inertia * rt * rt;
+        let jt = kt > 0 ? -slip / kt : 0;
+        jt = jt < -limit ? -limit : jt > limit ? limit : jt;
+        wx += m * jt * tx;
+        wy += m * jt * ty;
+        ww += inertia * jt * rt;
+      }
+    }
+    bodies.vx[i] = wx;
+    bodies.vy[i] = wy;
+    rigid.angularVelocity[i] = ww;
+    if (events !== null && approach >= hitThreshold && p0 + p1 > 0) this.recordHit(bodies, shapes, world, events, i, approach);
+  }
+
+  /** A hit event for the bounce of the body in slot i at `speed`, as the pass's contact would have given. */
+  private recordHit(bodies: BodyStore, shapes: ShapeStore, world: WorldShapes, events: ContactEvents, i: number, speed: number): void {
+    const entry = this.hitEntry;
+    const shape = shapes.handleOf(this.hitShape);
+    if (entry >= SEGMENT_ENTRY) {
+      events.noteSegmentShapeHit(bodies.handleOf(i), shape, world.segments.handleOf(entry - SEGMENT_ENTRY), speed);
+      return;
+    }
+    const j = shapes.body[entry];
+    if (i < j) events.noteShapeHit(bodies.handleOf(i), bodies.handleOf(j), shape, shapes.handleOf(entry), speed);
+    else events.noteShapeHit(bodies.handleOf(j), bodies.handleOf(i), shapes.handleOf(entry), shape, speed);
   }
 
   /** The longest travel, along x or y, of a moving body that is not a bullet in this step. */

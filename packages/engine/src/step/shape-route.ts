@@ -94,7 +94,7 @@ export class ShapeRoute {
     if (sweep) this.continuous.remember(bodies);
     if (elastic) {
       integrateRigid(bodies, settings.gravity.x, settings.gravity.y, dt, settings.integrator);
-      if (sweep) this.sweep(queries, -1 - queryVersion, true);
+      if (sweep) this.sweep(queries, -1 - queryVersion, true, events, hitThreshold);
     }
     const t1 = nowMs();
     narrow.begin();
@@ -112,7 +112,7 @@ export class ShapeRoute {
     if (elastic) this.elastic.solve(bodies, contacts, settings.elastic);
     else {
       this.soft.solve(bodies, contacts, settings.gravity.x, settings.gravity.y, dt, settings.soft, joints);
-      if (sweep) this.sweep(queries, -1 - queryVersion, false);
+      if (sweep) this.sweep(queries, -1 - queryVersion, false, null, Infinity);
     }
     const t4 = nowMs();
     if (settings.box) this.contain(settings.box);
@@ -152,10 +152,10 @@ export class ShapeRoute {
   joints: JointSolver | null = null;
 
   /** `queryVersion`: one no later query shares, since bodies move again after the sweep. */
-  private sweep(queries: Queries, queryVersion: number, bounce: boolean): void {
+  private sweep(queries: Queries, queryVersion: number, bounce: boolean, events: ContactEvents | null, hitThreshold: number): void {
     const { settings } = this;
     const threshold = bounce ? settings.elastic.restitutionThreshold : settings.soft.restitutionThreshold;
-    this.continuous.run(this.bodies, this.shapes, this.tree, this.world, this.bullets > 0 ? queries : null, queryVersion, settings.margin, settings.slop, bounce, threshold);
+    this.continuous.run(this.bodies, this.shapes, this.tree, this.world, this.bullets > 0 ? queries : null, queryVersion, settings.margin, settings.slop, bounce, threshold, events, hitThreshold);
   }
 
   memoryBytes(): number {

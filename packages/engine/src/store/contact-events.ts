@@ -351,6 +351,18 @@ export class ContactEvents implements ContactEventsView {
     this.segmentHits.push(bodies.handleOf(i), segments.handleOf(s), speed);
   }
 
+  /** A hit between bodies a and b (handles, in slot order) at shapes sa and sb (handles), on the shape route. */
+  noteShapeHit(a: number, b: number, sa: number, sb: number, speed: number): void {
+    this.hits.note(a, b, speed);
+    this.shapeHits.push(sa, sb, speed);
+  }
+
+  /** A hit of body `body`'s shape `shape` (handles) on segment `segment` (its handle), on the shape route. */
+  noteSegmentShapeHit(body: number, shape: number, segment: number, speed: number): void {
+    this.segmentHits.note(body, segment, speed);
+    this.shapeHits.push(shape, segment, speed);
+  }
+
   /** A hit of the body in slot i on box wall `wall`. */
   recordWallHit(bodies: BodyStore, i: number, wall: number, speed: number): void {
     this.wallHits.push(bodies.handleOf(i), wall, speed);
