@@ -94,9 +94,9 @@ function clampImpulses(r: Float64Array, o: number, kind: number, linear: number,
 }
 
 /**
- * Whether joint o's lever arms on either body (its anchors' and the centres' distances, bounding
- * every arm a kind forms, plus `travel`, the most the two bodies can part within the step at the
- * speed limit) reach more than FAR_ARM of that body's radii of gyration, sqrt(I / m). The
+ * Whether joint o's lever arms on either body (`reach`: jointArm's bound, plus the most the two
+ * bodies can part within the step at the speed limit) reach more than FAR_ARM of that body's
+ * radii of gyration, sqrt(I / m). The
  * effective masses are prepared once per step, from the arms at its start; an arm that a turn or
  * that travel makes many times longer within the step leaves the stale mass answering a velocity
  * error with an impulse that multiplies it: from a unit box anchored 1e45 out, or from bodies
@@ -104,30 +104,16 @@ function clampImpulses(r: Float64Array, o: number, kind: number, linear: number,
  * Those joints' bodies are held within the speed limits after each of their impulses
  * (holdWithinLimits); no joint between bodies larger than about 1e-5 of the length unit comes near.
  */
-function farArms(r: Float64Array, o: number, travel: number): boolean {
-  const arm = Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]) + Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]) + Math.sqrt(r[o + DELTA_CENTER_X] * r[o + DELTA_CENTER_X] + r[o + DELTA_CENTER_Y] * r[o + DELTA_CENTER_Y]) + travel;
+function farArms(r: Float64Array, o: number, reach: number): boolean {
+  const arm = reach;
   const arm2 = arm * arm;
   const far2 = FAR_ARM * FAR_ARM;
   return arm2 * r[o + INV_INERTIA_A] > far2 * r[o + INV_MASS_A] || arm2 * r[o + INV_INERTIA_B] > far2 * r[o + INV_MASS_B];
 }
 
-/**
- * Whether joint o's effective masses, prepared from its arms at the step's start, could be less
- * than half what they will be before the step ends: its bodies part, at the speeds they start the
- * step with (`parting`, capped at the limits), by enough to lengthen its lever arms past that.
- * A Gauss-Seidel pass with half the mass a constraint has overshoots it, and each pass grows
- * the error: bodies 3 m apart on a wheel joint, one 100,000 times lighter than the other,
- * thrown about a box at 400 m/s in steps of 0.5 s, spun to 1e173 rad/s within a step and gave
- * NaN. Like far arms (see farArms), such a joint's bodies are then held within the speed limits
- * after each of its impulses and a sliding joint's masses taken again before each pass. A joint
- * between bodies that move less than a fraction of its arms in a step is not one.
- */
-function staleArms(r: Float64Array, o: number, parting: number): boolean {
-  const arm = Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]) + Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]) + Math.sqrt(r[o + DELTA_CENTER_X] * r[o + DELTA_CENTER_X] + r[o + DELTA_CENTER_Y] * r[o + DELTA_CENTER_Y]);
-  const turning = r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B];
-  const start = r[o + INV_MASS_A] + r[o + INV_MASS_B] + turning * arm * arm;
-  const end = arm + parting;
-  return turning * end * end > start + start;
+/** The bound on every lever arm joint o's kind forms: its anchors' and its centres' distances. */
+function jointArm(r: Float64Array, o: number): number {
+  return Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]) + Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]) + Math.sqrt(r[o + DELTA_CENTER_X] * r[o + DELTA_CENTER_X] + r[o + DELTA_CENTER_Y] * r[o + DELTA_CENTER_Y]);
 }
 
 /**
@@ -325,7 +311,8 @@ export class JointSolver {
       this.prepareJoint(bodies, j, o, ia, ib);
       if (store.kind[j] === JointKind.spring) this.springSlots[listed[Listed.springs]++] = j;
       else {
-        const far = farArms(r, o, this.limits[2]) || staleArms(r, o, this.parting(bodies, a, b, o));
+        const arm = jointArm(r, o);
+        const far = farArms(r, o, arm + this.limits[2]) || this.staleArms(bodies, a, b, o, arm);
         this.farArms[listed[Listed.active]] = far ? 1 : 0;
         if (far) {
           listed[Listed.farArms]++;
@@ -337,12 +324,19 @@ export class JointSolver {
   }
 
   /**
-   * How far joint o's bodies (slots a, b; a < 0 for none) can part within the step at the
-   * velocities they start it with: their relative speed (within twice the speed limit) times the
-   * step. Bodies that move together (a ragdoll falling) part little; spins, within the angular
-   * limit, turn the arms but do not lengthen them.
+   * Whether joint o's effective masses, prepared from its arms at the step's start (`arm`,
+   * jointArm's bound), could be less than half what they will be before the step ends: its bodies
+   * (slots a, b; a < 0 for none) part, at their relative speed as the step starts (within twice
+   * the speed limit) times the step, by enough to lengthen its lever arms past that. A
+   * Gauss-Seidel pass with half the mass a constraint has overshoots it, and each pass grows the
+   * error: bodies 3 m apart on a wheel joint, one 100,000 times lighter than the other, thrown
+   * about a box at 400 m/s in steps of 0.5 s, spun to 1e173 rad/s within a step and gave NaN.
+   * Like far arms (see farArms), such a joint's bodies are then held within the speed limits after
+   * each of its impulses and a sliding joint's masses taken again before each pass. Bodies that
+   * move together (a ragdoll falling) part little; spins, within the angular limit, turn the arms
+   * but do not lengthen them.
    */
-  private parting(bodies: BodyStore, a: number, b: number, o: number): number {
+  private staleArms(bodies: BodyStore, a: number, b: number, o: number, arm: number): boolean {
     const r = this.store.record;
     const { vx, vy } = bodies;
     let dvx = 0;
@@ -355,7 +349,16 @@ export class JointSolver {
       dvx += vx[b];
       dvy += vy[b];
     }
-    return Math.min(Math.sqrt(dvx * dvx + dvy * dvy), 2 * this.limits[0]) * this.limits[3];
+    const dt = this.limits[3];
+    const speedSq = dvx * dvx + dvy * dvy;
+    // The masses at least double only once the arms grow by sqrt(2) - 1 of themselves: most
+    // joints, whose bodies part by less, are settled here without a square root.
+    if (speedSq * dt * dt <= 0.17 * arm * arm) return false;
+    const parting = Math.min(Math.sqrt(speedSq), 2 * this.limits[0]) * dt;
+    const turning = r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B];
+    const start = r[o + INV_MASS_A] + r[o + INV_MASS_B] + turning * arm * arm;
+    const end = arm + parting;
+    return turning * end * end > start + start;
   }
 
   /**

@@ -26,8 +26,11 @@ export const revoluteJoint: JointKernel = {
 
   warmStart(r, o, states) {
     warmStartPoint(r, o, states);
+    const turn = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    // A pin without spring, motor or limits (a grid of 19,794) has no turn to warm-start.
+    if (turn === 0) return;
     turnIO[TURN_REACH] = REVOLUTE_REACH;
-    turnIO[TURN_IMPULSE] = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
+    turnIO[TURN_IMPULSE] = turn;
     warmStartTurn(r, o, states);
   },
 

@@ -28,6 +28,7 @@ export const weldJoint: JointKernel = {
 
   warmStart(r, o, states) {
     warmStartPoint(r, o, states);
+    if (r[o + ANGULAR_IMPULSE] === 0) return;
     turnIO[TURN_REACH] = WELD_REACH;
     turnIO[TURN_IMPULSE] = r[o + ANGULAR_IMPULSE];
     warmStartTurn(r, o, states);
