@@ -1,6 +1,7 @@
 import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type ShapeStore } from '../store/shape-store.js';
 import { WorldShape } from '../narrowphase/world-shape.js';
 import { ShapeDistance } from '../narrowphase/distance.js';
+import { ShapeKind } from '../shapes/geometry.js';
 
 /**
  * A body's motion over a step for continuous collision: from centre (x0, y0) turned (c0, s0) to
@@ -45,9 +46,31 @@ function placeVertex(shapes: ShapeStore, slot: number, vertex: number, px: numbe
   moving.circle(px + rotation[0] * vx - rotation[1] * vy, py + rotation[1] * vx + rotation[0] * vy, 0);
 }
 
+/** `moving` as the line from (x0, y0) to (x1, y1), a capsule of radius 0 (a point where they meet). */
+function placeLine(x0: number, y0: number, x1: number, y1: number): void {
+  const ex = x1 - x0;
+  const ey = y1 - y0;
+  const length = Math.sqrt(ex * ex + ey * ey);
+  if (!(length > 0)) {
+    moving.circle(x0, y0, 0);
+    return;
+  }
+  moving.kind = ShapeKind.capsule;
+  moving.count = 2;
+  moving.radius = 0;
+  moving.x[0] = x0;
+  moving.y[0] = y0;
+  moving.x[1] = x1;
+  moving.y[1] = y1;
+  moving.nx[0] = ey / length;
+  moving.ny[0] = -ex / length;
+  moving.nx[1] = -ey / length;
+  moving.ny[1] = ex / length;
+}
+
 /**
  * Whether vertex `vertex` of shape `slot` passes into or through `other` over the sweep: clear of
- * its core at the start, on the body's side of it, and at the end within it or on its far side
+ * its core at the start, on its shape's side of it, and at the end within it or on its far side
  * (the direction between the closest points turned around). A vertex that merely comes to touch, as the ends of a stick
  * spinning on the ground do, is left to the contacts.
  */
@@ -60,15 +83,17 @@ export function vertexCrosses(shapes: ShapeStore, slot: number, sweep: Sweep, ot
   if (!(d0 > 0)) return false;
   const nx = distance.x2 - distance.x1;
   const ny = distance.y2 - distance.y1;
-  // A vertex that starts on the far side of a thin shape from the body's centre (a corner a
-  // bounce left a hair past a segment of no thickness) is coming back, not going through: swept,
-  // it was put back at half its gap step after step, and the body stayed at the segment while
-  // its velocity carried it away.
+  // A vertex that starts on the far side of a thin shape from its shape's centroid, the line
+  // between them crossing it (a corner a bounce left a hair past a segment of no thickness), is
+  // coming back, not going through: swept, it was put back at half its gap step after step, and
+  // the body stayed at the segment while its velocity carried it away. (A plank pivoting on a
+  // ledge's end, its centroid hanging past the end, does not cross the ledge: swept.)
+  const vx = moving.x[0];
+  const vy = moving.y[0];
   const cx = shapes.centroidX[slot];
   const cy = shapes.centroidY[slot];
-  moving.circle(sweep.x0 + sweep.c0 * cx - sweep.s0 * cy, sweep.y0 + sweep.s0 * cx + sweep.c0 * cy, 0);
-  distance.compute(moving, other);
-  if (distance.distance > 0 && nx * (distance.x2 - distance.x1) + ny * (distance.y2 - distance.y1) < 0) return false;
+  placeLine(sweep.x0 + sweep.c0 * cx - sweep.s0 * cy, sweep.y0 + sweep.s0 * cx + sweep.c0 * cy, vx, vy);
+  if (distance.compute(moving, other).distance <= other.radius) return false;
   rotation[0] = sweep.c1;
   rotation[1] = sweep.s1;
   placeVertex(shapes, slot, vertex, sweep.x1, sweep.y1);
