@@ -493,6 +493,29 @@ describe('joints', () => {
     expect(Math.abs(soft.getBody(beam2).angle - sag)).toBeLessThan(1e-3);
   });
 
+  it('welds and revolute limits hold small bodies at any distance: the turn about the anchors has no cut-off', () => {
+    // 2 d^2 / r^2 (the anchor's distance in radii of gyration, squared) from 800 to 2e6.
+    for (const d of [1, 3.6, 5, 20]) {
+      const world = new World({ gravity: { x: 0, y: 10 }, solver: 'soft' });
+      const ground = world.createBox({ x: 0, y: 0, width: 0.2, height: 0.2, type: 'static' });
+      const disc = world.createCircle({ x: d, y: 0, radius: 0.05, friction: 0.5 });
+      world.createJoint({ kind: 'weld', bodyA: ground, bodyB: disc });
+      for (let s = 0; s < 120; s++) world.step(1 / 60);
+      const b = world.getBody(disc);
+      expect(Math.abs(b.angle), `weld ${d} m`).toBeLessThan(1e-3);
+      expect(Math.abs(b.y), `weld ${d} m`).toBeLessThan(1e-3);
+    }
+    for (const d of [2, 7.2, 10]) {
+      const world = new World({ gravity: { x: 0, y: 10 }, solver: 'soft' });
+      const ground = world.createBox({ x: 0, y: 0, width: 0.2, height: 0.2, type: 'static' });
+      const disc = world.createCircle({ x: d, y: 0, radius: 0.01, friction: 0.5 });
+      world.createJoint({ kind: 'revolute', bodyA: ground, bodyB: disc, anchorA: { x: 0, y: 0 }, anchorB: { x: -d, y: 0 }, lowerAngle: -0.1, upperAngle: 0.1 });
+      for (let s = 0; s < 120; s++) world.step(1 / 60);
+      const b = world.getBody(disc);
+      expect(Math.atan2(b.y, b.x), `revolute ${d} m`).toBeLessThan(0.1 + 1e-3);
+    }
+  });
+
   it('a weld holds a small body far from its anchor: no sag, a blow stopped, and its angular spring at its frequency', () => {
     // A 5 cm disc welded 1 m and 3 m out from a wall: its weight at that arm is a torque the weld's
     // angle must hold with the turn about the anchor, not the disc's own spin.

@@ -11,7 +11,7 @@ import { distanceJoint } from './joints/distance-joint.js';
 import { isPointDistanceJoint, PointDistanceJoints } from './joints/point-distance-joints.js';
 import type { SoftStepKernel } from './soft-step-kernel.js';
 import { revoluteJoint } from './joints/revolute-joint.js';
-import { pinnedTurnAtStart, REVOLUTE_REACH, TURN_MASS, TURN_REACH, turnIO, WELD_REACH } from './joints/pinned-turn.js';
+import { pinnedTurnAtStart, TURN_MASS, turnIO } from './joints/pinned-turn.js';
 import { prismaticJoint } from './joints/prismatic-joint.js';
 import { weldJoint } from './joints/weld-joint.js';
 import { wheelJoint } from './joints/wheel-joint.js';
@@ -19,7 +19,7 @@ import { SPIN_DAMPING, SPIN_HERTZ, targetJoint } from './joints/target-joint.js'
 import { atan2Into, TWO_PI } from '../math/trig.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
-const { active: ACTIVE, anchorAX: ANCHOR_AX, anchorAY: ANCHOR_AY, anchorBX: ANCHOR_BX, anchorBY: ANCHOR_BY, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axisX: AXIS_X, axisY: AXIS_Y, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, referenceAngle: REFERENCE_ANGLE, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, targetX: TARGET_X, targetY: TARGET_Y, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
+const { active: ACTIVE, anchorAX: ANCHOR_AX, anchorAY: ANCHOR_AY, anchorBX: ANCHOR_BX, anchorBY: ANCHOR_BY, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axisX: AXIS_X, axisY: AXIS_Y, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, hertz: HERTZ, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, referenceAngle: REFERENCE_ANGLE, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, targetX: TARGET_X, targetY: TARGET_Y, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
 
 const angleIO = new Float64Array(3);
 
@@ -63,7 +63,6 @@ function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64
   // A revolute joint's spring, motor and limits, and a weld's angle, turn the bodies about the
   // anchors, with that turn's mass.
   if ((kind === JointKind.revolute || kind === JointKind.weld) && inverseInertia > 0) {
-    turnIO[TURN_REACH] = kind === JointKind.weld ? WELD_REACH : REVOLUTE_REACH;
     pinnedTurnAtStart(r, o);
     angular = 2 * maxAngular * turnIO[TURN_MASS];
   }
@@ -105,8 +104,7 @@ function clampImpulses(r: Float64Array, o: number, kind: number, linear: number,
  * (holdWithinLimits); no joint between bodies larger than about 1e-5 of the length unit comes near.
  */
 function farArms(r: Float64Array, o: number, reach: number): boolean {
-  const arm = reach;
-  const arm2 = arm * arm;
+  const arm2 = reach * reach;
   const far2 = FAR_ARM * FAR_ARM;
   return arm2 * r[o + INV_INERTIA_A] > far2 * r[o + INV_MASS_A] || arm2 * r[o + INV_INERTIA_B] > far2 * r[o + INV_MASS_B];
 }
@@ -114,6 +112,27 @@ function farArms(r: Float64Array, o: number, reach: number): boolean {
 /** The bound on every lever arm joint o's kind forms: its anchors' and its centres' distances. */
 function jointArm(r: Float64Array, o: number): number {
   return Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]) + Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]) + Math.sqrt(r[o + DELTA_CENTER_X] * r[o + DELTA_CENTER_X] + r[o + DELTA_CENTER_Y] * r[o + DELTA_CENTER_Y]);
+}
+
+/**
+ * How far out in its radii of gyration an anchor may lie, as i |r|^2 / m, before a joint that
+ * turns its bodies about the anchors (a weld's angle; a revolute joint's spring, motor and
+ * limits: see pinned-turn.ts) is held as far arms are. The turn moves the body's centre along
+ * the tangent to its arm, which a sub-step's turn carries off the arm's circle by the arm times
+ * half the turn squared, and what the pin pulls back of that through such a lever grew at every
+ * sub-step: a 0.1 m square welded 17 m out (8e4) under 374 m/s^2 in steps of 0.5 s, and a capsule
+ * of radius 5 mm welded 24 m out (6e5) under 7,000 m/s^2, reached NaN. A 5 cm disc welded 1 m out
+ * is at 800, 5 m out at 20,000.
+ */
+const TURN_HOLD = 1e4;
+
+/** Whether joint o (of `kind`) turns its bodies about anchors lying past TURN_HOLD (see there). */
+function turnsFarOut(r: Float64Array, o: number, kind: number): boolean {
+  if (kind !== JointKind.weld && !(kind === JointKind.revolute && (r[o + HERTZ] > 0 || r[o + ENABLE_MOTOR] === 1 || r[o + ENABLE_LIMIT] === 1))) return false;
+  const m = r[o + INV_MASS_A] + r[o + INV_MASS_B];
+  const a = r[o + INV_INERTIA_A] * (r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]);
+  const b = r[o + INV_INERTIA_B] * (r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]);
+  return a > TURN_HOLD * m || b > TURN_HOLD * m;
 }
 
 /**
@@ -312,7 +331,7 @@ export class JointSolver {
       if (store.kind[j] === JointKind.spring) this.springSlots[listed[Listed.springs]++] = j;
       else {
         const arm = jointArm(r, o);
-        const far = farArms(r, o, arm + this.limits[2]) || this.staleArms(bodies, a, b, o, arm);
+        const far = farArms(r, o, arm + this.limits[2]) || this.staleArms(bodies, a, b, o, arm) || turnsFarOut(r, o, store.kind[j]);
         this.farArms[listed[Listed.active]] = far ? 1 : 0;
         if (far) {
           listed[Listed.farArms]++;
@@ -325,11 +344,11 @@ export class JointSolver {
 
   /**
    * Whether joint o's effective masses, prepared from its arms at the step's start (`arm`,
-   * jointArm's bound), could be less than half what they will be before the step ends: its bodies
-   * (slots a, b; a < 0 for none) part, at their relative speed as the step starts (within twice
-   * the speed limit) times the step, by enough to lengthen its lever arms past that. A
-   * Gauss-Seidel pass with half the mass a constraint has overshoots it, and each pass grows the
-   * error: bodies 3 m apart on a wheel joint, one 100,000 times lighter than the other, thrown
+   * jointArm's bound), could be more than twice what they will be before the step ends: its
+   * bodies (slots a, b; a < 0 for none) part, at their relative speed as the step starts (within
+   * twice the speed limit) times the step, by enough to lengthen its lever arms past halving the
+   * masses. A Gauss-Seidel pass with more than twice the mass a constraint has overshoots it, and
+   * each pass grows the error: bodies 3 m apart on a wheel joint, one 100,000 times lighter than the other, thrown
    * about a box at 400 m/s in steps of 0.5 s, spun to 1e173 rad/s within a step and gave NaN.
    * Like far arms (see farArms), such a joint's bodies are then held within the speed limits after
    * each of its impulses and a sliding joint's masses taken again before each pass. Bodies that
@@ -351,8 +370,8 @@ export class JointSolver {
     }
     const dt = this.limits[3];
     const speedSq = dvx * dvx + dvy * dvy;
-    // The masses at least double only once the arms grow by sqrt(2) - 1 of themselves: most
-    // joints, whose bodies part by less, are settled here without a square root.
+    // The masses halve only once the arms grow by sqrt(2) - 1 of themselves at least: most joints,
+    // whose bodies part by less, are settled here without a square root.
     if (speedSq * dt * dt <= 0.17 * arm * arm) return false;
     const parting = Math.min(Math.sqrt(speedSq), 2 * this.limits[0]) * dt;
     const turning = r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B];
@@ -493,7 +512,7 @@ export class JointSolver {
     this.springs.finish(r, states);
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
-      JOINT_KERNELS[store.kind[j]].reaction(r, j * JOINT_STRIDE, step.inverseH);
+      JOINT_KERNELS[store.kind[j]].reaction(r, j * JOINT_STRIDE, step.inverseH, states);
     }
   }
 

@@ -34,7 +34,7 @@ export interface JointKernel {
   prepare(r: Float64Array, o: number, step: JointStepContext): void;
   warmStart(r: Float64Array, o: number, states: Float64Array): void;
   solve(r: Float64Array, o: number, states: Float64Array, step: JointStepContext, useBias: boolean): void;
-  reaction(r: Float64Array, o: number, inverseH: number): void;
+  reaction(r: Float64Array, o: number, inverseH: number, states: Float64Array): void;
   refresh?(r: Float64Array, o: number, states: Float64Array): void;
 }
 

@@ -8,14 +8,18 @@ const { invMassA: INV_MASS_A, invMassB: INV_MASS_B, invInertiaA: INV_INERTIA_A, 
 // A turn of a joint's two bodies about the point that joins them, for the joints whose anchors
 // meet (revolute: its spring, motor and limits; weld: its angle).
 
-/** Where pinnedTurn leaves its results and applyTurn takes its impulse (V8 boxes numbers passed to or returned from calls it does not inline). */
-export const turnIO = new Float64Array(5);
+/**
+ * Where pinnedTurn leaves its results (the turn's mass, its linear impulse per unit of turn, and
+ * each body's spin per unit of turn) and applyTurn takes its impulse (V8 boxes numbers passed to
+ * or returned from calls it does not inline).
+ */
+export const turnIO = new Float64Array(6);
 export const TURN_MASS = 0;
 export const TURN_X = 1;
 export const TURN_Y = 2;
 export const TURN_IMPULSE = 3;
-/** The joint's PINNED_REACH, set by the joint before it calls in here. */
-export const TURN_REACH = 4;
+export const TURN_SPIN_A = 4;
+export const TURN_SPIN_B = 5;
 
 /**
  * The effective mass of the bodies' relative turn with the anchors held together, into
@@ -67,20 +71,6 @@ export function pinnedTurnAtStart(r: Float64Array, o: number): void {
   turnAbout(r, o);
 }
 
-/**
- * How far an anchor may lie from a body's centre, as i |r|^2 over the joint's m (about the square
- * of the arm in the body's radii of gyration), for a turn about the anchors; past it the joint
- * turns the spins alone (Box2D's). The turn's linear part cancels all but m / (m + i |r|^2) of
- * its moment, and what the pin's soft solve and the bodies' turn within a pass leave of that
- * cancellation comes back as spin, multiplied by that ratio. A revolute joint's limits, motor and
- * spring hold to 1e6: a 1 cm disc on its limit 2 m out is at 8e4, and a 9 mm triangle 36 m out
- * on a spring, at 7e7, reached NaN. A weld's angle, rigid and pushed at every pass, to 1e4: a
- * 5 cm disc welded 1 m out is at 800 (3 m: 7,200); a 0.1 m square welded 17 m out (8e4) and a
- * capsule of radius 5 mm 24 m out (6e5) reached NaN.
- */
-export const REVOLUTE_REACH = 1e6;
-export const WELD_REACH = 1e4;
-
 /** The arms from each centre to the anchors, (rAx, rAy, rBx, rBy), that turnAbout and applyTurn read. */
 const armsIO = new Float64Array(4);
 
@@ -103,26 +93,33 @@ function turnAbout(r: Float64Array, o: number): void {
   const mass = det2 / det3;
   const ux = (iAB * dx * cross + m * (iA * rAy + iB * rBy)) / det2;
   const uy = (iAB * dy * cross - m * (iA * rAx + iB * rBx)) / det2;
-  // Past the joint's reach (see REVOLUTE_REACH) the spins alone.
-  const reach = Math.max(iA * (rAx * rAx + rAy * rAy), iB * (rBx * rBx + rBy * rBy));
-  if (mass > 0 && mass < Infinity && Number.isFinite(ux) && Number.isFinite(uy) && reach <= turnIO[TURN_REACH] * m) {
+  // Each body's spin per unit of turn, in closed form: B's is iB (1 + rB x u), and
+  // 1 + rB x u = m (m + iA rA . (rA - rB)) / det K2 (A's likewise). Computed as that difference,
+  // from an anchor many radii of gyration out, it is the rounding of terms near 1 that cancel to
+  // the small remainder, times the body's inverse inertia: a 9 mm triangle welded 42 m out spun
+  // at 1e196 rad/s, and a revolute spring 36 m out on it reached NaN.
+  const spinA = (iA * m * (m + iB * (rBx * (rBx - rAx) + rBy * (rBy - rAy)))) / det2;
+  const spinB = (iB * m * (m + iA * (rAx * dx + rAy * dy))) / det2;
+  if (mass > 0 && mass < Infinity && Number.isFinite(ux) && Number.isFinite(uy) && Number.isFinite(spinA) && Number.isFinite(spinB)) {
     turnIO[TURN_MASS] = mass;
     turnIO[TURN_X] = ux;
     turnIO[TURN_Y] = uy;
+    turnIO[TURN_SPIN_A] = spinA;
+    turnIO[TURN_SPIN_B] = spinB;
   } else {
     turnIO[TURN_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
     turnIO[TURN_X] = 0;
     turnIO[TURN_Y] = 0;
+    turnIO[TURN_SPIN_A] = iA;
+    turnIO[TURN_SPIN_B] = iB;
   }
 }
 
 /**
  * The angular impulse turnIO[TURN_IMPULSE] on B (A takes the opposite), with the linear impulse
- * at the anchors that pinnedTurn found keeps their relative speed. That linear part is not added
- * to the joint's kept linear impulse, which is the point's alone: the kept angular impulse
- * carries it (see warmStartTurn). The push is warmStartPoint's,
- * written out: one function for both, its numbers through a scratch array, took the joint grid's
- * 19,794 pins from 15.0 to 16.0 ms a step, the same bits.
+ * at the anchors that pinnedTurn found keeps their relative speed, and the spins it found. That
+ * linear part is not added to the joint's kept linear impulse, which is the point's alone: the
+ * kept angular impulse carries it (see warmStartTurn).
  */
 export function applyTurn(r: Float64Array, o: number, states: Float64Array): void {
   const sa = r[o + STATE_A];
@@ -130,54 +127,46 @@ export function applyTurn(r: Float64Array, o: number, states: Float64Array): voi
   const angular = turnIO[TURN_IMPULSE];
   const px = turnIO[TURN_X] * angular;
   const py = turnIO[TURN_Y] * angular;
-  const rAx = armsIO[0];
-  const rAy = armsIO[1];
-  const rBx = armsIO[2];
-  const rBy = armsIO[3];
   const mA = r[o + INV_MASS_A];
   const mB = r[o + INV_MASS_B];
-  // No moment on a body that does not turn (see warmStartPoint).
-  const iA = r[o + INV_INERTIA_A];
-  const iB = r[o + INV_INERTIA_B];
   states[sa + VX] -= mA * px;
   states[sa + VY] -= mA * py;
-  if (iA !== 0) states[sa + W] -= iA * (rAx * py - rAy * px + angular);
+  // No spin on a body that does not turn (see warmStartPoint); the spins from pinnedTurn's closed form.
+  if (r[o + INV_INERTIA_A] !== 0) states[sa + W] -= turnIO[TURN_SPIN_A] * angular;
   states[sb + VX] += mB * px;
   states[sb + VY] += mB * py;
-  if (iB !== 0) states[sb + W] += iB * (rBx * py - rBy * px + angular);
+  if (r[o + INV_INERTIA_B] !== 0) states[sb + W] += turnIO[TURN_SPIN_B] * angular;
   holdPushed(states, sa, sb);
 }
 
 /**
  * The warm start of the angular impulse turnIO[TURN_IMPULSE] that a joint keeps apart from its
  * point's (a revolute joint's spring, motor and limits, a weld's angle): a turn about the
- * anchors, its linear part taken from the arms as they lie now. That part cancels nearly all of
- * the turn's moment on a body whose anchor lies many radii of gyration out; kept with the
- * point's impulse instead, from arms a sub-step old, it left the rest of that moment times the
- * body's inverse inertia as spin, which grew at every sub-step (a 9 mm triangle welded 42 m out
- * reached 1e196 rad/s; a revolute spring there, NaN).
+ * anchors, its linear part and spins taken from the arms as they lie now. Kept with the point's
+ * impulse and applied as its moment, that part, from arms a sub-step old, cancelled the turn's
+ * moment but for its change with the arms, which on a body whose anchor lies many radii of
+ * gyration out came back as spin, times the inverse inertia, and grew at every sub-step (a
+ * 9 mm triangle welded 42 m out reached 1e196 rad/s).
  */
 export function warmStartTurn(r: Float64Array, o: number, states: Float64Array): void {
-  if (turnIO[TURN_IMPULSE] === 0 || r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B] === 0) return;
-  const angular = turnIO[TURN_IMPULSE];
+  if (r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B] === 0) return;
   pinnedTurn(r, o, states);
-  turnIO[TURN_IMPULSE] = angular;
   applyTurn(r, o, states);
 }
 
 /**
- * The linear impulse at the anchors that the kept angular impulse `turnIO[TURN_IMPULSE]` carries
- * with its turn, from the arms as the step started, into turnIO[TURN_X..TURN_Y]: with the
- * point's, the force that holds the anchors together (the joints' reactions).
+ * The linear impulse at the anchors that the kept angular impulse turnIO[TURN_IMPULSE] carries
+ * with its turn, from the arms as the last sub-step left them, into turnIO[TURN_X..TURN_Y]: with
+ * the point's, the force that holds the anchors together (the joints' reactions).
  */
-export function turnLinearAtStart(r: Float64Array, o: number): void {
+export function turnLinear(r: Float64Array, o: number, states: Float64Array): void {
   const angular = turnIO[TURN_IMPULSE];
   if (angular === 0 || r[o + INV_INERTIA_A] + r[o + INV_INERTIA_B] === 0) {
     turnIO[TURN_X] = 0;
     turnIO[TURN_Y] = 0;
     return;
   }
-  pinnedTurnAtStart(r, o);
+  pinnedTurn(r, o, states);
   turnIO[TURN_X] *= angular;
   turnIO[TURN_Y] *= angular;
 }

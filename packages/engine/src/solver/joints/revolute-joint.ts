@@ -1,7 +1,7 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
 import { applyLimit, limitIO, measureAngle, prepareSpringLimitMotor, RIGID, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
-import { applyTurn, pinnedTurn, REVOLUTE_REACH, turnIO, turnLinearAtStart, TURN_IMPULSE, TURN_MASS, TURN_REACH, TURN_X, TURN_Y, warmStartTurn } from './pinned-turn.js';
+import { applyTurn, pinnedTurn, turnIO, turnLinear, TURN_IMPULSE, TURN_MASS, TURN_X, TURN_Y, warmStartTurn } from './pinned-turn.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angle: ANGLE, invMassA: INV_MASS_A, invMassB: INV_MASS_B, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, forceX: FORCE_X, forceY: FORCE_Y, hertz: HERTZ, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lower: LOWER, lowerImpulse: LOWER_IMPULSE, maxMotor: MAX_MOTOR, motorImpulse: MOTOR_IMPULSE, motorSpeed: MOTOR_SPEED, springBias: SPRING_BIAS, springImpulse: SPRING_IMPULSE, springImpulseSum: SPRING_IMPULSE_SUM, springMass: SPRING_MASS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE, upper: UPPER, upperImpulse: UPPER_IMPULSE } = J;
@@ -29,7 +29,6 @@ export const revoluteJoint: JointKernel = {
     const turn = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
     // A pin without spring, motor or limits (a grid of 19,794) has no turn to warm-start.
     if (turn === 0) return;
-    turnIO[TURN_REACH] = REVOLUTE_REACH;
     turnIO[TURN_IMPULSE] = turn;
     warmStartTurn(r, o, states);
   },
@@ -44,7 +43,6 @@ export const revoluteJoint: JointKernel = {
       solvePoint(r, o, states, useBias ? step.soft : RIGID, 0);
       return;
     }
-    turnIO[TURN_REACH] = REVOLUTE_REACH;
     pinnedTurn(r, o, states);
     const mass = turnIO[TURN_MASS];
     if (sprung) {
@@ -84,12 +82,11 @@ export const revoluteJoint: JointKernel = {
     applyTurn(r, o, states);
   },
 
-  reaction(r, o, inverseH) {
+  reaction(r, o, inverseH, states) {
     // The force holds the anchors together: the pin's impulse and the turns' linear parts.
     const turn = r[o + SPRING_IMPULSE_SUM] + r[o + MOTOR_IMPULSE] + r[o + LOWER_IMPULSE] - r[o + UPPER_IMPULSE];
     turnIO[TURN_IMPULSE] = turn;
-    turnIO[TURN_REACH] = REVOLUTE_REACH;
-    turnLinearAtStart(r, o);
+    turnLinear(r, o, states);
     r[o + FORCE_X] = (r[o + LINEAR_IMPULSE_X] + turnIO[TURN_X]) * inverseH;
     r[o + FORCE_Y] = (r[o + LINEAR_IMPULSE_Y] + turnIO[TURN_Y]) * inverseH;
     r[o + TORQUE] = turn * inverseH;

@@ -1,7 +1,7 @@
 import { J } from '../../joints/joint-layout.js';
 import { W } from '../solver-body.js';
 import { measureAngle, RIGID, softFromRecord, solvePoint, warmStartPoint, type JointKernel } from './joint-kernel.js';
-import { applyTurn, pinnedTurn, turnIO, turnLinearAtStart, TURN_IMPULSE, TURN_MASS, TURN_REACH, TURN_X, TURN_Y, warmStartTurn, WELD_REACH } from './pinned-turn.js';
+import { applyTurn, pinnedTurn, turnIO, turnLinear, TURN_IMPULSE, TURN_MASS, TURN_X, TURN_Y, warmStartTurn } from './pinned-turn.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { angle: ANGLE, angularHertz: ANGULAR_HERTZ, angularImpulse: ANGULAR_IMPULSE, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, linearHertz: LINEAR_HERTZ, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, softBias: SOFT_BIAS, softImpulse: SOFT_IMPULSE, softMass: SOFT_MASS, springBias: SPRING_BIAS, stateA: STATE_A, stateB: STATE_B, torque: TORQUE } = J;
@@ -29,7 +29,6 @@ export const weldJoint: JointKernel = {
   warmStart(r, o, states) {
     warmStartPoint(r, o, states);
     if (r[o + ANGULAR_IMPULSE] === 0) return;
-    turnIO[TURN_REACH] = WELD_REACH;
     turnIO[TURN_IMPULSE] = r[o + ANGULAR_IMPULSE];
     warmStartTurn(r, o, states);
   },
@@ -57,7 +56,6 @@ export const weldJoint: JointKernel = {
       solvePoint(r, o, states, pointSoft, pointAt);
       return;
     }
-    turnIO[TURN_REACH] = WELD_REACH;
     pinnedTurn(r, o, states);
     const accumulated = r[o + ANGULAR_IMPULSE];
     const impulse = -turnIO[TURN_MASS] * massScale * (wB - wA + bias) - impulseScale * accumulated;
@@ -68,11 +66,10 @@ export const weldJoint: JointKernel = {
     solvePoint(r, o, states, pointSoft, pointAt);
   },
 
-  reaction(r, o, inverseH) {
+  reaction(r, o, inverseH, states) {
     // The force holds the anchors together: the point's impulse and the angle's turn's linear part.
     turnIO[TURN_IMPULSE] = r[o + ANGULAR_IMPULSE];
-    turnIO[TURN_REACH] = WELD_REACH;
-    turnLinearAtStart(r, o);
+    turnLinear(r, o, states);
     r[o + FORCE_X] = (r[o + LINEAR_IMPULSE_X] + turnIO[TURN_X]) * inverseH;
     r[o + FORCE_Y] = (r[o + LINEAR_IMPULSE_Y] + turnIO[TURN_Y]) * inverseH;
     r[o + TORQUE] = r[o + ANGULAR_IMPULSE] * inverseH;
