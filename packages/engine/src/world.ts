@@ -179,7 +179,7 @@ export class World {
     // Read once, into a copy that is both checked and kept.
     const input = plainObject('World options', options);
     const resolved = resolveWorldOptions(input);
-    this.creation = copyOptions(input) as Record<string, unknown>;
+    this.creation = input;
     this.resolved = resolved;
     this.bounds = resolved.bounds;
     this.bodies.box = resolved.bounds;

@@ -338,6 +338,10 @@ describe('continuous collision with shapes', () => {
           world.step(1 / 60);
           swept += world.stats.sweptBodies;
           const e = world.contactEvents();
+          const pairs = new Set<string>();
+          for (let k = 0; k < e.hitCount; k++) pairs.add(`${e.hitA[k]} ${e.hitB[k]}`);
+          for (let k = 0; k < e.segmentHitCount; k++) pairs.add(`${e.segmentHitBody[k]} segment ${e.segmentHitSegment[k]}`);
+          expect(pairs.size, 'one hit per pair and step').toBe(e.hitCount + e.segmentHitCount);
           for (let k = 0; k < e.hitCount; k++) if (e.hitA[k] === Math.min(box, block) && e.hitB[k] === Math.max(box, block)) hit = e.hitSpeed[k];
           for (let k = 0; k < e.segmentHitCount; k++) if (e.segmentHitBody[k] === box && e.segmentHitSegment[k] === segment) hit = e.segmentHitSpeed[k];
         }

@@ -71,7 +71,9 @@ describe('snapshots', () => {
     original.contactPoints();
     original.debugRender();
     original.queryPoint(0, 0);
+    original.queryPoint(1, 1, { mask: 1 });
     original.queryAABB(-1e3, -1e3, 1e3, 1e3);
+    original.rayCast(1e3, 1e3, -1e3, -1e3, { mask: 2 });
     original.rayCast(-1e3, -1e3, 1e3, 1e3);
     original.rayCastAll(-1e3, 1e3, 1e3, -1e3);
     original.stateHash();

@@ -8,9 +8,11 @@ export const NO_QUERY_OPTIONS: QueryOptions = Object.freeze({});
 
 export function queryMask(options: QueryOptions): number {
   if (options === NO_QUERY_OPTIONS) return 0xffffffff;
-  const o = plainObject('query options', options);
+  // Checked in place, its one key read once: a copy would allocate at every masked query.
+  const o = plainObject('query options', options, false);
   knownKeys('query options', o, ['mask']);
-  return o.mask === undefined ? 0xffffffff : layerBits('mask', o.mask);
+  const mask = o.mask;
+  return mask === undefined ? 0xffffffff : layerBits('mask', mask);
 }
 
 export function rayArguments(x1: number, y1: number, x2: number, y2: number): void {

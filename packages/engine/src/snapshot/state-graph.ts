@@ -78,8 +78,10 @@ export function hostResource(ctor: Function): void {
 }
 
 /**
- * Fields of a class that a step refills before it reads them (scratch, often views into a
- * kernel's memory): the target world keeps its own.
+ * Fields of a class that are not the world's state: scratch a step refills before it reads it
+ * (often views into a kernel's memory), what reading calls fill, a cache's notes of the layout it
+ * was made over, kernels, and counts of what the world's shortcuts did. Left out of snapshots,
+ * and never written from one: the target world keeps its own.
  */
 export function transientFields(ctor: Function, fields: string[]): void {
   const known = TRANSIENT.get(ctor);
@@ -89,7 +91,8 @@ export function transientFields(ctor: Function, fields: string[]): void {
 
 /**
  * A class whose instances a world makes lazily (on first use), so that a freshly built world may
- * lack one the snapshot has: restore then makes it from its prototype and fills every field.
+ * lack one the snapshot has: restore then makes one with its constructor and fills every field
+ * the snapshot holds (the transient ones keep the new part's).
  * The key, not the class's name, goes into the snapshot: minified builds rename classes.
  */
 export function lazyPart(key: string, ctor: Function): void {
@@ -227,7 +230,14 @@ export function applyState(root: object, tree: StateValue): void {
           }
         }
         if (node.name === '') for (const key of keys) if (!node.fields.some(([k]) => k === key)) delete out[key];
-        for (const [key, value] of node.fields) out[key] = apply(out[key], value, `${path}.${key}`);
+        // A transient field keeps the target's value even where the bytes hold one (an image from
+        // a build that saved it, rewritten under a new hash): a note of a layout the target's
+        // memory does not have would make a cache skip its remaking.
+        const transient = TRANSIENT.get(out.constructor);
+        for (const [key, value] of node.fields) {
+          if (transient !== undefined && transient.has(key)) continue;
+          out[key] = apply(out[key], value, `${path}.${key}`);
+        }
         return out;
       }
     }

@@ -8,7 +8,7 @@ import type { Queries } from '../query/queries.js';
 import { WorldShape } from '../narrowphase/world-shape.js';
 import { SegmentDistance } from '../narrowphase/segment-distance.js';
 import { SEGMENT_ENTRY, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
-import { grownCapacity } from '../util/grow.js';
+import { grow, grownCapacity } from '../util/grow.js';
 import { Manifold } from '../narrowphase/manifold.js';
 import { collide } from '../narrowphase/dispatch.js';
 import { twoPointImpulses } from './two-point-impulses.js';
@@ -76,6 +76,13 @@ export class ContinuousShapes {
   swept = 0;
   hits = new Int32Array(16);
   hitCount = 0;
+  // The elastic pass's bounces of the last run at or above the hit threshold: the body's slot, its
+  // shape, what it met (as hitEntry), the approach speed.
+  private bounceBody = new Int32Array(8);
+  private bounceShape = new Int32Array(8);
+  private bounceEntry = new Int32Array(8);
+  private bounceSpeed = new Float64Array(8);
+  private bounceCount = 0;
   // The best impact of the body being swept: normal (moving -> other), point, the other's
   // restitution and friction, the moving shape, and what it met (a shape slot, or a segment as
   // SEGMENT_ENTRY + its slot).
@@ -126,7 +133,6 @@ export class ContinuousShapes {
     slop: number,
     bounce: boolean,
     restitutionThreshold: number,
-    events: ContactEvents | null = null,
     hitThreshold = Infinity,
   ): number {
     const { x, y, type, asleep, radius, slotCount } = bodies;
@@ -135,6 +141,7 @@ export class ContinuousShapes {
     const sweep = this.sweep;
     this.swept = 0;
     this.hitCount = 0;
+    this.bounceCount = 0;
     const { x0, y0, c0, s0 } = this;
     // How far any moving body travelled in the step (-1: not yet measured): bullets look this much
     // farther around their own sweep for bodies that came at them.
@@ -229,7 +236,7 @@ export class ContinuousShapes {
           c[i] = rotation[0];
           s[i] = rotation[1];
           this.noteHit(i);
-          if (bounce && this.hitShape >= 0) this.bounce(bodies, shapes, world, i, restitutionThreshold, slop, events, hitThreshold);
+          if (bounce && this.hitShape >= 0) this.bounce(bodies, shapes, i, restitutionThreshold, slop, hitThreshold);
         }
       }
     }
@@ -323,7 +330,7 @@ export class ContinuousShapes {
    * core disc and by its corners, whose impact is a single point, and an impulse there alone would
    * spin a body that meets the face flat.
    */
-  private bounce(bodies: BodyStore, shapes: ShapeStore, world: WorldShapes, i: number, threshold: number, slop: number, events: ContactEvents | null, hitThreshold: number): void {
+  private bounce(bodies: BodyStore, shapes: ShapeStore, i: number, threshold: number, slop: number, hitThreshold: number): void {
     const rigid = bodies.rigid!;
     const px = bodies.x[i];
     const py = bodies.y[i];
@@ -399,20 +406,43 @@ export class ContinuousShapes {
     bodies.vx[i] = wx;
     bodies.vy[i] = wy;
     rigid.angularVelocity[i] = ww;
-    if (events !== null && approach >= hitThreshold && p0 + p1 > 0) this.recordHit(bodies, shapes, world, events, i, approach);
+    if (approach >= hitThreshold && p0 + p1 > 0) this.noteBounce(i, approach);
   }
 
-  /** A hit event for the bounce of the body in slot i at `speed`, as the pass's contact would have given. */
-  private recordHit(bodies: BodyStore, shapes: ShapeStore, world: WorldShapes, events: ContactEvents, i: number, speed: number): void {
-    const entry = this.hitEntry;
-    const shape = shapes.handleOf(this.hitShape);
-    if (entry >= SEGMENT_ENTRY) {
-      events.noteSegmentShapeHit(bodies.handleOf(i), shape, world.segments.handleOf(entry - SEGMENT_ENTRY), speed);
-      return;
+  /** The bounce of the body in slot i at `speed`: a hit event once the step's contacts have given theirs (reportBounces). */
+  private noteBounce(i: number, speed: number): void {
+    if (this.bounceCount === this.bounceBody.length) {
+      const capacity = 2 * this.bounceBody.length;
+      this.bounceBody = grow(this.bounceBody, capacity);
+      this.bounceShape = grow(this.bounceShape, capacity);
+      this.bounceEntry = grow(this.bounceEntry, capacity);
+      this.bounceSpeed = grow(this.bounceSpeed, capacity);
     }
-    const j = shapes.body[entry];
-    if (i < j) events.noteShapeHit(bodies.handleOf(i), bodies.handleOf(j), shape, shapes.handleOf(entry), speed);
-    else events.noteShapeHit(bodies.handleOf(j), bodies.handleOf(i), shapes.handleOf(entry), shape, speed);
+    const k = this.bounceCount++;
+    this.bounceBody[k] = i;
+    this.bounceShape[k] = this.hitShape;
+    this.bounceEntry[k] = this.hitEntry;
+    this.bounceSpeed[k] = speed;
+  }
+
+  /**
+   * The last run's bounces as hit events, after the step's contacts gave theirs: one entry per
+   * pair of bodies (or body and segment) and step, however many of a compound's shapes met it.
+   */
+  reportBounces(bodies: BodyStore, shapes: ShapeStore, world: WorldShapes, events: ContactEvents): void {
+    for (let k = 0; k < this.bounceCount; k++) {
+      const i = this.bounceBody[k];
+      const entry = this.bounceEntry[k];
+      const speed = this.bounceSpeed[k];
+      const shape = shapes.handleOf(this.bounceShape[k]);
+      if (entry >= SEGMENT_ENTRY) {
+        events.noteSweptSegmentHit(bodies.handleOf(i), shape, world.segments.handleOf(entry - SEGMENT_ENTRY), speed);
+        continue;
+      }
+      const j = shapes.body[entry];
+      if (i < j) events.noteSweptHit(bodies.handleOf(i), bodies.handleOf(j), shape, shapes.handleOf(entry), speed);
+      else events.noteSweptHit(bodies.handleOf(j), bodies.handleOf(i), shapes.handleOf(entry), shape, speed);
+    }
   }
 
   /** The longest travel, along x or y, of a moving body that is not a bullet in this step. */

@@ -521,6 +521,6 @@ export class JointSolver {
   }
 
   memoryBytes(): number {
-    return this.active.byteLength + this.bounds.byteLength + 3 * this.pointSlots.byteLength + this.points.memoryBytes() + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
+    return this.active.byteLength + this.farArms.byteLength + this.spinCaps.byteLength + this.bounds.byteLength + 3 * this.pointSlots.byteLength + this.points.memoryBytes() + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
   }
 }

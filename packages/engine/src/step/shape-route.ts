@@ -94,7 +94,7 @@ export class ShapeRoute {
     if (sweep) this.continuous.remember(bodies);
     if (elastic) {
       integrateRigid(bodies, settings.gravity.x, settings.gravity.y, dt, settings.integrator);
-      if (sweep) this.sweep(queries, -1 - queryVersion, true, events, hitThreshold);
+      if (sweep) this.sweep(queries, -1 - queryVersion, true, events === null ? Infinity : hitThreshold);
     }
     const t1 = nowMs();
     narrow.begin();
@@ -112,7 +112,7 @@ export class ShapeRoute {
     if (elastic) this.elastic.solve(bodies, contacts, settings.elastic);
     else {
       this.soft.solve(bodies, contacts, settings.gravity.x, settings.gravity.y, dt, settings.soft, joints);
-      if (sweep) this.sweep(queries, -1 - queryVersion, false, null, Infinity);
+      if (sweep) this.sweep(queries, -1 - queryVersion, false, Infinity);
     }
     const t4 = nowMs();
     if (settings.box) this.contain(settings.box);
@@ -120,7 +120,10 @@ export class ShapeRoute {
     const sleeping = settings.sleeping;
     if (sleeping.enabled) this.islands.update(bodies, contacts, joints?.store ?? null, dt, sleeping.speed, sleeping.time);
     for (let k = 0; k < narrow.wakeCount; k++) bodies.wake(narrow.wake[k]);
-    events?.updateShapes(bodies, this.shapes, this.segments, contacts, hitThreshold, narrow.sensorSlots, narrow.visitorSlots, narrow.sensorCount);
+    if (events !== null) {
+      events.updateShapes(bodies, this.shapes, this.segments, contacts, hitThreshold, narrow.sensorSlots, narrow.visitorSlots, narrow.sensorCount);
+      if (sweep && elastic) this.continuous.reportBounces(bodies, this.shapes, this.world, events);
+    }
     clearForces(bodies);
     const rigid = bodies.rigid!;
     rigid.torque.fill(0, 0, bodies.slotCount);
@@ -152,10 +155,11 @@ export class ShapeRoute {
   joints: JointSolver | null = null;
 
   /** `queryVersion`: one no later query shares, since bodies move again after the sweep. */
-  private sweep(queries: Queries, queryVersion: number, bounce: boolean, events: ContactEvents | null, hitThreshold: number): void {
+  /** `hitThreshold`: the bounces to note as hits (Infinity for none). */
+  private sweep(queries: Queries, queryVersion: number, bounce: boolean, hitThreshold: number): void {
     const { settings } = this;
     const threshold = bounce ? settings.elastic.restitutionThreshold : settings.soft.restitutionThreshold;
-    this.continuous.run(this.bodies, this.shapes, this.tree, this.world, this.bullets > 0 ? queries : null, queryVersion, settings.margin, settings.slop, bounce, threshold, events, hitThreshold);
+    this.continuous.run(this.bodies, this.shapes, this.tree, this.world, this.bullets > 0 ? queries : null, queryVersion, settings.margin, settings.slop, bounce, threshold, hitThreshold);
   }
 
   memoryBytes(): number {

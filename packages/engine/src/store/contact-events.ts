@@ -120,6 +120,16 @@ class HitList {
    * compound body's shapes each meeting the other), keeping the faster approach. A body's hits
    * are noted together (contacts come in canonical order), so the search stops at another a.
    */
+  /** note, for a pair anywhere in the list, not only among the last entries. */
+  noteAnywhere(a: number, b: number, speed: number): void {
+    for (let k = 0; k < this.count; k++) {
+      if (this.a[k] !== a || this.b[k] !== b) continue;
+      if (speed > this.speed[k]) this.speed[k] = speed;
+      return;
+    }
+    this.push(a, b, speed);
+  }
+
   note(a: number, b: number, speed: number): void {
     for (let k = this.count - 1; k >= 0 && this.a[k] === a; k--) {
       if (this.b[k] !== b) continue;
@@ -351,16 +361,20 @@ export class ContactEvents implements ContactEventsView {
     this.segmentHits.push(bodies.handleOf(i), segments.handleOf(s), speed);
   }
 
-  /** A hit between bodies a and b (handles, in slot order) at shapes sa and sb (handles), on the shape route. */
-  noteShapeHit(a: number, b: number, sa: number, sb: number, speed: number): void {
-    this.hits.note(a, b, speed);
-    this.shapeHits.push(sa, sb, speed);
+  /**
+   * A hit the continuous sweep bounced, between bodies a and b (handles, in slot order) at shapes
+   * sa and sb (handles), noted after the step's contact hits: merged into the pair's entry where a
+   * contact already gave one (the list is searched, as sweeps are few).
+   */
+  noteSweptHit(a: number, b: number, sa: number, sb: number, speed: number): void {
+    this.hits.noteAnywhere(a, b, speed);
+    this.shapeHits.noteAnywhere(sa, sb, speed);
   }
 
-  /** A hit of body `body`'s shape `shape` (handles) on segment `segment` (its handle), on the shape route. */
-  noteSegmentShapeHit(body: number, shape: number, segment: number, speed: number): void {
-    this.segmentHits.note(body, segment, speed);
-    this.shapeHits.push(shape, segment, speed);
+  /** The same for body `body`'s shape `shape` on segment `segment` (handles). */
+  noteSweptSegmentHit(body: number, shape: number, segment: number, speed: number): void {
+    this.segmentHits.noteAnywhere(body, segment, speed);
+    this.shapeHits.noteAnywhere(shape, segment, speed);
   }
 
   /** A hit of the body in slot i on box wall `wall`. */

@@ -90,7 +90,7 @@ export function oneOf<T extends string>(field: string, value: unknown, allowed: 
   return value as T;
 }
 
-export function plainObject(field: string, value: unknown): Record<string, unknown> {
+export function plainObject(field: string, value: unknown, copy = true): Record<string, unknown> {
   if (typeof value !== 'object' || value === null || Array.isArray(value)) {
     throw new TypeError(`${field} must be an object, got ${show(value)}`);
   }
@@ -98,7 +98,7 @@ export function plainObject(field: string, value: unknown): Record<string, unkno
   // would pass its misspellings (or all its entries) unread.
   // A plain object's prototype is null or an Object.prototype (of any realm: its own is null).
   if (!hasPlainPrototype(value)) throw new TypeError(`${field} must be a plain object, got ${describeInstance(value)}`);
-  return copyOwn(value, 0) as Record<string, unknown>;
+  return copy ? (copyOwn(value, 0) as Record<string, unknown>) : (value as Record<string, unknown>);
 }
 
 function hasPlainPrototype(value: object): boolean {
@@ -108,14 +108,18 @@ function hasPlainPrototype(value: object): boolean {
 
 /** How deep copyOwn copies: options hold a vertex list of points at most, two levels down. */
 const COPY_DEPTH = 3;
-/** Longer arrays are left as they are, for the checks of their length to refuse unread. */
-const COPY_LENGTH = 64;
+/**
+ * Longer arrays are left as they are: a list of 65,536 is longer than any a check accepts but a
+ * pressure ring's (whose bodies are then read where they are), and an array of a billion holes
+ * is refused by its length before it is read.
+ */
+const COPY_LENGTH = 65536;
 
 /**
  * A copy of an options object, each own key read once (a getter runs once), and the plain
- * objects and short arrays in it copied the same way: the checks and the world then read the copy,
- * so the value checked is the value used. Anything else (class instances, long arrays) is kept
- * as it is, for the checks to refuse.
+ * objects and arrays in it copied the same way: the checks and the world then read the copy, so
+ * the value checked is the value used. Anything else (class instances) is kept as it is, for the
+ * checks to refuse.
  */
 function copyOwn(value: object, depth: number): Record<string, unknown> | unknown[] {
   const copyItem = (item: unknown): unknown =>

@@ -140,7 +140,7 @@ export function prepareSpringLimitMotor(r: Float64Array, o: number, step: JointS
  * apart, as a turn about the anchors (warmStartTurn in pinned-turn.ts).
  */
 export function warmStartPoint(r: Float64Array, o: number, states: Float64Array): void {
-  // Added to each moment below as the angular impulses' sum of 0 was: a moment of -0 comes out +0.
+  // Added to each moment below, 0 leaves a moment of -0 at +0, whose spin then keeps its sign of 0 and the hashes theirs.
   const angular = 0;
   const sa = r[o + STATE_A];
   const sb = r[o + STATE_B];

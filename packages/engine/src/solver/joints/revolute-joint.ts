@@ -62,7 +62,7 @@ export const revoluteJoint: JointKernel = {
       turnIO[TURN_IMPULSE] = total - accumulated;
       applyTurn(r, o, states);
     }
-    // The turns' linear parts stay theirs (applyTurn, keep false): the pin's soft solve decays
+    // The turns' linear parts stay theirs (applyTurn keeps them apart): the pin's soft solve decays
     // its own kept impulse alone, and the warm start takes those parts again from the arms.
     solvePoint(r, o, states, useBias ? step.soft : RIGID, 0);
     if (!limited) return;
