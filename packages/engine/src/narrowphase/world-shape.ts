@@ -89,22 +89,29 @@ export class WorldShape {
    * not inline, five allocations per pair.
    */
   segment(segments: SegmentStore, g: number): this {
-    const ax = segments.ax[g];
-    const ay = segments.ay[g];
-    const bx = segments.bx[g];
-    const by = segments.by[g];
-    const r = segments.thickness[g];
-    const ex = bx - ax;
-    const ey = by - ay;
+    this.x[0] = segments.ax[g];
+    this.y[0] = segments.ay[g];
+    this.x[1] = segments.bx[g];
+    this.y[1] = segments.by[g];
+    this.radius = segments.thickness[g];
+    return this.asCapsule();
+  }
+
+  /**
+   * The capsule of `radius` around (x[0], y[0])-(x[1], y[1]), which the caller has set (numbers
+   * are not passed, for the reason in `segment`); a circle where the two meet.
+   */
+  asCapsule(): this {
+    const ex = this.x[1] - this.x[0];
+    const ey = this.y[1] - this.y[0];
     const length = Math.sqrt(ex * ex + ey * ey);
-    if (!(length > 0)) return this.circle(ax, ay, r);
+    if (!(length > 0)) {
+      this.kind = ShapeKind.circle;
+      this.count = 1;
+      return this;
+    }
     this.kind = ShapeKind.capsule;
     this.count = 2;
-    this.radius = r;
-    this.x[0] = ax;
-    this.y[0] = ay;
-    this.x[1] = bx;
-    this.y[1] = by;
     this.nx[0] = ey / length;
     this.ny[0] = -ex / length;
     this.nx[1] = -ey / length;

@@ -1,7 +1,6 @@
 import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type ShapeStore } from '../store/shape-store.js';
 import { WorldShape } from '../narrowphase/world-shape.js';
 import { ShapeDistance } from '../narrowphase/distance.js';
-import { ShapeKind } from '../shapes/geometry.js';
 
 /**
  * A body's motion over a step for continuous collision: from centre (x0, y0) turned (c0, s0) to
@@ -46,28 +45,6 @@ function placeVertex(shapes: ShapeStore, slot: number, vertex: number, px: numbe
   moving.circle(px + rotation[0] * vx - rotation[1] * vy, py + rotation[1] * vx + rotation[0] * vy, 0);
 }
 
-/** `moving` as the line from (x0, y0) to (x1, y1), a capsule of radius 0 (a point where they meet). */
-function placeLine(x0: number, y0: number, x1: number, y1: number): void {
-  const ex = x1 - x0;
-  const ey = y1 - y0;
-  const length = Math.sqrt(ex * ex + ey * ey);
-  if (!(length > 0)) {
-    moving.circle(x0, y0, 0);
-    return;
-  }
-  moving.kind = ShapeKind.capsule;
-  moving.count = 2;
-  moving.radius = 0;
-  moving.x[0] = x0;
-  moving.y[0] = y0;
-  moving.x[1] = x1;
-  moving.y[1] = y1;
-  moving.nx[0] = ey / length;
-  moving.ny[0] = -ex / length;
-  moving.nx[1] = -ey / length;
-  moving.ny[1] = ex / length;
-}
-
 /**
  * Whether vertex `vertex` of shape `slot` passes into or through `other` over the sweep: clear of
  * its core at the start, on its shape's side of it, and at the end within it or on its far side
@@ -92,7 +69,12 @@ export function vertexCrosses(shapes: ShapeStore, slot: number, sweep: Sweep, ot
   const vy = moving.y[0];
   const cx = shapes.centroidX[slot];
   const cy = shapes.centroidY[slot];
-  placeLine(sweep.x0 + sweep.c0 * cx - sweep.s0 * cy, sweep.y0 + sweep.s0 * cx + sweep.c0 * cy, vx, vy);
+  moving.x[0] = sweep.x0 + sweep.c0 * cx - sweep.s0 * cy;
+  moving.y[0] = sweep.y0 + sweep.s0 * cx + sweep.c0 * cy;
+  moving.x[1] = vx;
+  moving.y[1] = vy;
+  moving.radius = 0;
+  moving.asCapsule();
   if (distance.compute(moving, other).distance <= other.radius) return false;
   rotation[0] = sweep.c1;
   rotation[1] = sweep.s1;
