@@ -32,9 +32,9 @@ function beyondEnd(v11x: number, v11y: number, v12x: number, v12y: number, dx: n
  * 1. For each polygon, the edge along whose normal the other polygon lies farthest out: the
  *    larger of the two is the separation of their cores. Beyond the margin plus both radii, no
  *    contact.
- * 2. The reference face is that edge, on A unless B's is clearly larger (by a tenth of the slop, so
- *    that near ties keep their choice and the ids stay stable from step to step); the incident
- *    edge is the other polygon's edge facing it most directly.
+ * 2. The reference face is that edge, on A unless B's is larger (as Box2D v3); a flip between
+ *    steps keeps the points' order and ids (see the clipping below). The incident edge is the
+ *    other polygon's edge facing it most directly.
  * 3. Cores apart by more than a tenth of the slop whose nearest features are two vertices (corners
  *    meeting, or rounded corners, where the face normal would be wrong), the incident one more than
  *    that beyond the reference edge's end (see beyondEnd): one point along the line between them.
