@@ -188,8 +188,9 @@ export function warmStart(states: usize, constraints: usize, pairs: usize, lanes
   }
 }
 
-export function solve(states: usize, constraints: usize, pairs: usize, lanes: i32, inverseH: f64, pushSpeed: f64): void {
+export function solve(states: usize, constraints: usize, pairs: usize, lanes: i32, inverseH: f64, pushSpeed: f64, touchingGap: f64): void {
   const zero = f64x2.splat(0);
+  const gap = f64x2.splat(touchingGap);
   const one = f64x2.splat(1);
   const invH = f64x2.splat(inverseH);
   const floor = f64x2.splat(-pushSpeed);
@@ -246,7 +247,7 @@ export function solve(states: usize, constraints: usize, pairs: usize, lanes: i3
       const rBx = field(q, RBX);
       const rBy = field(q, RBY);
       const s = separation(q, rAx, rAy, rBx, rBy, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
-      const speculative = f64x2.gt(s, zero);
+      const speculative = f64x2.gt(s, gap);
       const bias = v128.bitselect(f64x2.mul(s, invH), f64x2.pmax(f64x2.mul(f64x2.mul(biasRate, softMassScale), s), floor), speculative);
       const massScale = v128.bitselect(one, softMassScale, speculative);
       const impulseScale = v128.bitselect(zero, softImpulseScale, speculative);
@@ -273,7 +274,7 @@ export function solve(states: usize, constraints: usize, pairs: usize, lanes: i3
       const rBx = field(q, RBX);
       const rBy = field(q, RBY);
       const s = separation(q, rAx, rAy, rBx, rBy, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
-      const speculative = f64x2.gt(s, zero);
+      const speculative = f64x2.gt(s, gap);
       const bias = v128.bitselect(f64x2.mul(s, invH), f64x2.pmax(f64x2.mul(f64x2.mul(biasRate, softMassScale), s), floor), speculative);
       const massScale = v128.bitselect(one, softMassScale, speculative);
       const impulseScale = v128.bitselect(zero, softImpulseScale, speculative);

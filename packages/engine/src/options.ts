@@ -463,6 +463,9 @@ export function shapeRouteSettings(resolved: ResolvedWorldOptions, gravity: Vect
       contactHertz: resolved.contactHertz,
       contactDampingRatio: resolved.contactDampingRatio,
       contactPushSpeed: 3 * unit,
+      // A thousandth of the slop: far below any gap a body is meant to close, far above the
+      // hair (about 1e-10 m) that the speculative branch leaves.
+      touchingGap: 1e-3 * slop,
       restitutionThreshold: resolved.restitutionThresholdGiven ?? 1 * unit,
       // Within the speeds a step keeps finite, however large the unit.
       maxLinearSpeed: resolved.maxLinearSpeed ?? Math.min(400 * unit, MAX_MAGNITUDE),

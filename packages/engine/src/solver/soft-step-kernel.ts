@@ -14,7 +14,7 @@ import { compileKernel, instantiateKernel, PAGE_BYTES, webAssembly, type KernelM
 
 interface SoftStepExports {
   warmStart(states: number, constraints: number, pairs: number, lanes: number): void;
-  solve(states: number, constraints: number, pairs: number, lanes: number, inverseH: number, pushSpeed: number): void;
+  solve(states: number, constraints: number, pairs: number, lanes: number, inverseH: number, pushSpeed: number, touchingGap: number): void;
   relax(states: number, constraints: number, pairs: number, lanes: number, inverseH: number): void;
   integrateVelocities(states: number, n: number, dvx: number, dvy: number): void;
   integratePositions(states: number, n: number, h: number, maxLinearSpeed: number, maxAngular: number): void;
@@ -121,8 +121,8 @@ export class SoftStepKernel {
     this.fn.warmStart(this.states.byteOffset, this.constraints.byteOffset, this.pairs.byteOffset, lanes);
   }
 
-  solve(lanes: number, inverseH: number, pushSpeed: number): void {
-    this.fn.solve(this.states.byteOffset, this.constraints.byteOffset, this.pairs.byteOffset, lanes, inverseH, pushSpeed);
+  solve(lanes: number, inverseH: number, pushSpeed: number, touchingGap: number): void {
+    this.fn.solve(this.states.byteOffset, this.constraints.byteOffset, this.pairs.byteOffset, lanes, inverseH, pushSpeed, touchingGap);
   }
 
   relax(lanes: number, inverseH: number): void {
