@@ -61,22 +61,6 @@ export const RECYCLE = 8;
  */
 export const Pose = { ax: 0, ay: 1, ac: 2, as: 3, bx: 4, by: 5, bc: 6, bs: 7, friction: 8, restitution: 9, rolling: 10, keyA: 11, keyB: 12 } as const;
 
-/**
- * A newly computed separation as the solver should read it: 0 where it lies within the rounding
- * of the world coordinates it came from (`scale`, their magnitudes summed), the sign of such a
- * value being noise. Boxes placed exactly on one another otherwise touch at +-1 ulp, depending on
- * the binary expansion of their size and place, and the solver treats the two signs differently
- * (a point apart is speculative and stops the approach outright, one in overlap is soft): a
- * 15-box stack of 0.1 m boxes took that mix as a kick and swung 1.75 widths where the same stack
- * of 0.25 m boxes swayed 0.05, and one of 5 cm boxes fell. A kept manifold's separation (see
- * ShapeNarrowPhase.recycle) follows its bodies' motion since, and is left as it is.
- */
-function rounded(separation: number, scale: number): number {
-  return Math.abs(separation) <= TIE * scale ? 0 : separation;
-}
-/** The relative rounding allowance of `rounded`: 64 units in the last place of the coordinates. */
-const TIE = 2 ** -46;
-
 /** Where compact considers moving the contacts: every this many steps at most, lists of at least this many. */
 const COMPACT_EVERY = 8;
 const COMPACT_MIN = 64;
@@ -364,9 +348,8 @@ export class ContactList {
       pt[o + AAY] = py - ay;
       pt[o + ABX] = px - bx;
       pt[o + ABY] = py - by;
-      const separation = rounded(m.separation[p], Math.abs(ax) + Math.abs(ay) + Math.abs(bx) + Math.abs(by) + Math.abs(px - ax) + Math.abs(py - ay));
-      pt[o + SEPARATION] = separation;
-      pt[o + BASE_SEPARATION] = separation;
+      pt[o + SEPARATION] = m.separation[p];
+      pt[o + BASE_SEPARATION] = m.separation[p];
       this.id[at] = m.id[p];
       pt[o + TOTAL_NORMAL_IMPULSE] = 0;
       pt[o + APPROACH_SPEED] = 0;
