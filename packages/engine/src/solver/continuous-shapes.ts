@@ -12,6 +12,7 @@ import { grow, grownCapacity } from '../util/grow.js';
 import { Manifold } from '../narrowphase/manifold.js';
 import { collide } from '../narrowphase/dispatch.js';
 import { twoPointImpulses } from './two-point-impulses.js';
+import { coulombImpulse } from './coulomb-friction.js';
 import type { ContactEvents } from '../store/contact-events.js';
 import { impact, sweepRotation, timeOfImpact, TOUCHING, vertexCrosses, type Sweep } from './time-of-impact.js';
 
@@ -383,7 +384,7 @@ export class ContinuousShapes {
     let wx = vx - m * (p0 + p1) * nx;
     let wy = vy - m * (p0 + p1) * ny;
     let ww = w - inertia * (p0 * rn0 + p1 * rn1);
-    // Then Coulomb friction at each point, at most mu times its normal impulse, as the pass does.
+    // Then Coulomb friction at each point, at most mu times its normal impulse, as the pass does (coulombImpulse).
     const mu = Math.sqrt(shapes.friction[this.hitShape] * this.hitFriction);
     if (mu > 0) {
       const tx = ny;
@@ -396,8 +397,7 @@ export class ContinuousShapes {
         const slip = (wx - ww * ry) * tx + (wy + ww * rx) * ty;
         const rt = rx * ty - ry * tx;
         const kt = m + inertia * rt * rt;
-        let jt = kt > 0 ? -slip / kt : 0;
-        jt = jt < -limit ? -limit : jt > limit ? limit : jt;
+        const jt = coulombImpulse(slip, kt, limit);
         wx += m * jt * tx;
         wy += m * jt * ty;
         ww += inertia * jt * rt;

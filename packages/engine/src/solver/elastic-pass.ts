@@ -2,6 +2,7 @@ import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { ContactList, ContactPoint, POINT_STRIDE, WORLD } from '../narrowphase/contact-list.js';
 import { twoPointImpulses } from './two-point-impulses.js';
+import { coulombImpulse } from './coulomb-friction.js';
 
 // The contact point record's fields as this module's own constants, which V8 folds into the code.
 const { anchorAX: PT_ANCHOR_AX, anchorAY: PT_ANCHOR_AY, anchorBX: PT_ANCHOR_BX, anchorBY: PT_ANCHOR_BY, approachSpeed: PT_APPROACH_SPEED, normalImpulse: PT_NORMAL_IMPULSE, separation: PT_SEPARATION, totalNormalImpulse: PT_TOTAL_NORMAL_IMPULSE } = ContactPoint;
@@ -147,8 +148,7 @@ export class ElasticPass {
             const rta = rax * ty - ray * tx;
             const rtb = rbx * ty - rby * tx;
             const kt = mA + mB + iA * rta * rta + iB * rtb * rtb;
-            let jt = kt > 0 ? -vt / kt : 0;
-            jt = jt < -limit ? -limit : jt > limit ? limit : jt;
+            const jt = coulombImpulse(vt, kt, limit);
             vax -= mA * jt * tx;
             vay -= mA * jt * ty;
             vbx += mB * jt * tx;
