@@ -493,6 +493,43 @@ describe('joints', () => {
     expect(Math.abs(soft.getBody(beam2).angle - sag)).toBeLessThan(1e-3);
   });
 
+  it('chains of welds and of held revolute joints off a wall settle as in Box2D v3', () => {
+    // Found by an audit against a native Box2D build: the turn about the anchors, taken with the
+    // mass of a body held by its joint alone, overshot where the body has another joint, and two
+    // boxes welded end to end off a wall reached 132 J in ten steps (Box2D: 8e-6 J).
+    const chain = (kind: 'weld' | 'motor' | 'limit', count: number, height: number, ratio: number): { energy: number; droop: number; tipAngle: number } => {
+      const world = new World({ gravity: { x: 0, y: 10 } });
+      const wall = world.createBody({ x: 0, y: 0, type: 'static' });
+      let previous = wall;
+      let tip = wall;
+      for (let k = 0; k < count; k++) {
+        tip = world.createBox({ x: k + 0.5, y: 0, width: 1, height, density: k % 2 === 1 ? ratio : 1 });
+        const held: JointOptions =
+          kind === 'weld'
+            ? { kind: 'weld', bodyA: previous, bodyB: tip }
+            : kind === 'motor'
+              ? { kind: 'revolute', bodyA: previous, bodyB: tip, motorSpeed: 0, maxMotorTorque: 1e4 }
+              : { kind: 'revolute', bodyA: previous, bodyB: tip, lowerAngle: -0.5, upperAngle: 0 };
+        world.createJoint({ ...held, anchorA: { x: k === 0 ? 0 : 0.5, y: 0 }, anchorB: { x: -0.5, y: 0 } });
+        previous = tip;
+      }
+      run(world, 600);
+      const end = world.getBody(tip);
+      return { energy: world.kineticEnergy(), droop: end.y + Math.sin(end.angle) * 0.5, tipAngle: end.angle };
+    };
+    // Two 1 x 0.25 boxes: Box2D's tip turns 0.0024 rad and its energy falls to 3.5e-14 J.
+    for (const kind of ['weld', 'motor', 'limit'] as const) {
+      const { energy, tipAngle } = chain(kind, 2, 0.25, 1);
+      expect(energy, kind).toBeLessThan(1e-6);
+      expect(Math.abs(tipAngle - 0.0024), kind).toBeLessThan(0.001);
+    }
+    // Five, alternating densities 10:1: Box2D's tip droops 0.0811 of the length (0.406 m), and
+    // keeps about 0.04 J of motion in its last second; this blew up to 4e5 J.
+    const { energy, droop } = chain('weld', 5, 0.25, 10);
+    expect(energy).toBeLessThan(0.1);
+    expect(Math.abs(droop / 0.406 - 1)).toBeLessThan(0.05);
+  });
+
   it('welds and revolute limits hold small bodies at any distance: the turn about the anchors has no cut-off', () => {
     // 2 d^2 / r^2 (the anchor's distance in radii of gyration, squared) from 800 to 2e6.
     for (const d of [1, 3.6, 5, 20]) {

@@ -11,12 +11,13 @@ import { distanceJoint } from './joints/distance-joint.js';
 import { isPointDistanceJoint, PointDistanceJoints } from './joints/point-distance-joints.js';
 import type { SoftStepKernel } from './soft-step-kernel.js';
 import { revoluteJoint } from './joints/revolute-joint.js';
-import { pinnedTurnAtStart, TURN_MASS, turnIO } from './joints/pinned-turn.js';
+import { pinnedIO, pinnedTurnAtStart, TURN_MASS, turnIO } from './joints/pinned-turn.js';
 import { prismaticJoint } from './joints/prismatic-joint.js';
 import { weldJoint } from './joints/weld-joint.js';
 import { wheelJoint } from './joints/wheel-joint.js';
 import { SPIN_DAMPING, SPIN_HERTZ, targetJoint } from './joints/target-joint.js';
 import { atan2Into, TWO_PI } from '../math/trig.js';
+import { grownCapacity } from '../util/grow.js';
 
 // The record's fields as this module's own constants, which V8 folds into the code (see J).
 const { active: ACTIVE, anchorAX: ANCHOR_AX, anchorAY: ANCHOR_AY, anchorBX: ANCHOR_BX, anchorBY: ANCHOR_BY, angularImpulse: ANGULAR_IMPULSE, axialImpulse: AXIAL_IMPULSE, axisX: AXIS_X, axisY: AXIS_Y, deltaAngle: DELTA_ANGLE, deltaCenterX: DELTA_CENTER_X, deltaCenterY: DELTA_CENTER_Y, enableLimit: ENABLE_LIMIT, enableMotor: ENABLE_MOTOR, hertz: HERTZ, forceX: FORCE_X, forceY: FORCE_Y, invInertiaA: INV_INERTIA_A, invInertiaB: INV_INERTIA_B, invMassA: INV_MASS_A, invMassB: INV_MASS_B, linearImpulseX: LINEAR_IMPULSE_X, linearImpulseY: LINEAR_IMPULSE_Y, lowerImpulse: LOWER_IMPULSE, motorImpulse: MOTOR_IMPULSE, rAX: R_AX, rAY: R_AY, rBX: R_BX, rBY: R_BY, referenceAngle: REFERENCE_ANGLE, springImpulseSum: SPRING_IMPULSE_SUM, stateA: STATE_A, stateB: STATE_B, targetX: TARGET_X, targetY: TARGET_Y, torque: TORQUE, upperImpulse: UPPER_IMPULSE, worldAxisX: WORLD_AXIS_X, worldAxisY: WORLD_AXIS_Y } = J;
@@ -210,6 +211,10 @@ export class JointSolver {
   private active = new Int32Array(0);
   /** Per active joint, 1 where its lever arms are far (see farArms). */
   private farArms = new Uint8Array(0);
+  /** Per joint slot, 1 where the joint is the only one on each of its moving bodies (see loneJoints). */
+  private lone = new Uint8Array(0);
+  /** Per body slot, how many constraint joints hold it (loneJoints' count, left at 0 after). */
+  private jointsOf = new Int32Array(0);
   /** Per active joint with far arms, the spins its bodies are held within (see spinCaps): A's at 2k, B's at 2k + 1. */
   private spinCaps = new Float64Array(0);
   private activeCount = 0;
@@ -274,17 +279,49 @@ export class JointSolver {
       this.pointA = new Int32Array(this.active.length);
       this.pointB = new Int32Array(this.active.length);
       this.bounds = new Float64Array(2 * this.active.length);
+      this.lone = new Uint8Array(this.active.length);
     }
     this.limits[0] = maxSpeed;
     this.limits[1] = maxAngular;
     this.limits[2] = 2 * maxSpeed * dt;
     this.limits[3] = dt;
+    this.loneJoints(bodies);
     this.listJoints(bodies, index);
     const listed = this.listed;
     this.activeCount = listed[Listed.active];
     this.points.prepare(store, bodies, this.pointSlots, this.pointA, this.pointB, listed[Listed.points], stateCount, h, step.soft, maxSpeed, kernel);
     this.springs.prepare(store, this.springSlots, listed[Listed.springs], stateCount, bodies, slotOfState, gx, gy);
     this.gas.prepare(store, this.pressureSlots, listed[Listed.pressure], bodies, index);
+  }
+
+  /**
+   * Notes in `lone` the joints that are the only constraint joint on each of their bodies that
+   * can move, whose turns are then taken about their anchors (see pinned-turn.ts); a static body
+   * or the world does not count. Force-driven springs and pressure push, and hold nothing.
+   */
+  private loneJoints(bodies: BodyStore): void {
+    const { store, lone } = this;
+    const type = bodies.type;
+    if (this.jointsOf.length < bodies.slotCount) this.jointsOf = new Int32Array(grownCapacity(this.jointsOf.length, bodies.slotCount));
+    const jointsOf = this.jointsOf;
+    for (let j = 0; j < store.slotCount; j++) {
+      if (store.live[j] === 0 || store.kind[j] === JointKind.spring || store.kind[j] === JointKind.pressure) continue;
+      const a = store.bodyA[j];
+      if (a >= 0 && type[a] !== TypeCode.static) jointsOf[a]++;
+      if (type[store.bodyB[j]] !== TypeCode.static) jointsOf[store.bodyB[j]]++;
+    }
+    for (let j = 0; j < store.slotCount; j++) {
+      if (store.live[j] === 0 || store.kind[j] === JointKind.spring || store.kind[j] === JointKind.pressure) continue;
+      const a = store.bodyA[j];
+      const b = store.bodyB[j];
+      lone[j] = (a < 0 || type[a] === TypeCode.static || jointsOf[a] === 1) && (type[b] === TypeCode.static || jointsOf[b] === 1) ? 1 : 0;
+    }
+    for (let j = 0; j < store.slotCount; j++) {
+      if (store.live[j] === 0) continue;
+      const a = store.bodyA[j];
+      if (a >= 0) jointsOf[a] = 0;
+      jointsOf[store.bodyB[j]] = 0;
+    }
   }
 
   /**
@@ -432,6 +469,7 @@ export class JointSolver {
       r[o + DELTA_ANGLE] = angle;
     }
     if (store.kind[j] !== JointKind.spring) {
+      pinnedIO[0] = this.lone[j];
       boundImpulses(r, o, store.kind[j], this.limits, this.bounds, 2 * j);
       JOINT_KERNELS[store.kind[j]].prepare(r, o, step);
     }
@@ -457,6 +495,7 @@ export class JointSolver {
       const o = j * JOINT_STRIDE;
       const joint = JOINT_KERNELS[store.kind[j]];
       if (farArms[k] === 1 && joint.refresh !== undefined) joint.refresh(r, o, states);
+      pinnedIO[0] = this.lone[j];
       joint.warmStart(r, o, states);
       if (farArms[k] === 1) holdWithinLimits(states, r, o, limits[0], spinCaps, 2 * k);
     }
@@ -478,6 +517,7 @@ export class JointSolver {
         holdIO[2] = spinCaps[2 * k];
         holdIO[3] = spinCaps[2 * k + 1];
       }
+      pinnedIO[0] = this.lone[j];
       joint.solve(r, o, states, step, useBias);
       if (farArms[k] === 1) holdWithinLimits(states, r, o, limits[0], spinCaps, 2 * k);
     }
@@ -512,6 +552,7 @@ export class JointSolver {
     this.springs.finish(r, states);
     for (let k = 0; k < activeCount; k++) {
       const j = active[k];
+      pinnedIO[0] = this.lone[j];
       JOINT_KERNELS[store.kind[j]].reaction(r, j * JOINT_STRIDE, step.inverseH, states);
     }
   }
@@ -521,6 +562,6 @@ export class JointSolver {
   }
 
   memoryBytes(): number {
-    return this.active.byteLength + this.farArms.byteLength + this.spinCaps.byteLength + this.bounds.byteLength + 3 * this.pointSlots.byteLength + this.points.memoryBytes() + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
+    return this.active.byteLength + this.farArms.byteLength + this.lone.byteLength + this.jointsOf.byteLength + this.spinCaps.byteLength + this.bounds.byteLength + 3 * this.pointSlots.byteLength + this.points.memoryBytes() + this.springSlots.byteLength + this.pressureSlots.byteLength + this.springs.memoryBytes() + this.gas.memoryBytes();
   }
 }
