@@ -474,4 +474,58 @@ describe('contact points', () => {
     expect(p.y[0]).toBe(0);
     expect(Math.abs(p.separation[0])).toBeLessThan(1e-12);
   });
+
+  it('overlapping capsules are pushed apart to touching, met at an angle near an end or crossed through each other', () => {
+    // Found by an audit against a native Box2D build: a capsule met at an angle over another's end
+    // was clipped against that one's line, which reads the gap 1 / cos of the angle too wide, and
+    // stopped at 0.5 cos(angle) apart where they touch at 0.5; capsules whose cores crossed took a
+    // normal from the round-off between their closest points, new every step, and stayed crossed.
+    const coreDistance = (world: World, a: number, b: number): number => {
+      const ends = (h: number): number[] => {
+        const g = world.getBody(h);
+        const c = Math.cos(g.angle);
+        const s = Math.sin(g.angle);
+        return [g.x - c / 2, g.y - s / 2, g.x + c / 2, g.y + s / 2];
+      };
+      const [p1x, p1y, q1x, q1y] = ends(a);
+      const [p2x, p2y, q2x, q2y] = ends(b);
+      const cross = (ox: number, oy: number, ax: number, ay: number, bx: number, by: number): number => (ax - ox) * (by - oy) - (ay - oy) * (bx - ox);
+      if (cross(p1x, p1y, q1x, q1y, p2x, p2y) * cross(p1x, p1y, q1x, q1y, q2x, q2y) < 0 && cross(p2x, p2y, q2x, q2y, p1x, p1y) * cross(p2x, p2y, q2x, q2y, q1x, q1y) < 0) return 0;
+      const toSegment = (px: number, py: number, ax: number, ay: number, bx: number, by: number): number => {
+        const dx = bx - ax;
+        const dy = by - ay;
+        const t = Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / (dx * dx + dy * dy)));
+        return Math.hypot(px - ax - t * dx, py - ay - t * dy);
+      };
+      return Math.min(toSegment(p1x, p1y, p2x, p2y, q2x, q2y), toSegment(q1x, q1y, p2x, p2y, q2x, q2y), toSegment(p2x, p2y, p1x, p1y, q1x, q1y), toSegment(q2x, q2y, p1x, p1y, q1x, q1y));
+    };
+    for (const angle of [0.3, 0.5, 0.8]) {
+      const world = new World({ friction: 0.6, restitution: 0 });
+      const still = world.createCapsule({ x: 0, y: 0, length: 1, radius: 0.25, type: 'static' });
+      // Its core 0.4 from the static one's end (0.5, 0), crossing the line x = 0.5 above it.
+      const ux = Math.cos(angle);
+      const uy = Math.sin(angle);
+      const moved = world.createCapsule({ x: 0.5 + 0.4 * uy - 0.1 * ux, y: -0.4 * ux - 0.1 * uy, angle, length: 1, radius: 0.25 });
+      for (let s = 0; s < 120; s++) world.step(1 / 60);
+      expect(coreDistance(world, still, moved), `met at ${angle} rad`).toBeGreaterThan(0.495);
+    }
+    let random = 9;
+    const next = (): number => {
+      random = (random * 1664525 + 1013904223) >>> 0;
+      return random / 4294967296;
+    };
+    const stuck: number[] = [];
+    for (let k = 0; k < 30; k++) {
+      const world = new World({ friction: 0.6, restitution: 0 });
+      const angleA = next() * 2 * Math.PI;
+      const angleB = angleA + 0.3 + next() * 2.5;
+      const fa = (next() - 0.5) * 0.8;
+      const fb = (next() - 0.5) * 0.8;
+      const a = world.createCapsule({ x: -fa * Math.cos(angleA), y: -fa * Math.sin(angleA), angle: angleA, length: 1, radius: 0.25 });
+      const b = world.createCapsule({ x: -fb * Math.cos(angleB), y: -fb * Math.sin(angleB), angle: angleB, length: 1, radius: 0.25 });
+      for (let s = 0; s < 120; s++) world.step(1 / 60);
+      if (coreDistance(world, a, b) < 0.49) stuck.push(k);
+    }
+    expect(stuck).toEqual([]);
+  });
 });

@@ -5,14 +5,17 @@ import { SegmentDistance } from './segment-distance.js';
 const closest = new SegmentDistance();
 
 /**
- * Two capsules (a static segment is one, its thickness the radius). When each segment's span
- * overlaps the other's along it and one segment lies wholly on one side of the other's line
- * (capsules lying along each other, as in a stack, or a capsule on a floor), that one is clipped
- * to the other's span and gives two points with the other's normal, as Box2D v3 does: one point
- * would let a capsule resting on another rock about it. Otherwise (crossing, or meeting end to
- * side) one point, along the line between the segments' closest points.
+ * Two capsules (a static segment is one, its thickness the radius), as Box2D v3 does. Where each
+ * segment's span overlaps the other's along it, the reference segment is the one along whose
+ * normal the other lies farthest out (the separating axis test on the two lines, A's kept unless
+ * B's is clearly farther, by a tenth of the slop, so that near ties keep their choice), and the
+ * other is clipped to its span: two points with its normal, so that a capsule resting on another
+ * or on a floor does not rock about one point. They are kept where one of them lies within a slop
+ * of the segments' true distance; otherwise (capsules meeting at an angle near an end, whose clip
+ * measures the gap along the wrong normal, 1 / cos of the angle too wide) and wherever one span
+ * lies outside the other, one point along the line between the segments' closest points.
  */
-export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _slop: number, m: Manifold): void {
+export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, slop: number, m: Manifold): void {
   m.clear();
   const p1x = a.x[0];
   const p1y = a.y[0];
@@ -45,36 +48,36 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
   const fq1 = (q1x - p2x) * u2x + (q1y - p2y) * u2y;
   const outsideA = (fp2 <= 0 && fq2 <= 0) || (fp2 >= length1 && fq2 >= length1);
   const outsideB = (fp1 <= 0 && fq1 <= 0) || (fp1 >= length2 && fq1 >= length2);
+  const dist = Math.sqrt(closest.distanceSquared);
   if (length1 > 0 && length2 > 0 && !outsideA && !outsideB) {
-    // The reference segment is one the other lies wholly to one side of: A's where it can be,
-    // else B's. A capsule lying on a long segment (a floor) crosses the floor's line only where
-    // the floor is B: there B's line is the one to clip against, or the capsule rocks on one point.
+    // How far B lies out along A's normal, on the side where it lies farthest (the nearer of its
+    // ends), and A along B's.
     const nx = u1y;
     const ny = -u1x;
     const sp = (p2x - p1x) * nx + (p2y - p1y) * ny;
     const sq = (q2x - p1x) * nx + (q2y - p1y) * ny;
-    if (fq2 !== fp2 && sp * sq >= 0) {
-      const flip = sp + sq < 0 ? -1 : 1;
-      clipOnto(m, p1x, p1y, u1x, u1y, length1, fp2, fq2, flip * sp, flip * sq, flip * nx, flip * ny, a.radius, radius, margin, 1, 0);
-      if (m.pointCount > 0) return;
+    const flipA = Math.min(sp, sq) >= Math.min(-sp, -sq) ? 1 : -1;
+    const separationA = Math.min(flipA * sp, flipA * sq);
+    const mx = u2y;
+    const my = -u2x;
+    const rp = (p1x - p2x) * mx + (p1y - p2y) * my;
+    const rq = (q1x - p2x) * mx + (q1y - p2y) * my;
+    const flipB = Math.min(rp, rq) >= Math.min(-rp, -rq) ? 1 : -1;
+    const separationB = Math.min(flipB * rp, flipB * rq);
+    if (separationA + 0.1 * slop >= separationB) {
+      if (fq2 !== fp2) clipOnto(m, p1x, p1y, u1x, u1y, length1, fp2, fq2, flipA * sp, flipA * sq, flipA * nx, flipA * ny, a.radius, radius, margin, dist + slop, 1, 0);
     } else if (fq1 !== fp1) {
-      const mx = u2y;
-      const my = -u2x;
-      const rp = (p1x - p2x) * mx + (p1y - p2y) * my;
-      const rq = (q1x - p2x) * mx + (q1y - p2y) * my;
-      if (rp * rq >= 0) {
-        const flip = rp + rq < 0 ? -1 : 1;
-        clipOnto(m, p2x, p2y, u2x, u2y, length2, fp1, fq1, flip * rp, flip * rq, flip * mx, flip * my, b.radius, radius, margin, -1, 3);
-        if (m.pointCount > 0) return;
-      }
+      clipOnto(m, p2x, p2y, u2x, u2y, length2, fp1, fq1, flipB * rp, flipB * rq, flipB * mx, flipB * my, b.radius, radius, margin, dist + slop, -1, 3);
     }
+    if (m.pointCount > 0) return;
   }
   const dx = closest.x2 - closest.x1;
   const dy = closest.y2 - closest.y1;
-  const dist = Math.sqrt(closest.distanceSquared);
   let nx: number;
   let ny: number;
-  if (dist > 0) {
+  // Closest points a rounding apart (cores that cross, one end on the other's line) give no
+  // direction: the gap between them is round-off, pointing anywhere, and changes step to step.
+  if (dist > 1e-12 * (length1 + length2 + radius)) {
     nx = dx / dist;
     ny = dy / dist;
   } else {
@@ -102,11 +105,11 @@ export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, _s
  * unit (ux, uy) for `length`): the other segment, whose ends lie at fP and fQ along it and sP and
  * sQ out along its normal (nx, ny), is clipped to the reference's span; an end closer than
  * the margin gives a point midway between the surfaces, and so does the other end then
- * (refRadius is the reference capsule's).
+ * (refRadius is the reference capsule's), where one of them lies no farther out than `within`.
  * `sign` is 1 where the reference is A, -1 where it is B (the normal then turns to run from A
  * to B); ids start at idBase.
  */
-function clipOnto(m: Manifold, ox: number, oy: number, ux: number, uy: number, length: number, fP: number, fQ: number, sP: number, sQ: number, nx: number, ny: number, refRadius: number, radius: number, margin: number, sign: number, idBase: number): void {
+function clipOnto(m: Manifold, ox: number, oy: number, ux: number, uy: number, length: number, fP: number, fQ: number, sP: number, sQ: number, nx: number, ny: number, refRadius: number, radius: number, margin: number, within: number, sign: number, idBase: number): void {
   const lower = fP < fQ ? 0 : 1;
   const fLow = lower === 0 ? fP : fQ;
   const fHigh = lower === 0 ? fQ : fP;
@@ -120,6 +123,9 @@ function clipOnto(m: Manifold, ox: number, oy: number, ux: number, uy: number, l
   // turns about it, and without a speculative point at its other end the solve swings that
   // one through.
   if (separationLow >= margin && separationHigh >= margin) return;
+  // Neither clipped end near the segments' true distance (`within`: it plus a slop): the reference
+  // normal is not the direction between them.
+  if (separationLow + radius > within && separationHigh + radius > within) return;
   m.normalX = sign * nx;
   m.normalY = sign * ny;
   for (let k = 0; k < 2; k++) {
