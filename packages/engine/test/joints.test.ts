@@ -528,6 +528,23 @@ describe('joints', () => {
     const { energy, droop } = chain('weld', 5, 0.25, 10);
     expect(energy).toBeLessThan(0.1);
     expect(Math.abs(droop / 0.406 - 1)).toBeLessThan(0.05);
+    // What no impulse moves holds nothing: a kinematic hub with two small bobs on limited arms,
+    // and a weak drag (a target joint) on a small bob welded far out, keep the turn about the anchors.
+    const hubbed = new World({ gravity: { x: 0, y: 10 } });
+    const hub = hubbed.createBox({ x: 0, y: 0, width: 0.1, height: 0.1, type: 'kinematic' });
+    const bob = hubbed.createBox({ x: 1, y: 0, width: 0.05, height: 0.05 });
+    hubbed.createJoint({ kind: 'revolute', bodyA: hub, bodyB: bob, anchorA: { x: 0, y: 0 }, anchorB: { x: -1, y: 0 }, lowerAngle: -0.3, upperAngle: 0 });
+    const other = hubbed.createBox({ x: -1, y: 0, width: 0.05, height: 0.05 });
+    hubbed.createJoint({ kind: 'revolute', bodyA: hub, bodyB: other, anchorA: { x: 0, y: 0 }, anchorB: { x: 1, y: 0 }, lowerAngle: 0, upperAngle: 0.3 });
+    run(hubbed, 120);
+    expect(Math.abs(Math.atan2(hubbed.getBody(bob).y, hubbed.getBody(bob).x))).toBeLessThan(0.001);
+    const dragged = new World({ gravity: { x: 0, y: 10 } });
+    const wall = dragged.createBody({ x: 0, y: 0, type: 'static' });
+    const lamp = dragged.createBox({ x: 1, y: 0, width: 0.05, height: 0.05 });
+    dragged.createJoint({ kind: 'weld', bodyA: wall, bodyB: lamp, anchorA: { x: 0, y: 0 }, anchorB: { x: -1, y: 0 } });
+    dragged.createJoint({ kind: 'target', body: lamp, target: { x: 1, y: 0 }, maxForce: 1e-9 });
+    run(dragged, 300);
+    expect(Math.abs(Math.atan2(dragged.getBody(lamp).y, dragged.getBody(lamp).x))).toBeLessThan(0.001);
   });
 
   it('welds and revolute limits hold small bodies at any distance: the turn about the anchors has no cut-off', () => {

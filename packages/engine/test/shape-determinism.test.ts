@@ -345,7 +345,7 @@ describe('determinism with shapes', () => {
 
 /**
  * The 465-box pyramid's state after 2 s, the same on every backend, broad-phase and thread count.
- * It changes only with the soft step's physics: last where a contact a hair apart became soft
- * rather than speculative (SoftSettings.touchingGap), which some of this pile's points are.
+ * It changes only with the soft step's physics (such as SoftSettings.touchingGap, which decides
+ * whether some of this pile's points are soft or speculative).
  */
 const GOLDEN_PYRAMID_30 = '4b915832868f6d1c';

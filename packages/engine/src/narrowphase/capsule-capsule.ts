@@ -7,8 +7,9 @@ const closest = new SegmentDistance();
 /**
  * Two capsules (a static segment is one, its thickness the radius), as Box2D v3 does. Where each
  * segment's span overlaps the other's along it, the reference segment is the one along whose
- * normal the other lies farthest out (the separating axis test on the two lines, A's kept unless
- * B's is clearly farther, by a tenth of the slop, so that near ties keep their choice), and the
+ * normal the other lies farthest out (the separating axis test on the two lines, A's unless B's
+ * is farther by more than a tenth of the slop: a bias, as Box2D's, so that near ties do not flip
+ * from step to step), and the
  * other is clipped to its span: two points with its normal, so that a capsule resting on another
  * or on a floor does not rock about one point. They are kept where one of them lies within a slop
  * of the segments' true distance; otherwise (capsules meeting at an angle near an end, whose clip

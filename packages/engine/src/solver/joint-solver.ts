@@ -127,6 +127,11 @@ function jointArm(r: Float64Array, o: number): number {
  */
 const TURN_HOLD = 1e4;
 
+/** Whether joints of `kind` hold their bodies as constraints (see JointSolver's loneJoints). */
+function holds(kind: number): boolean {
+  return kind !== JointKind.spring && kind !== JointKind.pressure && kind !== JointKind.target;
+}
+
 /** Whether joint o (of `kind`) turns its bodies about anchors lying past TURN_HOLD (see there). */
 function turnsFarOut(r: Float64Array, o: number, kind: number): boolean {
   if (kind !== JointKind.weld && !(kind === JointKind.revolute && (r[o + HERTZ] > 0 || r[o + ENABLE_MOTOR] === 1 || r[o + ENABLE_LIMIT] === 1))) return false;
@@ -286,6 +291,9 @@ export class JointSolver {
     this.limits[2] = 2 * maxSpeed * dt;
     this.limits[3] = dt;
     this.loneJoints(bodies);
+    // The bounds on kept impulses take every turn about the anchors, whose mass is the larger (a
+    // looser bound), lone or not.
+    pinnedIO[0] = 1;
     this.listJoints(bodies, index);
     const listed = this.listed;
     this.activeCount = listed[Listed.active];
@@ -295,9 +303,10 @@ export class JointSolver {
   }
 
   /**
-   * Notes in `lone` the joints that are the only constraint joint on each of their bodies that
-   * can move, whose turns are then taken about their anchors (see pinned-turn.ts); a static body
-   * or the world does not count. Force-driven springs and pressure push, and hold nothing.
+   * Notes in `lone` the joints that are the only joint holding each of their dynamic bodies, whose
+   * turns are then taken about their anchors (see pinned-turn.ts); static and kinematic bodies and
+   * the world, which no impulse moves, do not count. Force-driven springs and pressure push, and a
+   * target joint (a drag) pulls within its force: they hold nothing.
    */
   private loneJoints(bodies: BodyStore): void {
     const { store, lone } = this;
@@ -305,16 +314,16 @@ export class JointSolver {
     if (this.jointsOf.length < bodies.slotCount) this.jointsOf = new Int32Array(grownCapacity(this.jointsOf.length, bodies.slotCount));
     const jointsOf = this.jointsOf;
     for (let j = 0; j < store.slotCount; j++) {
-      if (store.live[j] === 0 || store.kind[j] === JointKind.spring || store.kind[j] === JointKind.pressure) continue;
+      if (store.live[j] === 0 || !holds(store.kind[j])) continue;
       const a = store.bodyA[j];
-      if (a >= 0 && type[a] !== TypeCode.static) jointsOf[a]++;
-      if (type[store.bodyB[j]] !== TypeCode.static) jointsOf[store.bodyB[j]]++;
+      if (a >= 0 && type[a] === TypeCode.dynamic) jointsOf[a]++;
+      if (type[store.bodyB[j]] === TypeCode.dynamic) jointsOf[store.bodyB[j]]++;
     }
     for (let j = 0; j < store.slotCount; j++) {
-      if (store.live[j] === 0 || store.kind[j] === JointKind.spring || store.kind[j] === JointKind.pressure) continue;
+      if (store.live[j] === 0 || !holds(store.kind[j])) continue;
       const a = store.bodyA[j];
       const b = store.bodyB[j];
-      lone[j] = (a < 0 || type[a] === TypeCode.static || jointsOf[a] === 1) && (type[b] === TypeCode.static || jointsOf[b] === 1) ? 1 : 0;
+      lone[j] = (a < 0 || type[a] !== TypeCode.dynamic || jointsOf[a] === 1) && (type[b] !== TypeCode.dynamic || jointsOf[b] === 1) ? 1 : 0;
     }
     for (let j = 0; j < store.slotCount; j++) {
       if (store.live[j] === 0) continue;
@@ -469,7 +478,6 @@ export class JointSolver {
       r[o + DELTA_ANGLE] = angle;
     }
     if (store.kind[j] !== JointKind.spring) {
-      pinnedIO[0] = this.lone[j];
       boundImpulses(r, o, store.kind[j], this.limits, this.bounds, 2 * j);
       JOINT_KERNELS[store.kind[j]].prepare(r, o, step);
     }

@@ -159,7 +159,7 @@ const MAX_ROTATION = 0.25 * Math.PI;
  *
  * Separation within the step is tracked from anchors fixed at its start and each body's motion
  * since (delta position and delta rotation), so contacts need not be recomputed per sub-step.
- * Speculative points (positive separation) let a body close the gap and no more.
+ * Speculative points (apart by more than the touching gap) let a body close the gap and no more.
  *
  * Contacts are solved one after another in the list's canonical order, each reading and writing
  * its two bodies (Gauss-Seidel), so the result depends on that order alone. Awake dynamic and
@@ -777,10 +777,12 @@ export class SoftStep {
         // Speculative: close the gap within the sub-step, no faster. A point within touchingGap
         // counts as touching, and soft, as one in overlap does: the speculative branch closes a
         // gap to a hair above 0 (about 1e-10 of a metre, where the passes leave it) rather than
-        // to 0 or below, and a point held there stayed rigid among soft neighbours step after
+        // to 0 or below, and a point held there would stay rigid among soft neighbours step after
         // step. Stacks placed with gaps of 1e-12 to 1e-3 m between their boxes swayed 17-26 cm
-        // (1 m boxes) or fell (0.1 m boxes), and stacks turned by 1 rad swayed 4 cm, where Box2D v3
-        // (in floats, whose round-off puts such points on either side) sways 1.2 cm.
+        // (1 m boxes) or fell (0.1 m boxes) that way, and stacks turned by 1 rad swayed 4 cm, where
+        // Box2D v3 (in floats, whose round-off puts such points on either side) sways 1.2 cm. The
+        // relax pass keeps Box2D's test, s > 0: without the push-out, a point within the gap
+        // closes it at most at touchingGap / h, a millimetre a second.
         if (s > touchingGap) {
           bias = s * inverseH;
           massScale = 1;
