@@ -78,12 +78,12 @@ const POINT = 24;
 export const PAIR = P + 2 * POINT;
 
 /** The kinetic energy of velocities (vx, vy, w) on a body of inverse mass m and inverse inertia i: 0 for a body that does not move (m = 0). */
-function pairEnergy(vx: number, vy: number, w: number, m: number, i: number): number {
+function bodyEnergy(vx: number, vy: number, w: number, m: number, i: number): number {
   return m > 0 ? (0.5 * (vx * vx + vy * vy)) / m + (i > 0 ? (0.5 * w * w) / i : 0) : 0;
 }
 
 /** The energy's cross term between velocities (vx, vy, w) and changes (dx, dy, dw) on the same body. */
-function pairEnergy2(vx: number, vy: number, w: number, dx: number, dy: number, dw: number, m: number, i: number): number {
+function energyCross(vx: number, vy: number, w: number, dx: number, dy: number, dw: number, m: number, i: number): number {
   return m > 0 ? (0.5 * (vx * dx + vy * dy)) / m + (i > 0 ? (0.5 * w * dw) / i : 0) : 0;
 }
 
@@ -1195,14 +1195,14 @@ export class SoftStep {
       // block above keeps the energy exactly, and kinematic bodies may give any.
       let lambda = 1;
       if (constraints[c + FRICTION] > 0 && (sa === 0 || states[sa + DYNAMIC] === 1) && (sb === 0 || states[sb + DYNAMIC] === 1)) {
-        const before = pairEnergy(vAx0, vAy0, wA0, mA, iA) + pairEnergy(vBx0, vBy0, wB0, mB, iB);
-        const after = pairEnergy(vAx, vAy, wA, mA, iA) + pairEnergy(vBx, vBy, wB, mB, iB);
+        const before = bodyEnergy(vAx0, vAy0, wA0, mA, iA) + bodyEnergy(vBx0, vBy0, wB0, mB, iB);
+        const after = bodyEnergy(vAx, vAy, wA, mA, iA) + bodyEnergy(vBx, vBy, wB, mB, iB);
         const free = this.freeEnergy(bodies, pairs[2 * i], mA, iA, gx, gy, dt) + this.freeEnergy(bodies, pairs[2 * i + 1], mB, iB, gx, gy, dt);
         const limit = Math.max(before, free);
         if (after > limit * (1 + 1e-12)) {
           // energy(v0 + lambda dv) = before + lambda linear + lambda^2 square
-          const linear = 2 * (pairEnergy2(vAx0, vAy0, wA0, vAx - vAx0, vAy - vAy0, wA - wA0, mA, iA) + pairEnergy2(vBx0, vBy0, wB0, vBx - vBx0, vBy - vBy0, wB - wB0, mB, iB));
-          const square = pairEnergy(vAx - vAx0, vAy - vAy0, wA - wA0, mA, iA) + pairEnergy(vBx - vBx0, vBy - vBy0, wB - wB0, mB, iB);
+          const linear = 2 * (energyCross(vAx0, vAy0, wA0, vAx - vAx0, vAy - vAy0, wA - wA0, mA, iA) + energyCross(vBx0, vBy0, wB0, vBx - vBx0, vBy - vBy0, wB - wB0, mB, iB));
+          const square = bodyEnergy(vAx - vAx0, vAy - vAy0, wA - wA0, mA, iA) + bodyEnergy(vBx - vBx0, vBy - vBy0, wB - wB0, mB, iB);
           lambda = square > 0 ? (-linear + Math.sqrt(Math.max(linear * linear + 4 * square * (limit - before), 0))) / (2 * square) : 0;
           lambda = lambda > 0 ? (lambda < 1 ? lambda : 1) : 0;
           vAx = vAx0 + lambda * (vAx - vAx0);
@@ -1247,7 +1247,7 @@ export class SoftStep {
     const vx = bodies.vx[slot] + dt * (invMass * bodies.forceX[slot] + g * gx);
     const vy = bodies.vy[slot] + dt * (invMass * bodies.forceY[slot] + g * gy);
     const w = invInertia > 0 ? rigid.angularVelocity[slot] + dt * invInertia * rigid.torque[slot] : 0;
-    return pairEnergy(vx, vy, w, invMass, invInertia);
+    return bodyEnergy(vx, vy, w, invMass, invInertia);
   }
 
   /** Keeps the impulses on the contacts, for the next step's warm start and for events. */

@@ -88,10 +88,14 @@ export function pinnedTurnAtStart(r: Float64Array, o: number): void {
 const armsIO = new Float64Array(4);
 
 function turnAbout(r: Float64Array, o: number): void {
-  const mA = r[o + INV_MASS_A];
-  const mB = r[o + INV_MASS_B];
   const iA = r[o + INV_INERTIA_A];
   const iB = r[o + INV_INERTIA_B];
+  if (pinnedIO[0] === 0) {
+    spinsAlone(iA, iB);
+    return;
+  }
+  const mA = r[o + INV_MASS_A];
+  const mB = r[o + INV_MASS_B];
   const rAx = armsIO[0];
   const rAy = armsIO[1];
   const rBx = armsIO[2];
@@ -113,19 +117,22 @@ function turnAbout(r: Float64Array, o: number): void {
   // at 1e196 rad/s, and a revolute spring 36 m out on it reached NaN.
   const spinA = (iA * m * (m + iB * (rBx * (rBx - rAx) + rBy * (rBy - rAy)))) / det2;
   const spinB = (iB * m * (m + iA * (rAx * dx + rAy * dy))) / det2;
-  if (pinnedIO[0] === 1 && mass > 0 && mass < Infinity && Number.isFinite(ux) && Number.isFinite(uy) && Number.isFinite(spinA) && Number.isFinite(spinB)) {
+  if (mass > 0 && mass < Infinity && Number.isFinite(ux) && Number.isFinite(uy) && Number.isFinite(spinA) && Number.isFinite(spinB)) {
     turnIO[TURN_MASS] = mass;
     turnIO[TURN_X] = ux;
     turnIO[TURN_Y] = uy;
     turnIO[TURN_SPIN_A] = spinA;
     turnIO[TURN_SPIN_B] = spinB;
-  } else {
-    turnIO[TURN_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
-    turnIO[TURN_X] = 0;
-    turnIO[TURN_Y] = 0;
-    turnIO[TURN_SPIN_A] = iA;
-    turnIO[TURN_SPIN_B] = iB;
-  }
+  } else spinsAlone(iA, iB);
+}
+
+/** The turn of the spins alone (Box2D's): the mass 1 / (iA + iB), no linear part. */
+function spinsAlone(iA: number, iB: number): void {
+  turnIO[TURN_MASS] = iA + iB > 0 ? 1 / (iA + iB) : 0;
+  turnIO[TURN_X] = 0;
+  turnIO[TURN_Y] = 0;
+  turnIO[TURN_SPIN_A] = iA;
+  turnIO[TURN_SPIN_B] = iB;
 }
 
 /**
