@@ -144,6 +144,9 @@ export class ContinuousShapes {
     this.hitCount = 0;
     this.bounceCount = 0;
     const { x0, y0, c0, s0 } = this;
+    // How far past a surface a corner must end to be swept (see vertexCrosses): the soft step's
+    // contacts hold what ends within a slop; the elastic pass has none that would.
+    const cornerDepth = bounce ? 0 : slop;
     // How far any moving body travelled in the step (-1: not yet measured): bullets look this much
     // farther around their own sweep for bodies that came at them.
     let travel = -1;
@@ -205,7 +208,7 @@ export class ContinuousShapes {
           }
           if (this.outOfReach(slop + 0.25 * slop)) continue;
           this.otherEntry = entry;
-          best = this.earliest(shapes, rigid.firstShape[i], best, slop, CORE * minExtent[i]);
+          best = this.earliest(shapes, rigid.firstShape[i], best, slop, CORE * minExtent[i], cornerDepth);
         }
         if (bullet && queries) {
           if (travel < 0) travel = this.largestTravel(bodies);
@@ -224,7 +227,7 @@ export class ContinuousShapes {
               this.otherRestitution = shapes.restitution[t];
               this.otherFriction = shapes.friction[t];
               this.otherEntry = t;
-              best = this.earliest(shapes, rigid.firstShape[i], best, slop, CORE * minExtent[i]);
+              best = this.earliest(shapes, rigid.firstShape[i], best, slop, CORE * minExtent[i], cornerDepth);
             }
           }
           sweep.x0 = x0[i];
@@ -275,8 +278,8 @@ export class ContinuousShapes {
     return segmentDistance.distanceSquared > limit * limit;
   }
 
-  /** The earliest impact of the body's shapes with `other` before `best`, noting where it happened. */
-  private earliest(shapes: ShapeStore, first: number, best: number, slop: number, core: number): number {
+  /** The earliest impact of the body's shapes with `other` before `best`, noting where it happened; `cornerDepth` as vertexCrosses's depth. */
+  private earliest(shapes: ShapeStore, first: number, best: number, slop: number, core: number, cornerDepth: number): number {
     for (let t = first; t >= 0; t = shapes.next[t]) {
       if (shapes.sensor[t]) continue;
       const toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop);
@@ -295,7 +298,7 @@ export class ContinuousShapes {
       // through a thin wall within the step, which then pushes the body on through.
       if (shapes.kind[t] === ShapeKind.circle) continue;
       for (let v = 0; v < shapes.vertexCount[t]; v++) {
-        if (vertexCrosses(shapes, t, this.sweep, other, v)) best = this.note(timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, -1, v), best, t);
+        if (vertexCrosses(shapes, t, this.sweep, other, v, cornerDepth)) best = this.note(timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, -1, v), best, t);
       }
     }
     return best;
