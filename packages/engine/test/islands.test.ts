@@ -86,6 +86,52 @@ describe('island sleeping with shapes', () => {
     }
   });
 
+  it('a sleeper takes its share of the hit that wakes it, in that step, as an awake body would', () => {
+    // The hit arrives within one step from beyond the speculative margin: the sleeper wakes
+    // before the solve, not after it, or it meets the hit as a wall would.
+    for (const v of [1, 2, 6, 20])
+      for (const gap of [0.3, 0.337, 0.71]) {
+        const run = (sleeping: boolean): number[] => {
+          const world = new World({ gravity: { x: 0, y: 0 }, friction: 0, restitution: 0, sleeping });
+          const b = world.createBox({ x: 0, y: 0, width: 1, height: 1 });
+          const a = world.createBox({ x: -1 - gap, y: 0, width: 1, height: 1 });
+          for (let s = 0; s < 60; s++) world.step(DT);
+          expect(world.isAwake(b)).toBe(!sleeping);
+          world.setVelocity(a, v, 0);
+          const out: number[] = [];
+          for (let s = 0; s < 30; s++) {
+            world.step(DT);
+            out.push(world.getBody(a).vx, world.getBody(b).vx);
+          }
+          return out;
+        };
+        const asleep = run(true);
+        const awake = run(false);
+        for (let k = 0; k < asleep.length; k += 2) {
+          expect(asleep[k] + asleep[k + 1], `${v} ${gap} ${k}`).toBeCloseTo(v, 9);
+          expect(asleep[k + 1], `${v} ${gap} ${k}`).toBeCloseTo(awake[k + 1], 9);
+        }
+      }
+    // A kinematic pusher does not sink into a sleeper; a platform set moving carries a box asleep on it from the first step.
+    const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, sleeping: true });
+    world.createBox({ x: 0, y: 1, width: 100, height: 2, type: 'static' });
+    const box = world.createBox({ x: 0, y: -0.5, width: 1, height: 1 });
+    const pusher = world.createBox({ x: -2, y: -0.5, width: 1, height: 1, type: 'kinematic' });
+    const platform = world.createBox({ x: 20, y: -0.25, width: 6, height: 0.5, type: 'kinematic' });
+    const rider = world.createBox({ x: 20, y: -1, width: 1, height: 1 });
+    for (let s = 0; s < 120; s++) world.step(DT);
+    expect(world.isAwake(box)).toBe(false);
+    expect(world.isAwake(rider)).toBe(false);
+    world.setVelocity(pusher, 6, 0);
+    world.setVelocity(platform, 2, 0);
+    world.step(DT);
+    expect(world.getBody(rider).vx).toBeGreaterThan(0.09);
+    for (let s = 0; s < 30; s++) {
+      world.step(DT);
+      expect(world.getBody(box).x - world.getBody(pusher).x, `${s}`).toBeGreaterThan(1 - 0.005);
+    }
+  });
+
   it('a body resting on a moving kinematic platform stays awake', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.8, restitution: 0, sleeping: true });
     world.createBox({ x: 0, y: 0, width: 10, height: 1, type: 'kinematic', vx: 0.5 });

@@ -96,9 +96,9 @@ export function boxWall(world: WorldShapes, w: number, out: WorldShape): WorldSh
  *
  * `build` then sorts the body pairs canonically and runs the shape pairs of each through the
  * dispatch table, in order, into the step's ContactList, each contact inheriting its impulses
- * from last step's list. A sleeping body touched by an awake one is noted in `wake`: its island
- * wakes after this step, so that it wakes whole, with its own contacts, rather than falling for
- * a step without them.
+ * from last step's list. A sleeping body touched by an awake one is noted in `wake`: the route
+ * wakes its island and collides again before the solve (see ShapeRoute.run), so that it wakes
+ * whole, with its own contacts.
  */
 export class ShapeNarrowPhase implements PairConsumer {
   readonly candidates = new ContactBuffer();
@@ -114,7 +114,7 @@ export class ShapeNarrowPhase implements PairConsumer {
   sensorCount = 0;
   /** The world's joints, once it has any: bodies a joint holds apart make no pair (see JointStore.joined). */
   joints: JointStore | null = null;
-  /** Sleepers an awake body touched this step: their islands wake at its end. */
+  /** Sleepers an awake body touched this step: their islands wake before the solve (see ShapeRoute.run). */
   wake = new Int32Array(16);
   wakeCount = 0;
   private worldBody = new Int32Array(16);

@@ -15,8 +15,9 @@ import { JointKind } from '../joints/joint-layout.js';
  *
  * Static bodies and world shapes join no island (they hold any number of islands apart). A
  * sleeper stays asleep when a slow body rests on it; a faster one wakes its island (the
- * narrow-phase notes it, ShapeNarrowPhase.wake) after the step, so that the island wakes whole
- * with its own contacts instead of falling for a step without them.
+ * narrow-phase notes it, ShapeNarrowPhase.wake) before the solve, and the step collides again,
+ * so that the island wakes whole, with its own contacts, and takes its share of the hit (see
+ * ShapeRoute.run).
  */
 export class IslandSleep {
   private parent = new Int32Array(0);

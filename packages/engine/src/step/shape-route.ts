@@ -97,16 +97,19 @@ export class ShapeRoute {
       if (sweep) this.sweep(queries, -1 - queryVersion, true, events === null ? Infinity : hitThreshold);
     }
     const t1 = nowMs();
-    narrow.begin();
-    pairs.begin();
-    pairs.contactsDirect = false;
-    const pairTests = broad.findPairs(bodies, pairs);
-    pairs.flush();
-    const recycleDistance = elastic ? 0 : 10 * settings.slop;
-    narrow.gatherStatic(this.tree, this.shapes, this.world, recycleDistance);
+    let pairTests = this.findPairs(broad, elastic);
+    // The narrow-phase's share of the broad-phase's time: the pairs it consumed on the way.
+    const consumerMs = pairs.consumerMs;
     const t2 = nowMs();
-    // Only the soft step keeps manifolds between steps: the elastic pass works on fresh overlaps.
-    narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution, settings.sleeping.speed, recycleDistance, dt);
+    this.build(elastic, dt);
+    if (narrow.wakeCount > 0) {
+      // Sleepers that a body hit this step wake before the solve, whole, and their islands
+      // collide again with everything, their own contacts included: left asleep through the step,
+      // a sleeper met the body that hit it as a wall would, and took none of its momentum.
+      for (let k = 0; k < narrow.wakeCount; k++) bodies.wake(narrow.wake[k]);
+      pairTests = this.findPairs(broad, elastic);
+      this.build(elastic, dt);
+    }
     const t3 = nowMs();
     const contacts = narrow.current;
     if (elastic) this.elastic.solve(bodies, contacts, settings.elastic);
@@ -119,6 +122,7 @@ export class ShapeRoute {
     const t5 = nowMs();
     const sleeping = settings.sleeping;
     if (sleeping.enabled) this.islands.update(bodies, contacts, joints?.store ?? null, dt, sleeping.speed, sleeping.time);
+    // Whatever the second pass noted, if anything, wakes after the step.
     for (let k = 0; k < narrow.wakeCount; k++) bodies.wake(narrow.wake[k]);
     if (events !== null) {
       events.updateShapes(bodies, this.shapes, this.segments, contacts, hitThreshold, narrow.sensorSlots, narrow.visitorSlots, narrow.sensorCount);
@@ -139,14 +143,38 @@ export class ShapeRoute {
     stats.sleepingBodies = bodies.sleepingCount;
     stats.integrateMs = t1 - t0;
     stats.boundaryMs = 0;
-    stats.broadphaseMs = t2 - t1 - pairs.consumerMs;
-    stats.narrowphaseMs = t3 - t2 + pairs.consumerMs;
+    // A second pass for woken sleepers counts as narrow-phase, its broad-phase included.
+    stats.broadphaseMs = t2 - t1 - consumerMs;
+    stats.narrowphaseMs = t3 - t2 + consumerMs;
     stats.solveMs = t4 - t3;
     stats.correctMs = t5 - t4;
     stats.reportMs = t6 - t5;
     stats.totalMs = t6 - t0;
     // The shape route runs on the calling thread alone (see startWorkers).
     stats.threads = 1;
+  }
+
+  /** The broad-phase's candidate pairs, and the static ones, into the narrow-phase; returns the pair tests. */
+  private findPairs(broad: BroadPhase, elastic: boolean): number {
+    const { bodies, narrow, pairs } = this;
+    narrow.begin();
+    pairs.begin();
+    pairs.contactsDirect = false;
+    const pairTests = broad.findPairs(bodies, pairs);
+    pairs.flush();
+    narrow.gatherStatic(this.tree, this.shapes, this.world, this.recycleDistance(elastic));
+    return pairTests;
+  }
+
+  /** The step's contacts from the candidate pairs. Only the soft step keeps manifolds between steps: the elastic pass works on fresh overlaps. */
+  private build(elastic: boolean, dt: number): void {
+    const settings = this.settings;
+    this.narrow.build(this.shapes, this.world, elastic ? 0 : settings.margin, settings.slop, settings.wallFriction, settings.wallRestitution, settings.sleeping.speed, this.recycleDistance(elastic), dt);
+  }
+
+  /** How far a kept manifold's bodies may have drifted (see ShapeNarrowPhase.recycle). */
+  private recycleDistance(elastic: boolean): number {
+    return elastic ? 0 : 10 * this.settings.slop;
   }
 
   /** Bullets in the world: the continuous stage runs for them even with nothing static. */
