@@ -396,6 +396,22 @@ describe('continuous collision with shapes', () => {
           }
   });
 
+  it('the elastic pass, which caps no spin, stops a plank turning up to a whole turn a step at a segment', () => {
+    for (const kind of ['box', 'capsule'] as const)
+      for (const turn of [90, 135, 150, 170, 179, 190, 230, 350])
+        for (let a = 0; a < 24; a++)
+          for (const speed of [20, 60, 200]) {
+            const world = new World({ solver: 'elastic', restitution: 1, friction: 0, maxLinearSpeed: 1e7 });
+            world.createSegment({ x1: 0, y1: -100, x2: 0, y2: 100 });
+            const start = { x: -0.6 - 0.013 * a, y: 0, angle: a * 0.26, vx: speed, angularVelocity: ((turn * Math.PI) / 180) * 60 };
+            const h = kind === 'box' ? world.createBox({ ...start, width: 1, height: 0.05 }) : world.createCapsule({ ...start, length: 1, radius: 0.025 });
+            for (let s = 0; s < 20; s++) {
+              world.step(DT);
+              expect(world.getBody(h).x, `${kind} ${turn} ${a} ${speed} ${s}`).toBeLessThan(0);
+            }
+          }
+  });
+
   it('the elastic pass bounces a box meeting a face flat straight back, unspun, wherever its step starts', () => {
     // A body that starts a step within the slop of the face it then crosses is swept as a core
     // disc and by its corners, whose impact is a single point: the bounce there must still be the

@@ -120,9 +120,16 @@ export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, oth
   const dy = sweep.y1 - sweep.y0;
   // The total turn from the chord between the two rotations: 2 asin(chord / 2) <= (pi / 2) chord,
   // and the interpolated rotation turns at most a fifth faster than uniformly over the quarter turn
-  // a step allows. So no point of the body moves faster than this from turning.
+  // the soft step allows. The elastic pass caps no spin, and over a turn T the interpolation turns
+  // fastest midway, at 2 tan(T / 2) = 2 sin T / (1 + cos T) per unit of t, past that bound from
+  // about 116 degrees and without bound towards a half turn: there a plank spun 150 degrees a step
+  // was stepped past a segment it met. So no point of the body moves faster than this from turning
+  // (at a half turn exactly, an infinite bound: the body stays at its step's start).
   const chord = Math.sqrt((sweep.c1 - sweep.c0) * (sweep.c1 - sweep.c0) + (sweep.s1 - sweep.s0) * (sweep.s1 - sweep.s0));
-  const spin = 1.2 * (Math.PI / 2) * chord * sweep.reach;
+  const cosTurn = sweep.c0 * sweep.c1 + sweep.s0 * sweep.s1;
+  const sinTurn = Math.abs(sweep.c0 * sweep.s1 - sweep.s0 * sweep.c1);
+  const fastest = 1 + cosTurn > 0 ? (2 * sinTurn) / (1 + cosTurn) : Infinity;
+  const spin = Math.max(1.2 * (Math.PI / 2) * chord, fastest) * sweep.reach;
   let t = 0;
   for (let iteration = 0; iteration < 64; iteration++) {
     sweepRotation(sweep, t, rotation);
