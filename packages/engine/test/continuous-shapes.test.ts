@@ -275,6 +275,28 @@ describe('continuous collision with shapes', () => {
     }
   });
 
+  it("in the elastic pass a bullet's bounce off a body shares momentum with it, and one coming at the bullet carries it", () => {
+    for (const restitution of [0, 0.5, 1])
+      for (const speed of [30, 300, 3000])
+        for (const plankType of ['dynamic', 'kinematic'] as const)
+          for (const plankSpeed of [0, -100, -1000]) {
+            const world = new World({ solver: 'elastic', restitution, friction: 0, maxLinearSpeed: 1e6 });
+            const plank = world.createBox({ x: 0, y: 0, width: 0.05, height: 2, type: plankType, vx: plankSpeed, density: 5 });
+            const shot = world.createBox({ x: -0.2 - (0.4 * (speed - plankSpeed)) / 60, y: 0.1, width: 0.1, height: 0.05, vx: speed, bullet: true });
+            const before = world.momentum().x;
+            const label = `e ${restitution} at ${speed} m/s, ${plankType} plank at ${plankSpeed}`;
+            for (let s = 0; s < 4; s++) {
+              world.step(DT);
+              const b = world.getBody(shot);
+              const p = world.getBody(plank);
+              expect(b.x, label).toBeLessThan(p.x);
+              // The bullet leaves a kinematic plank no faster towards it than the plank goes.
+              if (s > 0 && plankType === 'kinematic') expect(b.vx, label).toBeLessThanOrEqual(p.vx + 1e-9 * speed);
+            }
+            if (plankType === 'dynamic') expect(world.momentum().x, label).toBeCloseTo(before, 9);
+          }
+  });
+
   it('a box that bounced off a segment of no thickness leaves it: a corner coming back from past the line is not swept', () => {
     for (const vx of [10, 30, 60]) {
       for (const thickness of [0, 0.05]) {

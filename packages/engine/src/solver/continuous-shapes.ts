@@ -323,12 +323,15 @@ export class ContinuousShapes {
   }
 
   /**
-   * The elastic pass's bounce at an impact, the other side immovable: the contact of the body's
-   * shape at its put-back pose with the thing it met, its points within TOGETHER slops of the first
-   * to meet the surface, as the elastic pass solves a contact (one point, or two as a block, see
-   * twoPointImpulses), each leaving with -e times its approach speed (e the pair's restitution, 0
-   * below the threshold). The impact's own witness point alone where that contact has no point
-   * (the impact found by a corner's crossing, say, then already past the surface's end).
+   * The elastic pass's bounce at an impact: the contact of the body's shape at its put-back pose
+   * with the thing it met, its points within TOGETHER slops of the first to meet the surface, as
+   * the elastic pass solves a contact (one point, or two as a block, see twoPointImpulses), each
+   * leaving with -e times its approach speed (e the pair's restitution, 0 below the threshold),
+   * then Coulomb friction at each. The impact's own witness point alone where that contact has no
+   * point (the impact found by a corner's crossing, say, then already past the surface's end).
+   * A static thing is immovable; a body a bullet met takes its share, with its mass, and speeds are
+   * relative to it (a kinematic one is immovable, at its velocity): treated as a wall, a plank took
+   * none of a bullet's momentum, and one coming at a bullet left it behind and passed through it.
    *
    * Not the witness point alone: a body that starts a step within the slop of a face is swept as a
    * core disc and by its corners, whose impact is a single point, and an impulse there alone would
@@ -360,33 +363,75 @@ export class ContinuousShapes {
         n = 2;
       }
     }
+    // The body met, where it moves (a bullet's catch): its arms to the same points.
+    const entry = this.hitEntry;
+    const j = entry < SEGMENT_ENTRY && bodies.type[shapes.body[entry]] !== TypeCode.static ? shapes.body[entry] : -1;
     const m = bodies.invMass[i];
     const inertia = rigid.invInertia[i];
     const vx = bodies.vx[i];
     const vy = bodies.vy[i];
     const w = rigid.angularVelocity[i];
-    // Each point's speed along the normal, the other's (0) less the body's: negative when closing.
-    const u0 = -((vx - w * r0y) * nx + (vy + w * r0x) * ny);
-    const u1 = n === 2 ? -((vx - w * r1y) * nx + (vy + w * r1x) * ny) : 0;
+    let mj = 0;
+    let ij = 0;
+    let vjx = 0;
+    let vjy = 0;
+    let wj = 0;
+    let q0x = 0;
+    let q0y = 0;
+    let q1x = 0;
+    let q1y = 0;
+    if (j >= 0) {
+      if (bodies.type[j] === TypeCode.dynamic) {
+        mj = bodies.invMass[j];
+        ij = rigid.invInertia[j];
+      }
+      vjx = bodies.vx[j];
+      vjy = bodies.vy[j];
+      wj = rigid.angularVelocity[j];
+      q0x = px + r0x - bodies.x[j];
+      q0y = py + r0y - bodies.y[j];
+      q1x = px + r1x - bodies.x[j];
+      q1y = py + r1y - bodies.y[j];
+    }
+    // Each point's speed along the normal, the other's less the body's: negative when closing.
+    let u0 = -((vx - w * r0y) * nx + (vy + w * r0x) * ny);
+    let u1 = n === 2 ? -((vx - w * r1y) * nx + (vy + w * r1x) * ny) : 0;
+    if (j >= 0) {
+      u0 += (vjx - wj * q0y) * nx + (vjy + wj * q0x) * ny;
+      if (n === 2) u1 += (vjx - wj * q1y) * nx + (vjy + wj * q1x) * ny;
+    }
     const approach = Math.max(-u0, n === 2 ? -u1 : -Infinity);
     if (!(approach > 0)) return;
     const e = approach < threshold ? 0 : Math.max(shapes.restitution[this.hitShape], this.hitRestitution);
     const scale = 1 + e;
     const rn0 = r0x * ny - r0y * nx;
     const rn1 = r1x * ny - r1y * nx;
-    const k00 = m + inertia * rn0 * rn0;
+    const sn0 = q0x * ny - q0y * nx;
+    const sn1 = q1x * ny - q1y * nx;
+    let k00 = m + inertia * rn0 * rn0;
+    if (j >= 0) k00 += mj + ij * sn0 * sn0;
     let p0 = 0;
     let p1 = 0;
     if (n === 1) {
       if (u0 < 0 && k00 > 0) p0 = (-scale * u0) / k00;
     } else {
-      twoPointImpulses(k00, m + inertia * rn1 * rn1, m + inertia * rn0 * rn1, scale * u0, scale * u1, impulses);
+      let k11 = m + inertia * rn1 * rn1;
+      let k01 = m + inertia * rn0 * rn1;
+      if (j >= 0) {
+        k11 += mj + ij * sn1 * sn1;
+        k01 += mj + ij * sn0 * sn1;
+      }
+      twoPointImpulses(k00, k11, k01, scale * u0, scale * u1, impulses);
       p0 = impulses[0];
       p1 = impulses[1];
     }
+    // The body takes -p along the normal at each point, the body met +p.
     let wx = vx - m * (p0 + p1) * nx;
     let wy = vy - m * (p0 + p1) * ny;
     let ww = w - inertia * (p0 * rn0 + p1 * rn1);
+    vjx += mj * (p0 + p1) * nx;
+    vjy += mj * (p0 + p1) * ny;
+    wj += ij * (p0 * sn0 + p1 * sn1);
     // Then Coulomb friction at each point, at most mu times its normal impulse, as the pass does (coulombImpulse).
     const mu = Math.sqrt(shapes.friction[this.hitShape] * this.hitFriction);
     if (mu > 0) {
@@ -397,18 +442,34 @@ export class ContinuousShapes {
         if (!(limit > 0)) continue;
         const rx = p === 0 ? r0x : r1x;
         const ry = p === 0 ? r0y : r1y;
-        const slip = (wx - ww * ry) * tx + (wy + ww * rx) * ty;
+        const sx = p === 0 ? q0x : q1x;
+        const sy = p === 0 ? q0y : q1y;
+        let slip = (wx - ww * ry) * tx + (wy + ww * rx) * ty;
         const rt = rx * ty - ry * tx;
-        const kt = m + inertia * rt * rt;
+        let kt = m + inertia * rt * rt;
+        const st = sx * ty - sy * tx;
+        if (j >= 0) {
+          slip -= (vjx - wj * sy) * tx + (vjy + wj * sx) * ty;
+          kt += mj + ij * st * st;
+        }
         const jt = coulombImpulse(slip, kt, limit);
         wx += m * jt * tx;
         wy += m * jt * ty;
         ww += inertia * jt * rt;
+        vjx -= mj * jt * tx;
+        vjy -= mj * jt * ty;
+        wj -= ij * jt * st;
       }
     }
     bodies.vx[i] = wx;
     bodies.vy[i] = wy;
     rigid.angularVelocity[i] = ww;
+    if (j >= 0 && bodies.type[j] === TypeCode.dynamic) {
+      bodies.vx[j] = vjx;
+      bodies.vy[j] = vjy;
+      rigid.angularVelocity[j] = wj;
+      bodies.wake(j);
+    }
     if (approach >= hitThreshold && p0 + p1 > 0) this.noteBounce(i, approach);
   }
 
