@@ -275,6 +275,28 @@ describe('continuous collision with shapes', () => {
     }
   });
 
+  it('bodies smaller than the slop, starting within it of a thin wall, do not pass through it, in either solver', () => {
+    // Shape, core disc and centroid all start within the sweep's target (a slop): the centroid is
+    // swept to half its gap. The elastic pass has no speculative contact to stop them otherwise.
+    for (const solver of ['elastic', 'soft'] as const)
+      for (const wall of ['segment', 'box'] as const)
+        for (const shape of ['circle', 'box'] as const)
+          for (const r of [0.002, 0.005, 0.01])
+            for (const gap of [0.0005, 0.002, 0.005])
+              for (const v of [3, 30, 300]) {
+                const world = new World({ solver, restitution: 0, friction: 0 });
+                const half = wall === 'segment' ? 0 : 0.005;
+                if (wall === 'segment') world.createSegment({ x1: 0, y1: -50, x2: 0, y2: 50 });
+                else world.createBox({ x: 0, y: 0, width: 2 * half, height: 100, type: 'static' });
+                const x = -(half + gap + r);
+                const h = shape === 'circle' ? world.createCircle({ x, y: 0, radius: r, vx: v }) : world.createBox({ x, y: 0, width: 2 * r, height: r, vx: v });
+                for (let s = 0; s < 10; s++) {
+                  world.step(DT);
+                  expect(world.getBody(h).x, `${solver} ${wall} ${shape} ${r} ${gap} ${v} ${s}`).toBeLessThan(half);
+                }
+              }
+  });
+
   it("in the elastic pass a bullet's bounce off a body shares momentum with it, and one coming at the bullet carries it", () => {
     for (const restitution of [0, 0.5, 1])
       for (const speed of [30, 300, 3000])
