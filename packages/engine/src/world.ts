@@ -800,6 +800,67 @@ export class World {
     this.bodies.wake(s);
   }
 
+  /**
+   * Adds a force (mass x length / s^2) acting at the world point (x, y) to a dynamic body for the
+   * next step only: the force at its centre of mass and the torque (x - cx) fy - (y - cy) fx about
+   * it (Box2D's b2Body_ApplyForce). Wakes it. Refused whole (nothing added) where either part would
+   * exceed what a step can take.
+   */
+  applyForceAtPoint(handle: number, fx: number, fy: number, x: number, y: number): void {
+    const s = this.dynamicSlot(handle, 'a force', 'fx', fx, 'fy', fy);
+    finiteNumber('x', x);
+    finiteNumber('y', y);
+    const b = this.bodies;
+    const torque = (x - b.x[s]) * fy - (y - b.y[s]) * fx;
+    const totalX = b.forceX[s] + fx;
+    const totalY = b.forceY[s] + fy;
+    const totalTorque = (b.rigid?.torque[s] ?? 0) + torque;
+    if (!(Math.abs(totalX * b.invMass[s]) <= MAX_MAGNITUDE && Math.abs(totalY * b.invMass[s]) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`a force (${fx}, ${fy}) on body ${handle} would make its acceleration exceed ${MAX_MAGNITUDE} (pending force (${totalX}, ${totalY}), mass ${b.mass[s]})`);
+    }
+    if (!(Math.abs(totalTorque * this.inverseInertia(s)) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`a force (${fx}, ${fy}) at (${x}, ${y}) on body ${handle} would make its angular acceleration exceed ${MAX_MAGNITUDE} (pending torque ${totalTorque}, inertia ${this.inertiaOf(s)})`);
+    }
+    b.forceX[s] = totalX;
+    b.forceY[s] = totalY;
+    if (torque !== 0) {
+      this.useRigid().torque[s] = totalTorque;
+      this.turning = true;
+    }
+    b.forcesPending = true;
+    b.wake(s);
+  }
+
+  /**
+   * Changes a dynamic body's velocity by impulse / mass and its angular velocity by the impulse's
+   * moment about its centre of mass, ((x - cx) iy - (y - cy) ix) / inertia, at once: an impulse at
+   * the world point (x, y) (Box2D's b2Body_ApplyLinearImpulse). Wakes it; refused whole where either
+   * speed would exceed what a step can take.
+   */
+  applyImpulseAtPoint(handle: number, ix: number, iy: number, x: number, y: number): void {
+    const s = this.dynamicSlot(handle, 'an impulse', 'ix', ix, 'iy', iy);
+    finiteNumber('x', x);
+    finiteNumber('y', y);
+    const b = this.bodies;
+    const vx = b.vx[s] + ix * b.invMass[s];
+    const vy = b.vy[s] + iy * b.invMass[s];
+    const moment = (x - b.x[s]) * iy - (y - b.y[s]) * ix;
+    const w = (b.rigid?.angularVelocity[s] ?? 0) + moment * this.inverseInertia(s);
+    if (!(Math.abs(vx) <= MAX_MAGNITUDE && Math.abs(vy) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`an impulse (${ix}, ${iy}) on body ${handle} would make its velocity (${vx}, ${vy}) exceed ${MAX_MAGNITUDE} (mass ${b.mass[s]})`);
+    }
+    if (!(Math.abs(w) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`an impulse (${ix}, ${iy}) at (${x}, ${y}) on body ${handle} would make its angular velocity ${w} exceed ${MAX_MAGNITUDE} (inertia ${this.inertiaOf(s)})`);
+    }
+    b.vx[s] = vx;
+    b.vy[s] = vy;
+    if (moment !== 0) {
+      this.useRigid().angularVelocity[s] = w;
+      if (w !== 0) this.turning = true;
+    }
+    b.wake(s);
+  }
+
   /** Sets the factor on the world's gravity for one body (CircleOptions.gravityScale); wakes it. */
   setGravityScale(handle: number, scale: number): void {
     const s = this.slot(handle);

@@ -13,6 +13,63 @@ describe('forces, impulses, gravity scale, damping', () => {
     expect(world.getCircle(h)).toMatchObject({ vx: 5, vy: -1 });
   });
 
+  it('a force or an impulse at a point adds its moment about the centre of mass', () => {
+    // An L of two boxes, its centre of mass off its origin, turned and far out: the arm is from the centre of mass.
+    const make = (world: World, x: number): number => {
+      const h = world.createBody({ x, y: -3, angle: 0.7 });
+      world.addShape(h, { kind: 'box', width: 2, height: 0.5, offsetX: 1 });
+      world.addShape(h, { kind: 'box', width: 0.5, height: 1.5, offsetY: 1 });
+      return h;
+    };
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const a = make(world, 1e4);
+    const b = make(world, 2e4);
+    const body = world.getBody(a);
+    const px = body.centerX + 0.75;
+    const py = body.centerY - 1.25;
+    world.applyForceAtPoint(a, 30, -12, px, py);
+    world.applyForce(b, 30, -12);
+    world.applyTorque(b, (px - body.centerX) * -12 - (py - body.centerY) * 30);
+    world.step(1 / 60);
+    const [fa, fb] = [world.getBody(a), world.getBody(b)];
+    expect([fa.vx, fa.vy, fa.angularVelocity]).toEqual([fb.vx, fb.vy, fb.angularVelocity]);
+    expect(fa.angularVelocity).toBeCloseTo((0.75 * -12 + 1.25 * 30) / body.inertia / 60, 12);
+
+    const before = world.getBody(a);
+    world.applyImpulseAtPoint(a, 4, 5, before.centerX - 2, before.centerY + 0.5);
+    const after = world.getBody(a);
+    expect(after.vx - before.vx).toBeCloseTo(4 / before.mass, 14);
+    expect(after.vy - before.vy).toBeCloseTo(5 / before.mass, 14);
+    expect(after.angularVelocity - before.angularVelocity).toBeCloseTo((-2 * 5 - 0.5 * 4) / before.inertia, 12);
+
+    // A body that cannot turn takes the linear part alone; a sleeper wakes.
+    const fixed = world.createBox({ x: 0, y: 0, width: 1, height: 1, fixedRotation: true });
+    world.applyImpulseAtPoint(fixed, 0, 3, 0.5, 0);
+    expect(world.getBody(fixed)).toMatchObject({ vy: 3, angularVelocity: 0 });
+    const sleepy = new World({ sleeping: true });
+    const s = sleepy.createBox({ x: 0, y: 0, width: 1, height: 1 });
+    sleepy.setAwake(s, false);
+    sleepy.applyForceAtPoint(s, 1, 0, 0, 0.5);
+    expect(sleepy.isAwake(s)).toBe(true);
+  });
+
+  it('a force or an impulse at a point is refused whole, naming the field, where a part of it is bad', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const h = world.createBox({ x: 0, y: 0, width: 1, height: 1, density: 1e-6 });
+    const twin = world.createBox({ x: 5, y: 0, width: 1, height: 1, density: 1e-6 });
+    expect(() => world.applyForceAtPoint(h, 1, 0, Number.NaN, 0)).toThrow(TypeError);
+    expect(() => world.applyForceAtPoint(h, 1, 0, Number.NaN, 0)).toThrow(/\bx\b/);
+    expect(() => world.applyImpulseAtPoint(h, 1, 0, 0, Infinity)).toThrow(/\by\b/);
+    // A linear part within bounds, a moment past them: nothing is added.
+    expect(() => world.applyForceAtPoint(h, 1e90, 0, 0, 1e90)).toThrow(RangeError);
+    expect(() => world.applyImpulseAtPoint(h, 1e90, 0, 0, 1e90)).toThrow(/angular velocity/);
+    const ground = world.createBox({ x: 0, y: 9, width: 1, height: 1, type: 'static' });
+    expect(() => world.applyForceAtPoint(ground, 1, 0, 0, 0)).toThrow(/only dynamic bodies/);
+    world.step(1 / 60);
+    const [a, b] = [world.getBody(h), world.getBody(twin)];
+    expect([a.vx, a.vy, a.angularVelocity]).toEqual([b.vx, b.vy, b.angularVelocity]);
+  });
+
   it('an impulse changes velocity by I/m at once', () => {
     const world = new World();
     const h = world.createCircle({ x: 0, y: 0, vx: 1, radius: 1, mass: 4 });
