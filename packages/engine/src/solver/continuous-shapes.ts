@@ -282,7 +282,7 @@ export class ContinuousShapes {
   private earliest(shapes: ShapeStore, first: number, best: number, slop: number, core: number, cornerDepth: number): number {
     for (let t = first; t >= 0; t = shapes.next[t]) {
       if (shapes.sensor[t]) continue;
-      const toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop);
+      const toi = timeOfImpact(shapes, t, this.sweep, other, slop, 0.25 * slop, -1, -1, cornerDepth > 0);
       if (toi !== TOUCHING) {
         best = this.note(toi, best, t);
         continue;
