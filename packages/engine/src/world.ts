@@ -338,7 +338,9 @@ export class World {
     const self = this as unknown as Record<string, unknown>;
     for (const [key, value] of Object.entries(restored)) {
       // Callbacks that read this world's fields stay this world's: the restored fields move here.
-      if (value !== null && typeof value === 'object' && Object.values(value).every((item) => typeof item === 'function')) continue;
+      // (An empty object or array is a field, not callbacks: the creation options of a world made
+      // with none, the joint events pending when none were.)
+      if (value !== null && typeof value === 'object' && isCallbacks(value)) continue;
       self[key] = value;
     }
     this.workerStarts = starts + 1;
@@ -2028,3 +2030,9 @@ export class World {
 // each call, and workerStarts counts this object's thread starts: neither is the world's state,
 // and left out of snapshots, reading a world leaves its snapshot's bytes as they were.
 transientFields(World, ['viewsRecord', 'shapeViewsRecord', 'contactPointsRecord', 'jointViewsRecord', 'debugDraw', 'workerStarts']);
+
+/** Whether `value` is an object of callbacks alone: at least one, and nothing else. */
+function isCallbacks(value: object): boolean {
+  const items = Object.values(value);
+  return items.length > 0 && items.every((item) => typeof item === 'function');
+}
