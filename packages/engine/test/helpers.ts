@@ -192,7 +192,16 @@ export const bruteQueries = {
       const t = q.rayBody(s, x1, y1, x2 - x1, y2 - y1);
       if (t >= 0) hits.push(q.write({ handle: 0, fraction: 0, x: 0, y: 0, normalX: 0, normalY: 0 }, s, t, x1, y1, x2 - x1, y2 - y1));
     }
-    return hits.sort((a, b) => a.fraction - b.fraction || a.handle - b.handle);
+    // The documented order: by fraction; fractions that tie (a ray too long for them to tell
+    // hits apart) by where the points lie along the ray, beyond the points' own rounding; then by handle.
+    const dx = x2 - x1;
+    const dy = y2 - y1;
+    const along = (a: RayHit, b: RayHit): number => {
+      const d = (a.x - b.x) * dx + (a.y - b.y) * dy;
+      const size = Math.abs(a.x) + Math.abs(a.y) + Math.abs(b.x) + Math.abs(b.y);
+      return Math.abs(d) <= 1e-12 * size * (Math.abs(dx) + Math.abs(dy)) ? 0 : Math.sign(d);
+    };
+    return hits.sort((a, b) => a.fraction - b.fraction || along(a, b) || a.handle - b.handle);
   },
 };
 

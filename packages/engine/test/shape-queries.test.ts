@@ -125,6 +125,41 @@ describe('query masks and far rays on shapes', () => {
     const u = Math.max(-1, Math.min(1, (onCapsule.x - 20) * ax + onCapsule.y * ay));
     expect(Math.hypot(onCapsule.x - 20 - u * ax, onCapsule.y - u * ay)).toBeCloseTo(0.5, 12);
   });
+
+  it('a ray from up to 1e300 away decides hit or miss on a turned polygon, rounded polygon or capsule as from near', () => {
+    // A horizontal line is exact however far its ends: it meets the shape where a short ray on
+    // that line does. The differences of start and vertices rounded at the start's size, and a
+    // ray passing 0.25 outside a turned box from 1e16 away hit it.
+    const world = new World();
+    const shapes = [
+      world.createBox({ x: 0, y: 0, width: 1, height: 1, angle: 0.3 }),
+      world.createBox({ x: 0, y: 4, width: 1, height: 1, radius: 0.1, angle: 0.7 }),
+      world.createCapsule({ x: 0, y: 8, length: 1, radius: 0.2, angle: 1.1 }),
+      world.createPolygon({ x: 0, y: 12, angle: 2, vertices: [{ x: -0.5, y: -0.3 }, { x: 0.6, y: 0 }, { x: -0.2, y: 0.5 }] }),
+    ];
+    for (const far of [1e3, 1e12, 1e15, 1e16, 1e20, 1e100, 1e300])
+      for (let y = -1; y <= 13; y += 0.05) {
+        const near = world.rayCast(-100, y, 100, y);
+        // (A ray from -far to 100 ends at 100 only while 100 is more than the rounding of far.)
+        const rays = far <= 1e16 ? [[-far, far], [far, -far], [-far, 100]] : [[-far, far], [far, -far]];
+        for (const [x1, x2] of rays) {
+          const hit = world.rayCast(x1, y, x2, y);
+          const label = `${x1} -> ${x2} at y ${y}`;
+          expect(hit?.handle ?? null, label).toBe(x1 < x2 && near !== null ? near.handle : hit === null ? null : hit.handle);
+          expect(hit === null, label).toBe(near === null);
+          if (hit !== null) expect(shapes).toContain(hit.handle);
+        }
+      }
+    // A ray along a row of bodies from far away meets the first (its walk through the grid started
+    // 16,384 past it from 1e20 away), and rayCastAll meets them all.
+    const row = new World();
+    const circles = Array.from({ length: 50 }, (_, i) => row.createCircle({ x: -1000 + 20 * i, y: 0, radius: 0.5 }));
+    for (const far of [1e12, 1e16, 1e20, 1e50, 1e300]) {
+      expect(row.rayCast(-far, 0, far, 0)?.handle, `${far}`).toBe(circles[0]);
+      expect(row.rayCast(far, 0, -far, 0)?.handle, `${far}`).toBe(circles[49]);
+      expect(row.rayCastAll(-far, 0, far, 0).length, `${far}`).toBe(50);
+    }
+  });
 });
 
 describe('shape queries with a few bodies far from the crowd', () => {

@@ -175,7 +175,7 @@ export class Queries {
   }
 
   /**
-   * rayCast: the nearest hit (ties to the lower handle), written into `into` when given, else into
+   * rayCast: the nearest hit (at a tie of fractions, the nearer point, then the lower handle), written into `into` when given, else into
    * a new object; null when the segment enters no circle. Candidates are compared as numbers, so
    * only the answer is an object.
    */
@@ -192,7 +192,7 @@ export class Queries {
   }
 
   /**
-   * rayCastAll: every hit, nearest first (ties by handle), in `out`. The objects already in `out`
+   * rayCastAll: every hit, nearest first (ties of fractions by their points, then by handle), in `out`. The objects already in `out`
    * are overwritten in place; it is then cut to the number of hits, and the objects cut off are
    * kept to fill later casts' arrays, so that a caller reusing one array stops making hit objects
    * once it has held the most a cast found.
@@ -207,7 +207,7 @@ export class Queries {
       if (typeof spare === 'object' && spare !== null) this.spareHits.push(spare);
     }
     out.length = this.hitCount;
-    return sortNearestFirst(out);
+    return sortNearestFirst(out, x2 - x1, y2 - y1);
   }
 
   private hits: RayHit[] = NO_HITS;
@@ -252,23 +252,33 @@ export class Queries {
     const cs = grid.cellSize;
     clip.enter = 0;
     clip.exit = 1;
-    if (!clipAxis(x1, dx, this.reachMinX, this.reachMaxX) || !clipAxis(y1, dy, this.reachMinY, this.reachMaxY)) return;
+    clip.enterAxis = 0;
+    if (!clipAxis(x1, dx, this.reachMinX, this.reachMaxX, 1) || !clipAxis(y1, dy, this.reachMinY, this.reachMaxY, 2)) return;
     const tEnter = clip.enter;
     const tExit = clip.exit;
     if (tEnter > tExit) return;
     this.epoch++;
     const lastColumn = dx > 0 ? grid.columns - 1 : 0;
     const lastRow = dy > 0 ? grid.rows - 1 : 0;
-    let column = clamp(grid.columnOf(x1 + dx * tEnter), 0, grid.columns - 1);
-    let row = clamp(grid.rowOf(y1 + dy * tEnter), 0, grid.rows - 1);
+    // Where the ray enters the reach box. From far away x1 + dx tEnter rounds at the size of x1
+    // (a ray from -1e20 entered 16,384 out, past the bodies it should meet first): the axis whose
+    // bound gave tEnter enters at that bound, and the point is held within the box.
+    let ex = x1 + dx * tEnter;
+    let ey = y1 + dy * tEnter;
+    if (clip.enterAxis === 1) ex = dx > 0 ? this.reachMinX : this.reachMaxX;
+    else if (clip.enterAxis === 2) ey = dy > 0 ? this.reachMinY : this.reachMaxY;
+    ex = Math.min(Math.max(ex, this.reachMinX), this.reachMaxX);
+    ey = Math.min(Math.max(ey, this.reachMinY), this.reachMaxY);
+    let column = clamp(grid.columnOf(ex), 0, grid.columns - 1);
+    let row = clamp(grid.rowOf(ey), 0, grid.rows - 1);
     const stepX = dx > 0 ? 1 : -1;
     const stepY = dy > 0 ? 1 : -1;
     const deltaX = cs / Math.abs(dx);
     const deltaY = cs / Math.abs(dy);
-    // The fractions at which the ray crosses into the next column and row; none once in the last
-    // one it moves towards, beyond which its point clamps into that one.
-    let nextX = dx === 0 || column === lastColumn ? Infinity : (grid.originX + (column + (dx > 0 ? 1 : 0)) * cs - x1) / dx;
-    let nextY = dy === 0 || row === lastRow ? Infinity : (grid.originY + (row + (dy > 0 ? 1 : 0)) * cs - y1) / dy;
+    // The fractions at which the ray crosses into the next column and row, from the entry point;
+    // none once in the last one it moves towards, beyond which its point clamps into that one.
+    let nextX = dx === 0 || column === lastColumn ? Infinity : tEnter + (grid.originX + (column + (dx > 0 ? 1 : 0)) * cs - ex) / dx;
+    let nextY = dy === 0 || row === lastRow ? Infinity : tEnter + (grid.originY + (row + (dy > 0 ? 1 : 0)) * cs - ey) / dy;
     let cellEnter = tEnter;
     // Each step moves a column or a row towards the last, so the walk ends even if rounding stalls the fractions.
     for (;;) {
@@ -307,7 +317,7 @@ export class Queries {
           const reused = this.hits[k];
           const hit = typeof reused === 'object' && reused !== null ? reused : (this.hits[k] = this.spareHits.pop() ?? blankHit());
           this.write(hit, slot, t, x1, y1, dx, dy);
-        } else if (t < this.bestFraction || (t === this.bestFraction && bodies.handleOf(slot) < this.bestHandle)) {
+        } else if (t < this.bestFraction || (t === this.bestFraction && this.aheadOfBest(slot, x1, y1, dx, dy))) {
           this.bestFraction = t;
           this.bestSlot = slot;
           this.bestHandle = bodies.handleOf(slot);
@@ -318,6 +328,31 @@ export class Queries {
         }
       }
     }
+  }
+
+  /**
+   * For a hit at the best fraction so far: whether its point lies before the best one's along the
+   * ray, or at it with a lower handle. Fractions of a long ray tie for hits far apart (one 2e20
+   * long resolves no finer than 2e4), and the lower handle then won wherever it lay; the points,
+   * taken from the shapes, keep their order.
+   */
+  private aheadOfBest(slot: number, x1: number, y1: number, dx: number, dy: number): boolean {
+    const bodies = this.bodies;
+    let px = rayPoint.x;
+    let py = rayPoint.y;
+    let bx = this.bestPointX;
+    let by = this.bestPointY;
+    if (this.shapes === null) {
+      rayCircleEntry(x1, y1, dx, dy, bodies.x[slot], bodies.y[slot], bodies.radius[slot], entry);
+      px = bodies.x[slot] + entry.x;
+      py = bodies.y[slot] + entry.y;
+      const best = this.bestSlot;
+      rayCircleEntry(x1, y1, dx, dy, bodies.x[best], bodies.y[best], bodies.radius[best], entry);
+      bx = bodies.x[best] + entry.x;
+      by = bodies.y[best] + entry.y;
+    }
+    const along = alongRay(px, py, bx, by, dx, dy);
+    return along < 0 || (along === 0 && bodies.handleOf(slot) < this.bestHandle);
   }
 
   private prepare(version: number): boolean {
@@ -376,8 +411,30 @@ function writeHit(hit: RayHit, bodies: BodyStore, slot: number, t: number, x1: n
   return hit;
 }
 
+/** The ray sortNearestFirst orders hits along, for hits whose fractions tie (see aheadOfBest). */
+let sortX = 0;
+let sortY = 0;
+
+/** Whether hit a comes before hit b: the smaller fraction; at a tie the point earlier along the ray, then the lower handle. */
+function before(a: RayHit, b: RayHit): boolean {
+  if (a.fraction !== b.fraction) return a.fraction < b.fraction;
+  const along = alongRay(a.x, a.y, b.x, b.y, sortX, sortY);
+  return along < 0 || (along === 0 && a.handle < b.handle);
+}
+
+/**
+ * The sign of how far point (px, py) lies past (qx, qy) along the ray (dx, dy): 0 where that is
+ * within the rounding of the points themselves (a millionth of a millionth of their size), so
+ * that points one rounding apart, which tie in fraction too, keep the handle order.
+ */
+function alongRay(px: number, py: number, qx: number, qy: number, dx: number, dy: number): number {
+  const along = (px - qx) * dx + (py - qy) * dy;
+  const size = Math.abs(px) + Math.abs(py) + Math.abs(qx) + Math.abs(qy);
+  return Math.abs(along) <= 1e-12 * size * (Math.abs(dx) + Math.abs(dy)) ? 0 : along;
+}
+
 function nearestFirst(a: RayHit, b: RayHit): number {
-  return a.fraction - b.fraction || a.handle - b.handle;
+  return before(a, b) ? -1 : before(b, a) ? 1 : 0;
 }
 
 /**
@@ -386,12 +443,14 @@ function nearestFirst(a: RayHit, b: RayHit): number {
  * array and boxes each number its comparator returns. Should a crowd of overlapping circles make
  * insertion slow (more than 8 moves a hit), it hands over to Array.prototype.sort.
  */
-function sortNearestFirst(hits: RayHit[]): RayHit[] {
+function sortNearestFirst(hits: RayHit[], dx: number, dy: number): RayHit[] {
+  sortX = dx;
+  sortY = dy;
   let budget = 8 * hits.length;
   for (let k = 1; k < hits.length; k++) {
     const hit = hits[k];
     let j = k - 1;
-    for (; j >= 0 && (hits[j].fraction > hit.fraction || (hits[j].fraction === hit.fraction && hits[j].handle > hit.handle)); j--) {
+    for (; j >= 0 && before(hit, hits[j]); j--) {
       hits[j + 1] = hits[j];
       budget--;
     }
@@ -406,15 +465,19 @@ function ascending(a: number, b: number): number {
   return a - b;
 }
 
-/** The ray's parameter range inside the widened grid, narrowed axis by axis by clipAxis. */
-const clip = { enter: 0, exit: 1 };
+/** The ray's parameter range inside the widened grid, narrowed axis by axis by clipAxis, and which axis's bound gave `enter` (0: its start). */
+const clip = { enter: 0, exit: 1, enterAxis: 0 };
 
 /** Narrows `clip` to where p + t d lies in [lo, hi]; false when a ray parallel to the axis misses it. */
-function clipAxis(p: number, d: number, lo: number, hi: number): boolean {
+function clipAxis(p: number, d: number, lo: number, hi: number, axis: number): boolean {
   if (d === 0) return p >= lo && p <= hi;
   const ta = (lo - p) / d;
   const tb = (hi - p) / d;
-  clip.enter = Math.max(clip.enter, Math.min(ta, tb));
+  const enter = Math.min(ta, tb);
+  if (enter > clip.enter) {
+    clip.enter = enter;
+    clip.enterAxis = axis;
+  }
   clip.exit = Math.min(clip.exit, Math.max(ta, tb));
   return true;
 }

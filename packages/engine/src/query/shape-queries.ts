@@ -60,6 +60,42 @@ export function rayShape(shapes: ShapeStore, slot: number, px: number, py: numbe
     if (t >= 0) normalAtCircle(x1, y1, dx, dy, g.x[0], g.y[0], r);
     return t;
   }
+  // A start far from the shape moves along the ray to just before the shape's reach (the entry
+  // can lie no earlier): the tests below take differences of the start and the vertices, which
+  // round at the start's size, and from 1e16 away a ray passing 0.25 outside a box hit it. The
+  // new start is placed from the shape's side, the line's closest approach to its centre (as
+  // rayCircleEntry finds it), since a fraction of a ray 2e20 long resolves no finer than 2e4.
+  // Twice the shape's reach from the centre, so that the new start lies clear of it.
+  let reach = 0;
+  for (let i = 0; i < g.count; i++) reach = Math.max(reach, Math.abs(g.x[i] - px) + Math.abs(g.y[i] - py));
+  reach = 2 * (reach + r);
+  // The direction over its larger component first, so that no square overflows.
+  const largest = Math.max(Math.abs(dx), Math.abs(dy));
+  const length = largest * norm(dx / largest, dy / largest);
+  const ux = dx / length;
+  const uy = dy / length;
+  const along = (px - x1) * ux + (py - y1) * uy;
+  if (!(along > reach)) return rayShapeFrom(g, x1, y1, dx, dy);
+  const h = (x1 - px) * uy - (y1 - py) * ux;
+  const sx = px + h * uy - reach * ux;
+  const sy = py - h * ux - reach * uy;
+  const ex = x1 + dx - sx;
+  const ey = y1 + dy - sy;
+  // The end before the new start: the ray stops short of the shape's reach.
+  if (!(ex * ux + ey * uy > 0)) return -1;
+  const t = rayShapeFrom(g, sx, sy, ex, ey);
+  const from = Math.min((along - reach) / length, 1);
+  return t < 0 ? t : from + t * (1 - from);
+}
+
+/** sqrt(x^2 + y^2) for |x|, |y| <= 1, one of them 1. */
+function norm(x: number, y: number): number {
+  return Math.sqrt(x * x + y * y);
+}
+
+/** rayShape for a polygon or capsule already placed, `g`, from a start near it. */
+function rayShapeFrom(g: WorldShape, x1: number, y1: number, dx: number, dy: number): number {
+  const r = g.radius;
   if (g.kind === ShapeKind.capsule || r > 0) {
     let best = -1;
     const edges = g.kind === ShapeKind.capsule ? 1 : g.count;
