@@ -37,6 +37,7 @@ export interface ElasticSettings {
  */
 export class ElasticPass {
   solve(bodies: BodyStore, contacts: ContactList, settings: ElasticSettings): void {
+    noteApproach(bodies, contacts);
     const { x, y, vx, vy, invMass, type, asleep } = bodies;
     const rigid = bodies.rigid!;
     const { angularVelocity, invInertia } = rigid;
@@ -104,8 +105,6 @@ export class ElasticPass {
       }
       const approach = Math.max(-u0, n === 2 ? -u1 : -Infinity);
       if (approach > 0) {
-        contacts.points[o0 + PT_APPROACH_SPEED] = -u0;
-        if (n === 2) contacts.points[o1 + PT_APPROACH_SPEED] = -u1;
         const e = approach < threshold ? 0 : contacts.restitution[k];
         const scale = 1 + e;
         if (n === 1) {
@@ -181,6 +180,37 @@ export class ElasticPass {
         x[b] += push * mB * nx;
         y[b] += push * mB * ny;
       }
+    }
+  }
+}
+
+/**
+ * Each contact point's approach speed as the pass begins (positive when approaching), for hit
+ * events: the speed it met the other shape at. Taken in the pass, a contact's came after the
+ * impulses of the contacts before it: a compound of two boxes meeting a wall flat at 5 m/s
+ * reported its second box's hit at 2.06, below a threshold of 3, where the soft step reports both
+ * at 5.
+ */
+function noteApproach(bodies: BodyStore, contacts: ContactList): void {
+  const { vx, vy } = bodies;
+  const w = bodies.rigid!.angularVelocity;
+  const { order, count, points, bodyA, bodyB, normalX, normalY, pointCount } = contacts;
+  for (let listed = 0; listed < count; listed++) {
+    const k = order[listed];
+    const a = bodyA[k];
+    const b = bodyB[k];
+    const vbx = b === WORLD ? 0 : vx[b];
+    const vby = b === WORLD ? 0 : vy[b];
+    const wb = b === WORLD ? 0 : w[b];
+    const nx = normalX[k];
+    const ny = normalY[k];
+    for (let p = 0; p < pointCount[k]; p++) {
+      const o = (2 * k + p) * POINT_STRIDE;
+      const rax = points[o + PT_ANCHOR_AX];
+      const ray = points[o + PT_ANCHOR_AY];
+      const rbx = points[o + PT_ANCHOR_BX];
+      const rby = points[o + PT_ANCHOR_BY];
+      points[o + PT_APPROACH_SPEED] = -((vbx - wb * rby - (vx[a] - w[a] * ray)) * nx + (vby + wb * rbx - (vy[a] + w[a] * rax)) * ny);
     }
   }
 }
