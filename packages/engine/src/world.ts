@@ -1068,6 +1068,8 @@ export class World {
       if (this.turning) turnCircles(this.bodies, dt);
       limitSpeeds(this.bodies, this.resolved.maxLinearSpeed ?? MAX_MAGNITUDE, MAX_MAGNITUDE);
     }
+    // Events kept for hits or sensors list no touches unless asked to.
+    if (!this.resolved.contactEvents) this.pipeline.events?.dropTouches();
     this.geometryVersion++;
   }
 

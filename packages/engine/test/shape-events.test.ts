@@ -101,6 +101,33 @@ describe('events with shapes', () => {
       }
   });
 
+  it('without contactEvents, a world kept for hits or a sensor lists no begin or end touches', () => {
+    for (const options of [{ hitEventThreshold: 0.1 }, { contactEvents: false }, { contactEvents: true }]) {
+      const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.3, ...options });
+      world.createBox({ x: 0, y: 1, width: 20, height: 1, type: 'static' });
+      world.createSegment({ x1: 5, y1: 0.5, x2: 9, y2: 0.5 });
+      const sensor = world.createBody({ x: 0, y: 0, type: 'static' });
+      world.addShape(sensor, { kind: 'box', width: 40, height: 40, sensor: true });
+      world.createBox({ x: 0, y: -1, width: 1, height: 1, vy: 3 });
+      world.createBox({ x: 7, y: -1, width: 1, height: 1, vy: 3 });
+      let touches = 0;
+      let sensed = 0;
+      let hits = 0;
+      for (let s = 0; s < 60; s++) {
+        world.step(DT);
+        const e = world.contactEvents();
+        touches += e.beginCount + e.endCount + e.shapeBeginCount + e.shapeEndCount + e.segmentBeginCount + e.segmentEndCount;
+        sensed += e.sensorBeginCount;
+        hits += e.hitCount + e.segmentHitCount;
+      }
+      const label = JSON.stringify(options);
+      expect(sensed, label).toBe(2);
+      if (options.contactEvents === true) expect(touches, label).toBeGreaterThan(0);
+      else expect(touches, label).toBe(0);
+      if ('hitEventThreshold' in options) expect(hits, label).toBeGreaterThanOrEqual(2);
+    }
+  });
+
   it('segments and the box walls report touches and hits with shapes', () => {
     const world = new World({ bounds: { width: 20, height: 20 }, gravity: { x: 0, y: 10 }, restitution: 0, friction: 0.5, hitEventThreshold: 1 });
     world.createSegment({ x1: 0, y1: 10, x2: 10, y2: 10 });

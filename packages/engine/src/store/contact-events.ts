@@ -342,6 +342,18 @@ export class ContactEvents implements ContactEventsView {
     this.touchingWalls.count = 0;
   }
 
+  /**
+   * Empties this step's begin and end lists, bodies', shapes', segments' and walls', keeping the
+   * touches they were diffed from: for a world that records hits or sensors' overlaps without
+   * `contactEvents`, which lists no touches.
+   */
+  dropTouches(): void {
+    this.touches.clear();
+    this.segmentTouches.clear();
+    this.wallTouches.clear();
+    this.shapeTouches.clear();
+  }
+
   /** The body in slot i touches the segment in slot s (called in ascending (i, s) order). */
   noteSegmentTouch(i: number, s: number): void {
     this.touchingSegments.push(i, s);
