@@ -118,7 +118,7 @@ export class ShapeRoute {
       if (sweep) this.sweep(queries, -1 - queryVersion, false, Infinity);
     }
     const t4 = nowMs();
-    if (settings.box) this.contain(settings.box);
+    if (settings.box) this.contain(settings.box, elastic ? 0 : settings.slop);
     const t5 = nowMs();
     const sleeping = settings.sleeping;
     if (sleeping.enabled) this.islands.update(bodies, contacts, joints?.store ?? null, dt, sleeping.speed, sleeping.time);
@@ -215,8 +215,14 @@ export class ShapeRoute {
     tree.finish();
   }
 
-  /** Moves each moving body whose shapes reach past the box back inside it (centred if it is wider). */
-  private contain(box: { width: number; height: number }): void {
+  /**
+   * Moves each moving body whose shapes reach past the box by more than `allowance` back to that
+   * far in (centred if it is wider). The soft step's wall contacts, as all its contacts, rest up
+   * to a slop deep: moved out of that, bodies along a wall were pushed into their neighbours
+   * every step, which the solve made motion, and a pile of 300 boxes in the box never slept
+   * where it slept between static walls.
+   */
+  private contain(box: { width: number; height: number }, allowance: number): void {
     const { bodies, shapes } = this;
     const { x, y, radius, type, slotCount } = bodies;
     const rigid = bodies.rigid!;
@@ -227,7 +233,7 @@ export class ShapeRoute {
       const px = x[i];
       const py = y[i];
       const r = radius[i];
-      if (px - r >= 0 && px + r <= width && py - r >= 0 && py + r <= height) continue;
+      if (px - r >= -allowance && px + r <= width + allowance && py - r >= -allowance && py + r <= height + allowance) continue;
       if (rigid.firstShape[i] < 0) {
         this.containPoint(i, width, height);
         continue;
@@ -243,8 +249,8 @@ export class ShapeRoute {
       pose[2] = rigid.c[i];
       pose[3] = rigid.s[i];
       bodyBounds(shapes, rigid.firstShape[i], pose, bounds);
-      x[i] = qx + containShift(bounds[0], bounds[2], width);
-      y[i] = qy + containShift(bounds[1], bounds[3], height);
+      x[i] = qx + containShift(bounds[0], bounds[2], width, allowance);
+      y[i] = qy + containShift(bounds[1], bounds[3], height, allowance);
     }
   }
 
@@ -265,10 +271,10 @@ export class ShapeRoute {
   }
 }
 
-/** How far to move [lo, hi] to lie within [0, size]: centred when it is wider than that. */
-function containShift(lo: number, hi: number, size: number): number {
+/** How far to move [lo, hi] to lie within [-allowance, size + allowance]: centred in [0, size] when it is wider than that. */
+function containShift(lo: number, hi: number, size: number, allowance: number): number {
   if (hi - lo > size) return size / 2 - (lo + hi) / 2;
-  if (lo < 0) return -lo;
-  if (hi > size) return size - hi;
+  if (lo < -allowance) return -allowance - lo;
+  if (hi > size + allowance) return size + allowance - hi;
   return 0;
 }
