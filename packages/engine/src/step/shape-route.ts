@@ -236,7 +236,9 @@ export class ShapeRoute {
       const px = x[i];
       const py = y[i];
       const r = radius[i];
-      if (px - r >= -allowance && px + r <= width + allowance && py - r >= -allowance && py + r <= height + allowance) continue;
+      // At most half the body's smallest extent, so that a body smaller than the slop keeps its centre inside.
+      const a = Math.min(allowance, 0.5 * rigid.minExtent[i]);
+      if (px - r >= -a && px + r <= width + a && py - r >= -a && py + r <= height + a) continue;
       if (rigid.firstShape[i] < 0) {
         this.containPoint(i, width, height);
         continue;
@@ -252,8 +254,8 @@ export class ShapeRoute {
       pose[2] = rigid.c[i];
       pose[3] = rigid.s[i];
       bodyBounds(shapes, rigid.firstShape[i], pose, bounds);
-      x[i] = qx + containShift(bounds[0], bounds[2], width, allowance);
-      y[i] = qy + containShift(bounds[1], bounds[3], height, allowance);
+      x[i] = qx + containShift(bounds[0], bounds[2], width, a);
+      y[i] = qy + containShift(bounds[1], bounds[3], height, a);
     }
   }
 
