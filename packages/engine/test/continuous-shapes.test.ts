@@ -1,5 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { World } from '../src/index.js';
+import { impact, timeOfImpact, type Sweep } from '../src/solver/time-of-impact.js';
+import { WorldShape } from '../src/narrowphase/world-shape.js';
+import type { ShapeStore } from '../src/store/shape-store.js';
 
 const DT = 1 / 60;
 
@@ -463,6 +466,46 @@ describe('continuous collision with shapes', () => {
             // The landing step's sweep puts the body back at its impact (Box2D v3's 59.9 m of 60).
             expect(travel[0], `${lengthUnit} ${ground} ${body} ${drop}`).toBeGreaterThan(0.995 * travel[1]);
           }
+  });
+
+  it('a time of impact out of iterations gives the impact of the pose it stops at, not the last one found', () => {
+    // A rotation interpolated across an exact half turn has no bound on its rate: the advancement
+    // stays at t = 0 and runs out of iterations. It returned with `impact` as the last impact
+    // found anywhere, in any world, and a bounce read it: the same calls gave other bits after
+    // other worlds had swept (found by a fuzzing audit).
+    const world = new World();
+    world.createBox({ x: 0, y: 0, width: 1, height: 0.5 });
+    const store = (world as unknown as { shapes: { store: ShapeStore } }).shapes.store;
+    const other = new WorldShape().circle(10, 0, 1);
+    const sweep: Sweep = { x0: 0, y0: 0, c0: 1, s0: 0, x1: 5, y1: 0, c1: -1, s1: 0, reach: 0.6, split: false, cm: 1, sm: 0 };
+    for (const stale of [0.6, -0.8]) {
+      impact.nx = stale;
+      impact.ny = 0.8;
+      expect(timeOfImpact(store, 0, sweep, other, 0.005, 0.00125)).toBe(0);
+      expect([impact.nx, impact.ny]).toEqual([1, 0]);
+      expect(impact.x).toBeCloseTo(0.5 + (10 - 1 - 0.5) / 2, 12);
+    }
+  });
+
+  it('the elastic pass bounces a plank spun near a half turn a step off a segment, rather than holding it there', () => {
+    // Interpolated in one piece across nearly a half turn, the rotation's rate bound grew without
+    // limit: the time of impact ran out of iterations step after step, and a capsule spun 179
+    // degrees a step stood by the segment, never bouncing. Split at the turn's midpoint, it bounces.
+    for (const turn of [150, 170, 175, 179, 179.9, 181, 190])
+      for (const kind of ['box', 'capsule'] as const) {
+        const world = new World({ solver: 'elastic', restitution: 1, friction: 0, maxLinearSpeed: 1e7 });
+        world.createSegment({ x1: 0, y1: -100, x2: 0, y2: 100 });
+        const start = { x: -3, y: 0.3, angle: 0.5, vx: 30, angularVelocity: ((turn * Math.PI) / 180) * 60 };
+        const h = kind === 'box' ? world.createBox({ ...start, width: 1.7, height: 0.1 }) : world.createCapsule({ ...start, length: 1.7, radius: 0.11 });
+        const energy = world.kineticEnergy();
+        for (let s = 0; s < 16; s++) {
+          world.step(DT);
+          expect(world.getBody(h).x, `${kind} ${turn} ${s}`).toBeLessThan(0);
+        }
+        expect(world.getBody(h).x, `${kind} ${turn}`).toBeLessThan(-3);
+        expect(world.getBody(h).vx, `${kind} ${turn}`).toBeLessThan(0);
+        expect(world.kineticEnergy() / energy, `${kind} ${turn}`).toBeCloseTo(1, 9);
+      }
   });
 
   it('the elastic pass, which caps no spin, stops a plank turning up to a whole turn a step at a segment', () => {

@@ -14,7 +14,7 @@ import { collide } from '../narrowphase/dispatch.js';
 import { twoPointImpulses } from './two-point-impulses.js';
 import { coulombImpulse } from './coulomb-friction.js';
 import type { ContactEvents } from '../store/contact-events.js';
-import { impact, sweepRotation, timeOfImpact, TOUCHING, vertexCrosses, type Sweep } from './time-of-impact.js';
+import { impact, splitTurn, sweepRotation, timeOfImpact, TOUCHING, vertexCrosses, type Sweep } from './time-of-impact.js';
 
 /** A body moving less than this fraction of its smallest extent in a step is left to the contacts (Box2D's safety factor). */
 const SAFETY = 0.5;
@@ -71,7 +71,7 @@ export class ContinuousShapes {
   private y0 = new Float64Array(0);
   private c0 = new Float64Array(0);
   private s0 = new Float64Array(0);
-  private readonly sweep: Sweep = { x0: 0, y0: 0, c0: 1, s0: 0, x1: 0, y1: 0, c1: 1, s1: 0, reach: 0 };
+  private readonly sweep: Sweep = { x0: 0, y0: 0, c0: 1, s0: 0, x1: 0, y1: 0, c1: 1, s1: 0, reach: 0, split: false, cm: 1, sm: 0 };
   private readonly found: number[] = [];
   /** Bodies swept in the last step. */
   swept = 0;
@@ -178,6 +178,7 @@ export class ContinuousShapes {
         sweep.c1 = c[i];
         sweep.s1 = s[i];
         sweep.reach = reach;
+        splitTurn(sweep, rigid.angularVelocity[i]);
         const minX = Math.min(sweep.x0, sweep.x1) - reach;
         const minY = Math.min(sweep.y0, sweep.y1) - reach;
         const maxX = Math.max(sweep.x0, sweep.x1) + reach;
