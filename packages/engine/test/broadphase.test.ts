@@ -196,6 +196,33 @@ describe('hashgrid (Max Grid cells in a hash table)', () => {
     );
   });
 
+  it('pairs no body with itself when it lies past 2^53 cells out (the elastic pass moves bodies before the box contains them)', () => {
+    // Past 2^53, cx + 1 === cx: the neighbour cells were the body's own, scanned again.
+    const run = (broadphase: 'naive' | 'hashgrid', vx: number, gravity: number): [string, number[][]] => {
+      const world = new World({ bounds: { width: 60, height: 40 }, solver: 'elastic', broadphase, contactEvents: true, gravity: { x: gravity, y: -7.49 } });
+      world.createCapsule({ x: 25.74, y: 34.58, vx: -5.95, vy: 7.79, length: 1.18, radius: 0.97 });
+      world.createCapsule({ x: 3.47, y: 26.45, length: 2.9, radius: 0.72 });
+      world.createCircle({ x: 15.57, y: 4.02, vx, vy: -vx, radius: 0.86 });
+      world.createCircle({ x: 57.91, y: 35.02, radius: 1.1 });
+      const begins: number[][] = [];
+      for (let s = 0; s < 3; s++) {
+        world.step(1 / 60);
+        const e = world.contactEvents();
+        for (let k = 0; k < e.beginCount; k++) begins.push([e.beginA[k], e.beginB[k]]);
+      }
+      return [world.stateHash(), begins];
+    };
+    for (const [vx, gravity] of [
+      [1e30, 0],
+      [0, 1e30],
+      [1e20, -1e25],
+    ]) {
+      const [hash, begins] = run('hashgrid', vx, gravity);
+      expect(begins.every(([a, b]) => a !== b), `${vx} ${gravity}`).toBe(true);
+      expect([hash, begins], `${vx} ${gravity}`).toEqual(run('naive', vx, gravity));
+    }
+  });
+
   it('examines as few pairs per body with two crowds a million units apart as Max Grid does with the crowds side by side', () => {
     const build = (broadphase: 'hashgrid' | 'maxgrid', apart: number) => {
       const world = new World({ broadphase });

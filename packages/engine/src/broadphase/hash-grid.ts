@@ -151,12 +151,18 @@ export class HashGridBroadPhase implements BroadPhase {
     let examined = 0;
     let cx = NaN;
     let cy = NaN;
+    // Whether the cell's neighbours are itself: cell numbers past 2^53, where cx + 1 === cx (a
+    // body far outside the extent, which the elastic pass moves before containment brings it
+    // back). Its own cell is then scanned once, from the body on: scanned again as a neighbour,
+    // it paired the body with itself.
+    let collapsed = false;
     for (let k = 0; k < n; k++) {
       const at = k * BODY;
       // A cell's bodies lie together in its bucket: its neighbours' buckets are found once for them all.
       if (sorted[at + CELL_X] !== cx || sorted[at + CELL_Y] !== cy) {
         cx = sorted[at + CELL_X];
         cy = sorted[at + CELL_Y];
+        collapsed = cx + 1 === cx || cx - 1 === cx || cy + 1 === cy;
         for (let side = 0; side < 5; side++) {
           const b = this.bucket(cx + SIDE_X[side], cy + SIDE_Y[side]);
           range[2 * side] = bucketStart[b];
@@ -172,6 +178,7 @@ export class HashGridBroadPhase implements BroadPhase {
       for (let side = 0; side < 5; side++) {
         const ox = cx + SIDE_X[side];
         const oy = cy + SIDE_Y[side];
+        if (collapsed && side > 0 && sameAsEarlierSide(cx, cy, side)) continue;
         const to = range[2 * side + 1];
         for (let m = range[2 * side]; m < to; m++) {
           const o = m * BODY;
@@ -186,4 +193,14 @@ export class HashGridBroadPhase implements BroadPhase {
     }
     return examined;
   }
+}
+
+/** Whether neighbour `side` of cell (cx, cy) rounds to the cell itself or to a side before it. */
+function sameAsEarlierSide(cx: number, cy: number, side: number): boolean {
+  const ox = cx + SIDE_X[side];
+  const oy = cy + SIDE_Y[side];
+  for (let earlier = 0; earlier < side; earlier++) {
+    if (cx + SIDE_X[earlier] === ox && cy + SIDE_Y[earlier] === oy) return true;
+  }
+  return false;
 }
