@@ -168,10 +168,9 @@ export const TOUCHING = -2;
  * >= 0, that vertex of the shape alone (a corner of a polygon, an end of a capsule's core), as a
  * point: as a disc of the capsule's radius, an end lying on a surface would start the step
  * touching it and never be swept. With `sink` (the soft step's sweep of a whole shape), a shape
- * with rounding stops as far into the surface as Box2D v3 lets it, its cores `target` nearer than
- * the roundings allow: stopped `target` short, a ball skimming the ground at 20 m/s lost a fifth
- * of its landing step's travel, for good, and a capsule landing on its end bounced. (The elastic
- * pass bounces a body at its impact itself, and stops it short.)
+ * with rounding stops up to `target` into the surface, as Box2D v3 lets it: stopped `target`
+ * short, a ball skimming the ground at 20 m/s lost a fifth of its landing step's travel, for
+ * good. (The elastic pass bounces a body at its impact itself, and stops it short.)
  */
 export function timeOfImpact(shapes: ShapeStore, slot: number, sweep: Sweep, other: WorldShape, target: number, tolerance: number, core = -1, vertex = -1, sink = false): number {
   if (sink && core < 0 && vertex < 0) {
