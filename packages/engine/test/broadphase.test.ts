@@ -221,6 +221,17 @@ describe('hashgrid (Max Grid cells in a hash table)', () => {
       expect(begins.every(([a, b]) => a !== b), `${vx} ${gravity}`).toBe(true);
       expect([hash, begins], `${vx} ${gravity}`).toEqual(run('naive', vx, gravity));
     }
+    // Rows rounded together (cy + 1 === cy): the cell to the left's (+1, 0) and this cell's
+    // (-1, +1) are the same two cells, and the pair was found twice.
+    const twice = (broadphase: 'naive' | 'hashgrid'): [string, number] => {
+      const world = new World({ bounds: { width: 60, height: 40 }, solver: 'elastic', broadphase });
+      world.createCircle({ x: 7.276616344228387, y: 4.488070164807141, radius: 0.2548282613279298 });
+      world.setGravity(4.74199419375509, -1e30);
+      world.createBox({ x: 5.181496420875192, y: 24.45201675593853, vx: 7.637305185198784, vy: -9.563489649444818, width: 3.4213730142917482, height: 0.5781265089288354 });
+      world.step(1 / 30);
+      return [world.stateHash(), world.stats.candidatePairs];
+    };
+    expect(twice('hashgrid')).toEqual(twice('naive'));
   });
 
   it('examines as few pairs per body with two crowds a million units apart as Max Grid does with the crowds side by side', () => {

@@ -151,11 +151,12 @@ export class HashGridBroadPhase implements BroadPhase {
     let examined = 0;
     let cx = NaN;
     let cy = NaN;
-    // Whether the cell's neighbours are itself: cell numbers past 2^53, where cx + 1 === cx (a
-    // body far outside the extent, which the elastic pass moves before containment brings it
-    // back). Its own cell is then scanned once, from the body on: scanned again as a neighbour,
-    // it paired the body with itself.
+    // Cell numbers past 2^53, where cx + 1 === cx (a body far outside the extent, which the
+    // elastic pass moves before containment brings it back): the neighbours are then those of
+    // keptSides, or a neighbour that is the cell itself paired a body with itself, and one that is
+    // another's neighbour the other way round found a pair twice.
     let collapsed = false;
+    let kept = 0;
     for (let k = 0; k < n; k++) {
       const at = k * BODY;
       // A cell's bodies lie together in its bucket: its neighbours' buckets are found once for them all.
@@ -163,6 +164,7 @@ export class HashGridBroadPhase implements BroadPhase {
         cx = sorted[at + CELL_X];
         cy = sorted[at + CELL_Y];
         collapsed = cx + 1 === cx || cx - 1 === cx || cy + 1 === cy;
+        if (collapsed) kept = keptSides(cx, cy);
         for (let side = 0; side < 5; side++) {
           const b = this.bucket(cx + SIDE_X[side], cy + SIDE_Y[side]);
           range[2 * side] = bucketStart[b];
@@ -178,7 +180,7 @@ export class HashGridBroadPhase implements BroadPhase {
       for (let side = 0; side < 5; side++) {
         const ox = cx + SIDE_X[side];
         const oy = cy + SIDE_Y[side];
-        if (collapsed && side > 0 && sameAsEarlierSide(cx, cy, side)) continue;
+        if (collapsed && (kept & (1 << side)) === 0) continue;
         const to = range[2 * side + 1];
         for (let m = range[2 * side]; m < to; m++) {
           const o = m * BODY;
@@ -195,12 +197,23 @@ export class HashGridBroadPhase implements BroadPhase {
   }
 }
 
-/** Whether neighbour `side` of cell (cx, cy) rounds to the cell itself or to a side before it. */
-function sameAsEarlierSide(cx: number, cy: number, side: number): boolean {
-  const ox = cx + SIDE_X[side];
-  const oy = cy + SIDE_Y[side];
-  for (let earlier = 0; earlier < side; earlier++) {
-    if (cx + SIDE_X[earlier] === ox && cy + SIDE_Y[earlier] === oy) return true;
+/**
+ * The sides of cell (cx, cy), as bits, that make its half neighbourhood once its numbers round:
+ * the cell itself, and each neighbour whose offset, as rounded, still lies ahead (a row below, or
+ * the same row to the right), once. With rows rounded together, (-1, +1) is the cell to the left,
+ * which scans this one as its own (+1, 0).
+ */
+function keptSides(cx: number, cy: number): number {
+  let kept = 1;
+  for (let side = 1; side < 5; side++) {
+    const ex = cx + SIDE_X[side] - cx;
+    const ey = cy + SIDE_Y[side] - cy;
+    if (!(ey > 0 || (ey === 0 && ex > 0))) continue;
+    let repeated = false;
+    for (let earlier = 1; earlier < side; earlier++) {
+      if ((kept & (1 << earlier)) !== 0 && cx + SIDE_X[earlier] === cx + SIDE_X[side] && cy + SIDE_Y[earlier] === cy + SIDE_Y[side]) repeated = true;
+    }
+    if (!repeated) kept |= 1 << side;
   }
-  return false;
+  return kept;
 }
