@@ -246,6 +246,47 @@ describe('determinism with shapes', () => {
     }
   });
 
+  it('a colouring is kept only from the step just before: not across steps of the elastic pass', () => {
+    // Under solver 'auto' a step of the elastic pass (an elastic gas for a step) came between: its
+    // empty list was unchanged from the soft step's next one, and the soft step kept its colouring
+    // from two steps before, with the lanes of a contact since gone, and solved that contact again
+    // (found by a fuzzing audit: the step gave other bits than a restored world's, and than
+    // without kept colourings).
+    const V1 = [{ x: 1.517130988910406, y: -1.0512525866708464 }, { x: 1.1516634182285108, y: -1.4645604875609204 }, { x: -0.79644243894712, y: -1.6676068335310135 }, { x: -1.070772385795156, y: 1.5106510002695066 }, { x: -0.875094410917537, y: 1.6368756729551563 }, { x: 0.846314466117781, y: 1.6606184413842322 }];
+    const V2 = [{ x: 0.5771588493529535, y: -0.5255670956842922 }, { x: -0.13071073141816855, y: -0.7690374659316916 }, { x: -0.3362298091197536, y: -0.6947582818902753 }, { x: -0.7363322872324207, y: -0.24272386844856342 }, { x: -0.7633505100990383, y: -0.06513258120110252 }, { x: -0.7642466270664046, y: 0.15114170752648645 }, { x: -0.6530832393355971, y: 0.4199580379873706 }, { x: 0.11959286147274037, y: 0.7615514991005079 }];
+    const upToLastStep = (): World => {
+  const w = new World({});
+  w.createBox({ x: 17.869775054976344, y: 8.240970456972718, vx: 4.8404556280002, vy: -2.958930963650346, type: 'kinematic', width: 3.0442145354114474, height: 2.871149443462491 });
+  w.createBox({ x: 30.27502649091184, y: 3.2558424724265933, angle: 1.15886251302436, angularVelocity: -1.9036026112735271, type: 'kinematic', width: 2.97261795992963, height: 1.1435028908541427 });
+  w.createCircle({ x: 30.80984047241509, y: 29.900380451232195, radius: 0.4991015747888014 });
+  w.createPolygon({ x: 25.924249093979597, y: 2.897055526264012, bullet: true, vertices: V1, friction: 0.8, rollingResistance: 0.1 });
+  w.createPolygon({ x: 20.64320858567953, y: 6.702339947223663, angle: 1.6983609502203763, bullet: true, linearDamping: 10, vertices: V2 });
+  w.step(1 / 60); w.step(1 / 60);
+  w.createCircle({ x: 11.805963676422834, y: 20.16424116306007, angle: 1.7098017311654985, bullet: true, radius: 1.1798371216282248, friction: 0 });
+  w.createCircle({ x: 23.03307789377868, y: 36.09697826113552, radius: 0.8618849253747614, restitution: 1.5 });
+  w.createCircle({ x: 39.001506155356765, y: 29.98650320712477, angle: -0.125284924171865, radius: 0.7305872102733701 });
+  w.createBox({ x: 35.57952913083136, y: 19.659992204979062, angle: 0.48533026361837983, type: 'static', width: 2.491156465606764, height: 1.4831867469707505 });
+  w.step(1 / 60); w.step(1 / 60);
+  w.createBody({ x: 11.39090553112328, y: 35.3472515726462, angle: 2.8869849164038897 });
+  w.step(1 / 60); w.step(1 / 60); w.step(1 / 60);   // a contact of body 4 begins here
+  w.destroyBody(3);
+  w.createCircle({ x: 22.114426337182522, y: 28.275491683743894, angularVelocity: -4.458457762375474, radius: 1.355710460874252 });
+  w.step(1 / 60);                                    // ... and ends
+  w.createJoint({ kind: 'weld', bodyA: 4, bodyB: 7, linearHertz: 2, dampingRatio: 0 });
+  return w;
+    };
+    const plain = upToLastStep();
+    const restored = World.restore(plain.snapshot());
+    plain.step(1 / 60);
+    restored.step(1 / 60);
+    setColourReuse(false);
+    const fresh = upToLastStep();
+    fresh.step(1 / 60);
+    setColourReuse(true);
+    expect(plain.stateHash()).toBe(restored.stateHash());
+    expect(plain.stateHash()).toBe(fresh.stateHash());
+  });
+
   it('random calls on a settling pile give the same bits with kept colourings and lanes as without', () => {
     // Steps of every length (0 included) between calls that change what a kept lane was prepared
     // with: masses (a shape added or removed, a type, a fixed rotation), sleep, a teleport.

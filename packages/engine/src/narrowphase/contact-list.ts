@@ -144,6 +144,10 @@ export class ContactList {
   /** The step a slot was last listed in (see begin), so that finish frees the rest. */
   private listed = new Uint32Array(0);
   private epoch = 0;
+  /** How many steps' lists this list has begun (see begin): a solver that keeps what it made of a list checks that it saw the one before. */
+  get steps(): number {
+    return this.epoch;
+  }
   /**
    * Whether this step's list is last step's: the same contacts in the same slots (set by finish).
    * The soft step then keeps its colouring, which depends on nothing else but the awake bodies.

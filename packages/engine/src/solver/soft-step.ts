@@ -204,6 +204,8 @@ export class SoftStep {
   /** The awake bodies the last colouring was made for, and how many (-1: none yet); see colourAgain. */
   private colouredAwake = new Int32Array(0);
   private colouredCount = -1;
+  /** The contact list's step (ContactList.steps) the colouring was last made or kept for. */
+  private colouredStep = -1;
   /**
    * Whether every lane holds what the last prepare wrote into it: the colouring it was made for
    * is still the current one, and no array was replaced since. Not part of a snapshot (the
@@ -525,7 +527,13 @@ export class SoftStep {
    * half a millisecond of a 5,050-box pyramid's 9.4.
    */
   private colourAgain(contacts: ContactList): boolean {
-    if (reusingColours && contacts.unchanged && this.awakeCount === this.colouredCount && this.sameAwake()) {
+    // `unchanged` compares the list with the one before, which must be the one coloured: lists
+    // the soft step never saw come between (steps of the elastic pass under solver 'auto', a
+    // second collision pass in a step that woke sleepers). An empty list after an elastic step,
+    // unchanged from it, kept the lanes of a contact two steps gone and solved it again.
+    const seenBefore = contacts.steps === this.colouredStep + 1;
+    this.colouredStep = contacts.steps;
+    if (reusingColours && contacts.unchanged && seenBefore && this.awakeCount === this.colouredCount && this.sameAwake()) {
       this.coloursKept++;
       return false;
     }

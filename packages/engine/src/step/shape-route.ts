@@ -109,9 +109,6 @@ export class ShapeRoute {
       for (let k = 0; k < narrow.wakeCount; k++) bodies.wake(narrow.wake[k]);
       pairTests = this.findPairs(broad, elastic);
       this.build(elastic, dt);
-      // The list compares itself with the first pass's, which no solve saw: said unchanged, it
-      // kept the colouring of the step before, whose lanes held none of its contacts.
-      narrow.current.unchanged = false;
     }
     const t3 = nowMs();
     const contacts = narrow.current;
