@@ -66,7 +66,7 @@ export function rayCircleEntry(x1: number, y1: number, dx: number, dy: number, c
  * would break determinism across runtimes). Huge and tiny inputs are scaled by a power of two,
  * which is exact, chosen by fixed thresholds rather than Math.log2 (not exact either).
  */
-function norm(x: number, y: number): number {
+export function norm(x: number, y: number): number {
   const largest = Math.max(Math.abs(x), Math.abs(y));
   const scale = largest > 2 ** 500 ? 2 ** -600 : largest < 2 ** -500 ? 2 ** 600 : 1;
   const sx = x * scale;

@@ -2,7 +2,7 @@ import type { ShapeStore } from '../store/shape-store.js';
 import { ShapeKind } from '../shapes/geometry.js';
 import { WorldShape } from '../narrowphase/world-shape.js';
 import { ShapeDistance } from '../narrowphase/distance.js';
-import { rayCircle, rayCircleEntry } from './ray-circle.js';
+import { norm, rayCircle, rayCircleEntry } from './ray-circle.js';
 import { rayCapsule } from './ray-capsule.js';
 import { poseOf, shapeBounds } from '../shapes/bounds.js';
 
@@ -69,9 +69,7 @@ export function rayShape(shapes: ShapeStore, slot: number, px: number, py: numbe
   let reach = 0;
   for (let i = 0; i < g.count; i++) reach = Math.max(reach, Math.abs(g.x[i] - px) + Math.abs(g.y[i] - py));
   reach = 2 * (reach + r);
-  // The direction over its larger component first, so that no square overflows.
-  const largest = Math.max(Math.abs(dx), Math.abs(dy));
-  const length = largest * norm(dx / largest, dy / largest);
+  const length = norm(dx, dy);
   const ux = dx / length;
   const uy = dy / length;
   const along = (px - x1) * ux + (py - y1) * uy;
@@ -86,11 +84,6 @@ export function rayShape(shapes: ShapeStore, slot: number, px: number, py: numbe
   const t = rayShapeFrom(g, sx, sy, ex, ey);
   const from = Math.min((along - reach) / length, 1);
   return t < 0 ? t : from + t * (1 - from);
-}
-
-/** sqrt(x^2 + y^2) for |x|, |y| <= 1, one of them 1. */
-function norm(x: number, y: number): number {
-  return Math.sqrt(x * x + y * y);
 }
 
 /** rayShape for a polygon or capsule already placed, `g`, from a start near it. */
