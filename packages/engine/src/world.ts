@@ -183,6 +183,7 @@ export class World {
     this.resolved = resolved;
     this.bounds = resolved.bounds;
     this.bodies.box = resolved.bounds;
+    this.bodies.speedCap = resolved.maxLinearSpeed ?? MAX_MAGNITUDE;
     // Static bodies are paired with moving ones through the static index, never in the broad-phase.
     this.bodies.setStaticsApart();
     this.defaultRestitution = resolved.restitution;
@@ -1675,6 +1676,8 @@ export class World {
     const settings = shapeRouteSettings(this.resolved, this.pipeline.settings.gravity);
     settings.integrator = this.integratorChoice;
     this.shapes.engage(settings.margin);
+    // The shape route's integration takes its own limit (ShapeRouteSettings.soft).
+    this.bodies.speedCap = MAX_MAGNITUDE;
     this.queries.shapes = this.shapes.store;
     this.shapeRoute = new ShapeRoute(this.bodies, this.shapes.store, this.segments, settings);
     this.staticVersion++;

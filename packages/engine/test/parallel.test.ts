@@ -252,6 +252,26 @@ describe('parallel step', () => {
     });
   });
 
+  it('keeps a given speed limit through motion on every thread count, with the serial bits (the limit reaches the workers)', async () => {
+    const limited = uniform(3000, { maxLinearSpeed: 40 });
+    await expectSameBits(limited, 30, (world, step) => {
+      if (step % 5 === 0) world.setVelocity(world.handles()[step * 7], 3e4, -4e4);
+    });
+    const world = limited();
+    await world.startWorkers(2, { minBodies: 0, adaptive: false });
+    try {
+      const h = world.handles()[100];
+      world.step(1 / 60);
+      world.setVelocity(h, 3e4, -4e4);
+      const before = world.getCircle(h);
+      world.step(1 / 60);
+      const after = world.getCircle(h);
+      expect(Math.hypot(after.x - before.x, after.y - before.y)).toBeLessThanOrEqual((40 / 60) * (1 + 1e-12));
+    } finally {
+      world.stopWorkers();
+    }
+  });
+
   it("auto's turn to the hashed grid when two crowds far apart make the grid's cells huge happens on workers too, with the serial bits", async () => {
     const outliers = () => {
       const world = new World({ broadphase: 'auto' });

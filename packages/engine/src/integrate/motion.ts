@@ -1,11 +1,34 @@
 import type { BodyStore } from '../store/body-store.js';
+import { MAX_MAGNITUDE } from '../util/validate.js';
+import { capSpeed } from '../solver/speed-limit.js';
 
 /**
- * Whether any body needs more than "velocity plus uniform gravity". Plain scenes, the report's
- * and the lab's, keep the short loop that touches four columns; the general loop reads five more.
+ * Whether any body needs more than "velocity plus uniform gravity", or the circle route's motion a
+ * speed limit (BodyStore.speedCap). Plain scenes, the report's and the lab's, keep the short loop
+ * that touches four columns; the general loop reads five more.
  */
 export function needsGeneralMotion(bodies: BodyStore): boolean {
-  return bodies.customMotionCount > 0 || bodies.forcesPending || bodies.sleepingCount > 0;
+  return bodies.customMotionCount > 0 || bodies.forcesPending || bodies.sleepingCount > 0 || bodies.speedCap < MAX_MAGNITUDE;
+}
+
+/** capSpeed's answer. */
+const capped = new Float64Array(2);
+
+/**
+ * The velocity (vx, vy) at most `maxSpeed` (capSpeed), into out: the velocity a body moves
+ * with in the general loops, which keep the speed limit through a step as Box2D does (it caps
+ * the velocity before moving a body): a velocity set between steps, or a force's change, would
+ * otherwise carry it any distance before the step's last stage caps it. Its own bits within.
+ */
+export function moveVelocity(vx: number, vy: number, maxSpeed: number, out: Float64Array): void {
+  if (vx * vx + vy * vy <= maxSpeed * maxSpeed) {
+    out[0] = vx;
+    out[1] = vy;
+    return;
+  }
+  capSpeed(vx, vy, maxSpeed, capped);
+  out[0] = capped[0];
+  out[1] = capped[1];
 }
 
 /** Forces last one step: the step applies them, then this clears them. */

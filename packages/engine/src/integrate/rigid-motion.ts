@@ -4,9 +4,12 @@ import { BodyFlag } from '../store/rigid-columns.js';
 import { turn } from '../math/trig.js';
 import { needsGeneralMotion } from './motion.js';
 import type { IntegratorName } from './integrator.js';
+import { capSpeed } from '../solver/speed-limit.js';
 
 /** The turn of a step, for `turn` (see there). */
 const angle = new Float64Array(1);
+/** capSpeed's answer. */
+const capped = new Float64Array(2);
 
 /**
  * Integration of bodies that turn, for the shape route's elastic pass (the soft step integrates
@@ -16,13 +19,19 @@ const angle = new Float64Array(1);
  * velocity, where the first-order step the soft solver takes per small sub-step would lag by
  * atan(w dt) against w dt.
  * Kinematic bodies move and turn as they were told; sleepers and static bodies stay.
+ *
+ * A dynamic body moves at most `maxSpeed` (the world's maxLinearSpeed), as Box2D caps the
+ * velocity before it moves a body: a velocity set between steps, or a force's change, would
+ * otherwise carry it any distance before the step's last stage caps its speed. Under the cap, the
+ * same bits as without it.
  */
-export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: number, integrator: IntegratorName): void {
+export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: number, integrator: IntegratorName, maxSpeed: number): void {
   const explicit = integrator === 'explicit-euler';
   // Under forces constant over the step Runge-Kutta's four stages agree: the exact parabola,
   // x + (v + a dt / 2) dt, which is the mean of the two Euler methods' positions.
   const rk4 = integrator === 'rk4';
-  if (!needsGeneralMotion(bodies)) return integratePlain(bodies, gx, gy, dt, explicit, rk4);
+  if (!needsGeneralMotion(bodies)) return integratePlain(bodies, gx, gy, dt, explicit, rk4, maxSpeed);
+  const maxSq = maxSpeed * maxSpeed;
   const { x, y, vx, vy, type, asleep, invMass, gravityScale, linearDamping, forceX, forceY, slotCount } = bodies;
   const rigid = bodies.rigid!;
   const { c, s, angularVelocity, invInertia, torque, angularDamping, flags } = rigid;
@@ -41,8 +50,15 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
       const alpha = invInertia[i] * torque[i];
       const spin = 1 / (1 + dt * angularDamping[i]);
       if (explicit || rk4) {
-        x[i] += rk4 ? (vx[i] + 0.5 * ax * dt) * dt : vx[i] * dt;
-        y[i] += rk4 ? (vy[i] + 0.5 * ay * dt) * dt : vy[i] * dt;
+        let ux = rk4 ? vx[i] + 0.5 * ax * dt : vx[i];
+        let uy = rk4 ? vy[i] + 0.5 * ay * dt : vy[i];
+        if (!(ux * ux + uy * uy <= maxSq)) {
+          capSpeed(ux, uy, maxSpeed, capped);
+          ux = capped[0];
+          uy = capped[1];
+        }
+        x[i] += ux * dt;
+        y[i] += uy * dt;
         vx[i] = (vx[i] + ax * dt) * damping;
         vy[i] = (vy[i] + ay * dt) * damping;
         const fixed = (flags[i] & BodyFlag.fixedRotation) !== 0;
@@ -52,6 +68,7 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
       } else {
         vx[i] = (vx[i] + ax * dt) * damping;
         vy[i] = (vy[i] + ay * dt) * damping;
+        if (!(vx[i] * vx[i] + vy[i] * vy[i] <= maxSq)) capInPlace(vx, vy, i, maxSpeed);
         x[i] += vx[i] * dt;
         y[i] += vy[i] * dt;
         w = (flags[i] & BodyFlag.fixedRotation) !== 0 ? 0 : (w + alpha * dt) * spin;
@@ -70,28 +87,32 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
  * arithmetic less the factors that are 1 and the terms that are 0, from half the columns (at
  * 64,000 bodies the loop is bound by memory: it reads each column once).
  */
-function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, explicit: boolean, rk4: boolean): void {
+function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, explicit: boolean, rk4: boolean, maxSpeed: number): void {
   const { x, y, vx, vy, type, slotCount } = bodies;
   const rigid = bodies.rigid!;
   const { c, s, angularVelocity, flags } = rigid;
   const dvx = gx * dt;
   const dvy = gy * dt;
+  const maxSq = maxSpeed * maxSpeed;
   for (let i = 0; i < slotCount; i++) {
     const t = type[i];
     if (t === TypeCode.dynamic) {
-      if (rk4) {
-        x[i] += (vx[i] + 0.5 * dvx) * dt;
-        y[i] += (vy[i] + 0.5 * dvy) * dt;
-        vx[i] += dvx;
-        vy[i] += dvy;
-      } else if (explicit) {
-        x[i] += vx[i] * dt;
-        y[i] += vy[i] * dt;
+      if (rk4 || explicit) {
+        let ux = rk4 ? vx[i] + 0.5 * dvx : vx[i];
+        let uy = rk4 ? vy[i] + 0.5 * dvy : vy[i];
+        if (!(ux * ux + uy * uy <= maxSq)) {
+          capSpeed(ux, uy, maxSpeed, capped);
+          ux = capped[0];
+          uy = capped[1];
+        }
+        x[i] += ux * dt;
+        y[i] += uy * dt;
         vx[i] += dvx;
         vy[i] += dvy;
       } else {
         vx[i] += dvx;
         vy[i] += dvy;
+        if (!(vx[i] * vx[i] + vy[i] * vy[i] <= maxSq)) capInPlace(vx, vy, i, maxSpeed);
         x[i] += vx[i] * dt;
         y[i] += vy[i] * dt;
       }
@@ -110,6 +131,13 @@ function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, e
     angle[0] = w * dt;
     turn(c, s, i, angle);
   }
+}
+
+/** Caps body i's velocity at maxSpeed where it is faster (capSpeed). */
+function capInPlace(vx: Float64Array, vy: Float64Array, i: number, maxSpeed: number): void {
+  capSpeed(vx[i], vy[i], maxSpeed, capped);
+  vx[i] = capped[0];
+  vy[i] = capped[1];
 }
 
 /**

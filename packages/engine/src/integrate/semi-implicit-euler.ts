@@ -1,6 +1,9 @@
 import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
-import { needsGeneralMotion } from './motion.js';
+import { moveVelocity, needsGeneralMotion } from './motion.js';
+
+/** moveVelocity's answer. */
+const moved = new Float64Array(2);
 
 /**
  * Symplectic (semi-implicit) Euler, as Box2D and Rapier use: velocity first, then position with
@@ -34,16 +37,18 @@ export function integrateSemiImplicitEuler(
   }
 }
 
-/** With per-body gravity scale, pending forces, damping or sleepers. */
+/** With per-body gravity scale, pending forces, damping, sleepers or a speed limit (see moveVelocity). */
 function general(bodies: BodyStore, gx: number, gy: number, dt: number, from: number, to: number): void {
   const { x, y, vx, vy, type, invMass, gravityScale, linearDamping, forceX, forceY, asleep } = bodies;
+  const maxSpeed = bodies.speedCap;
   for (let i = from; i < to; i++) {
     const t = type[i];
     if (t === TypeCode.dynamic) {
       if (asleep[i]) continue;
       const damping = 1 / (1 + dt * linearDamping[i]);
-      vx[i] = (vx[i] + (gx * gravityScale[i] + forceX[i] * invMass[i]) * dt) * damping;
-      vy[i] = (vy[i] + (gy * gravityScale[i] + forceY[i] * invMass[i]) * dt) * damping;
+      moveVelocity((vx[i] + (gx * gravityScale[i] + forceX[i] * invMass[i]) * dt) * damping, (vy[i] + (gy * gravityScale[i] + forceY[i] * invMass[i]) * dt) * damping, maxSpeed, moved);
+      vx[i] = moved[0];
+      vy[i] = moved[1];
       x[i] += vx[i] * dt;
       y[i] += vy[i] * dt;
     } else if (t === TypeCode.kinematic) {

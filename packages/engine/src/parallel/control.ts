@@ -104,6 +104,8 @@ export const Param = {
   maxRadius: 11,
   positionCorrection: 12,
   contactSlop: 13,
+  /** The body store's speedCap (the circle route's given speed limit), for the general motion loops. */
+  speedCap: 14,
   length: 16,
 } as const;
 

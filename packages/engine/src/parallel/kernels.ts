@@ -113,6 +113,7 @@ export class ThreadKernels {
     b.customMotionCount = c[Slot.customMotion];
     b.forcesPending = c[Slot.forcesPending] === 1;
     b.sleepingCount = c[Slot.sleeping];
+    b.speedCap = this.params[Param.speedCap];
     const g = this.grid;
     const p = this.params;
     g.columns = c[Slot.columns];

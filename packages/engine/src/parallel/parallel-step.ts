@@ -173,6 +173,7 @@ export class ParallelStep {
     p[Param.wallRestitution] = settings.wallRestitution;
     p[Param.restitutionThreshold] = settings.restitutionThreshold;
     p[Param.maxRadius] = b.maxRadius();
+    p[Param.speedCap] = b.speedCap;
     c[Slot.motionChunk] = 0;
     this.run(Command.motion);
   }

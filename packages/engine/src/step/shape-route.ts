@@ -93,7 +93,7 @@ export class ShapeRoute {
     const sweep = settings.continuous && (this.tree.count > 0 || this.bullets > 0);
     if (sweep) this.continuous.remember(bodies);
     if (elastic) {
-      integrateRigid(bodies, settings.gravity.x, settings.gravity.y, dt, settings.integrator);
+      integrateRigid(bodies, settings.gravity.x, settings.gravity.y, dt, settings.integrator, settings.soft.maxLinearSpeed);
       if (sweep) this.sweep(queries, -1 - queryVersion, true, events === null ? Infinity : hitThreshold);
     }
     const t1 = nowMs();

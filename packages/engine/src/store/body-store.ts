@@ -3,6 +3,7 @@ import { grownCapacity, grow, type Column } from '../util/grow.js';
 import { BodyKernel } from './body-kernel.js';
 import { JOINT_HANDLES, MAX_GENERATION, SEGMENT_HANDLES, SHAPE_HANDLES, SLOT_SPACE } from './handles.js';
 import { BodyFlag, RigidColumns } from './rigid-columns.js';
+import { MAX_MAGNITUDE } from '../util/validate.js';
 
 export { SLOT_SPACE, MAX_GENERATION, SEGMENT_HANDLES } from './handles.js';
 /** A mask with every collision layer. */
@@ -89,6 +90,12 @@ export class BodyStore {
   selectiveFilterCount = 0;
   /** True between applyForce and the next step. */
   forcesPending = false;
+  /**
+   * The circle route's speed limit where the world was given one (maxLinearSpeed): its motion then
+   * takes the general loop, which moves no dynamic body faster (see integrateSemiImplicitEuler).
+   * MAX_MAGNITUDE for none; the shape route passes its own limit to its integration.
+   */
+  speedCap = MAX_MAGNITUDE;
   /**
    * The world's box, when it has one: from the boundary stage on, every live centre lies inside
    * it, so grids can be laid over it without measuring the bodies' extent.
