@@ -103,6 +103,32 @@ describe('shape engines', () => {
     }
   });
 
+  it("a box comes to rest on a segment where it rests on a static box's top face: of thickness 0 to 2 mm, of thickness 0.25 to 1.5 cm", () => {
+    const world = { name: 'rest', kind: 'shapes' as const, params: {}, bounds: null, gravity: { x: 0, y: 10 }, world: { friction: 0.6, restitution: 0, lengthUnit: 1, solver: 'soft' as const }, view: { minX: -5, minY: -5, maxX: 5, maxY: 2 } };
+    const restingY = (engine: ShapeEngine, scene: ShapeScene) => {
+      const sim = engine.create(scene, 'defaults');
+      try {
+        for (let s = 0; s < 120; s++) sim.step(1 / 60);
+        const p = allocatePoses(sim.count);
+        sim.read(p);
+        return p.y[0];
+      } finally {
+        sim.dispose();
+      }
+    };
+    for (const [thickness, tolerance] of [[0, 0.002], [0.25, 0.015]]) {
+      // The segment's top (the capsule's, for a thick one) at y = -thickness; the box starts on it.
+      const box = { x: 0, y: -0.5 - thickness, shapes: [{ kind: 'box' as const, width: 1, height: 1 }] };
+      const onSegment: ShapeScene = { ...world, bodies: [box], segments: [{ x1: -10, y1: 0, x2: 10, y2: 0, thickness }] };
+      const onBox: ShapeScene = { ...world, bodies: [box, { x: 0, y: 1 - thickness, type: 'static', shapes: [{ kind: 'box', width: 20, height: 2 }] }], segments: [] };
+      for (const engine of engines) {
+        const a = restingY(engine, onSegment);
+        const b = restingY(engine, onBox);
+        expect(Math.abs(a - b), `${engine.info.id}, thickness ${thickness}: on the segment ${a}, on the box ${b}`).toBeLessThan(tolerance);
+      }
+    }
+  });
+
   it('mass properties the energy experiment gives every engine: a box, a circle, a capsule, an offset shape', () => {
     const box = bodyMass({ x: 0, y: 0, shapes: [{ kind: 'box', width: 2, height: 1 }] });
     expect(box.mass).toBeCloseTo(2, 12);

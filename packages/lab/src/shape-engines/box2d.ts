@@ -50,7 +50,10 @@ class Box2DShapes implements ShapeSimulation {
         const body = this.world.CreateBody(def);
         const edge = new b2.b2EdgeShape();
         edge.SetTwoSided(new b2.b2Vec2(s.x1 * S, s.y1 * S), new b2.b2Vec2(s.x2 * S, s.y2 * S));
-        edge.set_m_radius(Math.max(s.thickness * S, 0));
+        // A segment of no thickness keeps the edge's own skin (b2_polygonRadius, 1 cm), which
+        // Box2D 2.4's contacts and time of impact are built around: at radius 0 resting boxes sit
+        // where the time of impact fires every step.
+        if (s.thickness > 0) edge.set_m_radius(s.thickness * S);
         fixture.set_shape(edge);
         fixture.set_friction(wallFriction);
         fixture.set_restitution(wallRestitution);

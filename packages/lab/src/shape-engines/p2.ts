@@ -3,6 +3,9 @@ import { bodyMass, materialOf, metersPerUnit, placedVertices, resolveSceneJoints
 import { VERSIONS } from '../engines/versions.js';
 import { loadP2, type P2Api as P2, type P2Body, type P2World } from '../engines/p2-loader.js';
 
+/** How deep (m) the slab that stands in for a segment of no thickness reaches below it. */
+const SLAB_DEPTH_M = 0.1;
+
 /** p2's GSSolver runs 10 iterations by default. */
 const ITERATIONS: Record<ShapeProfile, number> = { report: 1, defaults: 10 };
 
@@ -32,9 +35,35 @@ class P2Shapes implements ShapeSimulation {
       }
     }
     for (const s of scene.segments) {
-      const length = Math.hypot(s.x2 - s.x1, s.y2 - s.y1) * S;
-      const ground = new p2.Body({ mass: 0, type: p2.Body.STATIC, position: [((s.x1 + s.x2) / 2) * S, ((s.y1 + s.y2) / 2) * S], angle: Math.atan2(s.y2 - s.y1, s.x2 - s.x1) });
-      ground.addShape(s.thickness > 0 ? new p2.Capsule({ length, radius: s.thickness * S }) : new p2.Line({ length }));
+      const dx = s.x2 - s.x1;
+      const dy = s.y2 - s.y1;
+      const length = Math.hypot(dx, dy) * S;
+      const angle = Math.atan2(dy, dx);
+      let cx = ((s.x1 + s.x2) / 2) * S;
+      let cy = ((s.y1 + s.y2) / 2) * S;
+      let shape;
+      if (s.thickness > 0) {
+        shape = new p2.Capsule({ length, radius: s.thickness * S });
+      } else {
+        // p2-es 1.2.3 collides a Line with nothing but circles and planes (its lineBox, convexLine
+        // and lineCapsule return no contact), so a segment of no thickness is a slab hung below
+        // the line, on gravity's side, its top face on the line: bodies rest where they would on
+        // the segment, and the slab is deep enough that p2's soft contacts do not sink through it.
+        let nx = -dy / Math.hypot(dx, dy);
+        let ny = dx / Math.hypot(dx, dy);
+        const along = nx * scene.gravity.x + ny * scene.gravity.y;
+        if (along < 0) {
+          nx = -nx;
+          ny = -ny;
+        }
+        // A segment along gravity has no side below it: the slab is centred on it.
+        const shift = along === 0 ? 0 : SLAB_DEPTH_M / 2;
+        cx += nx * shift;
+        cy += ny * shift;
+        shape = new p2.Box({ width: length, height: SLAB_DEPTH_M });
+      }
+      const ground = new p2.Body({ mass: 0, type: p2.Body.STATIC, position: [cx, cy], angle });
+      ground.addShape(shape);
       this.world.addBody(ground);
     }
     for (const b of scene.bodies) {
@@ -162,6 +191,7 @@ export const p2ShapeProvider: ShapeEngineProvider = {
       ccd: 'none (the default)',
       materials: "one default ContactMaterial with the scene's friction and restitution",
       damping: 0,
+      segments: `a Capsule of the segment's thickness; of thickness 0, a Box ${SLAB_DEPTH_M} m deep hung below the line on gravity's side (p2-es's Line collides with circles and planes only)`,
       units: '1 m = the scene lengthUnit; vec2 are Float32Array',
     };
     return {

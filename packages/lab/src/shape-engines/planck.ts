@@ -39,7 +39,12 @@ class PlanckShapes implements ShapeSimulation {
     }
     for (const s of scene.segments) {
       const body = this.world.createBody({ type: 'static' });
-      body.createFixture({ shape: new pl.Edge({ x: s.x1 * S, y: s.y1 * S }, { x: s.x2 * S, y: s.y2 * S }), ...wall });
+      const edge = new pl.Edge({ x: s.x1 * S, y: s.y1 * S }, { x: s.x2 * S, y: s.y2 * S });
+      // A segment's thickness is the radius of the capsule around it (World.createSegment); planck,
+      // as Box2D 2.4, rounds an edge by its radius in every collision and time of impact. Of no
+      // thickness, the edge keeps its own skin (Settings.polygonRadius), as Box2D's does.
+      if (s.thickness > 0) edge.m_radius = s.thickness * S;
+      body.createFixture({ shape: edge, ...wall });
     }
     for (const b of scene.bodies) {
       const body = this.world.createBody({
