@@ -3,6 +3,7 @@ import { SHAPE_SCENE_NAMES, buildShapeScene, type ShapeScene } from '@maxgrid/sc
 import { allocatePoses, bodyMass, SHAPE_PROFILES, UnsupportedSceneError, type ShapeEngine } from '../src/shape-engines/adapter.js';
 import { SHAPE_ENGINE_IDS } from '../src/shape-engines/registry.js';
 import { loadShapeEnginesNode } from '../src/node/engines.js';
+import { box2dShapeModule } from '../src/shape-engines/box2d.js';
 
 let engines: ShapeEngine[] = [];
 
@@ -127,6 +128,31 @@ describe('shape engines', () => {
         expect(Math.abs(a - b), `${engine.info.id}, thickness ${thickness}: on the segment ${a}, on the box ${b}`).toBeLessThan(tolerance);
       }
     }
+  });
+
+  it('the Box2D adapter frees every b2Vec2 it makes to build a world', async () => {
+    const b2 = (await box2dShapeModule())!;
+    const engine = engines.find((e) => e.info.id === 'box2d-wasm')!;
+    const scene: ShapeScene = {
+      name: 'vectors',
+      kind: 'shapes',
+      params: {},
+      bounds: { width: 20, height: 20 },
+      gravity: { x: 0, y: 10 },
+      world: { friction: 0.6, restitution: 0, lengthUnit: 1, solver: 'soft' },
+      bodies: [
+        { x: 5, y: 5, shapes: [{ kind: 'circle', radius: 0.5, offsetX: 0.2 }] },
+        { x: 8, y: 5, shapes: [{ kind: 'capsule', length: 1, radius: 0.25, offsetY: 0.1 }] },
+        { x: 11, y: 5, shapes: [{ kind: 'box', width: 1, height: 1 }] },
+      ],
+      segments: [{ x1: 0, y1: 15, x2: 20, y2: 15, thickness: 0 }],
+      view: { minX: 0, minY: 0, maxX: 20, maxY: 20 },
+    };
+    // Box2D's bindings keep a wrapper of every b2Vec2 made with new until it is destroyed.
+    const live = () => Object.keys(b2.getCache(b2.b2Vec2)).length;
+    const before = live();
+    for (let k = 0; k < 4; k++) engine.create(scene, 'defaults').dispose();
+    expect(live() - before).toBe(0);
   });
 
   it('mass properties the energy experiment gives every engine: a box, a circle, a capsule, an offset shape', () => {

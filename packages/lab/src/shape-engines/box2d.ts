@@ -25,7 +25,9 @@ class Box2DShapes implements ShapeSimulation {
     this.count = scene.bodies.length;
     this.iterations = PROFILE[profile];
     this.restitutionThreshold = PROFILE[profile].restitutionThreshold;
+    // Box2D copies every b2Vec2 it is given: these two carry each value in, and are freed at the end.
     const vec = new b2.b2Vec2(scene.gravity.x * S, scene.gravity.y * S);
+    const vec2 = new b2.b2Vec2(0, 0);
     this.world = new b2.b2World(vec);
     this.world.SetAllowSleeping(false);
     this.world.SetContinuousPhysics(PROFILE[profile].continuous);
@@ -43,13 +45,16 @@ class Box2DShapes implements ShapeSimulation {
         vec.Set(w.x * S, w.y * S);
         def.set_position(vec);
         const body = this.world.CreateBody(def);
-        this.fixtures(body, scene, w.shape, fixture);
+        this.fixtures(body, scene, w.shape, fixture, vec);
       }
       for (const s of scene.segments) {
-        def.set_position(new b2.b2Vec2(0, 0));
+        vec.Set(0, 0);
+        def.set_position(vec);
         const body = this.world.CreateBody(def);
         const edge = new b2.b2EdgeShape();
-        edge.SetTwoSided(new b2.b2Vec2(s.x1 * S, s.y1 * S), new b2.b2Vec2(s.x2 * S, s.y2 * S));
+        vec.Set(s.x1 * S, s.y1 * S);
+        vec2.Set(s.x2 * S, s.y2 * S);
+        edge.SetTwoSided(vec, vec2);
         // A segment of no thickness keeps the edge's own skin (b2_polygonRadius, 1 cm), which
         // Box2D 2.4's contacts and time of impact are built around: at radius 0 resting boxes sit
         // where the time of impact fires every step.
@@ -73,7 +78,7 @@ class Box2DShapes implements ShapeSimulation {
         def.set_allowSleep(false);
         def.set_bullet(false);
         const body = this.world.CreateBody(def);
-        for (const shape of b.shapes) this.fixtures(body, scene, shape, fixture);
+        for (const shape of b.shapes) this.fixtures(body, scene, shape, fixture, vec);
         this.bodies.push(body);
       }
       this.joints(scene, vec);
@@ -81,7 +86,7 @@ class Box2DShapes implements ShapeSimulation {
       b2.destroy(this.world);
       throw error;
     } finally {
-      for (const o of [vec, fixture, def]) b2.destroy(o);
+      for (const o of [vec, vec2, fixture, def]) b2.destroy(o);
     }
   }
 
@@ -190,7 +195,7 @@ class Box2DShapes implements ShapeSimulation {
   }
 
   /** Box2D 2.4 has no capsule: a box between two circles stands in for one. */
-  private fixtures(body: Box2D.b2Body, scene: ShapeScene, shape: SceneShape, fixture: Box2D.b2FixtureDef): void {
+  private fixtures(body: Box2D.b2Body, scene: ShapeScene, shape: SceneShape, fixture: Box2D.b2FixtureDef, vec: Box2D.b2Vec2): void {
     const { b2, S } = this;
     const m = materialOf(scene, shape);
     fixture.set_density(m.density);
@@ -203,7 +208,8 @@ class Box2DShapes implements ShapeSimulation {
     if (shape.kind === 'circle') {
       const circle = new b2.b2CircleShape();
       circle.set_m_radius(shape.radius * S);
-      circle.set_m_p(new b2.b2Vec2(ox, oy));
+      vec.Set(ox, oy);
+      circle.set_m_p(vec);
       fixture.set_shape(circle);
       body.CreateFixture(fixture);
       b2.destroy(circle);
@@ -215,14 +221,16 @@ class Box2DShapes implements ShapeSimulation {
       const c = Math.cos(a);
       const s = Math.sin(a);
       const box = new b2.b2PolygonShape();
-      box.SetAsBox(half, r, new b2.b2Vec2(ox, oy), a);
+      vec.Set(ox, oy);
+      box.SetAsBox(half, r, vec, a);
       fixture.set_shape(box);
       body.CreateFixture(fixture);
       b2.destroy(box);
       for (const end of [-1, 1]) {
         const circle = new b2.b2CircleShape();
         circle.set_m_radius(r);
-        circle.set_m_p(new b2.b2Vec2(ox + end * half * c, oy + end * half * s));
+        vec.Set(ox + end * half * c, oy + end * half * s);
+        circle.set_m_p(vec);
         fixture.set_shape(circle);
         body.CreateFixture(fixture);
         b2.destroy(circle);
@@ -277,6 +285,11 @@ function centralInertia(body: Box2D.b2Body): number {
 }
 
 let modulePromise: Promise<Box2DModule> | undefined;
+
+/** The Box2D module the shape adapter built its worlds in, once loaded (tests count its live objects). */
+export function box2dShapeModule(): Promise<Box2DModule> | undefined {
+  return modulePromise;
+}
 
 export const box2dShapeProvider: ShapeEngineProvider = {
   id: 'box2d-wasm',
