@@ -128,6 +128,68 @@ describe('events with shapes', () => {
     }
   });
 
+  it('touches last through sleep, as Box2D keeps a sleeping island\'s contacts: no end as bodies fall asleep, no begin as they wake where they rest', () => {
+    type Counts = { begins: number; ends: number };
+    const tally = (world: World, into: Counts): void => {
+      const e = world.contactEvents();
+      into.begins += e.beginCount + e.segmentBeginCount + e.wallBeginCount + e.shapeBeginCount;
+      into.ends += e.endCount + e.segmentEndCount + e.wallEndCount + e.shapeEndCount;
+    };
+    // Shapes on the floor of the box, on a segment, on a static box, and on each other; and the circle engine's circles on its floor and each other.
+    const worlds: { label: string; world: World; lift: number; destroyed: number; touches: number }[] = [];
+    {
+      const world = new World({ bounds: { width: 30, height: 12 }, gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, contactEvents: true, sleeping: true, sleepTime: 2 });
+      world.createSegment({ x1: 10, y1: 8, x2: 16, y2: 8 });
+      world.createBox({ x: 24, y: 7, width: 6, height: 2, type: 'static' });
+      const onFloor = world.createBox({ x: 4, y: 11.4, width: 1, height: 1 });
+      world.createBox({ x: 4, y: 10.3, width: 1, height: 1 });
+      world.createBox({ x: 13, y: 7.4, width: 1, height: 1 });
+      const onStatic = world.createCapsule({ x: 24, y: 5.6, length: 1, radius: 0.3 });
+      // Touches: floor-box, box-box, segment-box, static-capsule (body pairs and shape pairs).
+      worlds.push({ label: 'shapes', world, lift: onStatic, destroyed: onFloor, touches: 4 });
+    }
+    {
+      const world = new World({ bounds: { width: 30, height: 12 }, gravity: { x: 0, y: 10 }, restitution: 0, contactEvents: true, sleeping: true, sleepTime: 2 });
+      const low = world.createCircle({ x: 4, y: 11.5, radius: 0.5 });
+      const high = world.createCircle({ x: 4, y: 10.5, radius: 0.5 });
+      worlds.push({ label: 'circles', world, lift: high, destroyed: low, touches: 2 });
+    }
+    for (const { label, world, lift, destroyed, touches } of worlds) {
+      const settling: Counts = { begins: 0, ends: 0 };
+      for (let s = 0; s < 90; s++) {
+        world.step(DT);
+        tally(world, settling);
+      }
+      expect(settling.begins, label).toBeGreaterThanOrEqual(touches);
+      expect(world.stats.sleepingBodies, label).toBe(0);
+      const asleep: Counts = { begins: 0, ends: 0 };
+      for (let s = 0; s < 360; s++) {
+        world.step(DT);
+        tally(world, asleep);
+      }
+      expect(world.stats.sleepingBodies, label).toBe(world.bodyCount - (label === 'shapes' ? 1 : 0));
+      expect(asleep, `${label}: falling asleep`).toEqual({ begins: 0, ends: 0 });
+      // Woken where they rest: still touching, so nothing begins.
+      for (const h of world.handles()) if (world.getBody(h).type === 'dynamic') world.setAwake(h, true);
+      const woken: Counts = { begins: 0, ends: 0 };
+      for (let s = 0; s < 3; s++) {
+        world.step(DT);
+        tally(world, woken);
+      }
+      expect(woken, `${label}: woken`).toEqual({ begins: 0, ends: 0 });
+      // Asleep again, then one body lifted away (it wakes and leaves) and one destroyed: those touches end.
+      for (let s = 0; s < 360; s++) world.step(DT);
+      const before = world.stats.sleepingBodies;
+      expect(before, label).toBeGreaterThan(0);
+      world.setTransform(lift, 2, 2, 0);
+      world.destroyBody(destroyed);
+      const after: Counts = { begins: 0, ends: 0 };
+      world.step(DT);
+      tally(world, after);
+      expect(after.ends, label).toBeGreaterThan(0);
+    }
+  });
+
   it('segments and the box walls report touches and hits with shapes', () => {
     const world = new World({ bounds: { width: 20, height: 20 }, gravity: { x: 0, y: 10 }, restitution: 0, friction: 0.5, hitEventThreshold: 1 });
     world.createSegment({ x1: 0, y1: 10, x2: 10, y2: 10 });

@@ -180,7 +180,7 @@ describe('snapshots', () => {
     world.createBox({ x: 20, y: 1, width: 40, height: 2, type: 'static' });
     const boxes = Array.from({ length: 6 }, (_, i) => world.createBox({ x: 10 + 3 * i, y: 4, width: 1, height: 1 }));
     for (let s = 0; s < 200; s++) world.step(DT);
-    world.applyForce(boxes[0], 50, 0);
+    world.applyForce(boxes[0], 600, 0);
     world.setGravity(1, -9);
     const bytes = world.snapshot();
     const restored = World.restore(bytes);

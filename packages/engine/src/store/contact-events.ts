@@ -1,7 +1,8 @@
 import type { BodyStore } from './body-store.js';
 import type { SegmentStore } from './segment-store.js';
 import { grownCapacity, grow } from '../util/grow.js';
-import { PairDiff, type SlotOwner } from './pair-diff.js';
+import { PairDiff, type Dormancy, type SlotOwner } from './pair-diff.js';
+import { TypeCode } from './body-types.js';
 import type { ShapeStore } from './shape-store.js';
 import { ContactBuffer } from './contact-buffer.js';
 import { ContactPoint, POINT_STRIDE, WORLD, type ContactList } from '../narrowphase/contact-list.js';
@@ -12,6 +13,66 @@ const { approachSpeed: PT_APPROACH_SPEED, totalNormalImpulse: PT_TOTAL_NORMAL_IM
 
 /** The box walls have no handles: events name them by their BoxWall number. */
 const BOX_WALLS: SlotOwner = { handleOf: (wall) => wall };
+
+/**
+ * Whether the body in `slot` holds still while asleep: a sleeping dynamic body, or a static one.
+ * A touch between two such things lasts through their sleep though the step computes no contact
+ * for it, as Box2D v3 keeps a sleeping island's contacts: no end when a body falls asleep where
+ * it rests, no begin when it wakes there.
+ */
+function still(bodies: BodyStore, slot: number): boolean {
+  const t = bodies.type[slot];
+  return t === TypeCode.static || (t === TypeCode.dynamic && bodies.asleep[slot] === 1);
+}
+
+/** Touches between two bodies (slots), asleep (see still), the same two bodies as when they touched. */
+class SleepingBodyPairs implements Dormancy {
+  bodies: BodyStore | null = null;
+  dormant(a: number, b: number, handleA: number, handleB: number): boolean {
+    const bodies = this.bodies!;
+    return bodies.handleOf(a) === handleA && bodies.handleOf(b) === handleB && still(bodies, a) && still(bodies, b);
+  }
+}
+
+/** Touches between a body and a segment or a wall: the body asleep, and the segment the same (walls stay). */
+class SleepingOnStatics implements Dormancy {
+  bodies: BodyStore | null = null;
+  statics: SlotOwner = BOX_WALLS;
+  dormant(a: number, b: number, handleA: number, handleB: number): boolean {
+    const bodies = this.bodies!;
+    return bodies.handleOf(a) === handleA && this.statics.handleOf(b) === handleB && bodies.type[a] === TypeCode.dynamic && bodies.asleep[a] === 1;
+  }
+}
+
+/** Touches between two shapes (slots), their bodies asleep (see still), the same two shapes as when they touched. */
+class SleepingShapePairs implements Dormancy {
+  bodies: BodyStore | null = null;
+  shapes: ShapeStore | null = null;
+  dormant(a: number, b: number, handleA: number, handleB: number): boolean {
+    const bodies = this.bodies!;
+    const shapes = this.shapes!;
+    return shapes.handleOf(a) === handleA && shapes.handleOf(b) === handleB && shapes.live[a] === 1 && shapes.live[b] === 1 && still(bodies, shapes.body[a]) && still(bodies, shapes.body[b]);
+  }
+}
+
+/**
+ * The sleeping touches' tests, shared by every world: each update points them at its stores and
+ * lets go after (see dormancy), so that no world's state holds them.
+ */
+const sleepingBodies = new SleepingBodyPairs();
+const sleepingOnSegments = new SleepingOnStatics();
+const sleepingOnWalls = new SleepingOnStatics();
+const sleepingShapes = new SleepingShapePairs();
+
+/** Points the sleeping touches' tests at this step's stores, or (null) lets them go. */
+function dormancy(bodies: BodyStore | null, segments: SegmentStore | null, shapes: ShapeStore | null): void {
+  sleepingBodies.bodies = bodies;
+  sleepingOnSegments.bodies = bodies;
+  sleepingOnSegments.statics = segments ?? BOX_WALLS;
+  sleepingOnWalls.bodies = bodies;
+  sleepingShapes.bodies = bodies;
+  sleepingShapes.shapes = shapes;
+}
 
 /** Event lists of the last step; the arrays are reused and replaced only when they grow. */
 export interface ContactEventsView {
@@ -397,9 +458,11 @@ export class ContactEvents implements ContactEventsView {
   /** Diffs the step's canonical contacts, its body-segment and its body-wall touches against the last step's. */
   update(bodies: BodyStore, contacts: ContactBuffer, segments: SegmentStore): void {
     const { touchingSegments: onSegments, touchingWalls: onWalls } = this;
-    this.touches.update(contacts.lo, contacts.hi, contacts.count, bodies, bodies);
-    this.segmentTouches.update(onSegments.a, onSegments.b, onSegments.count, bodies, segments);
-    this.wallTouches.update(onWalls.a, onWalls.b, onWalls.count, bodies, BOX_WALLS);
+    dormancy(bodies, segments, null);
+    this.touches.update(contacts.lo, contacts.hi, contacts.count, bodies, bodies, sleepingBodies);
+    this.segmentTouches.update(onSegments.a, onSegments.b, onSegments.count, bodies, segments, sleepingOnSegments);
+    this.wallTouches.update(onWalls.a, onWalls.b, onWalls.count, bodies, BOX_WALLS, sleepingOnWalls);
+    dormancy(null, null, null);
   }
 
   /**
@@ -462,10 +525,12 @@ export class ContactEvents implements ContactEventsView {
     }
     // Segment touches diff in (body, segment) order, which the contact list already keeps; shape pairs need sorting.
     touchingShapes.sortCanonical(shapes.slotCount);
-    this.touches.update(touchingBodies.a, touchingBodies.b, touchingBodies.count, bodies, bodies);
-    this.segmentTouches.update(touchingSegments.a, touchingSegments.b, touchingSegments.count, bodies, segments);
-    this.wallTouches.update(touchingWalls.a, touchingWalls.b, touchingWalls.count, bodies, BOX_WALLS);
-    this.shapeTouches.update(touchingShapes.lo, touchingShapes.hi, touchingShapes.count, shapes, shapes);
+    dormancy(bodies, segments, shapes);
+    this.touches.update(touchingBodies.a, touchingBodies.b, touchingBodies.count, bodies, bodies, sleepingBodies);
+    this.segmentTouches.update(touchingSegments.a, touchingSegments.b, touchingSegments.count, bodies, segments, sleepingOnSegments);
+    this.wallTouches.update(touchingWalls.a, touchingWalls.b, touchingWalls.count, bodies, BOX_WALLS, sleepingOnWalls);
+    this.shapeTouches.update(touchingShapes.lo, touchingShapes.hi, touchingShapes.count, shapes, shapes, sleepingShapes);
+    dormancy(null, null, null);
     const sensing = this.sensing;
     sensing.clear();
     for (let k = 0; k < sensorCount; k++) sensing.push(sensorSlots[k], visitorSlots[k]);
