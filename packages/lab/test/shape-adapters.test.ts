@@ -1,4 +1,6 @@
 import { beforeAll, describe, expect, it } from 'vitest';
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
 import { SHAPE_SCENE_NAMES, buildShapeScene, type ShapeScene } from '@maxgrid/scenes';
 import { allocatePoses, bodyMass, SHAPE_PROFILES, UnsupportedSceneError, type ShapeEngine } from '../src/shape-engines/adapter.js';
 import { SHAPE_ENGINE_IDS } from '../src/shape-engines/registry.js';
@@ -181,6 +183,34 @@ describe('shape engines', () => {
         expect(got.inertia / (truth.inertia * S ** 4), `${id} inertia`).toBeCloseTo(1, 5);
       } finally {
         sim.dispose();
+      }
+    }
+  });
+
+  it("Matter's 'defaults' profile keeps Matter's own resting threshold; 'report' sets it to 0", () => {
+    const source = readFileSync(createRequire(import.meta.url).resolve('matter-js/src/collision/Resolver.js'), 'utf8');
+    const own = Number(/Resolver\._restingThresh = ([\d.]+);/.exec(source)![1]);
+    const settings = engines.find((e) => e.info.id === 'matter-js')!.info.settings;
+    expect(settings.defaults['Resolver._restingThresh']).toBe(own);
+    expect(settings.report['Resolver._restingThresh']).toBe(0);
+  });
+
+  it('every engine reads velocities in scene units per second at steps other than 1/60 s', () => {
+    for (const dt of [1 / 120, 1 / 30]) {
+      const scene: ShapeScene = { name: 'fall', kind: 'shapes', params: {}, bounds: null, gravity: { x: 0, y: 10 }, world: { friction: 0, restitution: 0, lengthUnit: 50, solver: 'soft' }, bodies: [{ x: 0, y: 0, vx: 150, angularVelocity: 2, shapes: [{ kind: 'box', width: 50, height: 50 }] }], segments: [], view: { minX: -500, minY: -500, maxX: 500, maxY: 500 } };
+      for (const engine of engines) {
+        const sim = engine.create(scene, 'defaults');
+        try {
+          for (let s = 0; s < Math.round(0.5 / dt); s++) sim.step(dt);
+          const p = allocatePoses(1);
+          sim.read(p);
+          // Half a second of free fall at 10 px/s^2 from (150, 0) px/s, spinning at 2 rad/s.
+          expect(p.vx[0], `${engine.info.id} dt ${dt}`).toBeCloseTo(150, 2);
+          expect(p.vy[0], `${engine.info.id} dt ${dt}`).toBeCloseTo(5, 2);
+          expect(p.angularVelocity[0], `${engine.info.id} dt ${dt}`).toBeCloseTo(2, 3);
+        } finally {
+          sim.dispose();
+        }
       }
     }
   });

@@ -5,10 +5,15 @@ import { VERSIONS } from '../engines/versions.js';
 
 type Matter = typeof MatterTypes;
 
-/** Matter's defaults are 6 position, 4 velocity and 2 constraint iterations. */
+/**
+ * Matter's defaults are 6 position, 4 velocity and 2 constraint iterations, and a resting
+ * threshold (contacts approaching slower get no restitution) of 2 px per base delta, Matter
+ * 0.20's Resolver._restingThresh. The report's profile sets it to its minimum, as
+ * the report set Unity's velocity threshold. Module-wide in Matter, so set before each step.
+ */
 const PROFILE: Record<ShapeProfile, { position: number; velocity: number; constraint: number; restingThreshold: number }> = {
   report: { position: 1, velocity: 1, constraint: 1, restingThreshold: 0 },
-  defaults: { position: 6, velocity: 4, constraint: 2, restingThreshold: 4 },
+  defaults: { position: 6, velocity: 4, constraint: 2, restingThreshold: 2 },
 };
 const BASE_DELTA_S = 1 / 60;
 const GRAVITY_SCALE = 1e-6;
@@ -162,6 +167,8 @@ class MatterShapes implements ShapeSimulation {
       out.x[k] = b.position.x / F - (c * dx - s * dy);
       out.y[k] = b.position.y / F - (s * dx + c * dy);
       out.angle[k] = b.angle;
+      // Engine.update ends with Body.updateVelocities, which scales each step's displacement to
+      // Matter's base delta (1/60 s) whatever the step's length: px per 1/60 s at any dt.
       out.vx[k] = b.velocity.x / F / BASE_DELTA_S;
       out.vy[k] = b.velocity.y / F / BASE_DELTA_S;
       out.angularVelocity[k] = b.angularVelocity / BASE_DELTA_S;
