@@ -336,12 +336,17 @@ export function flag(field: string, value: unknown): boolean {
 }
 
 /** A 32-bit layer set: an integer in [0, 2^32). */
+/**
+ * A 32-bit collision layer set, as an unsigned integer. A signed 32-bit one is taken as its bits,
+ * since JavaScript's bitwise operators give those: `~PLAYER` (negative) means every layer but
+ * PLAYER's, as `(~PLAYER) >>> 0` does.
+ */
 export function layerBits(field: string, value: unknown): number {
   const n = finiteNumber(field, value);
-  if (!Number.isInteger(n) || n < 0 || n > 0xffffffff) {
-    throw new RangeError(`${field} must be an integer in [0, 0xffffffff], got ${describeValue(value)}`);
+  if (!Number.isInteger(n) || n < -0x80000000 || n > 0xffffffff) {
+    throw new RangeError(`${field} must be a 32-bit integer, in [0, 0xffffffff] or (as ~ and | give) in [-0x80000000, -1], got ${describeValue(value)}`);
   }
-  return n;
+  return n >>> 0;
 }
 
 export function vector(field: string, input: unknown): Vector {

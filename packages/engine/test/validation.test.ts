@@ -114,7 +114,7 @@ describe('bad input is rejected with a named error and leaves the world unchange
   });
 
   it.each([
-    ['category', -1],
+    ['category', -(2 ** 31) - 1],
     ['category', 2 ** 32],
     ['mask', 1.5],
     ['linearDamping', -0.1],
@@ -127,13 +127,28 @@ describe('bad input is rejected with a named error and leaves the world unchange
     rejects((w, h) => w.applyImpulse(h, 0, Infinity), TypeError, 'iy', 'Infinity');
     rejects((w, h) => w.applyTorque(h, NaN), TypeError, 'torque', 'NaN');
     rejects((w, h) => w.applyAngularImpulse(h, '1' as never), TypeError, 'impulse', '"1"');
-    rejects((w, h) => w.setCollisionFilter(h, 1, -2), RangeError, 'mask', '-2');
+    rejects((w, h) => w.setCollisionFilter(h, 1, -(2 ** 31) - 1), RangeError, 'mask', '-2147483649');
     rejects((w, h) => w.setGravityScale(h, NaN), TypeError, 'gravityScale', 'NaN');
     rejects((w, h) => w.setLinearDamping(h, -1), RangeError, 'linearDamping', '-1');
     rejects((w) => w.queryAABB(10, 0, 5, 10), RangeError, 'min <= max', '(10, 0)');
     rejects((w) => w.queryPoint(NaN, 0), TypeError, 'x', 'NaN');
     rejects((w) => w.rayCast(0, 0, 1, Infinity), TypeError, 'y2', 'Infinity');
-    rejects((w) => w.queryPoint(0, 0, { mask: -1 }), RangeError, 'mask', '-1');
+    rejects((w) => w.queryPoint(0, 0, { mask: 0.5 }), RangeError, 'mask', '0.5');
+  });
+
+  it('takes a negative 32-bit layer set as its bits, as ~ and | give it', () => {
+    const PLAYER = 2;
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const player = world.createCircle({ x: 0, y: 0, radius: 1, category: PLAYER, mask: ~PLAYER });
+    expect(world.getCircle(player)).toMatchObject({ category: 2, mask: 0xfffffffd });
+    const bullet = world.createCircle({ x: 10, y: 0, radius: 1, category: 1 << 31, mask: ~PLAYER, vx: -600 });
+    expect(world.getCircle(bullet).category).toBe(0x80000000);
+    world.setCollisionFilter(bullet, 1 << 31, ~PLAYER | 0);
+    expect(world.getCircle(bullet).mask).toBe(0xfffffffd);
+    // The bullet's mask leaves out the player's layer: it passes through.
+    world.step(1 / 60);
+    expect(world.getCircle(bullet).vx).toBe(-600);
+    expect(world.queryPoint(0, 0, { mask: ~PLAYER })).toEqual([bullet]);
   });
 
   it('friction, rolling resistance and contact damping beyond 1e100, whose products would overflow', () => {
