@@ -14,7 +14,7 @@ export interface EngineInfo {
   version: string;
   /** Storage precision of positions and velocities inside the engine. */
   precision: 'f64' | 'f32';
-  /** Engine length units per scene pixel (1/50 means 1 m = 50 px). */
+  /** Engine length units per scene pixel (1/50 means 1 m = 50 px); 0 on a shape engine's row, whose units are per scene (shapeEngineRow). */
   lengthScale: number;
   /** The exact settings the adapter applies, as written into every output file. */
   settings: Record<string, string | number | boolean>;

@@ -295,6 +295,22 @@ export const metaSchema = {
   },
 } as const;
 
+/**
+ * metaSchema for experiments on shape scenes: their engines' rows (shapeEngineRow) have
+ * lengthScale 0, which says their units are per scene (1 m = the scene's lengthUnit), where
+ * metaSchema asks the circle engines for their one scale, above 0.
+ */
+export const shapeMetaSchema = {
+  ...metaSchema,
+  properties: {
+    ...metaSchema.properties,
+    engines: {
+      ...metaSchema.properties.engines,
+      items: { ...metaSchema.properties.engines.items, properties: { ...metaSchema.properties.engines.items.properties, lengthScale: { type: 'number', minimum: 0 } } },
+    },
+  },
+} as const;
+
 export function csvLine(values: readonly (string | number)[]): string {
   return values.map((v) => (typeof v === 'number' ? String(v) : /[",\n]/.test(v) ? `"${v.replace(/"/g, '""')}"` : v)).join(',');
 }

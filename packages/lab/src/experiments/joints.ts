@@ -2,7 +2,7 @@ import { buildShapeScene, type ShapeScene, type ShapeSceneName } from '@maxgrid/
 import { fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
 import { allocatePoses, resolveSceneJoints, scenePoint, UnsupportedSceneError, type PoseState, type ShapeProfile, type ShapeSimulation } from '../shape-engines/adapter.js';
 import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
-import { csvLine, makeMeta, metaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+import { csvLine, makeMeta, shapeMetaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 // Types only: registry.ts imports this file, and a value imported back would be read before it is defined.
 import type { Experiment, Overrides } from './registry.js';
 
@@ -378,21 +378,6 @@ export function jointsCsv(result: JointsResult): string {
   for (const r of result.rows) lines.push(csvLine([r.scene, r.bodies, r.joints, r.engine, r.steps, r.seconds, r.ms.median, r.ms.p25, r.ms.p75, r.sanity.label, r.sanity.value, r.sanity.ok ? 1 : 0, r.sanity.pinGap]));
   return lines.join('\n') + '\n';
 }
-
-/**
- * The shared meta schema, but for shape engines' settings rows, whose lengthScale is 0 (their
- * units are per scene: shapeEngineRow) where metaSchema asks the circle engines for one above 0.
- */
-const shapeMetaSchema = {
-  ...metaSchema,
-  properties: {
-    ...metaSchema.properties,
-    engines: {
-      ...metaSchema.properties.engines,
-      items: { ...metaSchema.properties.engines.items, properties: { ...metaSchema.properties.engines.items.properties, lengthScale: { type: 'number', minimum: 0 } } },
-    },
-  },
-} as const;
 
 export const jointsSchema = {
   $id: 'joints',

@@ -2,7 +2,7 @@ import { buildShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
 import { fmt, type Table } from '../report/tables.js';
 import { allocatePoses, bodyMass, SHAPE_PROFILES, type PoseState, type ShapeProfile } from '../shape-engines/adapter.js';
-import { csvLine, makeMeta, metaSchema, type Meta, type Profile, type RunContext } from './common.js';
+import { csvLine, makeMeta, shapeMetaSchema, type Meta, type Profile, type RunContext } from './common.js';
 
 /**
  * Kinetic energy, linear plus rotational, of elastic frictionless polygons in a box (the
@@ -127,7 +127,7 @@ export const shapeEnergySchema = {
   type: 'object',
   required: ['meta', 'rows'],
   properties: {
-    meta: metaSchema,
+    meta: shapeMetaSchema,
     rows: {
       type: 'array',
       items: {

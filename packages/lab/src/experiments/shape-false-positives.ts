@@ -1,7 +1,7 @@
 import { buildShapeScene } from '@maxgrid/scenes';
 import { fmt, type Table } from '../report/tables.js';
 import type { StageTimes } from '../shape-engines/adapter.js';
-import { csvLine, makeMeta, metaSchema, now, type Meta, type Profile, type RunContext } from './common.js';
+import { csvLine, makeMeta, shapeMetaSchema, now, type Meta, type Profile, type RunContext } from './common.js';
 
 /**
  * The report's false-positive analysis (7.4) for shapes: per maxgrid broad-phase and shape mix,
@@ -129,6 +129,6 @@ export const shapeFalsePositiveSchema = {
   $id: 'shape-false-positives',
   type: 'object',
   required: ['meta', 'rows'],
-  properties: { meta: metaSchema, rows: { type: 'array', items: { type: 'object' } } },
+  properties: { meta: shapeMetaSchema, rows: { type: 'array', items: { type: 'object' } } },
   additionalProperties: false,
 } as const;

@@ -2,7 +2,7 @@ import { buildShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
 import { fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
 import type { ShapeProfile, StageTimes } from '../shape-engines/adapter.js';
-import { csvLine, makeMeta, metaSchema, now, rotate, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+import { csvLine, makeMeta, shapeMetaSchema, now, rotate, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 
 /**
  * Step time on scenes of shapes, every engine on the same scene: Box2D v3's fixed benchmarks
@@ -338,7 +338,7 @@ export const shapeStepTimeSchema = {
   type: 'object',
   required: ['meta', 'options', 'rows', 'skipped'],
   properties: {
-    meta: metaSchema,
+    meta: shapeMetaSchema,
     options: { type: 'object' },
     rows: {
       type: 'array',

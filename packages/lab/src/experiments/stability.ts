@@ -1,7 +1,7 @@
 import { buildShapeScene, type ShapeScene } from '@maxgrid/scenes';
 import { fmt, type Table } from '../report/tables.js';
 import { allocatePoses, SHAPE_PROFILES, type ShapeProfile } from '../shape-engines/adapter.js';
-import { csvLine, makeMeta, metaSchema, type Meta, type Profile, type RunContext } from './common.js';
+import { csvLine, makeMeta, shapeMetaSchema, type Meta, type Profile, type RunContext } from './common.js';
 
 /**
  * Whether each engine's stacks stand and its friction matches theory: Box2D v3's large pyramid
@@ -167,7 +167,7 @@ export const stabilitySchema = {
   type: 'object',
   required: ['meta', 'rows'],
   properties: {
-    meta: metaSchema,
+    meta: shapeMetaSchema,
     rows: {
       type: 'array',
       items: {
