@@ -1,8 +1,10 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { Ajv } from 'ajv';
+import { buildShapeScene } from '@maxgrid/scenes';
 import type { RunContext } from '../src/experiments/common.js';
 import { EXPERIMENTS, shapeEnergy, shapeFalsePositives, shapeStepTime, stability } from '../src/experiments/registry.js';
-import type { ShapeEngine } from '../src/shape-engines/adapter.js';
+import { allocatePoses, type ShapeEngine } from '../src/shape-engines/adapter.js';
+import { rampJudge } from '../src/experiments/stability.js';
 import { SHAPE_ENGINE_IDS } from '../src/shape-engines/registry.js';
 import { loadShapeEnginesNode } from '../src/node/engines.js';
 import { tablesFor } from '../src/report/html.js';
@@ -70,5 +72,58 @@ describe('shape experiments write what their schemas accept', () => {
     const result = await shapeFalsePositives.run({ ...shapeFalsePositives.options('quick', {}), scenes: [{ scene: 'polygon-box', n: 60 }], steps: 2, warmupSteps: 1 }, ctx(['maxgrid:maxgrid', 'maxgrid:hgrid']));
     expectValid(shapeFalsePositives.schema, result);
     expectTables('shape-false-positives', result);
+  });
+});
+
+describe('stability: the ramp judge', () => {
+  const angle = 20;
+  const scene = buildShapeScene('ramp', { angle, friction: 0.5 });
+  const theta = (angle * Math.PI) / 180;
+  const posesOf = (dx: number, dy: number, turn: number) => {
+    const p = allocatePoses(2);
+    scene.bodies.forEach((b, k) => {
+      p.x[k] = b.x;
+      p.y[k] = b.y;
+      p.angle[k] = b.angle ?? 0;
+    });
+    p.x[1] += dx;
+    p.y[1] += dy;
+    p.angle[1] += turn;
+    return p;
+  };
+  const start = posesOf(0, 0, 0);
+
+  it('does not count settling across the slope as sliding: a box pushed 1.5 cm out of the ramp sticks', () => {
+    // Out of the ramp: against its normal, which points into the ramp at (-sin, cos) with y down.
+    const out = posesOf(0.015 * Math.sin(theta), -0.015 * Math.cos(theta), 0);
+    const verdict = rampJudge(angle, 0.5)(start, out, scene, 2);
+    expect(Math.abs(verdict.value)).toBeLessThan(1e-12);
+    expect(verdict.pass).toBe(true);
+  });
+
+  it("follows the box, not the body's origin 18 m away: a body turned a milliradian about the box's centre has not slid", () => {
+    // The body turns about the box's centre: its origin swings 1.8 cm, the box stays.
+    const box = scene.bodies[1].shapes[0];
+    const c0 = { x: Math.cos(theta) * box.offsetX! - Math.sin(theta) * box.offsetY!, y: Math.sin(theta) * box.offsetX! + Math.cos(theta) * box.offsetY! };
+    const turned = theta + 0.001;
+    const c1 = { x: Math.cos(turned) * box.offsetX! - Math.sin(turned) * box.offsetY!, y: Math.sin(turned) * box.offsetX! + Math.cos(turned) * box.offsetY! };
+    const verdict = rampJudge(angle, 0.5)(start, posesOf(c0.x - c1.x, c0.y - c1.y, 0.001), scene, 2);
+    expect(Math.abs(verdict.value)).toBeLessThan(1e-9);
+    expect(verdict.pass).toBe(true);
+  });
+
+  it('measures a slide down the slope at its length, and passes it within 2 % of theory', () => {
+    const slides = rampJudge(30, 0.3);
+    const a = 10 * (Math.sin(Math.PI / 6) - 0.3 * Math.cos(Math.PI / 6));
+    const d = 0.5 * a * 4;
+    const ramp30 = buildShapeScene('ramp', { angle: 30, friction: 0.3 });
+    const p0 = allocatePoses(2);
+    const p1 = allocatePoses(2);
+    p0.angle[1] = p1.angle[1] = Math.PI / 6;
+    p1.x[1] = d * Math.cos(Math.PI / 6);
+    p1.y[1] = d * Math.sin(Math.PI / 6);
+    const verdict = slides(p0, p1, ramp30, 2);
+    expect(verdict.value).toBeCloseTo(d, 12);
+    expect(verdict.pass).toBe(true);
   });
 });
