@@ -127,3 +127,20 @@ describe('stability: the ramp judge', () => {
     expect(verdict.pass).toBe(true);
   });
 });
+
+describe('stability: checks outside an engine range', () => {
+  it("marks the card house and the 5 cm stack as outside Box2D 2.4's range for box2d-wasm and planck, and leaves them out of the headline's count", async () => {
+    const result = await stability.run({ ...stability.options('quick', {}), pyramidBase: 4, seconds: 0.1, rampSeconds: 0.1, profiles: ['defaults'] }, ctx(['box2d-wasm', 'planck', 'rapier']));
+    const outside = result.rows.filter((r) => r.outsideRange).map((r) => `${r.check} ${r.engine}`);
+    expect(outside.sort()).toEqual(['card house box2d-wasm', 'card house planck', 'vertical stack (15), 5 cm boxes box2d-wasm', 'vertical stack (15), 5 cm boxes planck']);
+    for (const r of result.rows.filter((x) => x.outsideRange)) expect(r.outsideRange).toMatch(/outside Box2D 2\.4's documented range/);
+    const [table] = stability.tables(result);
+    const card = table.rows.find((row) => row[0] === 'card house')!;
+    expect(card[table.headers.indexOf('box2d-wasm')]).toMatch(/\(outside its range\)$/);
+    expect(card[table.headers.indexOf('rapier')]).toMatch(/\((pass|FAIL)\)$/);
+    expect(table.note).toMatch(/card house with box2d-wasm and planck/);
+    const headline = stability.headline(result).join(' ');
+    expect(headline).toMatch(/box2d-wasm \d\/5 \(2 outside its documented range\)/);
+    expect(headline).toMatch(/rapier \d\/7[,;.]/);
+  });
+});

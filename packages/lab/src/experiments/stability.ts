@@ -30,6 +30,8 @@ interface Check {
   name: string;
   scene(o: StabilityOptions): ShapeScene;
   seconds(o: StabilityOptions): number;
+  /** Engines for which the scene lies outside their documented range, with why (see OUTSIDE_BOX2D). */
+  outsideRange?: Record<string, string>;
   /** value: the measured quantity; reference: what theory or the start says; pass: the verdict. */
   judge(start: Poses, end: Poses, scene: ShapeScene, seconds: number): { value: number; reference: number; unit: string; pass: boolean; detail: string };
 }
@@ -82,15 +84,28 @@ export function rampJudge(angle: number, friction: number): Check['judge'] {
   };
 }
 
+/**
+ * Box2D 2.4 is tuned for moving shapes of 0.1 to 10 m (its manual's "Units"): every polygon
+ * carries a skin of b2_polygonRadius, 1 cm, and contacts rest within b2_linearSlop, 0.5 cm. A
+ * stack of 5 cm boxes is below that range, and the card house's cards, 2 mm thick and touching
+ * at the start, are thinner than two skins, which overlap where the cards meet. planck is Box2D
+ * 2.x ported, with the same constants. Their rows of those checks are marked as outside the
+ * engine's range rather than counted as failures of its stacking.
+ */
+function outsideBox2D(what: string): Record<string, string> {
+  const why = `outside Box2D 2.4's documented range (moving shapes of 0.1 to 10 m; 1 cm skins; planck is Box2D 2.x ported): ${what}`;
+  return { 'box2d-wasm': why, planck: why };
+}
+
 const CHECKS: Check[] = [
   { name: 'pyramid', scene: (o) => buildShapeScene('pyramid', { base: o.pyramidBase }), seconds: (o) => o.seconds, judge: stackJudge(1.5, 0.25) },
   { name: 'vertical stack (15)', scene: () => buildShapeScene('vertical-stack', { count: 15 }), seconds: (o) => o.seconds, judge: stackJudge(1.5, 0.25) },
   // Small boxes: soft contacts give in metres, not in box sizes (Box2D v3's stack sinks 7.5 cm and
   // sways 1.2 cm at every size), so the drop is 10 % of this stack's height; it must still stand.
-  { name: 'vertical stack (15), 5 cm boxes', scene: () => buildShapeScene('vertical-stack', { count: 15, size: 0.05 }), seconds: (o) => o.seconds, judge: stackJudge(12, 0.0125) },
+  { name: 'vertical stack (15), 5 cm boxes', scene: () => buildShapeScene('vertical-stack', { count: 15, size: 0.05 }), seconds: (o) => o.seconds, judge: stackJudge(12, 0.0125), outsideRange: outsideBox2D('5 cm boxes') },
   // The heavy box presses the soft contacts below it together (Box2D v3's sink the same): standing is the test.
   { name: 'stack, heavy top (100:1)', scene: () => buildShapeScene('vertical-stack', { count: 4, massRatio: 100 }), seconds: (o) => o.seconds, judge: stackJudge(10, 0.25) },
-  { name: 'card house', scene: () => buildShapeScene('card-house', {}), seconds: (o) => o.seconds, judge: stackJudge(5, 0.1) },
+  { name: 'card house', scene: () => buildShapeScene('card-house', {}), seconds: (o) => o.seconds, judge: stackJudge(5, 0.1), outsideRange: outsideBox2D('cards 2 mm thick, touching at the start, thinner than two skins') },
   { name: 'ramp 30 deg, mu 0.3 (slides)', scene: () => buildShapeScene('ramp', { angle: 30, friction: 0.3 }), seconds: (o) => o.rampSeconds, judge: rampJudge(30, 0.3) },
   { name: 'ramp 20 deg, mu 0.5 (sticks)', scene: () => buildShapeScene('ramp', { angle: 20, friction: 0.5 }), seconds: (o) => o.rampSeconds, judge: rampJudge(20, 0.5) },
 ];
@@ -104,6 +119,8 @@ export interface StabilityRow {
   unit: string;
   pass: boolean;
   detail: string;
+  /** Why the check's scene lies outside the engine's documented range, or null: such a row is not counted in the headline. */
+  outsideRange: string | null;
 }
 
 export interface StabilityResult {
@@ -133,7 +150,7 @@ export async function runStability(o: StabilityOptions, ctx: RunContext): Promis
             if (s % 60 === 0) await ctx.yieldToHost?.();
           }
           sim.read(end);
-          rows.push({ check: check.name, engine: engine.info.id, profile, ...check.judge(start, end, scene, steps * o.dt) });
+          rows.push({ check: check.name, engine: engine.info.id, profile, ...check.judge(start, end, scene, steps * o.dt), outsideRange: check.outsideRange?.[engine.info.id] ?? null });
         } finally {
           sim.dispose();
         }
@@ -155,15 +172,26 @@ export function stabilityTables(result: StabilityResult): Table[] {
       check,
       ...engines.map((e) => {
         const r = result.rows.find((x) => x.check === check && x.engine === e && x.profile === profile);
-        return r ? `${fmt(r.value)} (${r.pass ? 'pass' : 'FAIL'})` : '';
+        return r ? `${fmt(r.value)} (${r.outsideRange ? 'outside its range' : r.pass ? 'pass' : 'FAIL'})` : '';
       }),
     ]),
+    note: outsideNote(result),
   }));
 }
 
+/** The table's note on the rows marked outside an engine's range, where there are any. */
+function outsideNote(result: StabilityResult): string | undefined {
+  const marked = result.rows.filter((r) => r.outsideRange);
+  const checks = [...new Set(marked.map((r) => r.check))].map((check) => {
+    const rows = marked.filter((r) => r.check === check);
+    return `${check} with ${[...new Set(rows.map((r) => r.engine))].join(' and ')}, ${rows[0].outsideRange}`;
+  });
+  return checks.length === 0 ? undefined : `"outside its range", not counted in the headline: ${checks.join('; ')}.`;
+}
+
 export function stabilityCsv(result: StabilityResult): string {
-  const lines = [csvLine(['check', 'engine', 'profile', 'value', 'reference', 'unit', 'pass', 'detail'])];
-  for (const r of result.rows) lines.push(csvLine([r.check, r.engine, r.profile, r.value, r.reference, r.unit, r.pass ? 1 : 0, r.detail]));
+  const lines = [csvLine(['check', 'engine', 'profile', 'value', 'reference', 'unit', 'pass', 'detail', 'outside_range'])];
+  for (const r of result.rows) lines.push(csvLine([r.check, r.engine, r.profile, r.value, r.reference, r.unit, r.pass ? 1 : 0, r.detail, r.outsideRange ?? '']));
   return lines.join('\n') + '\n';
 }
 
@@ -172,8 +200,10 @@ export function stabilityHeadline(result: StabilityResult): string[] {
   const line = (profile: ShapeProfile) =>
     engines
       .map((e) => {
-        const rows = result.rows.filter((r) => r.engine === e && r.profile === profile);
-        return `${e} ${rows.filter((r) => r.pass).length}/${rows.length}`;
+        const all = result.rows.filter((r) => r.engine === e && r.profile === profile);
+        const rows = all.filter((r) => !r.outsideRange);
+        const outside = all.length - rows.length;
+        return `${e} ${rows.filter((r) => r.pass).length}/${rows.length}${outside > 0 ? ` (${outside} outside its documented range)` : ''}`;
       })
       .join(', ');
   return [`Checks passed with the engines' own recommended settings: ${line('defaults')}; with the report's: ${line('report')}.`, ''];
@@ -189,7 +219,7 @@ export const stabilitySchema = {
       type: 'array',
       items: {
         type: 'object',
-        required: ['check', 'engine', 'profile', 'value', 'reference', 'unit', 'pass', 'detail'],
+        required: ['check', 'engine', 'profile', 'value', 'reference', 'unit', 'pass', 'detail', 'outsideRange'],
         properties: {
           check: { type: 'string' },
           engine: { type: 'string' },
@@ -199,6 +229,7 @@ export const stabilitySchema = {
           unit: { type: 'string' },
           pass: { type: 'boolean' },
           detail: { type: 'string' },
+          outsideRange: { type: ['string', 'null'] },
         },
         additionalProperties: false,
       },
