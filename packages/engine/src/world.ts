@@ -749,6 +749,49 @@ export class World {
     this.placeBody(s, x, y, rotation[0], rotation[1]);
   }
 
+  /**
+   * Sets a body's velocities so that, moving at them, it reaches the origin (x, y) turned to
+   * `angle` radians after `dt` seconds, the shorter way round: a moving platform, a door or an
+   * animated body driven by poses, which carries what rests on it by friction where setTransform
+   * would jump it there (Box2D v3's b2Body_SetTargetTransform). Call it before each step with that
+   * step's dt; the elastic pass lands on the pose to rounding, the soft step's sub-steps turn a
+   * body close to it. Meant for kinematic bodies; a dynamic one takes the velocities as a start,
+   * and a static one throws. Wakes it.
+   */
+  setTargetTransform(handle: number, x: number, y: number, angle: number, dt: number): void {
+    const s = this.slot(handle);
+    boundedNumber('x', x);
+    boundedNumber('y', y);
+    finiteNumber('angle', angle);
+    finiteNumber('dt', dt);
+    if (!(dt > 0)) throw new RangeError(`dt must be > 0, got ${dt}`);
+    const b = this.bodies;
+    if (b.type[s] === TypeCode.static) {
+      throw new RangeError(`body ${handle} is static and cannot be given a velocity towards (${x}, ${y}, ${angle}); make it kinematic or dynamic first`);
+    }
+    cosSin(angle, rotation);
+    const c = rotation[0];
+    const sn = rotation[1];
+    const rigid = b.rigid;
+    const lx = rigid ? rigid.localCenterX[s] : 0;
+    const ly = rigid ? rigid.localCenterY[s] : 0;
+    const vx = (x + (c * lx - sn * ly) - b.x[s]) / dt;
+    const vy = (y + (sn * lx + c * ly) - b.y[s]) / dt;
+    const c0 = rigid ? rigid.c[s] : 1;
+    const s0 = rigid ? rigid.s[s] : 0;
+    const w = atan2(c0 * sn - s0 * c, c0 * c + s0 * sn) / dt;
+    if (!(Math.abs(vx) <= MAX_MAGNITUDE && Math.abs(vy) <= MAX_MAGNITUDE && Math.abs(w) <= MAX_MAGNITUDE)) {
+      throw new RangeError(`reaching (${x}, ${y}, ${angle}) in dt ${dt} takes a velocity (${vx}, ${vy}) and spin ${w} beyond ${MAX_MAGNITUDE}`);
+    }
+    b.vx[s] = vx;
+    b.vy[s] = vy;
+    if (w !== 0 || rigid) {
+      this.useRigid().angularVelocity[s] = w;
+      if (w !== 0) this.turning = true;
+    }
+    b.wake(s);
+  }
+
   /** Adds a force (mass x length / s^2) to a dynamic body for the next step only; wakes it. */
   applyForce(handle: number, fx: number, fy: number): void {
     const s = this.dynamicSlot(handle, 'a force', 'fx', fx, 'fy', fy);

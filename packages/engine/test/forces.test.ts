@@ -145,3 +145,56 @@ describe('collision layers (report 3.1.4.2)', () => {
     expect(new Set(hashes).size).toBe(1);
   });
 });
+
+describe('setTargetTransform', () => {
+  it('moves a kinematic body onto each target pose in a step, and what rests on it rides along', () => {
+    // A dynamic body in free flight takes the velocities as well: its centre of mass lies off its origin, which a kinematic body's does not.
+    for (const [solver, turning, type] of [['elastic', true, 'kinematic'], ['elastic', true, 'dynamic'], ['soft', true, 'kinematic'], ['soft', false, 'kinematic']] as const) {
+      const world = new World({ gravity: { x: 0, y: solver === 'soft' ? 10 : 0 }, friction: 0.8, restitution: 0, solver });
+      // A platform of two boxes, turned at the start.
+      const platform = world.createBody({ x: 0, y: 0, angle: 0.3, type });
+      world.addShape(platform, { kind: 'box', width: 4, height: 0.5, offsetX: 1 });
+      world.addShape(platform, { kind: 'box', width: 0.5, height: 0.5, offsetX: -1.5, offsetY: -0.5 });
+      const riding = solver === 'soft' && !turning;
+      const rider = riding ? world.createBox({ x: 1, y: -0.5, width: 0.5, height: 0.5 }) : -1;
+      if (solver === 'soft') world.setTransform(platform, 0, 0, 0);
+      const dt = 1 / 60;
+      for (let s = 1; s <= 120; s++) {
+        const t = s * dt;
+        // Sideways and up from rest (within what friction holds), and turning; the elastic pass's turn crosses +-pi.
+        const x = 1.5 * (1 - Math.cos(t));
+        const y = -0.25 * t * t;
+        const angle = !turning ? 0 : solver === 'soft' ? 0.2 * (1 - Math.cos(2 * t)) : 1.5 * t;
+        world.setTargetTransform(platform, x, y, angle, dt);
+        world.step(dt);
+        const body = world.getBody(platform);
+        const label = `${solver}, ${type}${turning ? ', turning' : ''}, step ${s}`;
+        expect(body.x, label).toBeCloseTo(x, 9);
+        expect(body.y, label).toBeCloseTo(y, 9);
+        const turn = Math.atan2(Math.sin(body.angle - angle), Math.cos(body.angle - angle));
+        expect(Math.abs(turn), label).toBeLessThan(solver === 'soft' ? 1e-4 : 1e-12);
+      }
+      if (riding) {
+        // The rider kept its place on the platform: in the platform's frame it moved less than a centimetre.
+        const p = world.getBody(platform);
+        const r = world.getBody(rider);
+        const dx = r.x - p.x;
+        const dy = r.y - p.y;
+        const localX = Math.cos(p.angle) * dx + Math.sin(p.angle) * dy;
+        expect(Math.abs(localX - 1)).toBeLessThan(0.01);
+      }
+    }
+  });
+
+  it('refuses a static body, a bad dt or pose, and a velocity past the largest allowed, by name, leaving the body as it was', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const wall = world.createBox({ x: 0, y: 0, width: 1, height: 1, type: 'static' });
+    const lift = world.createBox({ x: 5, y: 0, width: 1, height: 1, type: 'kinematic' });
+    expect(() => world.setTargetTransform(wall, 1, 0, 0, 1 / 60)).toThrow(/static/);
+    expect(() => world.setTargetTransform(lift, 1, 0, 0, 0)).toThrow(RangeError);
+    expect(() => world.setTargetTransform(lift, 1, 0, 0, NaN)).toThrow(/dt.*NaN/);
+    expect(() => world.setTargetTransform(lift, 1, 0, NaN, 1 / 60)).toThrow(/angle.*NaN/);
+    expect(() => world.setTargetTransform(lift, 1e100, 0, 0, 1e-10)).toThrow(/beyond/);
+    expect(world.getBody(lift)).toMatchObject({ x: 5, y: 0, vx: 0, vy: 0, angularVelocity: 0 });
+  });
+});
