@@ -1,10 +1,13 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import { Ajv } from 'ajv';
+import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
 import { buildShapeScene } from '@maxgrid/scenes';
 import type { RunContext } from '../src/experiments/common.js';
 import { EXPERIMENTS, shapeEnergy, shapeFalsePositives, shapeStepTime, stability } from '../src/experiments/registry.js';
 import { allocatePoses, type ShapeEngine } from '../src/shape-engines/adapter.js';
 import { rampJudge } from '../src/experiments/stability.js';
+import { BOX2D_WASM_CORE } from '../src/engines/versions.js';
 import { SHAPE_ENGINE_IDS } from '../src/shape-engines/registry.js';
 import { loadShapeEnginesNode } from '../src/node/engines.js';
 import { tablesFor } from '../src/report/html.js';
@@ -136,11 +139,30 @@ describe('stability: checks outside an engine range', () => {
     for (const r of result.rows.filter((x) => x.outsideRange)) expect(r.outsideRange).toMatch(/outside Box2D 2\.4's documented range/);
     const [table] = stability.tables(result);
     const card = table.rows.find((row) => row[0] === 'card house')!;
-    expect(card[table.headers.indexOf('box2d-wasm')]).toMatch(/\(outside its range\)$/);
+    expect(card[table.headers.indexOf('Box2D 2.4.1 (WASM)')]).toMatch(/\(outside its range\)$/);
     expect(card[table.headers.indexOf('rapier')]).toMatch(/\((pass|FAIL)\)$/);
-    expect(table.note).toMatch(/card house with box2d-wasm and planck/);
+    expect(table.note).toMatch(/card house with Box2D 2\.4\.1 \(WASM\) and planck/);
     const headline = stability.headline(result).join(' ');
-    expect(headline).toMatch(/box2d-wasm \d\/5 \(2 outside its documented range\)/);
+    expect(headline).toMatch(/Box2D 2\.4\.1 \(WASM\) \d\/5 \(2 outside its documented range\)/);
     expect(headline).toMatch(/rapier \d\/7[,;.]/);
+  });
+});
+
+describe('engine labels', () => {
+  it("name box2d-wasm by the Box2D it compiles, 2.4.1, in every table, headline and chart of the shape experiments, so that it is not read as Box2D v3", async () => {
+    const readme = readFileSync(createRequire(import.meta.url).resolve('box2d-wasm/README.md'), 'utf8');
+    expect(readme).toContain(`Compatibility: Box2D [v${BOX2D_WASM_CORE}]`);
+    const ids = ['maxgrid:maxgrid', 'box2d-wasm'];
+    const results: [string, unknown][] = [
+      ['shape-step-time', await shapeStepTime.run({ ...shapeStepTime.options('quick', {}), fixed: [{ scene: 'pyramid', params: { base: 4 } }], sweeps: [{ scene: 'uniform-polygons', ns: [40], profile: 'report' }], runs: 1, steps: 2, warmupSteps: 1, warmUpMs: 0 }, ctx(ids))],
+      ['stability', await stability.run({ ...stability.options('quick', {}), pyramidBase: 4, seconds: 0.05, rampSeconds: 0.05, profiles: ['defaults'] }, ctx(ids))],
+      ['shape-energy', await shapeEnergy.run({ ...shapeEnergy.options('quick', {}), n: 40, seconds: 0.1, samples: 2 }, ctx(ids))],
+    ];
+    for (const [name, result] of results) {
+      const experiment = EXPERIMENTS[name];
+      const text = [...experiment.headline(result), ...tablesFor(name, result).flatMap((t) => [...t.headers, ...t.rows.flat(), t.note ?? '']), ...experiment.charts(result).map((c) => JSON.stringify(c))].join('\n');
+      expect(text, name).toContain('Box2D 2.4.1 (WASM)');
+      expect(text, name).not.toMatch(/box2d-wasm/);
+    }
   });
 });

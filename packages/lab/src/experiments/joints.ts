@@ -1,5 +1,5 @@
 import { buildShapeScene, type ShapeScene, type ShapeSceneName } from '@maxgrid/scenes';
-import { fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
+import { engineLabel, fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
 import { allocatePoses, resolveSceneJoints, scenePoint, UnsupportedSceneError, type PoseState, type ShapeProfile, type ShapeSimulation } from '../shape-engines/adapter.js';
 import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
 import { csvLine, makeMeta, shapeMetaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
@@ -311,7 +311,7 @@ export function jointsTables(result: JointsResult): Table[] {
   const first = (key: string) => result.rows.find((r) => caseOf(r) === key);
   const times: Table = {
     title: `Joint scenes: median ms per step, and its ratio to ${baseline}'s (above 1: maxgrid is faster)`,
-    headers: ['scene', 'bodies', 'joints', ...engines],
+    headers: ['scene', 'bodies', 'joints', ...engines.map(engineLabel)],
     rows: cases.map((key) => {
       const b = row(key, baseline);
       return [
@@ -331,7 +331,7 @@ export function jointsTables(result: JointsResult): Table[] {
   };
   const sanity: Table = {
     title: 'Joint scenes: a physical figure after the run (and the largest revolute pin gap, m); "implausible" where the joints gave way',
-    headers: ['scene', 'figure', 'plausible (pin gap)', 'after', ...engines],
+    headers: ['scene', 'figure', 'plausible (pin gap)', 'after', ...engines.map(engineLabel)],
     rows: cases
       .filter((key) => first(key))
       .map((key) => {
@@ -353,7 +353,7 @@ export function jointsTables(result: JointsResult): Table[] {
   };
   const out = [times, sanity];
   if (result.skipped.length > 0) {
-    out.push({ title: 'Engines not built on a joint scene, and why', headers: ['scene', 'engine', 'reason'], rows: result.skipped.map((s) => [s.scene, s.engine, s.reason]) });
+    out.push({ title: 'Engines not built on a joint scene, and why', headers: ['scene', 'engine', 'reason'], rows: result.skipped.map((s) => [s.scene, engineLabel(s.engine), s.reason]) });
   }
   return out;
 }
@@ -365,11 +365,11 @@ export function jointsHeadline(result: JointsResult): string[] {
     const b = result.rows.find((r) => caseOf(r) === key && r.engine === baseline);
     if (!b) continue;
     const scene = b.scene;
-    const peers = result.rows.filter((r) => caseOf(r) === key && r.engine !== baseline).map((r) => `${r.engine} ${ratioText(r.ms.median / b.ms.median)}${r.sanity.ok ? '' : ' (implausible)'}`);
+    const peers = result.rows.filter((r) => caseOf(r) === key && r.engine !== baseline).map((r) => `${engineLabel(r.engine)} ${ratioText(r.ms.median / b.ms.median)}${r.sanity.ok ? '' : ' (implausible)'}`);
     out.push(`${scene} (${b.bodies} bodies, ${b.joints} joints): ${baseline} ${fmt(b.ms.median)} ms a step; ${peers.length > 0 ? `${peers.join(', ')} as slow` : 'no peer has its joints'}.`);
   }
   const bad = result.rows.filter((r) => !r.sanity.ok);
-  out.push(bad.length === 0 ? 'Every engine that ran kept its joints within the plausible range.' : `Outside the plausible range: ${bad.map((r) => `${r.engine} on ${r.scene} of ${r.bodies} bodies (${r.sanity.label} ${fmt(r.sanity.value)}, pin gap ${fmt(r.sanity.pinGap)})`).join(', ')}.`, '');
+  out.push(bad.length === 0 ? 'Every engine that ran kept its joints within the plausible range.' : `Outside the plausible range: ${bad.map((r) => `${engineLabel(r.engine)} on ${r.scene} of ${r.bodies} bodies (${r.sanity.label} ${fmt(r.sanity.value)}, pin gap ${fmt(r.sanity.pinGap)})`).join(', ')}.`, '');
   return out;
 }
 

@@ -1,6 +1,6 @@
 import { buildShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
-import { fmt, type Table } from '../report/tables.js';
+import { engineLabel, fmt, type Table } from '../report/tables.js';
 import { allocatePoses, bodyMass, SHAPE_PROFILES, type PoseState, type ShapeProfile } from '../shape-engines/adapter.js';
 import { csvLine, makeMeta, shapeMetaSchema, type Meta, type Profile, type RunContext } from './common.js';
 
@@ -94,7 +94,7 @@ export function shapeEnergyTables(result: ShapeEnergyResult): Table[] {
     {
       title: 'Elastic frictionless polygons: kinetic energy (linear + rotational) over its start',
       headers: ['engine', 'profile', ...times.map((t) => `t = ${fmt(t)} s`)],
-      rows: result.rows.map((r) => [r.engine, r.profile, ...times.map((t) => fmt(at(r, t), 6))]),
+      rows: result.rows.map((r) => [engineLabel(r.engine), r.profile, ...times.map((t) => fmt(at(r, t), 6))]),
     },
   ];
 }
@@ -106,7 +106,7 @@ export function shapeEnergyCharts(result: ShapeEnergyResult): ChartSpec[] {
       title: `Elastic polygons, ${profile} settings: KE(t) / KE(0)`,
       xName: 'simulated seconds',
       yName: 'KE / KE(0)',
-      series: result.rows.filter((r) => r.profile === profile).map((r) => ({ name: r.engine, points: r.series })),
+      series: result.rows.filter((r) => r.profile === profile).map((r) => ({ name: engineLabel(r.engine), points: r.series })),
     }),
   );
 }
@@ -119,7 +119,7 @@ export function shapeEnergyCsv(result: ShapeEnergyResult): string {
 
 export function shapeEnergyHeadline(result: ShapeEnergyResult): string[] {
   const end = Math.max(...result.rows.flatMap((r) => r.series.map((p) => p[0])));
-  return [`Kinetic energy kept after ${fmt(end)} s of elastic collisions between squares and hexagons: ${result.rows.map((r) => `${r.engine} (${r.profile}) ${fmt(100 * at(r, end), 4)} %`).join(', ')}.`, ''];
+  return [`Kinetic energy kept after ${fmt(end)} s of elastic collisions between squares and hexagons: ${result.rows.map((r) => `${engineLabel(r.engine)} (${r.profile}) ${fmt(100 * at(r, end), 4)} %`).join(', ')}.`, ''];
 }
 
 export const shapeEnergySchema = {

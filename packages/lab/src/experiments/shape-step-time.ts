@@ -1,6 +1,6 @@
 import { buildShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
-import { fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
+import { engineLabel, fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
 import type { ShapeProfile, StageTimes } from '../shape-engines/adapter.js';
 import { csvLine, makeMeta, shapeMetaSchema, now, rotate, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 
@@ -198,7 +198,7 @@ export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
   const cases = [...new Map(result.rows.map((r) => [`${r.scene} ${r.n}`, r])).values()];
   const times: Table = {
     title: 'Step time on shape scenes (median of runs, ms)',
-    headers: ['scene', 'N', 'profile', ...engines],
+    headers: ['scene', 'N', 'profile', ...engines.map(engineLabel)],
     rows: cases.map((c) => [c.scene, String(c.n), c.profile, ...engines.map((e) => fmt(find(result, c.scene, c.n, e)?.ms.median))]),
     note: `Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; engines in turn, the order rotated per run.${warmUpNote('Before its first run of a case', result.options.warmUpMs)}`,
   };
@@ -206,7 +206,7 @@ export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
   const peers = peersOf(result);
   const answer: Table = {
     title: `Report 7.4: each peer's step time over ${baseline}'s (above 1: maxgrid is faster), and what takes maxgrid's step`,
-    headers: ['scene', 'N', `${baseline} ms`, ...peers, 'maxgrid pairs per body', 'maxgrid contacts per body', 'maxgrid stage that dominates'],
+    headers: ['scene', 'N', `${baseline} ms`, ...peers.map(engineLabel), 'maxgrid pairs per body', 'maxgrid contacts per body', 'maxgrid stage that dominates'],
     rows: cases.map((c) => {
       const b = find(result, c.scene, c.n, baseline);
       const s = b?.stages ?? null;
@@ -227,7 +227,7 @@ export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
   const sweeps = [...new Set(result.options.sweeps.map((s) => s.scene))];
   const crossings: Table = {
     title: 'Where a peer overtakes Max Grid along N (the first N at which it steps faster), if it does',
-    headers: ['scene', ...peers],
+    headers: ['scene', ...peers.map(engineLabel)],
     rows: sweeps.map((scene) => {
       const largest = Math.max(...result.rows.filter((r) => r.scene === scene).map((r) => r.n));
       return [scene, ...peers.map((p) => {
@@ -253,7 +253,7 @@ export function shapeStepTimeCharts(result: ShapeStepTimeResult): ChartSpec[] {
         yName: 'ms per step',
         xLog: true,
         yLog: true,
-        series: engines.map((e) => ({ name: e, points: rows.filter((r) => r.engine === e).map((r) => [r.n, r.ms.median] as [number, number]) })),
+        series: engines.map((e) => ({ name: engineLabel(e), points: rows.filter((r) => r.engine === e).map((r) => [r.n, r.ms.median] as [number, number]) })),
       }),
     );
     const peers = peersOf(result);
@@ -267,7 +267,7 @@ export function shapeStepTimeCharts(result: ShapeStepTimeResult): ChartSpec[] {
         yLog: true,
         series: [
           ...peers.map((p) => ({
-            name: p,
+            name: engineLabel(p),
             points: rows
               .filter((r) => r.engine === p)
               .flatMap((r) => {
@@ -298,7 +298,7 @@ export function shapeStepTimeHeadline(result: ShapeStepTimeResult): string[] {
   const pyramid = result.rows.filter((r) => r.scene === 'pyramid');
   const b = pyramid.find((r) => r.engine === baseline);
   if (b) {
-    const others = pyramid.filter((r) => !r.engine.startsWith('maxgrid:')).map((r) => `${r.engine} ${fmt(r.ms.median)} ms (${ratioText(r.ms.median / b.ms.median)})`);
+    const others = pyramid.filter((r) => !r.engine.startsWith('maxgrid:')).map((r) => `${engineLabel(r.engine)} ${fmt(r.ms.median)} ms (${ratioText(r.ms.median / b.ms.median)})`);
     out.push(`Box2D v3's large pyramid (${b.n} bodies): ${baseline} ${fmt(b.ms.median)} ms a step; ${others.join(', ')}.`, '');
   }
   for (const sweep of result.options.sweeps) {
@@ -308,11 +308,11 @@ export function shapeStepTimeHeadline(result: ShapeStepTimeResult): string[] {
     const peers = peersOf(result)
       .map((p) => find(result, sweep.scene, largest, p))
       .filter((r): r is ShapeStepTimeRow => r !== undefined)
-      .map((r) => `${r.engine} ${ratioText(r.ms.median / top.ms.median)}`);
+      .map((r) => `${engineLabel(r.engine)} ${ratioText(r.ms.median / top.ms.median)}`);
     const overtaken = peersOf(result).filter((p) => crossing(result, sweep.scene, p) !== null);
     out.push(
       `${sweep.scene} at N = ${largest}: ${baseline} ${fmt(top.ms.median)} ms a step (${dominantStage(top.stages)}); ${peers.join(', ')} as slow. ` +
-        (overtaken.length === 0 ? 'No peer overtakes it at any N measured.' : `Overtaken by ${overtaken.map((p) => `${p} from N = ${crossing(result, sweep.scene, p)}`).join(', ')}.`),
+        (overtaken.length === 0 ? 'No peer overtakes it at any N measured.' : `Overtaken by ${overtaken.map((p) => `${engineLabel(p)} from N = ${crossing(result, sweep.scene, p)}`).join(', ')}.`),
       '',
     );
   }

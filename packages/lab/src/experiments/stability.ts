@@ -1,5 +1,5 @@
 import { buildShapeScene, type ShapeScene } from '@maxgrid/scenes';
-import { fmt, type Table } from '../report/tables.js';
+import { engineLabel, fmt, type Table } from '../report/tables.js';
 import { allocatePoses, SHAPE_PROFILES, type ShapeProfile } from '../shape-engines/adapter.js';
 import { csvLine, makeMeta, shapeMetaSchema, type Meta, type Profile, type RunContext } from './common.js';
 
@@ -167,7 +167,7 @@ export function stabilityTables(result: StabilityResult): Table[] {
   const checks = [...new Set(result.rows.map((r) => r.check))];
   return profiles.map((profile) => ({
     title: `Stacking and friction, ${profile} settings: measured value (pass / FAIL); pyramid and stacks: the top box's drop in % of its height (pass: within 1.5 %, no box 0.25 m sideways; the stack of 5 cm boxes 12 % and 1.25 cm, the 100:1 stack 10 %, the card house 5 %); ramps: metres the box slid down the slope in 2 s (its centre, along the slope) against g (sin - mu cos) t^2 / 2 (pass: within 2 %, or under 1 cm when it should stick)`,
-    headers: ['check', ...engines],
+    headers: ['check', ...engines.map(engineLabel)],
     rows: checks.map((check) => [
       check,
       ...engines.map((e) => {
@@ -184,7 +184,7 @@ function outsideNote(result: StabilityResult): string | undefined {
   const marked = result.rows.filter((r) => r.outsideRange);
   const checks = [...new Set(marked.map((r) => r.check))].map((check) => {
     const rows = marked.filter((r) => r.check === check);
-    return `${check} with ${[...new Set(rows.map((r) => r.engine))].join(' and ')}, ${rows[0].outsideRange}`;
+    return `${check} with ${[...new Set(rows.map((r) => engineLabel(r.engine)))].join(' and ')}, ${rows[0].outsideRange}`;
   });
   return checks.length === 0 ? undefined : `"outside its range", not counted in the headline: ${checks.join('; ')}.`;
 }
@@ -203,7 +203,7 @@ export function stabilityHeadline(result: StabilityResult): string[] {
         const all = result.rows.filter((r) => r.engine === e && r.profile === profile);
         const rows = all.filter((r) => !r.outsideRange);
         const outside = all.length - rows.length;
-        return `${e} ${rows.filter((r) => r.pass).length}/${rows.length}${outside > 0 ? ` (${outside} outside its documented range)` : ''}`;
+        return `${engineLabel(e)} ${rows.filter((r) => r.pass).length}/${rows.length}${outside > 0 ? ` (${outside} outside its documented range)` : ''}`;
       })
       .join(', ');
   return [`Checks passed with the engines' own recommended settings: ${line('defaults')}; with the report's: ${line('report')}.`, ''];

@@ -3,6 +3,7 @@ import type { EnergyResult } from '../experiments/energy.js';
 import type { FalsePositiveResult, FalsePositiveSweep } from '../experiments/false-positives.js';
 import type { ScaleResult } from '../experiments/scale.js';
 import { stepTimeRatio, type StepTimeResult } from '../experiments/step-time.js';
+import { BOX2D_WASM_CORE } from '../engines/versions.js';
 
 export interface Table {
   title: string;
@@ -25,6 +26,14 @@ export function ratioText(x: number): string {
 }
 
 export const BASELINE = 'maxgrid:maxgrid';
+
+/**
+ * How tables, headlines and charts name an engine: by its id, but box2d-wasm by the Box2D it
+ * compiles, 2.4.1, where the shape experiments speak of Box2D v3's benchmarks. Data files keep ids.
+ */
+export function engineLabel(id: string): string {
+  return id === 'box2d-wasm' ? `Box2D ${BOX2D_WASM_CORE} (WASM)` : id;
+}
 
 export function engineTable(engines: EngineInfo[]): Table {
   return {
