@@ -230,6 +230,40 @@ describe('events with shapes', () => {
     // It fell straight through: free fall, untouched by the sensor.
     expect(world.getBody(box).vy).toBeCloseTo(10 * 2, 6);
   });
+  it('a sensor overlap begins and ends in the step it appears and goes, from where the bodies end the step (Box2D runs sensors after the solve)', () => {
+    for (const solver of ['soft', 'elastic'] as const) {
+      for (const speed of [3, 60, 600]) {
+        const world = new World({ gravity: { x: 0, y: 0 }, restitution: 1, friction: 0, solver });
+        // A static sensor and a kinematic one; a box thrown through each, from far enough that no step starts near.
+        const gates = [
+          world.createBox({ x: 10, y: 0, width: 0.5, height: 4, type: 'static', sensor: true }),
+          world.createBox({ x: 10, y: 20, width: 0.5, height: 4, type: 'kinematic', sensor: true }),
+        ];
+        const boxes = [world.createBox({ x: -30, y: 0, width: 0.4, height: 0.4, vx: speed }), world.createBox({ x: -30, y: 20, width: 0.4, height: 0.4, vx: speed })];
+        for (let g = 0; g < 2; g++) {
+          const gate = world.getBody(gates[g]).shapes[0];
+          const visitor = world.getBody(boxes[g]).shapes[0];
+          let inside = false;
+          for (let step = 0; step < 2000 && world.getBody(boxes[g]).x < 20; step++) {
+            world.step(DT);
+            const x = world.getBody(boxes[g]).x;
+            // Overlapping where the step left it: the gate spans 9.75..10.25, the box 0.4 wide.
+            const overlaps = x + 0.2 > 9.75 && x - 0.2 < 10.25;
+            const e = world.contactEvents();
+            let began = false;
+            let ended = false;
+            for (let k = 0; k < e.sensorBeginCount; k++) if (e.sensorBeginSensor[k] === gate && e.sensorBeginVisitor[k] === visitor) began = true;
+            for (let k = 0; k < e.sensorEndCount; k++) if (e.sensorEndSensor[k] === gate && e.sensorEndVisitor[k] === visitor) ended = true;
+            const label = `${solver}, ${speed} m/s, gate ${g}, step ${step}, x ${x}`;
+            expect(began, label).toBe(overlaps && !inside);
+            expect(ended, label).toBe(!overlaps && inside);
+            inside = overlaps;
+          }
+        }
+      }
+    }
+  });
+
   it('a sensor reports the shapes of dynamic bodies alone, whatever body carries it', () => {
     for (const carrier of ['dynamic', 'kinematic', 'static'] as const) {
       const world = new World({ friction: 0.5 });

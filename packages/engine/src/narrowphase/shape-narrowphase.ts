@@ -13,6 +13,8 @@ import { Manifold } from './manifold.js';
 import { WorldShape } from './world-shape.js';
 import { collide } from './dispatch.js';
 import type { JointStore } from '../joints/joint-store.js';
+import type { Queries } from '../query/queries.js';
+import { shapeBounds } from '../shapes/bounds.js';
 
 /** Candidate pairs readAhead loads at a time: their records and poses (some 160 KB) stay in a core's L2 until the pairs are tested. */
 const READ_AHEAD = 256;
@@ -344,6 +346,59 @@ export class ShapeNarrowPhase implements PairConsumer {
     this.worldEntry[this.worldCount++] = entry;
   }
 
+  /**
+   * The step's sensor overlaps, where the bodies ended it (Box2D v3 runs its sensors after the
+   * solve, so an overlap begins in the step it appears, not the next): each live sensor shape's
+   * box is looked up among the bodies (`queries`, built for `version`, the positions the step
+   * leaves), and each shape there of an awake dynamic body other than the sensor's own, that the
+   * filters let through and no joint keeps apart, is tested for overlap (a point closer than 0).
+   * A sensor reports the shapes of dynamic bodies alone, not other sensors; a sleeping visitor's
+   * overlap ends. The order found does not matter: the events sort the pairs.
+   */
+  sense(shapes: ShapeStore, queries: Queries, version: number, slop: number): void {
+    this.sensorCount = 0;
+    if (shapes.sensors === 0) return;
+    const bodies = this.bodies;
+    const { type, asleep, x, y } = bodies;
+    const { c, s, firstShape } = bodies.rigid!;
+    const pose = this.senseScratch;
+    const found = this.senseFound;
+    const m = this.manifold;
+    for (let sa = 0; sa < shapes.slotCount; sa++) {
+      if (shapes.live[sa] !== 1 || shapes.sensor[sa] !== 1) continue;
+      const i = shapes.body[sa];
+      pose[0] = x[i];
+      pose[1] = y[i];
+      pose[2] = c[i];
+      pose[3] = s[i];
+      const box = shapeBounds(shapes, sa, pose, this.senseBox);
+      found.length = 0;
+      queries.slotsInBox(version, box[0], box[1], box[2], box[3], found);
+      const a = this.shapeA.fromPose(shapes, sa, pose, 0);
+      for (let f = 0; f < found.length; f++) {
+        const j = found[f];
+        if (j === i || type[j] !== TypeCode.dynamic || asleep[j] === 1) continue;
+        const joints = this.joints;
+        if (joints !== null && joints.nonColliding > 0 && joints.joined(i, j)) continue;
+        pose[4] = x[j];
+        pose[5] = y[j];
+        pose[6] = c[j];
+        pose[7] = s[j];
+        for (let sb = firstShape[j]; sb >= 0; sb = shapes.next[sb]) {
+          if (shapes.sensor[sb] === 1) continue;
+          if ((shapes.category[sa] & shapes.mask[sb]) === 0 || (shapes.category[sb] & shapes.mask[sa]) === 0) continue;
+          const b = this.shapeB.fromPose(shapes, sb, pose, 4);
+          collide(a, b, 0, slop, m);
+          if (m.pointCount > 0 && (m.separation[0] < 0 || (m.pointCount === 2 && m.separation[1] < 0))) this.noteSensor(sa, sb);
+        }
+      }
+    }
+  }
+
+  private readonly senseScratch = new Float64Array(8);
+  private readonly senseBox = new Float64Array(4);
+  private readonly senseFound: number[] = [];
+
   private noteSensor(sensor: number, visitor: number): void {
     if (this.sensorCount === this.sensorSlots.length) {
       this.sensorSlots = grow(this.sensorSlots, 2 * this.sensorSlots.length);
@@ -391,17 +446,8 @@ export class ShapeNarrowPhase implements PairConsumer {
           this.filtered++;
           continue;
         }
-        const sensorA = record[ra + ShapeField.sensor];
-        const sensorB = record[rb + ShapeField.sensor];
-        const sensing = sensorA !== sensorB;
-        if (sensorA === 1 && sensorB === 1) continue;
-        if (sensing) {
-          // A sensor reports the shapes of dynamic bodies alone. A sleeping visitor's overlap
-          // ends, as it does with a static sensor, whose pair with a sleeper is never tested: a
-          // moving kinematic sensor would otherwise keep it.
-          const visitor = sensorA === 1 ? j : i;
-          if (bodies.type[visitor] !== TypeCode.dynamic || bodies.asleep[visitor]) continue;
-        }
+        // A sensor takes no contact: its overlaps are found at the step's end (see sense).
+        if (record[ra + ShapeField.sensor] === 1 || record[rb + ShapeField.sensor] === 1) continue;
         if (compound) {
           const ax = x[i] + c[i] * shapes.centroidX[sa] - s[i] * shapes.centroidY[sa];
           const ay = y[i] + s[i] * shapes.centroidX[sa] + c[i] * shapes.centroidY[sa];
@@ -414,7 +460,7 @@ export class ShapeNarrowPhase implements PairConsumer {
         const pose = list.pose;
         pose[Pose.keyA] = record[ra + ShapeField.handle];
         pose[Pose.keyB] = record[rb + ShapeField.handle];
-        const q = sensing ? -1 : this.find(p, i, j);
+        const q = this.find(p, i, j);
         if (q >= 0 && this.recycleDistance > 0 && lone !== 0 && this.recycle(q, i, j)) {
           touching = true;
           continue;
@@ -433,15 +479,6 @@ export class ShapeNarrowPhase implements PairConsumer {
         const a = this.shapeA.fromPose(shapes, sa, pose, Pose.ax);
         const b = this.shapeB.fromPose(shapes, sb, pose, Pose.bx);
         const m = this.manifold;
-        if (sensing) {
-          // A sensor reports overlap (any point closer than 0) and takes no contact.
-          collide(a, b, 0, slop, m);
-          if (m.pointCount > 0 && (m.separation[0] < 0 || (m.pointCount === 2 && m.separation[1] < 0))) {
-            if (sensorA === 1) this.noteSensor(sa, sb);
-            else this.noteSensor(sb, sa);
-          }
-          continue;
-        }
         collide(a, b, margin, slop, m);
         if (m.pointCount === 0) continue;
         touching = true;

@@ -119,6 +119,9 @@ export class ShapeRoute {
     }
     const t4 = nowMs();
     if (settings.box) this.contain(settings.box, elastic ? 0 : settings.slop);
+    // Sensors see where the bodies ended the step; the queries' grid built for it serves the
+    // caller's queries after the step too (the world's next geometry version).
+    if (events !== null) narrow.sense(this.shapes, queries, queryVersion + 1, settings.slop);
     const t5 = nowMs();
     const sleeping = settings.sleeping;
     if (sleeping.enabled) this.islands.update(bodies, contacts, joints?.store ?? null, dt, sleeping.speed, sleeping.time);

@@ -77,6 +77,8 @@ export class ShapeStore {
   version = 0;
   /** Live shapes that take contacts and can lose energy in them: friction, rolling resistance or restitution below 1 (see World's solver 'auto'). */
   inelastic = 0;
+  /** Live sensor shapes (see ShapeNarrowPhase.sense). */
+  sensors = 0;
   private freeSlots: number[] = [];
 
   /** Stores a shape for body `slot`; returns the shape's slot. The caller links it to the body. */
@@ -99,6 +101,7 @@ export class ShapeStore {
     this.restitution[slot] = shape.restitution;
     this.rollingResistance[slot] = shape.rollingResistance;
     if (this.losesEnergy(slot)) this.inelastic++;
+    if (shape.sensor) this.sensors++;
     this.category[slot] = shape.category;
     this.mask[slot] = shape.mask;
     const record = this.record;
@@ -130,6 +133,7 @@ export class ShapeStore {
 
   remove(slot: number): void {
     if (this.losesEnergy(slot)) this.inelastic--;
+    if (this.sensor[slot] === 1) this.sensors--;
     this.live[slot] = 0;
     this.count--;
     this.version++;
