@@ -7,6 +7,7 @@ import type { RunContext } from '../src/experiments/common.js';
 import { EXPERIMENTS, shapeEnergy, shapeFalsePositives, shapeStepTime, stability } from '../src/experiments/registry.js';
 import { allocatePoses, type ShapeEngine } from '../src/shape-engines/adapter.js';
 import { rampJudge } from '../src/experiments/stability.js';
+import { crossing, sceneBroken } from '../src/experiments/shape-step-time.js';
 import { BOX2D_WASM_CORE } from '../src/engines/versions.js';
 import { SHAPE_ENGINE_IDS } from '../src/shape-engines/registry.js';
 import { loadShapeEnginesNode } from '../src/node/engines.js';
@@ -164,5 +165,58 @@ describe('engine labels', () => {
       expect(text, name).toContain('Box2D 2.4.1 (WASM)');
       expect(text, name).not.toMatch(/box2d-wasm/);
     }
+  });
+});
+
+describe('shape-step-time: broken simulations', () => {
+  it('sceneBroken: bodies that end over a metre outside the scene (through a floor) are named, bodies that settle are not', () => {
+    const scene = buildShapeScene('many-pyramids', { rows: 1, columns: 2, base: 3 });
+    const p = allocatePoses(scene.bodies.length);
+    scene.bodies.forEach((b, k) => {
+      p.x[k] = b.x;
+      p.y[k] = b.y + 0.05;
+    });
+    expect(sceneBroken(scene, p)).toBeNull();
+    p.y[3] += 5;
+    p.x[5] = NaN;
+    expect(sceneBroken(scene, p)).toBe('2 of 12 bodies ended over 1 m outside the scene (through a floor or a wall)');
+  });
+
+  it("marks a peer whose pyramids fall through their floors invalid, and gives it no ratio, crossing or chart point", async () => {
+    const real = engines.find((e) => e.info.id === 'box2d-wasm')!;
+    // A peer that builds no floors or walls: its bodies fall freely, as p2-es's pyramids did through floors it could not collide with.
+    const floorless: ShapeEngine = { info: { ...real.info, id: 'floorless' }, create: (scene, profile) => real.create({ ...scene, segments: [], bounds: null }, profile) };
+    const result = await shapeStepTime.run(
+      {
+        ...shapeStepTime.options('quick', {}),
+        fixed: [{ scene: 'many-pyramids', params: { rows: 1, columns: 2, base: 3 } }],
+        sweeps: [{ scene: 'polygon-box', ns: [250], profile: 'defaults' }],
+        runs: 1,
+        steps: 30,
+        warmupSteps: 30,
+        warmUpMs: 0,
+        baseline: 'box2d-wasm',
+      },
+      { ...ctx(['box2d-wasm']), shapeEngines: [real, floorless] },
+    );
+    expectValid(shapeStepTime.schema, result);
+    const row = (id: string) => result.rows.find((r) => r.engine === id)!;
+    for (const r of result.rows) {
+      if (r.engine === 'box2d-wasm') expect(r.invalid, r.scene).toBeNull();
+      else expect(r.invalid, r.scene).toMatch(/^run 1: \d+ of \d+ bodies ended over 1 m outside the scene/);
+    }
+    const [times, answer] = shapeStepTime.tables(result);
+    for (let i = 0; i < 2; i++) {
+      expect(times.rows[i][times.headers.indexOf('floorless')]).toMatch(/ \(invalid\)$/);
+      expect(answer.rows[i][answer.headers.indexOf('floorless')]).toBe('invalid');
+    }
+    expect(times.note).toMatch(/"invalid": the engine's simulation of the scene was broken/);
+    // Stepping nothing, the floorless peer is faster than Box2D: without the check it would overtake it.
+    expect(crossing(result, 'polygon-box', 'floorless')).toBeNull();
+    for (const chart of shapeStepTime.charts(result)) {
+      const series = (chart.option as { series: { name: string; data: unknown[] }[] }).series.find((x) => x.name === 'floorless');
+      expect(series?.data ?? [], chart.id).toEqual([]);
+    }
+    expect(shapeStepTime.headline(result).join(' ')).toMatch(/invalid, a broken simulation: floorless/);
   });
 });

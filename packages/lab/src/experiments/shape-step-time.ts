@@ -1,7 +1,7 @@
-import { buildShapeScene } from '@maxgrid/scenes';
+import { buildShapeScene, type ShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
 import { engineLabel, fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
-import type { ShapeProfile, StageTimes } from '../shape-engines/adapter.js';
+import { allocatePoses, bodyCentroid, type PoseState, type ShapeProfile, type StageTimes } from '../shape-engines/adapter.js';
 import { csvLine, makeMeta, shapeMetaSchema, now, rotate, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 
 /**
@@ -81,6 +81,8 @@ export interface ShapeStepTimeRow {
   ms: Spread;
   /** maxgrid only: mean stage times and counts over the timed steps of the last run. */
   stages: StageTimes | null;
+  /** Why the engine's simulation of the scene was broken in a run (sceneBroken), or null: its time is not compared. */
+  invalid: string | null;
 }
 
 export interface ShapeStepTimeResult {
@@ -88,6 +90,33 @@ export interface ShapeStepTimeResult {
   options: ShapeStepTimeOptions;
   rows: ShapeStepTimeRow[];
   skipped: { scene: string; engine: string; fromN: number }[];
+}
+
+/**
+ * Whether a simulation of the scene is broken rather than slow: a body that ends more than a
+ * metre outside the scene's box (its walls, or the view it is drawn in where it has none), or at
+ * no finite place, has fallen through a floor or out through a wall, which no engine's stacking
+ * or settling does. Such an engine's time is for another scene (p2-es's pyramids falling through
+ * floors it could not collide with stepped as free fall), so its row is marked and given no
+ * ratio. Static and kinematic bodies are not judged. Returns why, or null.
+ */
+export function sceneBroken(scene: ShapeScene, p: PoseState): string | null {
+  const margin = scene.world.lengthUnit ?? 1;
+  const box = scene.bounds ? { minX: 0, minY: 0, maxX: scene.bounds.width, maxY: scene.bounds.height } : scene.view;
+  let out = 0;
+  let dynamic = 0;
+  scene.bodies.forEach((b, k) => {
+    if ((b.type ?? 'dynamic') !== 'dynamic') return;
+    dynamic++;
+    const c = bodyCentroid(b);
+    const cos = Math.cos(p.angle[k]);
+    const sin = Math.sin(p.angle[k]);
+    const x = p.x[k] + cos * c.x - sin * c.y;
+    const y = p.y[k] + sin * c.x + cos * c.y;
+    const inside = x >= box.minX - margin && x <= box.maxX + margin && y >= box.minY - margin && y <= box.maxY + margin;
+    if (!inside) out++;
+  });
+  return out === 0 ? null : `${out} of ${dynamic} bodies ended over 1 m outside the scene (through a floor or a wall)`;
 }
 
 export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext): Promise<ShapeStepTimeResult> {
@@ -107,6 +136,7 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
     dropped.set(c.scene, out);
     const runMs = new Map<string, number[]>(engines.map((e) => [e.info.id, []]));
     const stages = new Map<string, StageTimes>();
+    const invalid = new Map<string, string>();
     let size = 0;
     for (let run = 0; run < o.runs; run++) {
       const params = c.sweep ? { ...c.params, seed: run + 1 } : c.params;
@@ -136,6 +166,10 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
             for (const key of Object.keys(sum) as (keyof StageTimes)[]) sum[key] /= o.steps;
             stages.set(id, sum);
           }
+          const poses = allocatePoses(sim.count);
+          sim.read(poses);
+          const broken = sceneBroken(scene, poses);
+          if (broken && !invalid.has(id)) invalid.set(id, `run ${run + 1}: ${broken}`);
         } finally {
           sim.dispose();
         }
@@ -146,7 +180,7 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
       const id = engine.info.id;
       const values = runMs.get(id)!;
       if (values.length === 0) continue;
-      const row: ShapeStepTimeRow = { scene: c.scene, n: c.sweep ? c.params.n : size, params: c.params, profile: c.profile, engine: id, runMs: values, ms: spread(values), stages: stages.get(id) ?? null };
+      const row: ShapeStepTimeRow = { scene: c.scene, n: c.sweep ? c.params.n : size, params: c.params, profile: c.profile, engine: id, runMs: values, ms: spread(values), stages: stages.get(id) ?? null, invalid: invalid.get(id) ?? null };
       rows.push(row);
       if (c.sweep && row.ms.median > o.cutoffMs && !out.has(id)) {
         out.add(id);
@@ -181,6 +215,12 @@ function find(result: ShapeStepTimeResult, scene: string, n: number, engine: str
   return result.rows.find((r) => r.scene === scene && r.n === n && r.engine === engine);
 }
 
+/** A peer's time over the baseline's, or 'invalid' where either's simulation was broken (results from before the check have no `invalid`). */
+function ratioCell(r: ShapeStepTimeRow | undefined, b: ShapeStepTimeRow | undefined): string {
+  if (!r || !b) return '';
+  return r.invalid || b.invalid ? 'invalid' : ratioText(r.ms.median / b.ms.median);
+}
+
 /** Where a peer first steps faster than the baseline along a sweep, or null. */
 export function crossing(result: ShapeStepTimeResult, scene: string, peer: string): number | null {
   const baseline = result.options.baseline;
@@ -188,9 +228,16 @@ export function crossing(result: ShapeStepTimeResult, scene: string, peer: strin
   for (const n of ns) {
     const a = find(result, scene, n, peer);
     const b = find(result, scene, n, baseline);
-    if (a && b && a.ms.median < b.ms.median) return n;
+    if (a && b && !a.invalid && !b.invalid && a.ms.median < b.ms.median) return n;
   }
   return null;
+}
+
+/** The times table's note on rows whose simulation was broken, where there are any. */
+function invalidNote(result: ShapeStepTimeResult): string {
+  const bad = result.rows.filter((r) => r.invalid);
+  if (bad.length === 0) return '';
+  return `"invalid": the engine's simulation of the scene was broken, so its time is for another scene and is given no ratio (${bad.map((r) => `${engineLabel(r.engine)} on ${r.scene} ${r.n}, ${r.invalid}`).join('; ')}). `;
 }
 
 export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
@@ -199,8 +246,16 @@ export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
   const times: Table = {
     title: 'Step time on shape scenes (median of runs, ms)',
     headers: ['scene', 'N', 'profile', ...engines.map(engineLabel)],
-    rows: cases.map((c) => [c.scene, String(c.n), c.profile, ...engines.map((e) => fmt(find(result, c.scene, c.n, e)?.ms.median))]),
-    note: `Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; engines in turn, the order rotated per run.${warmUpNote('Before its first run of a case', result.options.warmUpMs)}`,
+    rows: cases.map((c) => [
+      c.scene,
+      String(c.n),
+      c.profile,
+      ...engines.map((e) => {
+        const r = find(result, c.scene, c.n, e);
+        return r?.invalid ? `${fmt(r.ms.median)} (invalid)` : fmt(r?.ms.median);
+      }),
+    ]),
+    note: `${invalidNote(result)}Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; engines in turn, the order rotated per run.${warmUpNote('Before its first run of a case', result.options.warmUpMs)}`,
   };
   const baseline = result.options.baseline;
   const peers = peersOf(result);
@@ -214,10 +269,7 @@ export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
         c.scene,
         String(c.n),
         fmt(b?.ms.median),
-        ...peers.map((p) => {
-          const r = find(result, c.scene, c.n, p);
-          return r && b ? ratioText(r.ms.median / b.ms.median) : '';
-        }),
+        ...peers.map((p) => ratioCell(find(result, c.scene, c.n, p), b)),
         s ? fmt(s.candidatePairs / c.n) : '',
         s ? fmt(s.contacts / c.n) : '',
         dominantStage(s),
@@ -253,7 +305,7 @@ export function shapeStepTimeCharts(result: ShapeStepTimeResult): ChartSpec[] {
         yName: 'ms per step',
         xLog: true,
         yLog: true,
-        series: engines.map((e) => ({ name: engineLabel(e), points: rows.filter((r) => r.engine === e).map((r) => [r.n, r.ms.median] as [number, number]) })),
+        series: engines.map((e) => ({ name: engineLabel(e), points: rows.filter((r) => r.engine === e && !r.invalid).map((r) => [r.n, r.ms.median] as [number, number]) })),
       }),
     );
     const peers = peersOf(result);
@@ -269,10 +321,10 @@ export function shapeStepTimeCharts(result: ShapeStepTimeResult): ChartSpec[] {
           ...peers.map((p) => ({
             name: engineLabel(p),
             points: rows
-              .filter((r) => r.engine === p)
+              .filter((r) => r.engine === p && !r.invalid)
               .flatMap((r) => {
                 const b = find(result, sweep.scene, r.n, baseline);
-                return b ? [[r.n, r.ms.median / b.ms.median] as [number, number]] : [];
+                return b && !b.invalid ? [[r.n, r.ms.median / b.ms.median] as [number, number]] : [];
               }),
           })),
           { name: 'parity', points: [...new Set(rows.map((r) => r.n))].sort((a, b) => a - b).map((n) => [n, 1] as [number, number]) },
@@ -284,10 +336,10 @@ export function shapeStepTimeCharts(result: ShapeStepTimeResult): ChartSpec[] {
 }
 
 export function shapeStepTimeCsv(result: ShapeStepTimeResult): string {
-  const lines = [csvLine(['scene', 'n', 'profile', 'engine', 'median_ms', 'p25_ms', 'p75_ms', 'runs', 'broadphase_ms', 'narrowphase_ms', 'solve_ms', 'candidate_pairs', 'contacts'])];
+  const lines = [csvLine(['scene', 'n', 'profile', 'engine', 'median_ms', 'p25_ms', 'p75_ms', 'runs', 'broadphase_ms', 'narrowphase_ms', 'solve_ms', 'candidate_pairs', 'contacts', 'invalid'])];
   for (const r of result.rows) {
     const s = r.stages;
-    lines.push(csvLine([r.scene, r.n, r.profile, r.engine, r.ms.median, r.ms.p25, r.ms.p75, r.runMs.length, s?.broadphaseMs ?? '', s?.narrowphaseMs ?? '', s?.solveMs ?? '', s?.candidatePairs ?? '', s?.contacts ?? '']));
+    lines.push(csvLine([r.scene, r.n, r.profile, r.engine, r.ms.median, r.ms.p25, r.ms.p75, r.runMs.length, s?.broadphaseMs ?? '', s?.narrowphaseMs ?? '', s?.solveMs ?? '', s?.candidatePairs ?? '', s?.contacts ?? '', r.invalid ?? '']));
   }
   return lines.join('\n') + '\n';
 }
@@ -298,20 +350,21 @@ export function shapeStepTimeHeadline(result: ShapeStepTimeResult): string[] {
   const pyramid = result.rows.filter((r) => r.scene === 'pyramid');
   const b = pyramid.find((r) => r.engine === baseline);
   if (b) {
-    const others = pyramid.filter((r) => !r.engine.startsWith('maxgrid:')).map((r) => `${engineLabel(r.engine)} ${fmt(r.ms.median)} ms (${ratioText(r.ms.median / b.ms.median)})`);
+    const others = pyramid.filter((r) => !r.engine.startsWith('maxgrid:')).map((r) => `${engineLabel(r.engine)} ${fmt(r.ms.median)} ms (${ratioCell(r, b)})`);
     out.push(`Box2D v3's large pyramid (${b.n} bodies): ${baseline} ${fmt(b.ms.median)} ms a step; ${others.join(', ')}.`, '');
   }
   for (const sweep of result.options.sweeps) {
     const largest = Math.max(...result.rows.filter((r) => r.scene === sweep.scene).map((r) => r.n));
     const top = find(result, sweep.scene, largest, baseline);
     if (!top) continue;
-    const peers = peersOf(result)
+    const at = peersOf(result)
       .map((p) => find(result, sweep.scene, largest, p))
-      .filter((r): r is ShapeStepTimeRow => r !== undefined)
-      .map((r) => `${engineLabel(r.engine)} ${ratioText(r.ms.median / top.ms.median)}`);
+      .filter((r): r is ShapeStepTimeRow => r !== undefined);
+    const peers = at.filter((r) => ratioCell(r, top) !== 'invalid').map((r) => `${engineLabel(r.engine)} ${ratioCell(r, top)}`);
+    const broken = at.filter((r) => ratioCell(r, top) === 'invalid').map((r) => engineLabel(r.engine));
     const overtaken = peersOf(result).filter((p) => crossing(result, sweep.scene, p) !== null);
     out.push(
-      `${sweep.scene} at N = ${largest}: ${baseline} ${fmt(top.ms.median)} ms a step (${dominantStage(top.stages)}); ${peers.join(', ')} as slow. ` +
+      `${sweep.scene} at N = ${largest}: ${baseline} ${fmt(top.ms.median)} ms a step (${dominantStage(top.stages)}); ${peers.length > 0 ? `${peers.join(', ')} as slow` : 'no peer compared'}${broken.length > 0 ? ` (invalid, a broken simulation: ${broken.join(', ')})` : ''}. ` +
         (overtaken.length === 0 ? 'No peer overtakes it at any N measured.' : `Overtaken by ${overtaken.map((p) => `${engineLabel(p)} from N = ${crossing(result, sweep.scene, p)}`).join(', ')}.`),
       '',
     );
@@ -344,7 +397,7 @@ export const shapeStepTimeSchema = {
       type: 'array',
       items: {
         type: 'object',
-        required: ['scene', 'n', 'params', 'profile', 'engine', 'runMs', 'ms', 'stages'],
+        required: ['scene', 'n', 'params', 'profile', 'engine', 'runMs', 'ms', 'stages', 'invalid'],
         properties: {
           scene: { type: 'string' },
           n: { type: 'integer', minimum: 0 },
@@ -354,6 +407,7 @@ export const shapeStepTimeSchema = {
           runMs: { type: 'array', minItems: 1, items: { type: 'number', minimum: 0 } },
           ms: spreadSchema,
           stages: stagesSchema,
+          invalid: { type: ['string', 'null'] },
         },
         additionalProperties: false,
       },
