@@ -220,3 +220,22 @@ describe('shape-step-time: broken simulations', () => {
     expect(shapeStepTime.headline(result).join(' ')).toMatch(/invalid, a broken simulation: floorless/);
   });
 });
+
+describe('shape-step-time: timing', () => {
+  it('steps all engines side by side, a step each in turn, the order turned each step', async () => {
+    const log: string[] = [];
+    const real = engines.find((e) => e.info.id === 'maxgrid:maxgrid')!;
+    const logging = (id: string): ShapeEngine => ({
+      info: { ...real.info, id },
+      create: (scene, profile) => {
+        const sim = real.create(scene, profile);
+        return { count: sim.count, step: (dt) => (log.push(id), sim.step(dt)), read: (p) => sim.read(p), dispose: () => sim.dispose() };
+      },
+    });
+    await shapeStepTime.run(
+      { ...shapeStepTime.options('quick', {}), fixed: [{ scene: 'pyramid', params: { base: 3 } }], sweeps: [], runs: 1, steps: 4, warmupSteps: 1, warmUpMs: 0, baseline: 'a' },
+      { ...ctx([]), shapeEngines: [logging('a'), logging('b'), logging('c')] },
+    );
+    expect(log.join('')).toBe('abc' + 'abc' + 'bca' + 'cab' + 'abc');
+  });
+});

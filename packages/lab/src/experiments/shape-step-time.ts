@@ -1,8 +1,8 @@
 import { buildShapeScene, type ShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
 import { engineLabel, fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
-import { allocatePoses, bodyCentroid, type PoseState, type ShapeProfile, type StageTimes } from '../shape-engines/adapter.js';
-import { csvLine, makeMeta, shapeMetaSchema, now, rotate, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+import { allocatePoses, bodyCentroid, type PoseState, type ShapeProfile, type ShapeSimulation, type StageTimes } from '../shape-engines/adapter.js';
+import { csvLine, makeMeta, shapeMetaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 
 /**
  * Step time on scenes of shapes, every engine on the same scene: Box2D v3's fixed benchmarks
@@ -128,9 +128,10 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
     ...o.fixed.map((f) => ({ scene: f.scene, params: f.params, profile: o.fixedProfile, sweep: false })),
     ...o.sweeps.flatMap((s) => s.ns.map((n) => ({ scene: s.scene, params: { n }, profile: s.profile, sweep: true }))),
   ];
-  const total = cases.length * o.runs * engines.length;
+  const total = cases.length * o.runs;
   let done = 0;
   const dropped = new Map<string, Set<string>>();
+  const zero = (): StageTimes => ({ broadphaseMs: 0, narrowphaseMs: 0, solveMs: 0, pairTests: 0, candidatePairs: 0, contacts: 0 });
   for (const c of cases) {
     const out = dropped.get(c.scene) ?? new Set<string>();
     dropped.set(c.scene, out);
@@ -139,42 +140,49 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
     const invalid = new Map<string, string>();
     let size = 0;
     for (let run = 0; run < o.runs; run++) {
+      ctx.progress?.(done++, total, `${c.scene} ${JSON.stringify(c.params)} run ${run + 1}`);
       const params = c.sweep ? { ...c.params, seed: run + 1 } : c.params;
-      for (const engine of rotate(engines, run)) {
-        const id = engine.info.id;
-        ctx.progress?.(done++, total, `${c.scene} ${JSON.stringify(c.params)} run ${run + 1} ${id}`);
-        if (out.has(id)) continue;
-        const scene = buildShapeScene(c.scene, params);
-        size = scene.bodies.length;
-        if (run === 0) warmUp(() => engine.create(scene, c.profile), o.warmupSteps + o.steps, o.dt, o.warmUpMs);
-        const sim = engine.create(scene, c.profile);
-        try {
-          for (let i = 0; i < o.warmupSteps; i++) sim.step(o.dt);
-          const sum: StageTimes = { broadphaseMs: 0, narrowphaseMs: 0, solveMs: 0, pairTests: 0, candidatePairs: 0, contacts: 0 };
-          let elapsed = 0;
-          for (let i = 0; i < o.steps; i++) {
+      const scene = buildShapeScene(c.scene, params);
+      size = scene.bodies.length;
+      // Every engine's simulation side by side, stepped in turn a step at a time (as joints does),
+      // so that the machine's noise falls on all engines alike rather than on whichever ran then.
+      const running: { id: string; sim: ShapeSimulation; elapsed: number; sum: StageTimes }[] = [];
+      try {
+        for (const engine of engines) {
+          if (out.has(engine.info.id)) continue;
+          if (run === 0) warmUp(() => engine.create(scene, c.profile), o.warmupSteps + o.steps, o.dt, o.warmUpMs);
+          running.push({ id: engine.info.id, sim: engine.create(scene, c.profile), elapsed: 0, sum: zero() });
+        }
+        for (let i = 0; i < o.warmupSteps; i++) for (const r of running) r.sim.step(o.dt);
+        for (let i = 0; i < o.steps; i++) {
+          // The order turns each step, so that no engine always steps right after another.
+          for (let k = 0; k < running.length; k++) {
+            const r = running[(i + run + k) % running.length];
             // A clock pair per step, so that stage times can be read between steps; steps take
             // milliseconds here, far above the clock's resolution.
             const t = now();
-            sim.step(o.dt);
-            elapsed += now() - t;
-            const s = sim.stages?.();
-            if (s) for (const key of Object.keys(sum) as (keyof StageTimes)[]) sum[key] += s[key];
+            r.sim.step(o.dt);
+            r.elapsed += now() - t;
+            const s = r.sim.stages?.();
+            if (s) for (const key of Object.keys(r.sum) as (keyof StageTimes)[]) r.sum[key] += s[key];
           }
-          runMs.get(id)!.push(elapsed / o.steps);
-          if (sim.stages) {
-            for (const key of Object.keys(sum) as (keyof StageTimes)[]) sum[key] /= o.steps;
-            stages.set(id, sum);
-          }
-          const poses = allocatePoses(sim.count);
-          sim.read(poses);
-          const broken = sceneBroken(scene, poses);
-          if (broken && !invalid.has(id)) invalid.set(id, `run ${run + 1}: ${broken}`);
-        } finally {
-          sim.dispose();
+          await ctx.yieldToHost?.();
         }
-        await ctx.yieldToHost?.();
+        for (const r of running) {
+          runMs.get(r.id)!.push(r.elapsed / o.steps);
+          if (r.sim.stages) {
+            for (const key of Object.keys(r.sum) as (keyof StageTimes)[]) r.sum[key] /= o.steps;
+            stages.set(r.id, r.sum);
+          }
+          const poses = allocatePoses(r.sim.count);
+          r.sim.read(poses);
+          const broken = sceneBroken(scene, poses);
+          if (broken && !invalid.has(r.id)) invalid.set(r.id, `run ${run + 1}: ${broken}`);
+        }
+      } finally {
+        for (const r of running) r.sim.dispose();
       }
+      await ctx.yieldToHost?.();
     }
     for (const engine of engines) {
       const id = engine.info.id;
@@ -255,7 +263,7 @@ export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
         return r?.invalid ? `${fmt(r.ms.median)} (invalid)` : fmt(r?.ms.median);
       }),
     ]),
-    note: `${invalidNote(result)}Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; engines in turn, the order rotated per run.${warmUpNote('Before its first run of a case', result.options.warmUpMs)}`,
+    note: `${invalidNote(result)}Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; all engines' simulations side by side, stepped in turn a step at a time, the order turned each step.${warmUpNote('Before its first run of a case', result.options.warmUpMs)}`,
   };
   const baseline = result.options.baseline;
   const peers = peersOf(result);
