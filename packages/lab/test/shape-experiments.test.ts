@@ -3,7 +3,7 @@ import { Ajv } from 'ajv';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { buildShapeScene } from '@maxgrid/scenes';
-import type { RunContext } from '../src/experiments/common.js';
+import { sceneScale, type RunContext } from '../src/experiments/common.js';
 import { EXPERIMENTS, shapeEnergy, shapeFalsePositives, shapeStepTime, stability } from '../src/experiments/registry.js';
 import { allocatePoses, type ShapeEngine } from '../src/shape-engines/adapter.js';
 import { rampJudge } from '../src/experiments/stability.js';
@@ -237,5 +237,20 @@ describe('shape-step-time: timing', () => {
       { ...ctx([]), shapeEngines: [logging('a'), logging('b'), logging('c')] },
     );
     expect(log.join('')).toBe('abc' + 'abc' + 'bca' + 'cab' + 'abc');
+  });
+});
+
+describe('units', () => {
+  it("shape-step-time's and shape-energy's notes say what each peer took a scene unit for, and that Box2D 2.4's and planck's results depend on it", async () => {
+    expect(sceneScale(buildShapeScene('pyramid', { base: 3 }))).toEqual({ lengthUnit: 1, smallestM: Math.SQRT1_2, largestM: Math.SQRT1_2 });
+    const ids = ['maxgrid:maxgrid', 'box2d-wasm'];
+    const steps = await shapeStepTime.run({ ...shapeStepTime.options('quick', {}), fixed: [{ scene: 'pyramid', params: { base: 3 } }], sweeps: [{ scene: 'uniform-polygons', ns: [40], profile: 'report' }], runs: 1, steps: 1, warmupSteps: 0, warmUpMs: 0 }, ctx(ids));
+    const energy = await shapeEnergy.run({ ...shapeEnergy.options('quick', {}), n: 40, seconds: 0.05, samples: 1 }, ctx(ids));
+    const notes = [shapeStepTime.tables(steps)[0].note!, shapeEnergy.tables(energy)[0].note!];
+    expect(notes[0]).toMatch(/pyramid at lengthUnit 1 \([^)]*\): Box2D 2\.4\.1 \(WASM\), planck, Rapier and p2-es ran 1 scene unit as 1 m, Matter\.js as 50 px/);
+    for (const note of notes) {
+      expect(note).toMatch(/uniform-polygons at lengthUnit 50 \(bodies [\d.]+ to [\d.]+ m from centre to rim\): Box2D 2\.4\.1 \(WASM\), planck, Rapier and p2-es ran 1 scene unit as 0\.02 m, Matter\.js as 1 px/);
+      expect(note).toContain("Box2D 2.4's and planck's results depend on that scale");
+    }
   });
 });

@@ -1,6 +1,7 @@
-import type { Scene } from '@maxgrid/scenes';
+import type { Scene, ShapeScene } from '@maxgrid/scenes';
 import type { Engine, EngineInfo } from '../engines/adapter.js';
-import type { ShapeEngine, ShapeEngineInfo } from '../shape-engines/adapter.js';
+import { bodyCentroid, placedVertices, type ShapeEngine, type ShapeEngineInfo } from '../shape-engines/adapter.js';
+import { PIXELS_PER_METER as MATTER_PIXELS_PER_METER } from '../shape-engines/matter.js';
 
 export type Profile = 'quick' | 'full';
 
@@ -310,6 +311,64 @@ export const shapeMetaSchema = {
     },
   },
 } as const;
+
+/** A shape scene's length unit (scene units per metre) and its dynamic bodies' reach, centre to rim, in metres. */
+export interface SceneScale {
+  lengthUnit: number;
+  smallestM: number;
+  largestM: number;
+}
+
+export const sceneScaleSchema = {
+  type: 'object',
+  required: ['lengthUnit', 'smallestM', 'largestM'],
+  properties: { lengthUnit: { type: 'number', exclusiveMinimum: 0 }, smallestM: { type: 'number' }, largestM: { type: 'number' } },
+  additionalProperties: false,
+} as const;
+
+export function sceneScale(scene: ShapeScene): SceneScale {
+  const lengthUnit = scene.world.lengthUnit ?? 1;
+  let smallest = Infinity;
+  let largest = 0;
+  for (const body of scene.bodies) {
+    if ((body.type ?? 'dynamic') !== 'dynamic') continue;
+    const c = bodyCentroid(body);
+    let reach = 0;
+    for (const shape of body.shapes) {
+      const ox = (shape.offsetX ?? 0) - c.x;
+      const oy = (shape.offsetY ?? 0) - c.y;
+      if (shape.kind === 'circle') reach = Math.max(reach, Math.hypot(ox, oy) + shape.radius);
+      else if (shape.kind === 'capsule') reach = Math.max(reach, Math.hypot(ox, oy) + shape.length / 2 + shape.radius);
+      else for (const v of placedVertices(shape)) reach = Math.max(reach, Math.hypot(v.x - c.x, v.y - c.y));
+    }
+    smallest = Math.min(smallest, reach);
+    largest = Math.max(largest, reach);
+  }
+  return { lengthUnit, smallestM: (Number.isFinite(smallest) ? smallest : 0) / lengthUnit, largestM: largest / lengthUnit };
+}
+
+/** Three significant digits (report/tables.ts's fmt, which this module cannot import: tables imports the experiments). */
+function digits3(x: number): string {
+  return Number(x.toPrecision(3)).toString();
+}
+
+/**
+ * The sentence a shape experiment's table notes carry on units: what each peer took a scene unit
+ * for, per lengthUnit among `cases`, and that Box2D 2.4's and planck's results depend on it.
+ */
+export function scaleNote(cases: readonly { scene: string; scale: SceneScale | undefined }[]): string {
+  const known = cases.filter((c): c is { scene: string; scale: SceneScale } => c.scale !== undefined);
+  if (known.length === 0) return '';
+  const units = [...new Set(known.map((c) => c.scale.lengthUnit))].sort((a, b) => a - b);
+  const groups = units.map((unit) => {
+    const these = known.filter((c) => c.scale.lengthUnit === unit);
+    const scenes = [...new Set(these.map((c) => c.scene))];
+    const smallest = Math.min(...these.map((c) => c.scale.smallestM));
+    const largest = Math.max(...these.map((c) => c.scale.largestM));
+    return `${scenes.join(', ')} at lengthUnit ${digits3(unit)} (bodies ${digits3(smallest)} to ${digits3(largest)} m from centre to rim): Box2D 2.4.1 (WASM), planck, Rapier and p2-es ran 1 scene unit as ${digits3(1 / unit)} m, Matter.js as ${digits3(MATTER_PIXELS_PER_METER / unit)} px (1 m = ${MATTER_PIXELS_PER_METER} px)`;
+  });
+  return `Units: ${groups.join('; ')}; maxgrid steps scene units with its tolerances scaled by lengthUnit, so it sees the same metres. Box2D 2.4's and planck's results depend on that scale: their skins (1 cm) and slop (0.5 cm) are fixed in metres, tuned for moving shapes of 0.1 to 10 m.`;
+}
 
 export function csvLine(values: readonly (string | number)[]): string {
   return values.map((v) => (typeof v === 'number' ? String(v) : /[",\n]/.test(v) ? `"${v.replace(/"/g, '""')}"` : v)).join(',');

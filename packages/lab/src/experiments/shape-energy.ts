@@ -2,7 +2,7 @@ import { buildShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
 import { engineLabel, fmt, type Table } from '../report/tables.js';
 import { allocatePoses, bodyMass, SHAPE_PROFILES, type PoseState, type ShapeProfile } from '../shape-engines/adapter.js';
-import { csvLine, makeMeta, shapeMetaSchema, type Meta, type Profile, type RunContext } from './common.js';
+import { csvLine, makeMeta, scaleNote, sceneScale, sceneScaleSchema, shapeMetaSchema, type Meta, type Profile, type RunContext, type SceneScale } from './common.js';
 
 /**
  * Kinetic energy, linear plus rotational, of elastic frictionless polygons in a box (the
@@ -32,6 +32,8 @@ export interface ShapeEnergyRow {
 
 export interface ShapeEnergyResult {
   meta: Meta;
+  /** The scene's lengthUnit and body sizes in metres, which the Box2D family's tolerances depend on. */
+  scale: SceneScale;
   rows: ShapeEnergyRow[];
 }
 
@@ -78,7 +80,7 @@ export async function runShapeEnergy(o: ShapeEnergyOptions, ctx: RunContext): Pr
       }
     }
   }
-  return { meta: makeMeta('shape-energy', ctx, o), rows };
+  return { meta: makeMeta('shape-energy', ctx, o), scale: sceneScale(scene), rows };
 }
 
 function at(row: ShapeEnergyRow, t: number): number {
@@ -95,6 +97,7 @@ export function shapeEnergyTables(result: ShapeEnergyResult): Table[] {
       title: 'Elastic frictionless polygons: kinetic energy (linear + rotational) over its start',
       headers: ['engine', 'profile', ...times.map((t) => `t = ${fmt(t)} s`)],
       rows: result.rows.map((r) => [engineLabel(r.engine), r.profile, ...times.map((t) => fmt(at(r, t), 6))]),
+      note: scaleNote([{ scene: 'uniform-polygons', scale: result.scale }]) || undefined,
     },
   ];
 }
@@ -125,9 +128,10 @@ export function shapeEnergyHeadline(result: ShapeEnergyResult): string[] {
 export const shapeEnergySchema = {
   $id: 'shape-energy',
   type: 'object',
-  required: ['meta', 'rows'],
+  required: ['meta', 'scale', 'rows'],
   properties: {
     meta: shapeMetaSchema,
+    scale: sceneScaleSchema,
     rows: {
       type: 'array',
       items: {

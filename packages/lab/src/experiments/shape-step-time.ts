@@ -2,7 +2,7 @@ import { buildShapeScene, type ShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
 import { engineLabel, fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
 import { allocatePoses, bodyCentroid, type PoseState, type ShapeProfile, type ShapeSimulation, type StageTimes } from '../shape-engines/adapter.js';
-import { csvLine, makeMeta, shapeMetaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+import { csvLine, makeMeta, scaleNote, sceneScale, sceneScaleSchema, shapeMetaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type SceneScale, type Spread } from './common.js';
 
 /**
  * Step time on scenes of shapes, every engine on the same scene: Box2D v3's fixed benchmarks
@@ -83,6 +83,8 @@ export interface ShapeStepTimeRow {
   stages: StageTimes | null;
   /** Why the engine's simulation of the scene was broken in a run (sceneBroken), or null: its time is not compared. */
   invalid: string | null;
+  /** The scene's lengthUnit and body sizes in metres, which the Box2D family's tolerances depend on. */
+  scale: SceneScale;
 }
 
 export interface ShapeStepTimeResult {
@@ -139,11 +141,13 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
     const stages = new Map<string, StageTimes>();
     const invalid = new Map<string, string>();
     let size = 0;
+    let scale: SceneScale | undefined;
     for (let run = 0; run < o.runs; run++) {
       ctx.progress?.(done++, total, `${c.scene} ${JSON.stringify(c.params)} run ${run + 1}`);
       const params = c.sweep ? { ...c.params, seed: run + 1 } : c.params;
       const scene = buildShapeScene(c.scene, params);
       size = scene.bodies.length;
+      scale = sceneScale(scene);
       // Every engine's simulation side by side, stepped in turn a step at a time (as joints does),
       // so that the machine's noise falls on all engines alike rather than on whichever ran then.
       const running: { id: string; sim: ShapeSimulation; elapsed: number; sum: StageTimes }[] = [];
@@ -188,7 +192,7 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
       const id = engine.info.id;
       const values = runMs.get(id)!;
       if (values.length === 0) continue;
-      const row: ShapeStepTimeRow = { scene: c.scene, n: c.sweep ? c.params.n : size, params: c.params, profile: c.profile, engine: id, runMs: values, ms: spread(values), stages: stages.get(id) ?? null, invalid: invalid.get(id) ?? null };
+      const row: ShapeStepTimeRow = { scene: c.scene, n: c.sweep ? c.params.n : size, params: c.params, profile: c.profile, engine: id, runMs: values, ms: spread(values), stages: stages.get(id) ?? null, invalid: invalid.get(id) ?? null, scale: scale! };
       rows.push(row);
       if (c.sweep && row.ms.median > o.cutoffMs && !out.has(id)) {
         out.add(id);
@@ -263,7 +267,7 @@ export function shapeStepTimeTables(result: ShapeStepTimeResult): Table[] {
         return r?.invalid ? `${fmt(r.ms.median)} (invalid)` : fmt(r?.ms.median);
       }),
     ]),
-    note: `${invalidNote(result)}Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; all engines' simulations side by side, stepped in turn a step at a time, the order turned each step.${warmUpNote('Before its first run of a case', result.options.warmUpMs)}`,
+    note: `${invalidNote(result)}${scaleNote(cases)}${scaleNote(cases) ? ' ' : ''}Per run, each engine's own simulation of the scene: ${result.options.warmupSteps} untimed steps, then the mean of ${result.options.steps} timed ones; all engines' simulations side by side, stepped in turn a step at a time, the order turned each step.${warmUpNote('Before its first run of a case', result.options.warmUpMs)}`,
   };
   const baseline = result.options.baseline;
   const peers = peersOf(result);
@@ -405,7 +409,7 @@ export const shapeStepTimeSchema = {
       type: 'array',
       items: {
         type: 'object',
-        required: ['scene', 'n', 'params', 'profile', 'engine', 'runMs', 'ms', 'stages', 'invalid'],
+        required: ['scene', 'n', 'params', 'profile', 'engine', 'runMs', 'ms', 'stages', 'invalid', 'scale'],
         properties: {
           scene: { type: 'string' },
           n: { type: 'integer', minimum: 0 },
@@ -416,6 +420,7 @@ export const shapeStepTimeSchema = {
           ms: spreadSchema,
           stages: stagesSchema,
           invalid: { type: ['string', 'null'] },
+          scale: sceneScaleSchema,
         },
         additionalProperties: false,
       },

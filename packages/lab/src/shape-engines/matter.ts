@@ -18,7 +18,7 @@ const PROFILE: Record<ShapeProfile, { position: number; velocity: number; constr
 const BASE_DELTA_S = 1 / 60;
 const GRAVITY_SCALE = 1e-6;
 /** Matter is tuned for pixels: 1 m = 50 px, as the lab's circle adapters scale the Box2D family the other way. */
-const PIXELS_PER_METER = 50;
+export const PIXELS_PER_METER = 50;
 
 class MatterShapes implements ShapeSimulation {
   readonly count: number;
