@@ -2,7 +2,7 @@ import { atan2 } from '../math/trig.js';
 
 /**
  * The highest frequency a soft-constraint spring is solved at, as a fraction of the sub-step rate:
- * a quarter, 60 Hz at 60 Hz with 4 sub-steps, the bound Box2D v3 puts on its contacts' stiffness.
+ * a quarter, 60 Hz at 60 Hz with 4 sub-steps, the bound Box2D v3 puts on its joints' stiffness.
  * A lone spring is stable at any stiffness, but springs coupled in a lattice, solved one after
  * another, are not: a 6 x 6 jelly with shear springs settled up to 120 Hz there, gained energy
  * from about 150 Hz and reached the speed limit at 240.
