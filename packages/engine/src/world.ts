@@ -1244,6 +1244,32 @@ export class World {
     return Math.abs(0.5 * twice);
   }
 
+  /**
+   * Whether the polygon through a ring's bodies' centres crosses itself (a bow-tie), and where:
+   * two edges that are not neighbours cross at a point inside both, by the signs of four
+   * orientations. Edges that only touch, or lie along each other, are not counted.
+   */
+  private ringCrossing(ring: Int32Array, out: Int32Array): boolean {
+    const { x, y } = this.bodies;
+    const n = ring.length;
+    const side = (a: number, b: number, c: number): number => Math.sign((x[b] - x[a]) * (y[c] - y[a]) - (y[b] - y[a]) * (x[c] - x[a]));
+    for (let i = 0; i < n; i++) {
+      const a = ring[i];
+      const b = ring[(i + 1) % n];
+      for (let j = i + 2; j < n; j++) {
+        if (i === 0 && j === n - 1) continue;
+        const c = ring[j];
+        const d = ring[(j + 1) % n];
+        if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) {
+          out[0] = i;
+          out[1] = j;
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
   /** Moves a target joint's target; its body wakes. */
   setJointTarget(handle: number, x: number, y: number): void {
     const j = this.jointSlot(handle);
@@ -1618,6 +1644,7 @@ export class World {
     },
     isDynamic: (slot) => this.bodies.type[slot] === TypeCode.dynamic,
     ringArea: (ring) => this.ringArea(ring),
+    ringCrossing: (ring, out) => this.ringCrossing(ring, out),
     mass: (slot) => this.bodies.mass[slot],
     gravity: () => {
       const g = this.pipeline.settings.gravity;

@@ -203,6 +203,8 @@ export interface JointWorld {
   isDynamic(slot: number): boolean;
   /** The area of the polygon through a ring of bodies' centres of mass. */
   ringArea(ring: Int32Array): number;
+  /** The first edge k (from ring[k] to the next) of that polygon that crosses a later edge, with that edge's index, into out; false where none does. */
+  ringCrossing(ring: Int32Array, out: Int32Array): boolean;
   mass(slot: number): number;
   gravity(): number;
 }
@@ -289,6 +291,12 @@ export function resolveJoint(options: unknown, world: JointWorld): ResolvedJoint
     if (!dynamic) throw new RangeError('bodies are all static or kinematic: a pressure joint needs a dynamic body to act on');
     const area = world.ringArea(ring);
     if (!(area > 0)) throw new RangeError(`the ring's bodies enclose no area (${area}): a pressure joint needs a ring around a space`);
+    const crossing = new Int32Array(2);
+    if (world.ringCrossing(ring, crossing)) {
+      const [i, j] = crossing;
+      const next = (k: number) => (k + 1) % ring.length;
+      throw new RangeError(`the ring crosses itself: its edge from bodies[${i}] to bodies[${next(i)}] crosses the one from bodies[${j}] to bodies[${next(j)}]; a pressure joint needs its bodies in order around the ring`);
+    }
     if (o.pressure === undefined) throw new TypeError('pressure must be a finite number, got undefined (a pressure joint needs one)');
     r[J.stiffness] = boundedNonNegative('pressure', o.pressure);
     r[J.length] = area;

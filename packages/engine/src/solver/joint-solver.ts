@@ -483,10 +483,18 @@ export class JointSolver {
     }
   }
 
-  /** Each sub-step, before its velocity update: the springs' forces, as the integrator says. */
+  /**
+   * Each sub-step, before its velocity update: the springs' forces, as the integrator says, and
+   * the gas's. Under Runge-Kutta the gas's impulse comes first, so that the stages start from the
+   * velocities it gives and carry its motion through the springs: applied after them, it acted
+   * outside the stages, and a spinning ring of 16 bodies on force springs around a gas lost 0.4 %
+   * of its angular momentum in 10 s, which uniform pressure does not change (2e-5 this way).
+   */
   springsBefore(states: Float64Array): void {
+    const rk4 = this.integrator === 'rk4';
+    if (rk4) this.gas.apply(this.store.record, states, this.step);
     this.springs.before(this.store.record, states, this.step, this.integrator, this.limits);
-    this.gas.apply(this.store.record, states, this.step);
+    if (!rk4) this.gas.apply(this.store.record, states, this.step);
   }
 
   /** Each sub-step, once the bodies moved. */
