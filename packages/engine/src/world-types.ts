@@ -142,7 +142,7 @@ export interface JointState {
   /** The anchors in the world (a target joint's A: its target). */
   anchorA: { x: number; y: number };
   anchorB: { x: number; y: number };
-  /** The force and torque the joint put on body B in the last step (A took the opposite); 0 for a joint that did not act. */
+  /** The force and torque the joint put on body B in the last step it acted (A took the opposite): while its bodies sleep, what it carried as they fell asleep; 0 for a joint that never acted. */
   force: { x: number; y: number };
   torque: number;
   /** The anchors' distance apart. */

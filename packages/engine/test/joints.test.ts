@@ -1103,6 +1103,30 @@ describe('joints never make NaN or infinity from finite input', () => {
   }, 120_000);
 });
 
+describe('joint reactions while asleep', () => {
+  it('a joint holding a sleeping body reads the force it carried as the body fell asleep, as Box2D keeps it, for every kind that holds a weight', () => {
+    const kinds = [
+      { kind: 'revolute' },
+      { kind: 'distance' },
+      { kind: 'distance', minLength: 0, maxLength: 1 },
+      { kind: 'weld' },
+    ] as const;
+    for (const options of kinds) {
+      const world = new World({ gravity: { x: 0, y: 10 }, sleeping: true });
+      const pivot = world.createBody({ x: 0, y: 0, type: 'static' });
+      const weight = world.createCircle({ x: 0, y: 1, radius: 0.1, mass: 3 });
+      // A pin or weld at the pivot; a rod or rope from it to the weight's centre.
+      const anchorB = options.kind === 'distance' ? { x: 0, y: 0 } : { x: 0, y: -1 };
+      const joint = world.createJoint({ ...options, bodyA: pivot, bodyB: weight, anchorA: { x: 0, y: 0 }, anchorB } as never);
+      for (let s = 0; s < 300; s++) world.step(DT);
+      const label = JSON.stringify(options);
+      expect(world.isAwake(weight), label).toBe(false);
+      // y down: the joint pulls the weight up with its weight, 3 kg x 10.
+      expect(world.getJoint(joint).force.y, label).toBeCloseTo(-30, 3);
+    }
+  });
+});
+
 describe('pressure joints: gas in a ring of bodies', () => {
   it('a ring of rigid links holds the gas at the hoop tension P a cos(pi / N), with P = p0 A0 / A', () => {
     for (const [pressure, segments] of [

@@ -334,7 +334,7 @@ export class JointSolver {
   }
 
   /**
-   * prepare's pass over the joints: clears their forces, notes which are active, and lists them by
+   * prepare's pass over the joints: clears the active ones' forces, notes which are active, and lists them by
    * how they are solved (counts in `listed`), preparing the general ones. Its own function with
    * nothing after its loop, the counts kept in `listed` as it goes: V8 compiles a loop this long
    * during the first step (on-stack replacement), before the code after it has run, and an
@@ -352,9 +352,13 @@ export class JointSolver {
       const b = store.bodyB[j];
       const ia = a < 0 ? 0 : index[a];
       const ib = index[b];
-      r[o + FORCE_X] = 0;
-      r[o + FORCE_Y] = 0;
-      r[o + TORQUE] = 0;
+      // A joint whose bodies all sleep (or stand) keeps the force it last carried, as Box2D keeps
+      // a sleeping joint's impulses: a rope holding a sleeping weight still reads its weight.
+      if (ia !== 0 || ib !== 0) {
+        r[o + FORCE_X] = 0;
+        r[o + FORCE_Y] = 0;
+        r[o + TORQUE] = 0;
+      }
       if (store.kind[j] === JointKind.pressure) {
         // The whole ring wakes together (wakeJoined), so its first two bodies speak for it.
         r[o + ACTIVE] = ia === 0 && ib === 0 ? 0 : 1;
