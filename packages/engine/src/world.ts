@@ -21,6 +21,7 @@ import { grow, grownCapacity } from './util/grow.js';
 import { BodyShapes } from './shapes/body-shapes.js';
 import { ShapeRoute } from './step/shape-route.js';
 import { turnCircles } from './integrate/rigid-motion.js';
+import { clearForces } from './integrate/motion.js';
 import { atan2, cosSin, nearestTurn } from './math/trig.js';
 import { BodyFlag } from './store/rigid-columns.js';
 import { SHAPE_STRIDE, SHAPE_VERTICES, VERTEX, type NewShape } from './store/shape-store.js';
@@ -1110,6 +1111,8 @@ export class World {
     } else {
       this.pipeline.run(dt, this.staticVersion);
       if (this.turning) turnCircles(this.bodies, dt);
+      // After the turn, which reads the torques: the forces acted in the pipeline's motion.
+      if (dt > 0) clearForces(this.bodies);
       limitSpeeds(this.bodies, this.resolved.maxLinearSpeed ?? MAX_MAGNITUDE, MAX_MAGNITUDE);
     }
     // Events kept for hits or sensors list no touches unless asked to.

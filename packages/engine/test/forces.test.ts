@@ -13,6 +13,25 @@ describe('forces, impulses, gravity scale, damping', () => {
     expect(world.getCircle(h)).toMatchObject({ vx: 5, vy: -1 });
   });
 
+  it('a force and a torque act for one step, on the circle route and with shapes, and a pause (step(0)) keeps them for the next', () => {
+    for (const shapes of [false, true]) {
+      const world = new World({ gravity: { x: 0, y: 0 } });
+      const h = shapes ? world.createBox({ x: 0, y: 0, width: 2, height: 2, mass: 2 }) : world.createCircle({ x: 0, y: 0, radius: 1, mass: 2 });
+      const { mass, inertia } = world.getBody(h);
+      world.applyForce(h, 4, 0);
+      world.applyTorque(h, 1);
+      world.step(0);
+      world.step(0);
+      for (let s = 0; s < 3; s++) {
+        world.step(0.5);
+        const b = world.getBody(h);
+        const label = `${shapes ? 'shapes' : 'circles'}, step ${s}`;
+        expect(b.vx, label).toBeCloseTo((4 / mass) * 0.5, 12);
+        expect(b.angularVelocity, label).toBeCloseTo((1 / inertia) * 0.5, 12);
+      }
+    }
+  });
+
   it('a force or an impulse at a point adds its moment about the centre of mass', () => {
     // An L of two boxes, its centre of mass off its origin, turned and far out: the arm is from the centre of mass.
     const make = (world: World, x: number): number => {

@@ -31,10 +31,14 @@ export function moveVelocity(vx: number, vy: number, maxSpeed: number, out: Floa
   out[1] = capped[1];
 }
 
-/** Forces last one step: the step applies them, then this clears them. */
+/**
+ * Forces and torques last one step: the step applies them, then this clears them. A step of dt 0
+ * (a pause) applies nothing and keeps them for the next, as Box2D does.
+ */
 export function clearForces(bodies: BodyStore): void {
   if (!bodies.forcesPending) return;
   bodies.forceX.fill(0, 0, bodies.slotCount);
   bodies.forceY.fill(0, 0, bodies.slotCount);
+  bodies.rigid?.torque.fill(0, 0, bodies.slotCount);
   bodies.forcesPending = false;
 }

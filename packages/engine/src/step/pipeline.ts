@@ -5,7 +5,7 @@ import type { ContactEvents } from '../store/contact-events.js';
 import type { BroadPhase } from '../broadphase/broadphase.js';
 import { NarrowPhase } from '../narrowphase/narrowphase.js';
 import { INTEGRATORS, type CircleIntegratorName as IntegratorName } from '../integrate/integrator.js';
-import { clearForces, needsGeneralMotion } from '../integrate/motion.js';
+import { needsGeneralMotion } from '../integrate/motion.js';
 import type { BodyKernel } from '../store/body-kernel.js';
 import { bounceOffBox, clampBodies, clampIntoBox, noteWallContacts } from '../solver/box-walls.js';
 import { solveContacts, type SolverSettings } from '../solver/contact-solver.js';
@@ -147,7 +147,6 @@ export class StepPipeline {
     const t5 = nowMs();
 
     events?.update(bodies, contacts, this.segments);
-    clearForces(bodies);
     if (settings.sleeping.enabled) this.sleep.update(bodies, contacts, dt, settings.sleeping.speed, settings.sleeping.time);
     const t6 = nowMs();
 

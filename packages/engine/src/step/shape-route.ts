@@ -131,9 +131,7 @@ export class ShapeRoute {
       events.updateShapes(bodies, this.shapes, this.segments, contacts, hitThreshold, narrow.sensorSlots, narrow.visitorSlots, narrow.sensorCount);
       if (sweep && elastic) this.continuous.reportBounces(bodies, this.shapes, this.world, events);
     }
-    clearForces(bodies);
-    const rigid = bodies.rigid!;
-    rigid.torque.fill(0, 0, bodies.slotCount);
+    if (dt > 0) clearForces(bodies);
     const t6 = nowMs();
     stats.steps++;
     stats.bodies = bodies.liveCount;
