@@ -350,16 +350,17 @@ export class ShapeNarrowPhase implements PairConsumer {
    * The step's sensor overlaps, where the bodies ended it (Box2D v3 runs its sensors after the
    * solve, so an overlap begins in the step it appears, not the next): each live sensor shape's
    * box is looked up among the bodies (`queries`, built for `version`, the positions the step
-   * leaves), and each shape there of an awake dynamic body other than the sensor's own, that the
+   * leaves), and each shape there of a dynamic body other than the sensor's own, that the
    * filters let through and no joint keeps apart, is tested for overlap (a point closer than 0).
-   * A sensor reports the shapes of dynamic bodies alone, not other sensors; a sleeping visitor's
-   * overlap ends. The order found does not matter: the events sort the pairs.
+   * A sensor reports the shapes of dynamic bodies alone, not other sensors; a visitor asleep
+   * inside stays inside, as Box2D keeps it. The order found does not matter: the events sort the
+   * pairs.
    */
   sense(shapes: ShapeStore, queries: Queries, version: number, slop: number): void {
     this.sensorCount = 0;
     if (shapes.sensors === 0) return;
     const bodies = this.bodies;
-    const { type, asleep, x, y } = bodies;
+    const { type, x, y } = bodies;
     const { c, s, firstShape } = bodies.rigid!;
     const pose = this.senseScratch;
     const found = this.senseFound;
@@ -377,7 +378,7 @@ export class ShapeNarrowPhase implements PairConsumer {
       const a = this.shapeA.fromPose(shapes, sa, pose, 0);
       for (let f = 0; f < found.length; f++) {
         const j = found[f];
-        if (j === i || type[j] !== TypeCode.dynamic || asleep[j] === 1) continue;
+        if (j === i || type[j] !== TypeCode.dynamic) continue;
         const joints = this.joints;
         if (joints !== null && joints.nonColliding > 0 && joints.joined(i, j)) continue;
         pose[4] = x[j];

@@ -147,7 +147,7 @@ export interface ContactEventsView {
   /**
    * Sensors: sensorBeginSensor[k], a sensor shape's handle, started overlapping the shape
    * sensorBeginVisitor[k] this step; sensorEnd* likewise for overlaps that ended (or whose shape
-   * was destroyed, or whose visitor fell asleep). Sensors do not see other sensors.
+   * was destroyed; a visitor asleep inside stays inside). Sensors do not see other sensors.
    */
   readonly sensorBeginCount: number;
   readonly sensorBeginSensor: Readonly<Float64Array>;
