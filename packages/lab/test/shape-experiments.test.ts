@@ -222,7 +222,7 @@ describe('shape-step-time: broken simulations', () => {
 });
 
 describe('shape-step-time: timing', () => {
-  it('steps all engines side by side, a step each in turn, the order turned each step', async () => {
+  it('steps all engines side by side in turns of turnSteps steps, the order rotated each turn', async () => {
     const log: string[] = [];
     const real = engines.find((e) => e.info.id === 'maxgrid:maxgrid')!;
     const logging = (id: string): ShapeEngine => ({
@@ -233,10 +233,49 @@ describe('shape-step-time: timing', () => {
       },
     });
     await shapeStepTime.run(
-      { ...shapeStepTime.options('quick', {}), fixed: [{ scene: 'pyramid', params: { base: 3 } }], sweeps: [], runs: 1, steps: 4, warmupSteps: 1, warmUpMs: 0, baseline: 'a' },
+      { ...shapeStepTime.options('quick', {}), fixed: [{ scene: 'pyramid', params: { base: 3 } }], sweeps: [], runs: 1, steps: 5, turnSteps: 2, warmupSteps: 1, warmUpMs: 0, baseline: 'a' },
       { ...ctx([]), shapeEngines: [logging('a'), logging('b'), logging('c')] },
     );
-    expect(log.join('')).toBe('abc' + 'abc' + 'bca' + 'cab' + 'abc');
+    // The warm-up step, then turns of two steps (the last of one), the order rotated each turn.
+    expect(log.join(' ')).toBe('a b c' + ' a a b b c c' + ' b b c c a a' + ' c a b');
+  });
+
+  it('times the steps after the first of each turn, which finds the caches holding another engine\'s data', async () => {
+    const real = engines.find((e) => e.info.id === 'maxgrid:maxgrid')!;
+    let clock = 0;
+    let stepsTaken = 0;
+    // A step that costs 5 ms at the start of a turn (after the other engine's) and 1 ms after one of its own.
+    const cold = (id: string, other: { last: string }): ShapeEngine => ({
+      info: { ...real.info, id },
+      create: (scene, profile) => {
+        const sim = real.create(scene, profile);
+        return {
+          count: sim.count,
+          step: (dt) => {
+            clock += other.last === id ? 1 : 5;
+            other.last = id;
+            stepsTaken++;
+            sim.step(dt);
+          },
+          read: (p) => sim.read(p),
+          dispose: () => sim.dispose(),
+        };
+      },
+    });
+    const last = { last: '' };
+    const realNow = performance.now;
+    performance.now = () => clock;
+    try {
+      const result = await shapeStepTime.run(
+        { ...shapeStepTime.options('quick', {}), fixed: [{ scene: 'pyramid', params: { base: 3 } }], sweeps: [], runs: 1, steps: 20, turnSteps: 10, warmupSteps: 0, warmUpMs: 0, baseline: 'a' },
+        { ...ctx([]), shapeEngines: [cold('a', last), cold('b', last)] },
+      );
+      expect(stepsTaken).toBe(40);
+      for (const r of result.rows) expect(r.ms.median, r.engine).toBe(1);
+      expect(shapeStepTime.tables(result)[0].note).toContain('the mean of the 18 steps after the first of each turn');
+    } finally {
+      performance.now = realNow;
+    }
   });
 });
 
