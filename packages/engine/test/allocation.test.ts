@@ -82,7 +82,33 @@ const CASES = [
   ['pressure blobs: gas in rings of circles on distance springs', (k: number) => buildShapeWorld(buildShapeScene('blobs', { count: 2 * k, funnel: 0 }))],
   ['jellies on force springs integrated by rk4', (k: number) => buildShapeWorld(buildShapeScene('jellies', { count: 2 * k, side: 4, funnel: 0, floor: 0, stiffness: 500 }), { integrator: 'rk4' })],
   ['sliders and wheels on prismatic and wheel joints with limits, motors and springs', (k: number) => sliders(20 * k)],
+  ['a pile asleep with contact events on (its touches kept through sleep)', (k: number) => asleep(k)],
+  ['polygons falling through static sensors (overlaps found after the solve)', (k: number) => sensed(k)],
 ] as const;
+
+/** k pyramids of base 10, asleep, with contact events. */
+function asleep(k: number): World {
+  const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0, sleeping: true, contactEvents: true });
+  world.createBox({ x: 0, y: 0.5, width: 40 * k, height: 1, type: 'static' });
+  for (let p = 0; p < k; p++) {
+    for (let row = 0; row < 10; row++) {
+      for (let i = 0; i < 10 - row; i++) world.createBox({ x: 40 * p - 20 * k + 5 + i + 0.5 * row, y: -0.5 - row, width: 1, height: 1 });
+    }
+  }
+  for (let s = 0; s < 300; s++) world.step(1 / 60);
+  return world;
+}
+
+/** The polygon-box scene with 20 k static sensor strips across it. */
+function sensed(k: number): World {
+  const scene = buildShapeScene('polygon-box', { n: 250 * k });
+  const world = buildShapeWorld(scene);
+  const { minX, minY, maxX, maxY } = scene.view;
+  for (let i = 0; i < 20 * k; i++) {
+    world.createBox({ x: minX + ((i + 0.5) / (20 * k)) * (maxX - minX), y: (minY + maxY) / 2, width: 2, height: (maxY - minY) / 2, type: 'static', sensor: true });
+  }
+  return world;
+}
 
 describe('a warmed-up step allocates nothing per body or pair', () => {
   // Every case's world first, stepped a little: the engine's functions then meet every shape

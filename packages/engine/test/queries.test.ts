@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { World, type RayHit } from '../src/index.js';
-import { farQueriesAsBrute, queriesOf, rng } from './helpers.js';
+import { CROWD_WIDTH, buildFarWorld, expectQueriesAsBrute, farQueriesAsBrute, farQueryArbitrary, farWorldArbitrary, queriesOf, rng } from './helpers.js';
 
 const worldArbitrary = fc
   .array(
@@ -242,5 +242,50 @@ describe('queries with a few bodies far from the crowd', () => {
     const fromFar = q.examined;
     expect(hit).toEqual(near.world.rayCast(1e6 - 100, 1e6 - 100, centre, centre));
     expect(fromFar).toBeLessThanOrEqual(2 * queriesOf(near.world).examined + 64);
+  });
+});
+
+describe('queries with a body far larger than the rest', () => {
+  it('find what testing every body finds, the giant kept out of the grid and tested on its own', () => {
+    fc.assert(
+      fc.property(farWorldArbitrary, fc.array(farQueryArbitrary, { minLength: 1, maxLength: 12 }), fc.boolean(), fc.boolean(), (spec, queries, box, isStatic) => {
+        // No body destroyed: the giant would take its slot, and the oracle lists handles in slot order.
+        const { world, far } = buildFarWorld({ ...spec, destroy: false }, true);
+        // A ground 300 long under the crowd, or a disc of radius 150 over it.
+        const type = isStatic ? ('static' as const) : ('dynamic' as const);
+        if (box) world.createBox({ x: CROWD_WIDTH / 2, y: CROWD_WIDTH + 5, width: 300, height: 8, type, category: 2 });
+        else world.createCircle({ x: CROWD_WIDTH / 2, y: CROWD_WIDTH / 2, radius: 150, type, category: 4 });
+        expectQueriesAsBrute(world, far, queries);
+      }),
+      { numRuns: 40, seed: 23 },
+    );
+  });
+
+  it('search no more of the crowd for it (500 sensors over 10,000 bodies stepped 24 times slower through the one large cell)', () => {
+    const build = (giant: boolean) => {
+      const random = rng(5);
+      const world = new World();
+      for (let k = 0; k < 10_000; k++) world.createCircle({ x: (k % 100) * 2 + random(), y: Math.floor(k / 100) * 2 + random(), radius: 0.5 });
+      if (giant) world.createBox({ x: 100, y: 210, width: 220, height: 4, type: 'static' });
+      return world;
+    };
+    const work = (world: World) => {
+      const q = queriesOf(world);
+      const sample = rng(6);
+      let total = 0;
+      for (let k = 0; k < 100; k++) {
+        const [x, y] = [sample() * 200, sample() * 200];
+        world.queryPoint(x, y);
+        total += q.examined;
+        world.queryAABB(x, y, x + 3, y + 3);
+        total += q.examined;
+        world.rayCast(x, y, x + 10, y + 5);
+        total += q.examined;
+      }
+      return total;
+    };
+    const without = work(build(false));
+    const withGiant = work(build(true));
+    expect(withGiant, `${withGiant} examined with the giant, ${without} without`).toBeLessThanOrEqual(2 * without);
   });
 });

@@ -13,7 +13,7 @@ import { Manifold } from './manifold.js';
 import { WorldShape } from './world-shape.js';
 import { collide } from './dispatch.js';
 import type { JointStore } from '../joints/joint-store.js';
-import type { Queries } from '../query/queries.js';
+import { SlotList, type Queries } from '../query/queries.js';
 import { shapeBounds } from '../shapes/bounds.js';
 
 /** Candidate pairs readAhead loads at a time: their records and poses (some 160 KB) stay in a core's L2 until the pairs are tested. */
@@ -373,11 +373,10 @@ export class ShapeNarrowPhase implements PairConsumer {
       pose[2] = c[i];
       pose[3] = s[i];
       const box = shapeBounds(shapes, sa, pose, this.senseBox);
-      found.length = 0;
-      queries.slotsInBox(version, box[0], box[1], box[2], box[3], found);
+      queries.slotsInBox(version, box, found);
       const a = this.shapeA.fromPose(shapes, sa, pose, 0);
-      for (let f = 0; f < found.length; f++) {
-        const j = found[f];
+      for (let f = 0; f < found.count; f++) {
+        const j = found.slots[f];
         if (j === i || type[j] !== TypeCode.dynamic) continue;
         const joints = this.joints;
         if (joints !== null && joints.nonColliding > 0 && joints.joined(i, j)) continue;
@@ -398,7 +397,7 @@ export class ShapeNarrowPhase implements PairConsumer {
 
   private readonly senseScratch = new Float64Array(8);
   private readonly senseBox = new Float64Array(4);
-  private readonly senseFound: number[] = [];
+  private readonly senseFound = new SlotList();
 
   private noteSensor(sensor: number, visitor: number): void {
     if (this.sensorCount === this.sensorSlots.length) {

@@ -16,6 +16,27 @@ export interface RayHit {
   normalY: number;
 }
 
+/** Body slots a query found, in a typed array reused from query to query (nothing allocated once grown). */
+export class SlotList {
+  slots = new Int32Array(16);
+  count = 0;
+
+  push(slot: number): void {
+    if (this.count === this.slots.length) {
+      const grown = new Int32Array(2 * this.slots.length);
+      grown.set(this.slots);
+      this.slots = grown;
+    }
+    this.slots[this.count++] = slot;
+  }
+}
+
+/**
+ * A body whose bounding radius passes this many times the mean is kept out of the grid and tested
+ * by every query on its own (see Queries.prepare).
+ */
+const OVERSIZED = 8;
+
 /**
  * Point, box and ray queries over a Max Grid of the current positions. The grid is rebuilt only
  * when the world's geometry changed since the last query (`version`), so many queries between
@@ -27,11 +48,24 @@ export interface RayHit {
  * the extent are binned into its edge cells (cellIndex in cell-grid.ts), so every search clamps
  * its cells the same way: clamping is monotonic and moves no two cells further apart, so a body
  * within one cell of a point stays within one clamped cell of that point's clamped cell.
+ *
+ * The cells are sized for the bodies of ordinary size: one far larger than the mean (a ground box
+ * 200 m long under bodies of 0.5 m) would make every cell hold the whole crowd, and every query
+ * scan it (500 sensors among 10,000 bodies took 77 ms a step over such a grid). Such bodies are
+ * listed apart (`oversized`) and each query tests them one by one, before its grid search.
  */
 export class Queries {
   private readonly live = new LiveExtent();
   private readonly grid = new CellGrid();
   private builtVersion = -1;
+  /** The slots the grid holds, where some are kept out of it, and those kept out (see OVERSIZED). */
+  private gridSlots = new Int32Array(0);
+  /** The box a box query asks about (see overlapsBox). */
+  private readonly queryBox = new Float64Array(4);
+  /** The pose of the body a box query tests a shape of (see shapeOverlapsBox). */
+  private readonly shapePose = new Float64Array(4);
+  private oversized = new Int32Array(0);
+  private oversizedCount = 0;
   private stamp = new Uint32Array(0);
   private epoch = 0;
   /**
@@ -47,8 +81,9 @@ export class Queries {
   /**
    * The query's mask, tested against each body's category (the union of its shapes') and then
    * each shape's own: a compound body answers for the shapes the mask names, not for the others.
+   * Kept as a signed 32-bit integer (the same bits), which V8 stores without boxing.
    */
-  private mask = 0xffffffff;
+  private mask = -1;
 
   /** A world's shapes once it has them: bodies are then tested shape by shape, their bounding circles only narrowing the search. */
   shapes: ShapeStore | null = null;
@@ -74,6 +109,23 @@ export class Queries {
 
   /** Whether body `slot` overlaps the box: its circle, or one of its shapes. */
   private overlaps(slot: number, minX: number, minY: number, maxX: number, maxY: number): boolean {
+    const box = this.queryBox;
+    box[0] = minX;
+    box[1] = minY;
+    box[2] = maxX;
+    box[3] = maxY;
+    return this.overlapsBox(slot);
+  }
+
+  /**
+   * overlaps for the box in `box`: the sensors' stage asks it of many bodies each step, and a call
+   * V8 does not inline boxes each number passed to it, where a slot (a small integer) is not.
+   */
+  private overlapsBox(slot: number): boolean {
+    const minX = this.queryBox[0];
+    const minY = this.queryBox[1];
+    const maxX = this.queryBox[2];
+    const maxY = this.queryBox[3];
     const bodies = this.bodies;
     const cx = bodies.x[slot];
     const cy = bodies.y[slot];
@@ -86,7 +138,12 @@ export class Queries {
     const mask = this.mask;
     for (let k = rigid.firstShape[slot]; k >= 0; k = shapes.next[k]) {
       if ((shapes.category[k] & mask) === 0) continue;
-      if (shapeOverlapsBox(shapes, k, cx, cy, rigid.c[slot], rigid.s[slot], minX, minY, maxX, maxY)) return true;
+      const at = this.shapePose;
+      at[0] = cx;
+      at[1] = cy;
+      at[2] = rigid.c[slot];
+      at[3] = rigid.s[slot];
+      if (shapeOverlapsBox(shapes, k, at, this.queryBox)) return true;
     }
     return false;
   }
@@ -122,10 +179,16 @@ export class Queries {
   }
 
   point(version: number, px: number, py: number, mask: number, out: number[]): number[] {
-    this.mask = mask;
+    this.mask = mask | 0;
     this.examined = 0;
-    if (!this.prepare(version) || !this.reaches(px, py, px, py)) return out;
+    if (!this.prepare(version)) return out;
     const { grid, bodies } = this;
+    this.examined += this.oversizedCount;
+    for (let k = 0; k < this.oversizedCount; k++) {
+      const slot = this.oversized[k];
+      if ((bodies.category[slot] & mask) !== 0 && this.contains(slot, px, py)) out.push(bodies.handleOf(slot));
+    }
+    if (!this.reaches(px, py, px, py)) return out.sort(ascending);
     const column = grid.columnOf(px);
     const row = grid.rowOf(py);
     const c0 = clamp(column - 1, 0, grid.columns - 1);
@@ -142,23 +205,51 @@ export class Queries {
   }
 
   box(version: number, minX: number, minY: number, maxX: number, maxY: number, mask: number, out: number[]): number[] {
-    return this.inBox(version, minX, minY, maxX, maxY, mask, out, true).sort(ascending);
+    const box = this.queryBox;
+    box[0] = minX;
+    box[1] = minY;
+    box[2] = maxX;
+    box[3] = maxY;
+    this.inBox(version, mask, out, null);
+    return out.sort(ascending);
   }
 
   /**
-   * The slots of the circles overlapping the box, unsorted, into `out`: for the engine's own use
-   * inside a step (waking sleepers, solver/disturbances.ts), where the handles' order does not
-   * matter and sorting would allocate.
+   * The slots of the bodies overlapping the box (minX, minY, maxX, maxY in box[0..3]), unsorted,
+   * into `out` (emptied first): for the engine's own use inside a step (waking sleepers, bullets'
+   * sweeps, sensors), where the order does not matter and a sort or a growing array would
+   * allocate, and the box comes in an array: a call V8 does not inline boxes each number passed.
    */
-  slotsInBox(version: number, minX: number, minY: number, maxX: number, maxY: number, out: number[]): number[] {
-    return this.inBox(version, minX, minY, maxX, maxY, 0xffffffff, out, false);
+  slotsInBox(version: number, box: Float64Array, out: SlotList): SlotList {
+    out.count = 0;
+    const into = this.queryBox;
+    into[0] = box[0];
+    into[1] = box[1];
+    into[2] = box[2];
+    into[3] = box[3];
+    // Every layer as a signed 32-bit integer: stored in a field, 0xffffffff would be a new boxed number each call.
+    this.inBox(version, -1, null, out);
+    return out;
   }
 
-  private inBox(version: number, minX: number, minY: number, maxX: number, maxY: number, mask: number, out: number[], handles: boolean): number[] {
-    this.mask = mask;
+  /** The bodies overlapping the box in queryBox, as handles into `handles` or as slots into `slots`. */
+  private inBox(version: number, mask: number, handles: number[] | null, slots: SlotList | null): void {
+    this.mask = mask | 0;
     this.examined = 0;
-    if (!this.prepare(version) || !this.reaches(minX, minY, maxX, maxY)) return out;
-    const { grid, bodies } = this;
+    if (!this.prepare(version)) return;
+    const { grid, bodies, queryBox: box } = this;
+    const minX = box[0];
+    const minY = box[1];
+    const maxX = box[2];
+    const maxY = box[3];
+    this.examined += this.oversizedCount;
+    for (let k = 0; k < this.oversizedCount; k++) {
+      const slot = this.oversized[k];
+      if ((bodies.category[slot] & mask) === 0 || !this.overlapsBox(slot)) continue;
+      if (handles !== null) handles.push(bodies.handleOf(slot));
+      else slots!.push(slot);
+    }
+    if (!(maxX >= this.reachMinX && minX <= this.reachMaxX && maxY >= this.reachMinY && minY <= this.reachMaxY)) return;
     const c0 = clamp(grid.columnOf(minX) - 1, 0, grid.columns - 1);
     const c1 = clamp(grid.columnOf(maxX) + 1, 0, grid.columns - 1);
     const r0 = clamp(grid.rowOf(minY) - 1, 0, grid.rows - 1);
@@ -167,11 +258,11 @@ export class Queries {
       this.examined += grid.cellStart[r * grid.columns + c1 + 1] - grid.cellStart[r * grid.columns + c0];
       for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
         const slot = grid.sortedSlot[m];
-        if ((bodies.category[slot] & mask) === 0) continue;
-        if (this.overlaps(slot, minX, minY, maxX, maxY)) out.push(handles ? bodies.handleOf(slot) : slot);
+        if ((bodies.category[slot] & mask) === 0 || !this.overlapsBox(slot)) continue;
+        if (handles !== null) handles.push(bodies.handleOf(slot));
+        else slots!.push(slot);
       }
     }
-    return out;
   }
 
   /**
@@ -243,12 +334,14 @@ export class Queries {
    * can touch while its point clamps there (see the class comment).
    */
   private walk(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, all: boolean): void {
-    this.mask = mask;
+    this.mask = mask | 0;
     this.examined = 0;
     if (!this.prepare(version)) return;
     const { grid } = this;
     const dx = x2 - x1;
     const dy = y2 - y1;
+    this.examined += this.oversizedCount;
+    for (let k = 0; k < this.oversizedCount; k++) this.testRay(this.oversized[k], x1, y1, dx, dy, mask, all);
     const cs = grid.cellSize;
     clip.enter = 0;
     clip.exit = 1;
@@ -299,7 +392,7 @@ export class Queries {
   }
 
   private testWindow(column: number, row: number, x1: number, y1: number, dx: number, dy: number, mask: number, all: boolean): void {
-    const { grid, bodies, stamp, epoch } = this;
+    const { grid, stamp, epoch } = this;
     const c0 = Math.max(column - 1, 0);
     const c1 = Math.min(column + 1, grid.columns - 1);
     if (c0 > c1) return;
@@ -308,25 +401,30 @@ export class Queries {
       for (let m = grid.cellStart[r * grid.columns + c0]; m < grid.cellStart[r * grid.columns + c1 + 1]; m++) {
         if (stamp[m] === epoch) continue;
         stamp[m] = epoch;
-        const slot = grid.sortedSlot[m];
-        if ((bodies.category[slot] & mask) === 0) continue;
-        const t = this.rayBody(slot, x1, y1, dx, dy);
-        if (t < 0) continue;
-        if (all) {
-          const k = this.hitCount++;
-          const reused = this.hits[k];
-          const hit = typeof reused === 'object' && reused !== null ? reused : (this.hits[k] = this.spareHits.pop() ?? blankHit());
-          this.write(hit, slot, t, x1, y1, dx, dy);
-        } else if (t < this.bestFraction || (t === this.bestFraction && this.aheadOfBest(slot, x1, y1, dx, dy))) {
-          this.bestFraction = t;
-          this.bestSlot = slot;
-          this.bestHandle = bodies.handleOf(slot);
-          this.bestNormalX = rayNormal.x;
-          this.bestNormalY = rayNormal.y;
-          this.bestPointX = rayPoint.x;
-          this.bestPointY = rayPoint.y;
-        }
+        this.testRay(grid.sortedSlot[m], x1, y1, dx, dy, mask, all);
       }
+    }
+  }
+
+  /** The ray against body `slot`: a hit noted (all), or kept where it is the nearest so far. */
+  private testRay(slot: number, x1: number, y1: number, dx: number, dy: number, mask: number, all: boolean): void {
+    const bodies = this.bodies;
+    if ((bodies.category[slot] & mask) === 0) return;
+    const t = this.rayBody(slot, x1, y1, dx, dy);
+    if (t < 0) return;
+    if (all) {
+      const k = this.hitCount++;
+      const reused = this.hits[k];
+      const hit = typeof reused === 'object' && reused !== null ? reused : (this.hits[k] = this.spareHits.pop() ?? blankHit());
+      this.write(hit, slot, t, x1, y1, dx, dy);
+    } else if (t < this.bestFraction || (t === this.bestFraction && this.aheadOfBest(slot, x1, y1, dx, dy))) {
+      this.bestFraction = t;
+      this.bestSlot = slot;
+      this.bestHandle = bodies.handleOf(slot);
+      this.bestNormalX = rayNormal.x;
+      this.bestNormalY = rayNormal.y;
+      this.bestPointX = rayPoint.x;
+      this.bestPointY = rayPoint.y;
     }
   }
 
@@ -359,8 +457,10 @@ export class Queries {
     const { live, bodies } = this;
     if (this.builtVersion !== version) {
       live.measure(bodies, true);
+      this.oversizedCount = 0;
       if (live.count > 0) {
-        const cellSize = live.cellSizeFor(live.maxRadius);
+        const gridRadius = this.keepOversizedApart();
+        const cellSize = live.cellSizeFor(gridRadius);
         const budget = 4 * live.count + 64;
         // A cell is at least a diameter: every body touching a point lies within half a cell of it.
         this.reachMinX = live.minX - cellSize;
@@ -368,7 +468,8 @@ export class Queries {
         this.reachMaxX = live.maxX + cellSize;
         this.reachMaxY = live.maxY + cellSize;
         live.fit(bodies, cellSize, budget);
-        this.grid.build(bodies, live.dense ? null : live.slots, 0, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, budget);
+        if (this.oversizedCount > 0) this.grid.build(bodies, this.gridSlots, 0, live.count - this.oversizedCount, live.minX, live.minY, live.maxX, live.maxY, cellSize, budget);
+        else this.grid.build(bodies, live.dense ? null : live.slots, 0, live.count, live.minX, live.minY, live.maxX, live.maxY, cellSize, budget);
         if (this.stamp.length < live.count) this.stamp = new Uint32Array(Math.max(live.count, 2 * this.stamp.length));
       }
       this.builtVersion = version;
@@ -378,6 +479,40 @@ export class Queries {
       this.epoch = 0;
     }
     return live.count > 0;
+  }
+
+  /**
+   * Lists the live bodies more than OVERSIZED times the mean bounding radius apart from the rest
+   * (gridSlots), and returns the largest radius of the rest, which sizes the cells. The reach box
+   * is the rest's too: the oversized are tested whatever it says. None apart: the largest radius.
+   */
+  private keepOversizedApart(): number {
+    const { live, bodies } = this;
+    const radius = bodies.radius;
+    const n = live.count;
+    const slots = live.dense ? null : live.slots;
+    let sum = 0;
+    for (let k = 0; k < n; k++) sum += radius[slots === null ? k : slots[k]];
+    const cap = (OVERSIZED * sum) / n;
+    if (!(live.maxRadius > cap)) return live.maxRadius;
+    if (this.gridSlots.length < n) {
+      this.gridSlots = new Int32Array(n);
+      this.oversized = new Int32Array(n);
+    }
+    let rest = 0;
+    let apart = 0;
+    let largest = 0;
+    for (let k = 0; k < n; k++) {
+      const slot = slots === null ? k : slots[k];
+      const r = radius[slot];
+      if (r > cap) this.oversized[apart++] = slot;
+      else {
+        this.gridSlots[rest++] = slot;
+        if (r > largest) largest = r;
+      }
+    }
+    this.oversizedCount = apart;
+    return largest;
   }
 
   /** Whether the box meets the reach box: else it touches no body. */

@@ -4,14 +4,12 @@ import { WorldShape } from '../narrowphase/world-shape.js';
 import { ShapeDistance } from '../narrowphase/distance.js';
 import { norm, rayCircle, rayCircleEntry } from './ray-circle.js';
 import { rayCapsule } from './ray-capsule.js';
-import { poseOf, shapeBounds } from '../shapes/bounds.js';
+import { shapeBounds } from '../shapes/bounds.js';
 
 const placed = new WorldShape();
 const probe = new WorldShape();
 const distance = new ShapeDistance();
-const box = new Float64Array(4);
 const bounds = new Float64Array(4);
-const pose = new Float64Array(4);
 
 /** Where the last rayShape hit entered: the outward unit normal there. */
 export const rayNormal = { x: 0, y: 0 };
@@ -29,20 +27,18 @@ export function shapeContains(shapes: ShapeStore, slot: number, px: number, py: 
 }
 
 /**
- * Whether the shape overlaps the box [minX, maxX] x [minY, maxY] (touching included). A shape
- * whose bounding box lies inside the query box, or wholly apart from it, is decided by that box
- * alone: the distance to a box far larger than the shape loses the shape in its rounding.
+ * Whether shape `slot` of a body at pose at[0..3] (x, y, cosine, sine) overlaps the box `area`
+ * ([minX, minY, maxX, maxY], touching included). A shape whose bounding box lies inside the query
+ * box, or wholly apart from it, is decided by that box alone: the distance to a box far larger
+ * than the shape loses the shape in its rounding. Pose and box come in arrays: the sensors' stage
+ * asks this of many shapes each step, and a call V8 does not inline boxes each number passed.
  */
-export function shapeOverlapsBox(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, minX: number, minY: number, maxX: number, maxY: number): boolean {
-  const b = shapeBounds(shapes, slot, poseOf(pose, px, py, c, s), bounds);
-  if (b[0] >= minX && b[2] <= maxX && b[1] >= minY && b[3] <= maxY) return true;
-  if (b[2] < minX || b[0] > maxX || b[3] < minY || b[1] > maxY) return false;
-  placed.fromStore(shapes, slot, px, py, c, s);
-  box[0] = minX;
-  box[1] = minY;
-  box[2] = maxX;
-  box[3] = maxY;
-  probe.rectangle(box);
+export function shapeOverlapsBox(shapes: ShapeStore, slot: number, at: Float64Array, area: Float64Array): boolean {
+  const b = shapeBounds(shapes, slot, at, bounds);
+  if (b[0] >= area[0] && b[2] <= area[2] && b[1] >= area[1] && b[3] <= area[3]) return true;
+  if (b[2] < area[0] || b[0] > area[2] || b[3] < area[1] || b[1] > area[3]) return false;
+  placed.fromPose(shapes, slot, at, 0);
+  probe.rectangle(area);
   return distance.compute(placed, probe).distance <= placed.radius;
 }
 

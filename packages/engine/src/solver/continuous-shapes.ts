@@ -4,7 +4,7 @@ import { TypeCode } from '../store/body-types.js';
 import { ShapeKind } from '../shapes/geometry.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import type { StaticTree } from '../broadphase/static-tree.js';
-import type { Queries } from '../query/queries.js';
+import { SlotList, type Queries } from '../query/queries.js';
 import { WorldShape } from '../narrowphase/world-shape.js';
 import { SegmentDistance } from '../narrowphase/segment-distance.js';
 import { SEGMENT_ENTRY, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
@@ -72,7 +72,9 @@ export class ContinuousShapes {
   private c0 = new Float64Array(0);
   private s0 = new Float64Array(0);
   private readonly sweep: Sweep = { x0: 0, y0: 0, c0: 1, s0: 0, x1: 0, y1: 0, c1: 1, s1: 0, reach: 0, split: false, cm: 1, sm: 0 };
-  private readonly found: number[] = [];
+  private readonly found = new SlotList();
+  /** The box a bullet's sweep looks for moving bodies in (Queries.slotsInBox). */
+  private readonly around = new Float64Array(4);
   /** Bodies swept in the last step. */
   swept = 0;
   hits = new Int32Array(16);
@@ -213,10 +215,14 @@ export class ContinuousShapes {
         }
         if (bullet && queries) {
           if (travel < 0) travel = this.largestTravel(bodies);
-          this.found.length = 0;
-          queries.slotsInBox(queryVersion, minX - travel, minY - travel, maxX + travel, maxY + travel, this.found);
-          for (let f = 0; f < this.found.length; f++) {
-            const j = this.found[f];
+          const around = this.around;
+          around[0] = minX - travel;
+          around[1] = minY - travel;
+          around[2] = maxX + travel;
+          around[3] = maxY + travel;
+          const found = queries.slotsInBox(queryVersion, around, this.found);
+          for (let f = 0; f < found.count; f++) {
+            const j = found.slots[f];
             if (j === i || type[j] === TypeCode.static || (flags[j] & BodyFlag.bullet) !== 0) continue;
             if ((bodies.category[i] & bodies.mask[j]) === 0 || (bodies.category[j] & bodies.mask[i]) === 0) continue;
             // In the frame that travels with j: the bullet starts where it stood relative to j.

@@ -1,5 +1,5 @@
 import type { BodyStore } from '../store/body-store.js';
-import type { Queries } from '../query/queries.js';
+import { SlotList, type Queries } from '../query/queries.js';
 import { grow, grownCapacity } from '../util/grow.js';
 
 /** Sleepers this far beyond touching (a fraction of the two radii) still count as touching. */
@@ -19,7 +19,8 @@ export class Disturbances {
   /** x, y, radius per noted circle. */
   private circles = new Float64Array(3 * 8);
   private count = 0;
-  private readonly found: number[] = [];
+  private readonly found = new SlotList();
+  private readonly box = new Float64Array(4);
 
   /** Notes body `slot`'s circle as it is now, if anything sleeps. */
   note(bodies: BodyStore, slot: number): void {
@@ -49,10 +50,14 @@ export class Disturbances {
       const cy = this.circles[3 * k + 1];
       const r = this.circles[3 * k + 2];
       const pad = (r + widest) * (1 + TOUCH_MARGIN) + contactSlop;
-      this.found.length = 0;
-      const found = queries.slotsInBox(geometryVersion, cx - pad, cy - pad, cx + pad, cy + pad, this.found);
-      for (let f = 0; f < found.length; f++) {
-        const s = found[f];
+      const box = this.box;
+      box[0] = cx - pad;
+      box[1] = cy - pad;
+      box[2] = cx + pad;
+      box[3] = cy + pad;
+      const found = queries.slotsInBox(geometryVersion, box, this.found);
+      for (let f = 0; f < found.count; f++) {
+        const s = found.slots[f];
         if (!asleep[s]) continue;
         const reach = (r + radius[s]) * (1 + TOUCH_MARGIN) + contactSlop;
         const dx = x[s] - cx;

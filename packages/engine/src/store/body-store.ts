@@ -137,6 +137,16 @@ export class BodyStore {
     if (initialCapacity > 0) this.grow(initialCapacity);
   }
 
+  /** Writes slot's handle into out[at] (see SlotOwner: a handle passed through memory is never boxed). */
+  writeHandle(slot: number, out: Float64Array, at: number): void {
+    out[at] = this.handleOf(slot);
+  }
+
+  /** Whether slot's handle is handles[at] (see SlotOwner). */
+  holdsHandle(slot: number, handles: Float64Array, at: number): boolean {
+    return this.handleOf(slot) === handles[at];
+  }
+
   handleOf(slot: number): number {
     return this.generation[slot] * SLOT_SPACE + slot;
   }

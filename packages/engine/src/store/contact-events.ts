@@ -12,7 +12,12 @@ import { SEGMENT_ENTRY, WALL_ENTRY } from '../narrowphase/shape-narrowphase.js';
 const { approachSpeed: PT_APPROACH_SPEED, totalNormalImpulse: PT_TOTAL_NORMAL_IMPULSE } = ContactPoint;
 
 /** The box walls have no handles: events name them by their BoxWall number. */
-const BOX_WALLS: SlotOwner = { handleOf: (wall) => wall };
+const BOX_WALLS: SlotOwner = {
+  writeHandle: (wall, out, at) => {
+    out[at] = wall;
+  },
+  holdsHandle: (wall, handles, at) => handles[at] === wall,
+};
 
 /**
  * Whether the body in `slot` holds still while asleep: a sleeping dynamic body, or a static one.
@@ -25,33 +30,32 @@ function still(bodies: BodyStore, slot: number): boolean {
   return t === TypeCode.static || (t === TypeCode.dynamic && bodies.asleep[slot] === 1);
 }
 
-/** Touches between two bodies (slots), asleep (see still), the same two bodies as when they touched. */
+/** Touches between two bodies (slots), both still (see still). */
 class SleepingBodyPairs implements Dormancy {
   bodies: BodyStore | null = null;
-  dormant(a: number, b: number, handleA: number, handleB: number): boolean {
+  dormant(a: number, b: number): boolean {
     const bodies = this.bodies!;
-    return bodies.handleOf(a) === handleA && bodies.handleOf(b) === handleB && still(bodies, a) && still(bodies, b);
+    return still(bodies, a) && still(bodies, b);
   }
 }
 
-/** Touches between a body and a segment or a wall: the body asleep, and the segment the same (walls stay). */
+/** Touches between a body and a segment or a wall: the body asleep. */
 class SleepingOnStatics implements Dormancy {
   bodies: BodyStore | null = null;
-  statics: SlotOwner = BOX_WALLS;
-  dormant(a: number, b: number, handleA: number, handleB: number): boolean {
+  dormant(a: number): boolean {
     const bodies = this.bodies!;
-    return bodies.handleOf(a) === handleA && this.statics.handleOf(b) === handleB && bodies.type[a] === TypeCode.dynamic && bodies.asleep[a] === 1;
+    return bodies.type[a] === TypeCode.dynamic && bodies.asleep[a] === 1;
   }
 }
 
-/** Touches between two shapes (slots), their bodies asleep (see still), the same two shapes as when they touched. */
+/** Touches between two live shapes (slots) whose bodies are still (see still). */
 class SleepingShapePairs implements Dormancy {
   bodies: BodyStore | null = null;
   shapes: ShapeStore | null = null;
-  dormant(a: number, b: number, handleA: number, handleB: number): boolean {
+  dormant(a: number, b: number): boolean {
     const bodies = this.bodies!;
     const shapes = this.shapes!;
-    return shapes.handleOf(a) === handleA && shapes.handleOf(b) === handleB && shapes.live[a] === 1 && shapes.live[b] === 1 && still(bodies, shapes.body[a]) && still(bodies, shapes.body[b]);
+    return shapes.live[a] === 1 && shapes.live[b] === 1 && still(bodies, shapes.body[a]) && still(bodies, shapes.body[b]);
   }
 }
 
@@ -65,10 +69,9 @@ const sleepingOnWalls = new SleepingOnStatics();
 const sleepingShapes = new SleepingShapePairs();
 
 /** Points the sleeping touches' tests at this step's stores, or (null) lets them go. */
-function dormancy(bodies: BodyStore | null, segments: SegmentStore | null, shapes: ShapeStore | null): void {
+function dormancy(bodies: BodyStore | null, shapes: ShapeStore | null): void {
   sleepingBodies.bodies = bodies;
   sleepingOnSegments.bodies = bodies;
-  sleepingOnSegments.statics = segments ?? BOX_WALLS;
   sleepingOnWalls.bodies = bodies;
   sleepingShapes.bodies = bodies;
   sleepingShapes.shapes = shapes;
@@ -458,11 +461,11 @@ export class ContactEvents implements ContactEventsView {
   /** Diffs the step's canonical contacts, its body-segment and its body-wall touches against the last step's. */
   update(bodies: BodyStore, contacts: ContactBuffer, segments: SegmentStore): void {
     const { touchingSegments: onSegments, touchingWalls: onWalls } = this;
-    dormancy(bodies, segments, null);
+    dormancy(bodies, null);
     this.touches.update(contacts.lo, contacts.hi, contacts.count, bodies, bodies, sleepingBodies);
     this.segmentTouches.update(onSegments.a, onSegments.b, onSegments.count, bodies, segments, sleepingOnSegments);
     this.wallTouches.update(onWalls.a, onWalls.b, onWalls.count, bodies, BOX_WALLS, sleepingOnWalls);
-    dormancy(null, null, null);
+    dormancy(null, null);
   }
 
   /**
@@ -525,12 +528,12 @@ export class ContactEvents implements ContactEventsView {
     }
     // Segment touches diff in (body, segment) order, which the contact list already keeps; shape pairs need sorting.
     touchingShapes.sortCanonical(shapes.slotCount);
-    dormancy(bodies, segments, shapes);
+    dormancy(bodies, shapes);
     this.touches.update(touchingBodies.a, touchingBodies.b, touchingBodies.count, bodies, bodies, sleepingBodies);
     this.segmentTouches.update(touchingSegments.a, touchingSegments.b, touchingSegments.count, bodies, segments, sleepingOnSegments);
     this.wallTouches.update(touchingWalls.a, touchingWalls.b, touchingWalls.count, bodies, BOX_WALLS, sleepingOnWalls);
     this.shapeTouches.update(touchingShapes.lo, touchingShapes.hi, touchingShapes.count, shapes, shapes, sleepingShapes);
-    dormancy(null, null, null);
+    dormancy(null, null);
     const sensing = this.sensing;
     sensing.clear();
     for (let k = 0; k < sensorCount; k++) sensing.push(sensorSlots[k], visitorSlots[k]);

@@ -1,17 +1,25 @@
 import { grownCapacity, grow } from '../util/grow.js';
 
-/** What owns the slots of one side of a pair: BodyStore or SegmentStore. */
+/**
+ * What owns the slots of one side of a pair: BodyStore, ShapeStore or SegmentStore. Handles pass
+ * through typed arrays, never as a call's argument or result: they lie past 2^31, and V8 boxes
+ * such a number at a call it does not inline, an allocation per touch and step.
+ */
 export interface SlotOwner {
-  handleOf(slot: number): number;
+  /** Writes the handle of the thing in `slot` into out[at]. */
+  writeHandle(slot: number, out: Float64Array, at: number): void;
+  /** Whether the thing in `slot` has the handle handles[at]. */
+  holdsHandle(slot: number, handles: Float64Array, at: number): boolean;
 }
 
 /**
  * Which of last step's touching pairs that this step's list lacks still touch: pairs asleep (see
- * ContactEvents), whose contacts the step does not compute. Given their slots and the handles they
- * had then, so that a slot since emptied or reused is told apart.
+ * ContactEvents), whose contacts the step does not compute. Asked only of pairs whose slots hold
+ * the same things as then (PairDiff compares their handles), by slot alone: a handle is past 2^31,
+ * and V8 would box it as an argument, an allocation per sleeping touch and step.
  */
 export interface Dormancy {
-  dormant(a: number, b: number, handleA: number, handleB: number): boolean;
+  dormant(a: number, b: number): boolean;
 }
 
 /**
@@ -39,7 +47,6 @@ export class PairDiff {
   private nextB = new Int32Array(16);
   private nextHandleA = new Float64Array(16);
   private nextHandleB = new Float64Array(16);
-  private nextCount = 0;
 
   clear(): void {
     this.beginCount = 0;
@@ -49,7 +56,8 @@ export class PairDiff {
   /** Diffs pairs (a[k], b[k]), k < count, in ascending order, against the last call's, then keeps them and the dormant ones. */
   update(a: Int32Array, b: Int32Array, count: number, ownerA: SlotOwner, ownerB: SlotOwner, dormancy: Dormancy | null = null): void {
     const { prevA, prevB, prevHandleA, prevHandleB, prevCount } = this;
-    this.nextCount = 0;
+    let { nextA, nextB, nextHandleA, nextHandleB } = this;
+    let n = 0;
     let p = 0;
     let c = 0;
     while (p < prevCount || c < count) {
@@ -58,30 +66,42 @@ export class PairDiff {
       else if (c === count) order = -1;
       else order = prevA[p] !== a[c] ? prevA[p] - a[c] : prevB[p] - b[c];
       if (order < 0) {
-        if (dormancy !== null && dormancy.dormant(prevA[p], prevB[p], prevHandleA[p], prevHandleB[p])) {
-          this.pushNext(prevA[p], prevB[p], prevHandleA[p], prevHandleB[p]);
+        if (dormancy !== null && ownerA.holdsHandle(prevA[p], prevHandleA, p) && ownerB.holdsHandle(prevB[p], prevHandleB, p) && dormancy.dormant(prevA[p], prevB[p])) {
+          if (n === nextA.length) {
+            this.growNext(n + 1);
+            ({ nextA, nextB, nextHandleA, nextHandleB } = this);
+          }
+          nextA[n] = prevA[p];
+          nextB[n] = prevB[p];
+          nextHandleA[n] = prevHandleA[p];
+          nextHandleB[n++] = prevHandleB[p];
         } else {
           this.pushEnd(prevHandleA[p], prevHandleB[p]);
         }
         p++;
         continue;
       }
-      const handleA = ownerA.handleOf(a[c]);
-      const handleB = ownerB.handleOf(b[c]);
+      if (n === nextA.length) {
+        this.growNext(n + 1);
+        ({ nextA, nextB, nextHandleA, nextHandleB } = this);
+      }
+      nextA[n] = a[c];
+      nextB[n] = b[c];
+      ownerA.writeHandle(a[c], nextHandleA, n);
+      ownerB.writeHandle(b[c], nextHandleB, n);
       if (order > 0) {
-        this.pushBegin(handleA, handleB);
+        this.pushBegin(nextHandleA[n], nextHandleB[n]);
       } else {
-        if (handleA !== prevHandleA[p] || handleB !== prevHandleB[p]) {
+        if (nextHandleA[n] !== prevHandleA[p] || nextHandleB[n] !== prevHandleB[p]) {
           this.pushEnd(prevHandleA[p], prevHandleB[p]);
-          this.pushBegin(handleA, handleB);
+          this.pushBegin(nextHandleA[n], nextHandleB[n]);
         }
         p++;
       }
-      this.pushNext(a[c], b[c], handleA, handleB);
+      n++;
       c++;
     }
     // The kept list becomes last step's; its arrays take the next list's turn.
-    const { nextA, nextB, nextHandleA, nextHandleB } = this;
     this.nextA = prevA;
     this.nextB = prevB;
     this.nextHandleA = prevHandleA;
@@ -90,27 +110,20 @@ export class PairDiff {
     this.prevB = nextB;
     this.prevHandleA = nextHandleA;
     this.prevHandleB = nextHandleB;
-    this.prevCount = this.nextCount;
+    this.prevCount = n;
   }
 
   memoryBytes(): number {
     return (this.beginA.byteLength + this.endA.byteLength + this.prevA.byteLength + this.prevHandleA.byteLength) * 2 + (this.nextA.byteLength + this.nextHandleA.byteLength) * 2;
   }
 
-  private pushNext(a: number, b: number, handleA: number, handleB: number): void {
-    const n = this.nextCount;
-    if (n === this.nextA.length) {
-      const capacity = grownCapacity(this.nextA.length, n + 1);
-      this.nextA = grow(this.nextA, capacity);
-      this.nextB = grow(this.nextB, capacity);
-      this.nextHandleA = grow(this.nextHandleA, capacity);
-      this.nextHandleB = grow(this.nextHandleB, capacity);
-    }
-    this.nextA[n] = a;
-    this.nextB[n] = b;
-    this.nextHandleA[n] = handleA;
-    this.nextHandleB[n] = handleB;
-    this.nextCount = n + 1;
+  /** Room in the next list for `count` pairs, keeping those written. */
+  private growNext(count: number): void {
+    const capacity = grownCapacity(this.nextA.length, count);
+    this.nextA = grow(this.nextA, capacity);
+    this.nextB = grow(this.nextB, capacity);
+    this.nextHandleA = grow(this.nextHandleA, capacity);
+    this.nextHandleB = grow(this.nextHandleB, capacity);
   }
 
   private pushBegin(a: number, b: number): void {
