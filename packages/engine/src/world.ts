@@ -1249,13 +1249,17 @@ export class World {
 
   /**
    * Whether the polygon through a ring's bodies' centres crosses itself (a bow-tie), and where:
-   * two edges that are not neighbours cross at a point inside both, by the signs of four
-   * orientations. Edges that only touch, or lie along each other, are not counted.
+   * two edges that are not neighbours meet, crossing or touching (an edge through another's end,
+   * as a figure eight's lobes meet at a body), by the signs of four orientations and, where one
+   * is 0, whether that end lies within the other edge. Every pair of edges: the ring is made once.
    */
   private ringCrossing(ring: Int32Array, out: Int32Array): boolean {
     const { x, y } = this.bodies;
     const n = ring.length;
     const side = (a: number, b: number, c: number): number => Math.sign((x[b] - x[a]) * (y[c] - y[a]) - (y[b] - y[a]) * (x[c] - x[a]));
+    // c on the line through a and b: whether it lies between them.
+    const within = (a: number, b: number, c: number): boolean =>
+      Math.min(x[a], x[b]) <= x[c] && x[c] <= Math.max(x[a], x[b]) && Math.min(y[a], y[b]) <= y[c] && y[c] <= Math.max(y[a], y[b]);
     for (let i = 0; i < n; i++) {
       const a = ring[i];
       const b = ring[(i + 1) % n];
@@ -1263,7 +1267,13 @@ export class World {
         if (i === 0 && j === n - 1) continue;
         const c = ring[j];
         const d = ring[(j + 1) % n];
-        if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) {
+        const abc = side(a, b, c);
+        const abd = side(a, b, d);
+        const cda = side(c, d, a);
+        const cdb = side(c, d, b);
+        const crosses = abc * abd < 0 && cda * cdb < 0;
+        const touches = (abc === 0 && within(a, b, c)) || (abd === 0 && within(a, b, d)) || (cda === 0 && within(c, d, a)) || (cdb === 0 && within(c, d, b));
+        if (crosses || touches) {
           out[0] = i;
           out[1] = j;
           return true;

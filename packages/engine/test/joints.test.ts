@@ -1123,6 +1123,10 @@ describe('joint reactions while asleep', () => {
       expect(world.isAwake(weight), label).toBe(false);
       // y down: the joint pulls the weight up with its weight, 3 kg x 10.
       expect(world.getJoint(joint).force.y, label).toBeCloseTo(-30, 3);
+      // Made static, the weight needs holding no more: a joint between static bodies does nothing.
+      world.setType(weight, 'static');
+      for (let s = 0; s < 3; s++) world.step(DT);
+      expect(world.getJoint(joint).force, `${label}, static`).toEqual({ x: 0, y: 0 });
     }
   });
 });
@@ -1207,12 +1211,17 @@ describe('pressure joints: gas in a ring of bodies', () => {
     const d = w.createCircle({ x: 1, y: 1, radius: 0.1 });
     const e = w.createCircle({ x: 2, y: 1, radius: 0.1 });
     const f = w.createCircle({ x: 0, y: 2, radius: 0.1 });
+    // A ring through (1, 1) twice (at d, and along the edge from e2 to e4): it crosses itself at a body.
+    const e2 = w.createCircle({ x: 3, y: 3, radius: 0.1 });
+    const e3 = w.createCircle({ x: 3, y: -1, radius: 0.1 });
+    const e4 = w.createCircle({ x: -1, y: 3, radius: 0.1 });
     const before = w.stateHash();
     expect(() => w.createJoint({ kind: 'pressure', bodies: [a, b], pressure: 1 })).toThrow(/at least 3 bodies/);
     expect(() => w.createJoint({ kind: 'pressure', bodies: [a, b, a], pressure: 1 })).toThrow(/bodies\[2\] .* already in the ring/);
     expect(() => w.createJoint({ kind: 'pressure', bodies: [a, b, c], pressure: 1 })).toThrow(/enclose no area/);
     expect(() => w.createJoint({ kind: 'pressure', bodies: [a, b, d], pressure: -1 })).toThrow(/pressure must be >= 0/);
     // A bow-tie: its two halves' areas do not cancel (1 left), but it crosses itself.
+    expect(() => w.createJoint({ kind: 'pressure', bodies: [a, d, e2, e3, e4], pressure: 1 })).toThrow(/crosses itself/);
     expect(() => w.createJoint({ kind: 'pressure', bodies: [a, e, c, f], pressure: 1 })).toThrow(/crosses itself: its edge from bodies\[0\] to bodies\[1\] crosses the one from bodies\[2\] to bodies\[3\]/);
     expect(() => w.createJoint({ kind: 'pressure', bodies: 'abc', pressure: 1 } as never)).toThrow(TypeError);
     expect(w.jointCount).toBe(0);

@@ -127,6 +127,16 @@ function jointArm(r: Float64Array, o: number): number {
  */
 const TURN_HOLD = 1e4;
 
+/**
+ * Whether an idle joint (no body awake and moving) holds a sleeping body, and so keeps reading the
+ * force it carried as it fell asleep, as Box2D keeps a sleeping joint's impulses: a rope holding a
+ * sleeping weight still reads its weight. One between static or kinematic bodies does nothing, and
+ * reads 0. Apart from listJoints, whose loop V8 then keeps small enough to inline what it calls.
+ */
+function holdsSleeper(bodies: BodyStore, a: number, b: number): boolean {
+  return (a >= 0 && bodies.asleep[a] === 1 && bodies.type[a] === TypeCode.dynamic) || (bodies.asleep[b] === 1 && bodies.type[b] === TypeCode.dynamic);
+}
+
 /** Whether joints of `kind` hold their bodies as constraints (see JointSolver's loneJoints). */
 function holds(kind: number): boolean {
   return kind !== JointKind.spring && kind !== JointKind.pressure && kind !== JointKind.target;
@@ -352,9 +362,7 @@ export class JointSolver {
       const b = store.bodyB[j];
       const ia = a < 0 ? 0 : index[a];
       const ib = index[b];
-      // A joint whose bodies all sleep (or stand) keeps the force it last carried, as Box2D keeps
-      // a sleeping joint's impulses: a rope holding a sleeping weight still reads its weight.
-      if (ia !== 0 || ib !== 0) {
+      if (ia !== 0 || ib !== 0 || !holdsSleeper(bodies, a, b)) {
         r[o + FORCE_X] = 0;
         r[o + FORCE_Y] = 0;
         r[o + TORQUE] = 0;
