@@ -14,7 +14,7 @@ import { ContactEvents, type ContactEventsView } from './store/contact-events.js
 import { ContactPoint, POINT_STRIDE } from './narrowphase/contact-list.js';
 import { Queries, type RayHit } from './query/queries.js';
 import { Disturbances } from './solver/disturbances.js';
-import { limitSpeeds } from './solver/speed-limit.js';
+import { anyFaster, limitSpeeds } from './solver/speed-limit.js';
 import { NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments, rayHitOutput, rayHitsOutput } from './query/query-args.js';
 import type { CircleState, BodyViews, BodyState, ContactPointViews, QueryOptions, ShapeState, ShapeViews } from './world-types.js';
 import { grow, grownCapacity } from './util/grow.js';
@@ -184,7 +184,6 @@ export class World {
     this.resolved = resolved;
     this.bounds = resolved.bounds;
     this.bodies.box = resolved.bounds;
-    this.bodies.speedCap = resolved.maxLinearSpeed ?? MAX_MAGNITUDE;
     // Static bodies are paired with moving ones through the static index, never in the broad-phase.
     this.bodies.setStaticsApart();
     this.defaultRestitution = resolved.restitution;
@@ -1109,6 +1108,7 @@ export class World {
       limitSpeeds(this.bodies, this.shapeRoute.settings.soft.maxLinearSpeed, MAX_MAGNITUDE);
       if (this.joints !== null && this.joints.store.breakable > 0 && dt > 0) this.breakJoints();
     } else {
+      this.limitMotion(dt);
       this.pipeline.run(dt, this.staticVersion);
       if (this.turning) turnCircles(this.bodies, dt);
       // After the turn, which reads the torques: the forces acted in the pipeline's motion.
@@ -1120,6 +1120,21 @@ export class World {
     this.geometryVersion++;
   }
 
+
+  /**
+   * The circle route's speed limit, where one was given, for this step's motion (BodyStore.speedCap,
+   * which sends it to the general loop): only where a body may pass it within the step, one faster
+   * than the limit less what gravity adds in a step, or where forces, damping or gravity scales
+   * act. Elsewhere the plain loop (the body kernel's) moves every body within the limit as it is.
+   */
+  private limitMotion(dt: number): void {
+    const cap = this.resolved.maxLinearSpeed;
+    if (cap === null) return;
+    const b = this.bodies;
+    const g = this.pipeline.settings.gravity;
+    const general = b.customMotionCount > 0 || b.forcesPending || b.sleepingCount > 0;
+    b.speedCap = general || anyFaster(b, cap - Math.sqrt(g.x * g.x + g.y * g.y) * dt) ? cap : MAX_MAGNITUDE;
+  }
 
   /**
    * Joins two bodies (see JointOptions for each kind: 'distance', 'revolute', 'prismatic', 'weld',

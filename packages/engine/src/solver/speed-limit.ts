@@ -24,6 +24,24 @@ export function capSpeed(x: number, y: number, maxSpeed: number, out: Float64Arr
 }
 
 /**
+ * Whether some body moves faster than `speed` (any body, for a quick answer: the circle route
+ * takes its capped general motion only in steps that may need it, see World.step). The body
+ * kernel's scan where it holds the columns.
+ */
+export function anyFaster(bodies: BodyStore, speed: number): boolean {
+  if (!(speed > 0)) return true;
+  const { vx, vy, slotCount } = bodies;
+  const speedSq = speed * speed;
+  const kernel = bodies.kernel;
+  if (kernel !== null) {
+    limit[0] = speedSq;
+    return kernel.firstTooFast(0, slotCount, limit) < slotCount;
+  }
+  for (let i = 0; i < slotCount; i++) if (!(vx[i] * vx[i] + vy[i] * vy[i] <= speedSq)) return true;
+  return false;
+}
+
+/**
  * Caps every moving dynamic body's speed at `maxSpeed` (keeping its direction) and its spin at
  * `maxSpin`, the last stage of every step. A world's inputs are bounded (util/validate.ts), so a
  * step grows a speed by at most a bounded factor; capping what it leaves keeps every later step

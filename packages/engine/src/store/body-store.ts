@@ -91,8 +91,9 @@ export class BodyStore {
   /** True between applyForce and the next step. */
   forcesPending = false;
   /**
-   * The circle route's speed limit where the world was given one (maxLinearSpeed): its motion then
-   * takes the general loop, which moves no dynamic body faster (see integrateSemiImplicitEuler).
+   * The circle route's speed limit for this step's motion, where the world was given one
+   * (maxLinearSpeed) and a body may pass it within the step (see World.limitMotion): the motion
+   * then takes the general loop, which moves no dynamic body faster (see moveVelocity).
    * MAX_MAGNITUDE for none; the shape route passes its own limit to its integration.
    */
   speedCap = MAX_MAGNITUDE;
