@@ -74,7 +74,7 @@ export interface WorldOptions {
    */
   jointHertz?: number | undefined;
   jointDampingRatio?: number | undefined;
-  /** The fastest a dynamic body moves, length units per second: the last stage of every step caps speeds at it. Default: with shapes 400 x lengthUnit (Box2D's maximumLinearSpeed); the circle engine 1e100, which only keeps numbers finite. At most 1e100. */
+  /** The fastest a dynamic body moves, length units per second: every step caps the velocity it moves a body with, and the speeds it leaves, at it (the soft step kinematic bodies too, as Box2D). Default: with shapes 400 x lengthUnit (Box2D's maximumLinearSpeed); the circle engine 1e100, which only keeps numbers finite. At most 1e100. */
   maxLinearSpeed?: number | undefined;
   /**
    * Collisions approaching slower than this are inelastic, as Box2D's restitution threshold:

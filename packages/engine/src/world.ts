@@ -755,8 +755,9 @@ export class World {
    * animated body driven by poses, which carries what rests on it by friction where setTransform
    * would jump it there (Box2D v3's b2Body_SetTargetTransform). Call it before each step with that
    * step's dt; the elastic pass lands on the pose to rounding, the soft step's sub-steps turn a
-   * body close to it. Meant for kinematic bodies; a dynamic one takes the velocities as a start,
-   * and a static one throws. Wakes it.
+   * body close to it, within maxLinearSpeed and an eighth of a turn a step, the limits Box2D
+   * holds every awake body to. Meant for kinematic bodies; a dynamic one takes the velocities as
+   * a start, and a static one throws. Wakes it.
    */
   setTargetTransform(handle: number, x: number, y: number, angle: number, dt: number): void {
     const s = this.slot(handle);
