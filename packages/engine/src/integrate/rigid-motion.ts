@@ -2,14 +2,13 @@ import type { BodyStore } from '../store/body-store.js';
 import { TypeCode } from '../store/body-types.js';
 import { BodyFlag } from '../store/rigid-columns.js';
 import { turn } from '../math/trig.js';
-import { needsGeneralMotion } from './motion.js';
+import { moveVelocity, needsGeneralMotion } from './motion.js';
 import type { IntegratorName } from './integrator.js';
-import { capSpeed } from '../solver/speed-limit.js';
 
 /** The turn of a step, for `turn` (see there). */
 const angle = new Float64Array(1);
-/** capSpeed's answer. */
-const capped = new Float64Array(2);
+/** moveVelocity's answer. */
+const moved = new Float64Array(2);
 
 /**
  * Integration of bodies that turn, for the shape route's elastic pass (the soft step integrates
@@ -31,7 +30,6 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
   // x + (v + a dt / 2) dt, which is the mean of the two Euler methods' positions.
   const rk4 = integrator === 'rk4';
   if (!needsGeneralMotion(bodies)) return integratePlain(bodies, gx, gy, dt, explicit, rk4, maxSpeed);
-  const maxSq = maxSpeed * maxSpeed;
   const { x, y, vx, vy, type, asleep, invMass, gravityScale, linearDamping, forceX, forceY, slotCount } = bodies;
   const rigid = bodies.rigid!;
   const { c, s, angularVelocity, invInertia, torque, angularDamping, flags } = rigid;
@@ -50,15 +48,9 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
       const alpha = invInertia[i] * torque[i];
       const spin = 1 / (1 + dt * angularDamping[i]);
       if (explicit || rk4) {
-        let ux = rk4 ? vx[i] + 0.5 * ax * dt : vx[i];
-        let uy = rk4 ? vy[i] + 0.5 * ay * dt : vy[i];
-        if (!(ux * ux + uy * uy <= maxSq)) {
-          capSpeed(ux, uy, maxSpeed, capped);
-          ux = capped[0];
-          uy = capped[1];
-        }
-        x[i] += ux * dt;
-        y[i] += uy * dt;
+        moveVelocity(rk4 ? vx[i] + 0.5 * ax * dt : vx[i], rk4 ? vy[i] + 0.5 * ay * dt : vy[i], maxSpeed, moved);
+        x[i] += moved[0] * dt;
+        y[i] += moved[1] * dt;
         vx[i] = (vx[i] + ax * dt) * damping;
         vy[i] = (vy[i] + ay * dt) * damping;
         const fixed = (flags[i] & BodyFlag.fixedRotation) !== 0;
@@ -66,9 +58,9 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
         // Explicit Euler turns by the spin it had; Runge-Kutta by the mean over the step.
         if (rk4) w = fixed ? 0 : w + 0.5 * alpha * dt;
       } else {
-        vx[i] = (vx[i] + ax * dt) * damping;
-        vy[i] = (vy[i] + ay * dt) * damping;
-        if (!(vx[i] * vx[i] + vy[i] * vy[i] <= maxSq)) capInPlace(vx, vy, i, maxSpeed);
+        moveVelocity((vx[i] + ax * dt) * damping, (vy[i] + ay * dt) * damping, maxSpeed, moved);
+        vx[i] = moved[0];
+        vy[i] = moved[1];
         x[i] += vx[i] * dt;
         y[i] += vy[i] * dt;
         w = (flags[i] & BodyFlag.fixedRotation) !== 0 ? 0 : (w + alpha * dt) * spin;
@@ -93,26 +85,19 @@ function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, e
   const { c, s, angularVelocity, flags } = rigid;
   const dvx = gx * dt;
   const dvy = gy * dt;
-  const maxSq = maxSpeed * maxSpeed;
   for (let i = 0; i < slotCount; i++) {
     const t = type[i];
     if (t === TypeCode.dynamic) {
       if (rk4 || explicit) {
-        let ux = rk4 ? vx[i] + 0.5 * dvx : vx[i];
-        let uy = rk4 ? vy[i] + 0.5 * dvy : vy[i];
-        if (!(ux * ux + uy * uy <= maxSq)) {
-          capSpeed(ux, uy, maxSpeed, capped);
-          ux = capped[0];
-          uy = capped[1];
-        }
-        x[i] += ux * dt;
-        y[i] += uy * dt;
+        moveVelocity(rk4 ? vx[i] + 0.5 * dvx : vx[i], rk4 ? vy[i] + 0.5 * dvy : vy[i], maxSpeed, moved);
+        x[i] += moved[0] * dt;
+        y[i] += moved[1] * dt;
         vx[i] += dvx;
         vy[i] += dvy;
       } else {
-        vx[i] += dvx;
-        vy[i] += dvy;
-        if (!(vx[i] * vx[i] + vy[i] * vy[i] <= maxSq)) capInPlace(vx, vy, i, maxSpeed);
+        moveVelocity(vx[i] + dvx, vy[i] + dvy, maxSpeed, moved);
+        vx[i] = moved[0];
+        vy[i] = moved[1];
         x[i] += vx[i] * dt;
         y[i] += vy[i] * dt;
       }
@@ -131,13 +116,6 @@ function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, e
     angle[0] = w * dt;
     turn(c, s, i, angle);
   }
-}
-
-/** Caps body i's velocity at maxSpeed where it is faster (capSpeed). */
-function capInPlace(vx: Float64Array, vy: Float64Array, i: number, maxSpeed: number): void {
-  capSpeed(vx[i], vy[i], maxSpeed, capped);
-  vx[i] = capped[0];
-  vy[i] = capped[1];
 }
 
 /**
