@@ -127,3 +127,81 @@ describe('joints', () => {
     }
   });
 });
+
+describe('joints: timing', () => {
+  const CHAIN: JointsOptions = { ...TINY, cases: [{ scene: 'chain', params: { links: 4, horizontal: 1 } }], warmupSteps: 1, warmUpMs: 0, baseline: 'a' };
+  const ctx = (shapeEngines: ShapeEngine[]) => ({ engines: [], shapeEngines, environment: { runtime: 'vitest' }, profile: 'custom' as const });
+  /** maxgrid's simulation under another id, with a hook on each step. */
+  const wrapped = (id: string, onStep: () => void): ShapeEngine => {
+    const real = engines.find((e) => e.info.id === 'maxgrid:maxgrid')!;
+    return {
+      info: { ...real.info, id },
+      create: (scene, profile) => {
+        const sim = real.create(scene, profile);
+        return {
+          count: sim.count,
+          step: (dt) => {
+            onStep();
+            sim.step(dt);
+          },
+          read: (p) => sim.read(p),
+          dispose: () => sim.dispose(),
+        };
+      },
+    };
+  };
+  /** Runs with performance.now reading `clock.t`, which only the engines' steps move. */
+  const withClock = async <T>(clock: { t: number }, run: () => Promise<T>): Promise<T> => {
+    const realNow = performance.now;
+    performance.now = () => clock.t;
+    try {
+      return await run();
+    } finally {
+      performance.now = realNow;
+    }
+  };
+
+  it('steps all engines side by side in turns of turnSteps steps, the order rotated each turn', async () => {
+    const log: string[] = [];
+    const logging = (id: string) => wrapped(id, () => log.push(id));
+    await joints.run({ ...CHAIN, steps: 4, minSteps: 4, turnSteps: 3 }, ctx([logging('a'), logging('b'), logging('c')]));
+    // The warm-up step, then turns of three steps, the first of each untimed: 2 timed, then the last 2.
+    expect(log.join(' ')).toBe('a b c' + ' a a a b b b c c c' + ' b b b c c c a a a');
+  });
+
+  it("times the steps after the first of each turn, which finds the caches holding another engine's data, and reads the figures after every step taken", async () => {
+    const clock = { t: 0 };
+    const last = { id: '' };
+    // A step that costs 5 ms at the start of a turn (after the other engine's) and 1 ms after one of its own.
+    const cold = (id: string) =>
+      wrapped(id, () => {
+        clock.t += last.id === id ? 1 : 5;
+        last.id = id;
+      });
+    const result = await withClock(clock, () => joints.run({ ...CHAIN, warmupSteps: 0, steps: 18, minSteps: 18, turnSteps: 10 }, ctx([cold('a'), cold('b')])));
+    for (const r of result.rows) {
+      expect(r.steps, r.engine).toBe(18);
+      expect(r.ms.median, r.engine).toBe(1);
+      expect(r.ms.p75, r.engine).toBe(1);
+      // Two turns of 10 steps each.
+      expect(r.seconds, r.engine).toBeCloseTo(20 / 60, 12);
+    }
+    expect(joints.tables(result)[0].note).toContain('in turns of 10 steps each, the order rotated each turn, the first step of each turn');
+  });
+
+  it('stops timing an engine once its steps, untimed ones included, have spent its budget, and no sooner than minSteps', async () => {
+    const clock = { t: 0 };
+    const result = await withClock(clock, () =>
+      joints.run(
+        { ...CHAIN, warmupSteps: 0, steps: 18, minSteps: 2, budgetMs: 250, turnSteps: 10 },
+        ctx([wrapped('a', () => (clock.t += 1)), wrapped('slow', () => (clock.t += 100))]),
+      ),
+    );
+    const row = (id: string) => result.rows.find((r) => r.engine === id)!;
+    expect(row('a').steps).toBe(18);
+    // Untimed 100, timed 200, timed 300: two timed steps (the minimum), then the budget is spent.
+    expect(row('slow').steps).toBe(2);
+    expect(row('slow').seconds).toBeCloseTo(3 / 60, 12);
+    expect(joints.tables(result)[0].rows[0]).toContain('100 (100×), 2 steps');
+  });
+});

@@ -2,17 +2,19 @@ import { buildShapeScene, type ShapeScene, type ShapeSceneName } from '@maxgrid/
 import { engineLabel, fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
 import { allocatePoses, resolveSceneJoints, scenePoint, UnsupportedSceneError, type PoseState, type ShapeProfile, type ShapeSimulation } from '../shape-engines/adapter.js';
 import { SHAPE_ENGINE_IDS } from '../shape-engines/registry.js';
-import { csvLine, makeMeta, shapeMetaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
+import { csvLine, makeMeta, shapeMetaSchema, now, spread, spreadSchema, stepInTurns, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type Spread } from './common.js';
 // Types only: registry.ts imports this file, and a value imported back would be read before it is defined.
 import type { Experiment, Overrides } from './registry.js';
 
 /**
  * Issue 21: step times on joint scenes against the peers that have the scene's joints (Box2D
  * 2.4, planck, Rapier, Matter, p2), with a physical figure beside each time so that an engine
- * that is fast because its joints give way shows it. Per scene, one simulation per engine,
- * stepped in turn round by round (as the cliffs experiment does), so that the host's noise hits
- * them alike; an engine leaves the rotation once it has its steps or has spent its budget. An
- * engine that lacks one of the scene's joint kinds or features is skipped there, with its reason.
+ * that is fast because its joints give way shows it. Per scene, one simulation per engine, the
+ * engines stepped side by side in turns of a few steps each, the order rotated each turn, so that
+ * the host's noise hits them alike; the first step of a turn, which finds the caches full of the
+ * engine before's data, is stepped but not timed (see stepInTurns). An engine leaves the rotation
+ * once it has its timed steps or has spent its budget. An engine that lacks one of the scene's
+ * joint kinds or features is skipped there, with its reason.
  */
 export interface JointsOptions {
   cases: { scene: JointSceneName; params: Record<string, number> }[];
@@ -24,6 +26,8 @@ export interface JointsOptions {
   warmUpMs: number;
   /** Timed steps per engine, unless the budget runs out first. */
   steps: number;
+  /** Steps an engine takes at a turn; the first of each is stepped but not timed (see stepInTurns). */
+  turnSteps: number;
   minSteps: number;
   budgetMs: number;
   dt: number;
@@ -54,6 +58,7 @@ export function jointsDefaults(profile: Profile): JointsOptions {
         warmupSteps: 30,
         warmUpMs: warmUpMs('full'),
         steps: 300,
+        turnSteps: 10,
         minSteps: 10,
         budgetMs: 20_000,
       }
@@ -71,6 +76,7 @@ export function jointsDefaults(profile: Profile): JointsOptions {
         warmupSteps: 10,
         warmUpMs: warmUpMs('quick'),
         steps: 60,
+        turnSteps: 10,
         minSteps: 5,
         budgetMs: 3000,
       };
@@ -224,6 +230,12 @@ export function jointSanity(scene: ShapeScene, p: PoseState, seconds: number): S
   }
 }
 
+/** The steps an engine takes, in turns of `turnSteps` (see stepInTurns), to time `timed` of them. */
+export function stepsForTimed(timed: number, turnSteps: number): number {
+  const turn = Math.max(1, Math.round(turnSteps));
+  return turn === 1 ? timed : timed + Math.ceil(timed / (turn - 1));
+}
+
 export async function runJoints(o: JointsOptions, ctx: RunContext): Promise<JointsResult> {
   const engines = ctx.shapeEngines ?? [];
   if (engines.length === 0) throw new RangeError('joints needs shape engines');
@@ -236,7 +248,7 @@ export async function runJoints(o: JointsOptions, ctx: RunContext): Promise<Join
     try {
       for (const engine of engines) {
         try {
-          warmUp(() => engine.create(scene, o.profile), o.warmupSteps + o.steps, o.dt, o.warmUpMs);
+          warmUp(() => engine.create(scene, o.profile), o.warmupSteps + stepsForTimed(o.steps, o.turnSteps), o.dt, o.warmUpMs);
           running.push({ id: engine.info.id, sim: engine.create(scene, o.profile) });
         } catch (error) {
           if (!(error instanceof UnsupportedSceneError)) throw error;
@@ -245,25 +257,36 @@ export async function runJoints(o: JointsOptions, ctx: RunContext): Promise<Join
       }
       for (let s = 0; s < o.warmupSteps; s++) for (const r of running) r.sim.step(o.dt);
       const times = running.map((): number[] => []);
+      // Every step's time, the untimed first of each turn's included, counts against the budget.
       const spent = running.map(() => 0);
+      const taken = running.map(() => 0);
       const active = (i: number) => times[i].length < o.steps && (times[i].length < o.minSteps || spent[i] < o.budgetMs);
-      for (let round = 0; running.some((_, i) => active(i)); round++) {
-        ctx.progress?.(done + Math.min(round, o.steps) / o.steps, o.cases.length, `${c.scene} step ${round + 1}`);
-        for (let k = 0; k < running.length; k++) {
-          const i = (round + k) % running.length;
-          if (!active(i)) continue;
+      const progress = () => ctx.progress?.(done + Math.min(1, Math.max(0, ...times.map((t) => t.length)) / o.steps), o.cases.length, `${c.scene} step ${Math.max(0, ...taken) + 1}`);
+      progress();
+      await stepInTurns(
+        running.length,
+        o.turnSteps,
+        0,
+        // The timed steps still wanted, and the untimed first of the turn.
+        (i) => (active(i) ? o.steps - times[i].length + 1 : 0),
+        (i, timed) => {
           const t0 = now();
           running[i].sim.step(o.dt);
           const ms = now() - t0;
-          times[i].push(ms);
+          taken[i]++;
           spent[i] += ms;
-        }
-        await ctx.yieldToHost?.();
-      }
+          if (timed) times[i].push(ms);
+        },
+        active,
+        () => {
+          progress();
+          return ctx.yieldToHost?.();
+        },
+      );
       running.forEach((r, i) => {
         const p = allocatePoses(r.sim.count);
         r.sim.read(p);
-        const seconds = (o.warmupSteps + times[i].length) * o.dt;
+        const seconds = (o.warmupSteps + taken[i]) * o.dt;
         rows.push({
           scene: c.scene,
           params: { ...scene.params },
@@ -302,6 +325,18 @@ function casesOf(result: JointsResult): string[] {
   return [...new Set([...result.rows.map(caseOf), ...result.skipped.filter((s) => !ran.has(s.scene)).map((s) => s.scene)])];
 }
 
+/** How the steps were taken and timed, from a result's options (results from before turns stepped the engines in turn a step at a time, every step timed). */
+function stepsText(options: Record<string, unknown>): string {
+  const warmup = String(options.warmupSteps);
+  if (!(Number(options.turnSteps) > 0)) return `One simulation per engine, stepped in turn after ${warmup} untimed steps`;
+  const turn = Math.max(1, Math.round(Number(options.turnSteps)));
+  const how =
+    turn === 1
+      ? 'stepped in turn a step at a time, the order rotated each step, every step timed'
+      : `in turns of ${turn} steps each, the order rotated each turn, the first step of each turn (which finds the caches holding the engine before's data) stepped but not timed`;
+  return `One simulation per engine: ${warmup} untimed steps, then all engines' simulations side by side, ${how}`;
+}
+
 export function jointsTables(result: JointsResult): Table[] {
   const engines = enginesOf(result);
   const cases = casesOf(result);
@@ -327,7 +362,7 @@ export function jointsTables(result: JointsResult): Table[] {
         }),
       ];
     }),
-    note: `One simulation per engine, stepped in turn after ${String(result.meta.options.warmupSteps)} untimed steps; ${steps} timed steps each, fewer where an engine spent its budget of ${fmt(Number(result.meta.options.budgetMs) / 1000)} s.${warmUpNote('Before that', result.meta.options.warmUpMs)} Peers with their recommended settings ('${String(result.meta.options.profile)}'), sleeping off. "not built": the engine lacks one of the scene's joint kinds or features (see below).`,
+    note: `${stepsText(result.meta.options)}; ${steps} timed steps each, fewer where an engine spent its budget of ${fmt(Number(result.meta.options.budgetMs) / 1000)} s${Number(result.meta.options.turnSteps) > 0 ? ' on its steps' : ''}.${warmUpNote('Before that', result.meta.options.warmUpMs)} Peers with their recommended settings ('${String(result.meta.options.profile)}'), sleeping off. "not built": the engine lacks one of the scene's joint kinds or features (see below).`,
   };
   const sanity: Table = {
     title: 'Joint scenes: a physical figure after the run (and the largest revolute pin gap, m); "implausible" where the joints gave way',

@@ -2,7 +2,7 @@ import { buildShapeScene, type ShapeScene } from '@maxgrid/scenes';
 import { lineChart, type ChartSpec } from '../report/charts.js';
 import { engineLabel, fmt, ratioText, warmUpNote, type Table } from '../report/tables.js';
 import { allocatePoses, bodyCentroid, type PoseState, type ShapeProfile, type ShapeSimulation, type StageTimes } from '../shape-engines/adapter.js';
-import { csvLine, makeMeta, scaleNote, sceneScale, sceneScaleSchema, shapeMetaSchema, now, spread, spreadSchema, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type SceneScale, type Spread } from './common.js';
+import { csvLine, makeMeta, scaleNote, sceneScale, sceneScaleSchema, shapeMetaSchema, now, spread, spreadSchema, stepInTurns, timedInTurns, warmUp, warmUpMs, type Meta, type Profile, type RunContext, type SceneScale, type Spread } from './common.js';
 
 /**
  * Step time on scenes of shapes, every engine on the same scene: Box2D v3's fixed benchmarks
@@ -154,10 +154,9 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
       size = scene.bodies.length;
       scale = sceneScale(scene);
       // Every engine's simulation side by side, stepped in turns of a few steps each, so that the
-      // machine's noise falls on all engines alike rather than on whichever ran then. The first
-      // step of a turn finds the caches full of the engine before's data, which costs the engines
-      // unlike amounts (stepped in turn a single step at a time, as joints does, Matter and p2 took
-      // twice their time and Box2D 1.3 times): it is stepped, not timed.
+      // machine's noise falls on all engines alike rather than on whichever ran then; the first
+      // step of a turn, which finds the caches full of the engine before's data, is stepped, not
+      // timed (see stepInTurns).
       const running: { id: string; sim: ShapeSimulation; elapsed: number; timed: number; sum: StageTimes }[] = [];
       try {
         for (const engine of engines) {
@@ -166,29 +165,32 @@ export async function runShapeStepTime(o: ShapeStepTimeOptions, ctx: RunContext)
           running.push({ id: engine.info.id, sim: engine.create(scene, c.profile), elapsed: 0, timed: 0, sum: zero() });
         }
         for (let i = 0; i < o.warmupSteps; i++) for (const r of running) r.sim.step(o.dt);
-        const turn = Math.max(1, Math.round(o.turnSteps));
-        for (let first = 0, t = 0; first < o.steps; first += turn, t++) {
-          const length = Math.min(turn, o.steps - first);
-          // The order rotates each turn, so that no engine always steps right after another.
-          for (let k = 0; k < running.length; k++) {
-            const r = running[(t + run + k) % running.length];
-            for (let i = 0; i < length; i++) {
-              if (i === 0 && length > 1) {
-                r.sim.step(o.dt);
-                continue;
-              }
-              // A clock pair per step, so that stage times can be read between steps; steps take
-              // milliseconds here, far above the clock's resolution.
-              const t0 = now();
+        // The order rotates each turn (from a run's own start), so that no engine always steps right after another.
+        const taken = running.map(() => 0);
+        await stepInTurns(
+          running.length,
+          o.turnSteps,
+          run,
+          (i) => o.steps - taken[i],
+          (i, timed) => {
+            const r = running[i];
+            taken[i]++;
+            if (!timed) {
               r.sim.step(o.dt);
-              r.elapsed += now() - t0;
-              r.timed++;
-              const s = r.sim.stages?.();
-              if (s) for (const key of Object.keys(r.sum) as (keyof StageTimes)[]) r.sum[key] += s[key];
+              return;
             }
-          }
-          await ctx.yieldToHost?.();
-        }
+            // A clock pair per step, so that stage times can be read between steps; steps take
+            // milliseconds here, far above the clock's resolution.
+            const t0 = now();
+            r.sim.step(o.dt);
+            r.elapsed += now() - t0;
+            r.timed++;
+            const s = r.sim.stages?.();
+            if (s) for (const key of Object.keys(r.sum) as (keyof StageTimes)[]) r.sum[key] += s[key];
+          },
+          undefined,
+          () => ctx.yieldToHost?.(),
+        );
         for (const r of running) {
           runMs.get(r.id)!.push(r.elapsed / r.timed);
           if (r.sim.stages) {
@@ -266,9 +268,7 @@ export function crossing(result: ShapeStepTimeResult, scene: string, peer: strin
 function turnsText(o: ShapeStepTimeOptions): string {
   if (!(o.turnSteps > 0)) return `the mean of ${o.steps} timed ones; engines in turn, the order rotated per run`;
   const turn = Math.max(1, Math.round(o.turnSteps));
-  let timed = 0;
-  for (let first = 0; first < o.steps; first += turn) timed += Math.min(turn, o.steps - first) > 1 ? Math.min(turn, o.steps - first) - 1 : 1;
-  return `${o.steps} more, all engines' simulations side by side in turns of ${turn} steps each, the order rotated each turn; the mean of the ${timed} steps after the first of each turn, which finds the caches holding the engine before's data`;
+  return `${o.steps} more, all engines' simulations side by side in turns of ${turn} steps each, the order rotated each turn; the mean of the ${timedInTurns(o.steps, turn)} steps after the first of each turn, which finds the caches holding the engine before's data`;
 }
 
 /** The times table's note on rows whose simulation was broken, where there are any. */
