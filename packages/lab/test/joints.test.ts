@@ -7,6 +7,7 @@ import { joints, jointSanity, type JointsOptions } from '../src/experiments/join
 import { EXPERIMENTS } from '../src/experiments/registry.js';
 import { tablesFor } from '../src/report/html.js';
 import { markdownTable } from '../src/report/tables.js';
+import { hookedEngine, withClock } from './step-hooks.js';
 
 const IDS = ['maxgrid:maxgrid', 'box2d-wasm', 'planck', 'rapier', 'matter-js', 'p2-es'];
 let engines: ShapeEngine[] = [];
@@ -132,34 +133,7 @@ describe('joints: timing', () => {
   const CHAIN: JointsOptions = { ...TINY, cases: [{ scene: 'chain', params: { links: 4, horizontal: 1 } }], warmupSteps: 1, warmUpMs: 0, baseline: 'a' };
   const ctx = (shapeEngines: ShapeEngine[]) => ({ engines: [], shapeEngines, environment: { runtime: 'vitest' }, profile: 'custom' as const });
   /** maxgrid's simulation under another id, with a hook on each step. */
-  const wrapped = (id: string, onStep: () => void): ShapeEngine => {
-    const real = engines.find((e) => e.info.id === 'maxgrid:maxgrid')!;
-    return {
-      info: { ...real.info, id },
-      create: (scene, profile) => {
-        const sim = real.create(scene, profile);
-        return {
-          count: sim.count,
-          step: (dt) => {
-            onStep();
-            sim.step(dt);
-          },
-          read: (p) => sim.read(p),
-          dispose: () => sim.dispose(),
-        };
-      },
-    };
-  };
-  /** Runs with performance.now reading `clock.t`, which only the engines' steps move. */
-  const withClock = async <T>(clock: { t: number }, run: () => Promise<T>): Promise<T> => {
-    const realNow = performance.now;
-    performance.now = () => clock.t;
-    try {
-      return await run();
-    } finally {
-      performance.now = realNow;
-    }
-  };
+  const wrapped = (id: string, onStep: () => void): ShapeEngine => hookedEngine(engines.find((e) => e.info.id === 'maxgrid:maxgrid')!, id, onStep);
 
   it('steps all engines side by side in turns of turnSteps steps, the order rotated each turn', async () => {
     const log: string[] = [];

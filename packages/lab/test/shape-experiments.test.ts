@@ -13,6 +13,7 @@ import { SHAPE_ENGINE_IDS } from '../src/shape-engines/registry.js';
 import { loadShapeEnginesNode } from '../src/node/engines.js';
 import { tablesFor } from '../src/report/html.js';
 import { markdownTable } from '../src/report/tables.js';
+import { hookedEngine, withClock } from './step-hooks.js';
 
 let engines: ShapeEngine[] = [];
 const ajv = new Ajv({ allErrors: true, strict: false });
@@ -225,13 +226,7 @@ describe('shape-step-time: timing', () => {
   it('steps all engines side by side in turns of turnSteps steps, the order rotated each turn', async () => {
     const log: string[] = [];
     const real = engines.find((e) => e.info.id === 'maxgrid:maxgrid')!;
-    const logging = (id: string): ShapeEngine => ({
-      info: { ...real.info, id },
-      create: (scene, profile) => {
-        const sim = real.create(scene, profile);
-        return { count: sim.count, step: (dt) => (log.push(id), sim.step(dt)), read: (p) => sim.read(p), dispose: () => sim.dispose() };
-      },
-    });
+    const logging = (id: string): ShapeEngine => hookedEngine(real, id, () => log.push(id));
     await shapeStepTime.run(
       { ...shapeStepTime.options('quick', {}), fixed: [{ scene: 'pyramid', params: { base: 3 } }], sweeps: [], runs: 1, steps: 5, turnSteps: 2, warmupSteps: 1, warmUpMs: 0, baseline: 'a' },
       { ...ctx([]), shapeEngines: [logging('a'), logging('b'), logging('c')] },
@@ -242,41 +237,27 @@ describe('shape-step-time: timing', () => {
 
   it('times the steps after the first of each turn, which finds the caches holding another engine\'s data', async () => {
     const real = engines.find((e) => e.info.id === 'maxgrid:maxgrid')!;
-    let clock = 0;
+    const clock = { t: 0 };
+    const last = { id: '' };
     let stepsTaken = 0;
     // A step that costs 5 ms at the start of a turn (after the other engine's) and 1 ms after one of its own.
-    const cold = (id: string, other: { last: string }): ShapeEngine => ({
-      info: { ...real.info, id },
-      create: (scene, profile) => {
-        const sim = real.create(scene, profile);
-        return {
-          count: sim.count,
-          step: (dt) => {
-            clock += other.last === id ? 1 : 5;
-            other.last = id;
-            stepsTaken++;
-            sim.step(dt);
-          },
-          read: (p) => sim.read(p),
-          dispose: () => sim.dispose(),
-        };
-      },
-    });
-    const last = { last: '' };
-    const realNow = performance.now;
-    performance.now = () => clock;
-    try {
-      const result = await shapeStepTime.run(
+    const cold = (id: string): ShapeEngine =>
+      hookedEngine(real, id, () => {
+        clock.t += last.id === id ? 1 : 5;
+        last.id = id;
+        stepsTaken++;
+      });
+    const result = await withClock(clock, () =>
+      shapeStepTime.run(
         { ...shapeStepTime.options('quick', {}), fixed: [{ scene: 'pyramid', params: { base: 3 } }], sweeps: [], runs: 1, steps: 20, turnSteps: 10, warmupSteps: 0, warmUpMs: 0, baseline: 'a' },
-        { ...ctx([]), shapeEngines: [cold('a', last), cold('b', last)] },
-      );
-      expect(stepsTaken).toBe(40);
-      for (const r of result.rows) expect(r.ms.median, r.engine).toBe(1);
-      expect(shapeStepTime.tables(result)[0].note).toContain('the mean of the 18 steps after the first of each turn');
-    } finally {
-      performance.now = realNow;
-    }
+        { ...ctx([]), shapeEngines: [cold('a'), cold('b')] },
+      ),
+    );
+    expect(stepsTaken).toBe(40);
+    for (const r of result.rows) expect(r.ms.median, r.engine).toBe(1);
+    expect(shapeStepTime.tables(result)[0].note).toContain('the mean of the 18 steps after the first of each turn');
   });
+
 });
 
 describe('units', () => {
