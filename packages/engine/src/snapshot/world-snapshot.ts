@@ -7,6 +7,7 @@ import { ContactSorter } from '../store/contact-sorter.js';
 import { ParallelStep } from '../parallel/parallel-step.js';
 import { SoftStep } from '../solver/soft-step.js';
 import { PointDistanceJoints } from '../solver/joints/point-distance-joints.js';
+import { JointSolver } from '../solver/joint-solver.js';
 import { StaticTree } from '../broadphase/static-tree.js';
 import { CellGrid } from '../broadphase/cell-grid.js';
 import { PairSink } from '../store/pair-sink.js';
@@ -26,6 +27,7 @@ for (const ctor of [BodyKernel, GridKernel, SoftStepKernel, ContactSorter, Paral
 // restored world's lanes hold no preparation to bring up to date (lanesPrepared stays false).
 transientFields(SoftStep, ['states', 'constraints', 'pairs', 'lanesPrepared']);
 transientFields(PointDistanceJoints, ['rows', 'pairs']);
+transientFields(JointSolver, ['arm']);
 // Fields that hold a kernel, or null before one is made or where the runtime lacks WebAssembly:
 // left out whichever they hold, so that the bytes are the same with or without kernels, and
 // before or after a kernel is first made.

@@ -69,7 +69,7 @@ function boundImpulses(r: Float64Array, o: number, kind: number, limits: Float64
   }
   bounds[at] = linear;
   bounds[at + 1] = angular;
-  clampImpulses(r, o, kind, linear, angular);
+  clampImpulses(r, o, kind, bounds, at);
 }
 
 /** Per joint kind, bit k set where IMPULSES[k] is angular (see ANGULAR): holdImpulses runs per joint and sub-step. */
@@ -81,8 +81,13 @@ const ANGULAR_BITS = (() => {
   return bits;
 })();
 
-/** Each of joint o's kept impulses within `linear` or `angular`, as it is a force's or a torque's. */
-function clampImpulses(r: Float64Array, o: number, kind: number, linear: number, angular: number): void {
+/**
+ * Each of joint o's kept impulses within bounds[at] (a force's) or bounds[at + 1] (a torque's).
+ * The bounds are read from the array: doubles passed to a call V8 does not inline are boxed.
+ */
+function clampImpulses(r: Float64Array, o: number, kind: number, bounds: Float64Array, at: number): void {
+  const linear = bounds[at];
+  const angular = bounds[at + 1];
   const bits = ANGULAR_BITS[kind];
   for (let k = 0; k < IMPULSES.length; k++) {
     const most = ((bits >> k) & 1) === 1 ? angular : linear;
@@ -94,8 +99,8 @@ function clampImpulses(r: Float64Array, o: number, kind: number, linear: number,
 }
 
 /**
- * Whether joint o's lever arms on either body (`reach`: jointArm's bound, plus the most the two
- * bodies can part within the step at the speed limit) reach more than FAR_ARM of that body's
+ * Whether joint o's lever arms on either body (`reach`: jointArm's bound in arm[0], plus the most
+ * the two bodies can part within the step at the speed limit, limits[2]) reach more than FAR_ARM of that body's
  * radii of gyration, sqrt(I / m). The
  * effective masses are prepared once per step, from the arms at its start; an arm that a turn or
  * that travel makes many times longer within the step leaves the stale mass answering a velocity
@@ -104,15 +109,20 @@ function clampImpulses(r: Float64Array, o: number, kind: number, linear: number,
  * Those joints' bodies are held within the speed limits after each of their impulses
  * (holdWithinLimits); no joint between bodies larger than about 1e-5 of the length unit comes near.
  */
-function farArms(r: Float64Array, o: number, reach: number): boolean {
+function farArms(r: Float64Array, o: number, arm: Float64Array, limits: Float64Array): boolean {
+  const reach = arm[0] + limits[2];
   const arm2 = reach * reach;
   const far2 = FAR_ARM * FAR_ARM;
   return arm2 * r[o + INV_INERTIA_A] > far2 * r[o + INV_MASS_A] || arm2 * r[o + INV_INERTIA_B] > far2 * r[o + INV_MASS_B];
 }
 
-/** The bound on every lever arm joint o's kind forms: its anchors' and its centres' distances. */
-function jointArm(r: Float64Array, o: number): number {
-  return Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]) + Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]) + Math.sqrt(r[o + DELTA_CENTER_X] * r[o + DELTA_CENTER_X] + r[o + DELTA_CENTER_Y] * r[o + DELTA_CENTER_Y]);
+/**
+ * The bound on every lever arm joint o's kind forms, its anchors' and its centres' distances,
+ * into out[0]: a double returned from, or passed to, a call V8 does not inline is boxed, once a
+ * joint a step.
+ */
+function jointArm(r: Float64Array, o: number, out: Float64Array): void {
+  out[0] = Math.sqrt(r[o + R_AX] * r[o + R_AX] + r[o + R_AY] * r[o + R_AY]) + Math.sqrt(r[o + R_BX] * r[o + R_BX] + r[o + R_BY] * r[o + R_BY]) + Math.sqrt(r[o + DELTA_CENTER_X] * r[o + DELTA_CENTER_X] + r[o + DELTA_CENTER_Y] * r[o + DELTA_CENTER_Y]);
 }
 
 /**
@@ -246,6 +256,8 @@ export class JointSolver {
   private readonly springs = new ForceSprings();
   /** The speed limits (linear, angular) for boundImpulses and holdWithinLimits, how far two bodies can part in the step at them (see farArms), and the step. */
   private readonly limits = new Float64Array(4);
+  /** The lever-arm bound (jointArm) of the joint listJoints is listing. */
+  private readonly arm = new Float64Array(1);
   /** How many joints listJoints listed of each kind of solve (see Listed). */
   private readonly listed = new Int32Array(5);
   /** How the springs are integrated: the world's integrator. */
@@ -388,8 +400,8 @@ export class JointSolver {
       this.prepareJoint(bodies, j, o, ia, ib);
       if (store.kind[j] === JointKind.spring) this.springSlots[listed[Listed.springs]++] = j;
       else {
-        const arm = jointArm(r, o);
-        const far = farArms(r, o, arm + this.limits[2]) || this.staleArms(bodies, a, b, o, arm) || turnsFarOut(r, o, store.kind[j]);
+        jointArm(r, o, this.arm);
+        const far = farArms(r, o, this.arm, this.limits) || this.staleArms(bodies, a, b, o) || turnsFarOut(r, o, store.kind[j]);
         this.farArms[listed[Listed.active]] = far ? 1 : 0;
         if (far) {
           listed[Listed.farArms]++;
@@ -401,7 +413,7 @@ export class JointSolver {
   }
 
   /**
-   * Whether joint o's effective masses, prepared from its arms at the step's start (`arm`,
+   * Whether joint o's effective masses, prepared from its arms at the step's start (this.arm,
    * jointArm's bound), could be more than twice what they will be before the step ends: its
    * bodies (slots a, b; a < 0 for none) part, at their relative speed as the step starts (within
    * twice the speed limit) times the step, by enough to lengthen its lever arms past halving the
@@ -413,8 +425,9 @@ export class JointSolver {
    * move together (a ragdoll falling) part little; spins, within the angular limit, turn the arms
    * but do not lengthen them.
    */
-  private staleArms(bodies: BodyStore, a: number, b: number, o: number, arm: number): boolean {
+  private staleArms(bodies: BodyStore, a: number, b: number, o: number): boolean {
     const r = this.store.record;
+    const arm = this.arm[0];
     const { vx, vy } = bodies;
     let dvx = 0;
     let dvy = 0;
@@ -568,7 +581,7 @@ export class JointSolver {
     for (let k = 0; k < activeCount; k++) {
       if (!held && farArms[k] === 0) continue;
       const j = active[k];
-      clampImpulses(r, j * JOINT_STRIDE, store.kind[j], bounds[2 * j], bounds[2 * j + 1]);
+      clampImpulses(r, j * JOINT_STRIDE, store.kind[j], bounds, 2 * j);
     }
   }
 
