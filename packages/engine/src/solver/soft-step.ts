@@ -499,12 +499,22 @@ export class SoftStep {
           rBx = constraints[q + RBX];
           rBy = constraints[q + RBY];
         } else {
-          const shortA = armScale(contacts.points[point + PT_ANCHOR_AX], contacts.points[point + PT_ANCHOR_AY], mA, iA);
-          const shortB = armScale(contacts.points[point + PT_ANCHOR_BX], contacts.points[point + PT_ANCHOR_BY], mB, iB);
-          rAx = contacts.points[point + PT_ANCHOR_AX] * shortA;
-          rAy = contacts.points[point + PT_ANCHOR_AY] * shortA;
-          rBx = contacts.points[point + PT_ANCHOR_BX] * shortB;
-          rBy = contacts.points[point + PT_ANCHOR_BY] * shortB;
+          rAx = contacts.points[point + PT_ANCHOR_AX];
+          rAy = contacts.points[point + PT_ANCHOR_AY];
+          rBx = contacts.points[point + PT_ANCHOR_BX];
+          rBy = contacts.points[point + PT_ANCHOR_BY];
+          // armScale is called for far arms alone: its doubles, passed and returned, are boxed
+          // wherever V8 does not inline it into this long function.
+          if ((rAx * rAx + rAy * rAy) * iA > FAR_ARM * FAR_ARM * mA) {
+            const short = armScale(rAx, rAy, mA, iA);
+            rAx *= short;
+            rAy *= short;
+          }
+          if ((rBx * rBx + rBy * rBy) * iB > FAR_ARM * FAR_ARM * mB) {
+            const short = armScale(rBx, rBy, mB, iB);
+            rBx *= short;
+            rBy *= short;
+          }
           constraints[q + RAX] = rAx;
           constraints[q + RAY] = rAy;
           constraints[q + RBX] = rBx;
