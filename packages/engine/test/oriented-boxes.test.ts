@@ -65,14 +65,16 @@ describe('oriented boxes', () => {
         const [i, j] = handles.map((h) => (world as unknown as { slot(h: number): number }).slot(h));
         for (let sa = rigid.firstShape[i]; sa >= 0; sa = store.next[sa]) {
           for (let sb = rigid.firstShape[j]; sb >= 0; sb = store.next[sb]) {
-            if (!boxesApart(x, y, rigid.c, rigid.s, i, store.box, sa * ORIENTED_BOX, j, store.box, sb * ORIENTED_BOX, margin)) {
+            if (!boxesApart(x, y, rigid.c, rigid.s, i, store.box, sa * ORIENTED_BOX, j, store.box, sb * ORIENTED_BOX, Float64Array.of(margin))) {
               together++;
               continue;
             }
             apart++;
             const a = shapeA.fromStore(store as never, sa, x[i], y[i], rigid.c[i], rigid.s[i]);
             const b = shapeB.fromStore(store as never, sb, x[j], y[j], rigid.c[j], rigid.s[j]);
-            collide(a, b, margin, 0.005, manifold);
+            manifold.margin = margin;
+            manifold.slop = 0.005;
+            collide(a, b, manifold);
             expect(manifold.pointCount).toBe(0);
           }
         }
@@ -98,7 +100,7 @@ describe('oriented boxes', () => {
     const apart = (h: number) => {
       const i = internals.slot(wall);
       const j = internals.slot(h);
-      return boxesApart(x, y, rigid.c, rigid.s, i, box, rigid.firstShape[i] * ORIENTED_BOX, j, box, rigid.firstShape[j] * ORIENTED_BOX, 0);
+      return boxesApart(x, y, rigid.c, rigid.s, i, box, rigid.firstShape[i] * ORIENTED_BOX, j, box, rigid.firstShape[j] * ORIENTED_BOX, Float64Array.of(0));
     };
     expect(apart(far)).toBe(true);
     expect(apart(near)).toBe(false);

@@ -16,7 +16,9 @@ const closest = new SegmentDistance();
  * measures the gap along the wrong normal, 1 / cos of the angle too wide) and wherever one span
  * lies outside the other, one point along the line between the segments' closest points.
  */
-export function collideCapsules(a: WorldShape, b: WorldShape, margin: number, slop: number, m: Manifold): void {
+export function collideCapsules(a: WorldShape, b: WorldShape, m: Manifold): void {
+  const margin = m.margin;
+  const slop = m.slop;
   m.clear();
   const p1x = a.x[0];
   const p1y = a.y[0];

@@ -5,7 +5,8 @@ import type { Manifold } from './manifold.js';
  * A capsule (A) and a circle (B): the circle's centre against the closest point of the capsule's
  * segment, one point. A centre exactly on the segment is pushed out along the segment's normal.
  */
-export function collideCapsuleCircle(a: WorldShape, b: WorldShape, margin: number, _slop: number, m: Manifold): void {
+export function collideCapsuleCircle(a: WorldShape, b: WorldShape, m: Manifold): void {
+  const margin = m.margin;
   m.clear();
   const ax = a.x[0];
   const ay = a.y[0];

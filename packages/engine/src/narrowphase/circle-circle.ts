@@ -19,7 +19,8 @@ export function circlesOverlap(bodies: BodyStore, i: number, j: number): boolean
  * The manifold of two circles: one point midway between the surfaces along the line of centres.
  * Concentric circles have no such line and are pushed apart along +x, as in the circle route.
  */
-export function collideCircles(a: WorldShape, b: WorldShape, margin: number, _slop: number, m: Manifold): void {
+export function collideCircles(a: WorldShape, b: WorldShape, m: Manifold): void {
+  const margin = m.margin;
   m.clear();
   const dx = b.x[0] - a.x[0];
   const dy = b.y[0] - a.y[0];

@@ -8,8 +8,8 @@ import { collidePolygonCircle } from './polygon-circle.js';
 import { collidePolygonCapsule } from './polygon-capsule.js';
 import { collidePolygons } from './polygon-polygon.js';
 
-/** A pair function: fills `m` for shapes a and b, keeping points closer than `margin`. */
-export type Collide = (a: WorldShape, b: WorldShape, margin: number, slop: number, m: Manifold) => void;
+/** A pair function: fills `m` for shapes a and b, keeping points closer than `m.margin`. */
+export type Collide = (a: WorldShape, b: WorldShape, m: Manifold) => void;
 
 /**
  * The pair functions by [kind of A][kind of B]. Each pair is written once, for one order; the
@@ -35,12 +35,12 @@ pair(ShapeKind.polygon, ShapeKind.circle, collidePolygonCircle);
 pair(ShapeKind.polygon, ShapeKind.capsule, collidePolygonCapsule);
 pair(ShapeKind.polygon, ShapeKind.polygon, collidePolygons);
 
-/** The manifold of a and b, normal from a to b. */
-export function collide(a: WorldShape, b: WorldShape, margin: number, slop: number, m: Manifold): void {
+/** The manifold of a and b, normal from a to b, for the margin and slop set in `m`. */
+export function collide(a: WorldShape, b: WorldShape, m: Manifold): void {
   if (SWAPPED[a.kind][b.kind]) {
-    PAIRS[a.kind][b.kind](b, a, margin, slop, m);
+    PAIRS[a.kind][b.kind](b, a, m);
     m.flip();
   } else {
-    PAIRS[a.kind][b.kind](a, b, margin, slop, m);
+    PAIRS[a.kind][b.kind](a, b, m);
   }
 }

@@ -34,12 +34,12 @@ export function setBox(box: Float64Array, at: number, loX: number, loY: number, 
 
 /**
  * Whether the box at boxI[oi..] on body i and the one at boxJ[oj..] on body j lie farther apart
- * than `reach` (the pair functions' speculative distance), each turned with its body: (x, y)
+ * than reach[0] (the pair functions' speculative distance), each turned with its body: (x, y)
  * the bodies' centres of mass, (c, s) their rotations. The four axes are the boxes' sides; two
  * boxes that overlap on all four touch. The allowance for the rounding of the world frame's
  * arithmetic grows with the distance from the origin (the boxes' own is in their size).
  */
-export function boxesApart(x: Float64Array, y: Float64Array, c: Float64Array, s: Float64Array, i: number, boxI: Float64Array, oi: number, j: number, boxJ: Float64Array, oj: number, reach: number): boolean {
+export function boxesApart(x: Float64Array, y: Float64Array, c: Float64Array, s: Float64Array, i: number, boxI: Float64Array, oi: number, j: number, boxJ: Float64Array, oj: number, reach: Float64Array): boolean {
   const ci = c[i];
   const si = s[i];
   const cj = c[j];
@@ -58,7 +58,7 @@ export function boxesApart(x: Float64Array, y: Float64Array, c: Float64Array, s:
   // reach along the other's axes.
   const rc = Math.abs(ci * cj + si * sj);
   const rs = Math.abs(ci * sj - si * cj);
-  const r = reach + 1e-12 * (Math.abs(ax) + Math.abs(ay) + Math.abs(bx) + Math.abs(by));
+  const r = reach[0] + 1e-12 * (Math.abs(ax) + Math.abs(ay) + Math.abs(bx) + Math.abs(by));
   return (
     Math.abs(ci * dx + si * dy) > wa + wb * rc + hb * rs + r ||
     Math.abs(ci * dy - si * dx) > ha + wb * rs + hb * rc + r ||

@@ -7,6 +7,6 @@ import { collidePolygons } from './polygon-polygon.js';
  * two sides of its segment, so the polygon test applies as it is (Box2D v3 does the same with
  * b2MakeCapsule). Its end caps are covered by the rounding radius and the vertex-vertex case.
  */
-export function collidePolygonCapsule(a: WorldShape, b: WorldShape, margin: number, slop: number, m: Manifold): void {
-  collidePolygons(a, b, margin, slop, m);
+export function collidePolygonCapsule(a: WorldShape, b: WorldShape, m: Manifold): void {
+  collidePolygons(a, b, m);
 }

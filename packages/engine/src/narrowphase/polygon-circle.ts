@@ -7,7 +7,8 @@ import type { Manifold } from './manifold.js';
  * that edge's face region or beyond one of its ends, where the nearest feature is the vertex and
  * the normal points from it to the centre. One point, feature id = the edge or vertex.
  */
-export function collidePolygonCircle(a: WorldShape, b: WorldShape, margin: number, _slop: number, m: Manifold): void {
+export function collidePolygonCircle(a: WorldShape, b: WorldShape, m: Manifold): void {
+  const margin = m.margin;
   m.clear();
   const cx = b.x[0];
   const cy = b.y[0];

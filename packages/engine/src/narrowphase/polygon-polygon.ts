@@ -45,7 +45,9 @@ function beyondEnd(v11x: number, v11y: number, v12x: number, v12y: number, dx: n
  *
  * A capsule is a two-point polygon here, its two edges the two sides of its segment.
  */
-export function collidePolygons(a: WorldShape, b: WorldShape, margin: number, slop: number, m: Manifold): void {
+export function collidePolygons(a: WorldShape, b: WorldShape, m: Manifold): void {
+  const margin = m.margin;
+  const slop = m.slop;
   m.clear();
   const radius = a.radius + b.radius;
   const limit = margin + radius;

@@ -130,6 +130,15 @@ export class ShapeNarrowPhase implements PairConsumer {
   private wakeSpeed = 0;
   private recycleDistance = 0;
   private margin = 0;
+  /**
+   * The step's margin as boxesApart reads it, and the walls' material. These, the margin and the
+   * slop (in `manifold`) are read from memory by the pair loop and what it calls rather than
+   * passed down: V8 inlines the loop into its callers as it sees fit, and a double computed in the
+   * frame that makes a call it does not inline is boxed at every call, once per pair.
+   */
+  private readonly boxReach = new Float64Array(1);
+  private wallFriction = 0;
+  private wallRestitution = 0;
   private dt = 0;
   /** Contacts whose manifold the last build kept from the step before (see recycle). */
   recycled = 0;
@@ -268,6 +277,11 @@ export class ShapeNarrowPhase implements PairConsumer {
     this.wakeSpeed = wakeSpeed;
     this.recycleDistance = recycleDistance;
     this.margin = margin;
+    this.boxReach[0] = margin;
+    this.manifold.margin = margin;
+    this.manifold.slop = slop;
+    this.wallFriction = wallFriction;
+    this.wallRestitution = wallRestitution;
     this.dt = dt;
     this.recycled = 0;
     if (recycleDistance > 0) this.noteFastBodies();
@@ -277,7 +291,7 @@ export class ShapeNarrowPhase implements PairConsumer {
     const bodies = this.bodies;
     this.candidates.sortCanonical(bodies.slotCount);
     this.shapePairs = 0;
-    this.collidePairs(shapes, world, margin, slop, wallFriction, wallRestitution);
+    this.collidePairs(shapes, world);
     list.finish();
   }
 
@@ -287,7 +301,7 @@ export class ShapeNarrowPhase implements PairConsumer {
    * the first step (on-stack replacement) before anything after it has run, and a property read
    * there without feedback then left that code at every step of the 5,050-box pyramid.
    */
-  private collidePairs(shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number): void {
+  private collidePairs(shapes: ShapeStore, world: WorldShapes): void {
     const { lo, hi, count } = this.candidates;
     let w = 0;
     let p = 0;
@@ -303,11 +317,11 @@ export class ShapeNarrowPhase implements PairConsumer {
       const i = k < count ? lo[k] : Infinity;
       // World pairs of bodies below i come first, after those bodies' body pairs.
       while (w < this.worldCount && this.worldBody[w] < i) {
-        p = this.collideWorld(this.worldBody[w], this.worldEntry[w], shapes, world, margin, slop, wallFriction, wallRestitution, p);
+        p = this.collideWorld(this.worldBody[w], this.worldEntry[w], shapes, world, p);
         w++;
       }
       if (k === count) break;
-      p = this.collideBodies(i, hi[k], shapes, margin, slop, p);
+      p = this.collideBodies(i, hi[k], shapes, p);
     }
   }
 
@@ -365,6 +379,9 @@ export class ShapeNarrowPhase implements PairConsumer {
     const pose = this.senseScratch;
     const found = this.senseFound;
     const m = this.manifold;
+    // Overlap alone: no speculative points (the next build sets the step's margin again).
+    m.margin = 0;
+    m.slop = slop;
     for (let sa = 0; sa < shapes.slotCount; sa++) {
       if (shapes.live[sa] !== 1 || shapes.sensor[sa] !== 1) continue;
       const i = shapes.body[sa];
@@ -388,7 +405,7 @@ export class ShapeNarrowPhase implements PairConsumer {
           if (shapes.sensor[sb] === 1) continue;
           if ((shapes.category[sa] & shapes.mask[sb]) === 0 || (shapes.category[sb] & shapes.mask[sa]) === 0) continue;
           const b = this.shapeB.fromPose(shapes, sb, pose, 4);
-          collide(a, b, 0, slop, m);
+          collide(a, b, m);
           if (m.pointCount > 0 && (m.separation[0] < 0 || (m.pointCount === 2 && m.separation[1] < 0))) this.noteSensor(sa, sb);
         }
       }
@@ -424,7 +441,7 @@ export class ShapeNarrowPhase implements PairConsumer {
     return v > this.wakeSpeed;
   }
 
-  private collideBodies(i: number, j: number, shapes: ShapeStore, margin: number, slop: number, p: number): number {
+  private collideBodies(i: number, j: number, shapes: ShapeStore, p: number): number {
     const bodies = this.bodies;
     const rigid = bodies.rigid!;
     const { x, y } = bodies;
@@ -453,7 +470,7 @@ export class ShapeNarrowPhase implements PairConsumer {
           const ay = y[i] + s[i] * shapes.centroidX[sa] + c[i] * shapes.centroidY[sa];
           const bx = x[j] + c[j] * shapes.centroidX[sb] - s[j] * shapes.centroidY[sb];
           const by = y[j] + s[j] * shapes.centroidX[sb] + c[j] * shapes.centroidY[sb];
-          const reach = shapes.extent[sa] + shapes.extent[sb] + margin;
+          const reach = shapes.extent[sa] + shapes.extent[sb] + this.margin;
           if ((bx - ax) * (bx - ax) + (by - ay) * (by - ay) >= reach * reach) continue;
         }
         // The shapes' keys, through `pose` (see Pose): handles are doubles, boxed when passed to a call.
@@ -466,7 +483,7 @@ export class ShapeNarrowPhase implements PairConsumer {
           continue;
         }
         // The boxes apart: the pair function would find no point (nor a sensor an overlap).
-        if (boxesApart(x, y, c, s, i, shapes.box, sa * ORIENTED_BOX, j, shapes.box, sb * ORIENTED_BOX, margin)) continue;
+        if (boxesApart(x, y, c, s, i, shapes.box, sa * ORIENTED_BOX, j, shapes.box, sb * ORIENTED_BOX, this.boxReach)) continue;
         this.shapePairs++;
         pose[Pose.ax] = x[i];
         pose[Pose.ay] = y[i];
@@ -479,7 +496,7 @@ export class ShapeNarrowPhase implements PairConsumer {
         const a = this.shapeA.fromPose(shapes, sa, pose, Pose.ax);
         const b = this.shapeB.fromPose(shapes, sb, pose, Pose.bx);
         const m = this.manifold;
-        collide(a, b, margin, slop, m);
+        collide(a, b, m);
         if (m.pointCount === 0) continue;
         touching = true;
         const friction = Math.sqrt(shapes.friction[sa] * shapes.friction[sb]);
@@ -536,7 +553,7 @@ export class ShapeNarrowPhase implements PairConsumer {
     return 0;
   }
 
-  private collideWorld(i: number, entry: number, shapes: ShapeStore, world: WorldShapes, margin: number, slop: number, wallFriction: number, wallRestitution: number, p: number): number {
+  private collideWorld(i: number, entry: number, shapes: ShapeStore, world: WorldShapes, p: number): number {
     const bodies = this.bodies;
     const rigid = bodies.rigid!;
     const { x, y } = bodies;
@@ -549,8 +566,8 @@ export class ShapeNarrowPhase implements PairConsumer {
       ? boxWall(world, g, this.shapeB)
       : this.shapeB.segment(segments, g);
     const keyB = isWall ? -1 - g : segments.handleOf(g);
-    const otherFriction = isWall ? wallFriction : segments.friction[g];
-    const otherRestitution = isWall ? wallRestitution : segments.restitution[g];
+    const otherFriction = isWall ? this.wallFriction : segments.friction[g];
+    const otherRestitution = isWall ? this.wallRestitution : segments.restitution[g];
     const otherCategory = isWall ? 0xffffffff : segments.category[g];
     const otherMask = isWall ? 0xffffffff : segments.mask[g];
     p = this.seek(i, WORLD, p);
@@ -573,7 +590,7 @@ export class ShapeNarrowPhase implements PairConsumer {
       pose[Pose.bs] = 0;
       const a = this.shapeA.fromPose(shapes, sa, pose, Pose.ax);
       const m = this.manifold;
-      collide(a, b, margin, slop, m);
+      collide(a, b, m);
       if (m.pointCount === 0) continue;
       const friction = Math.sqrt(shapes.friction[sa] * otherFriction);
       const restitution = Math.max(shapes.restitution[sa], otherRestitution);

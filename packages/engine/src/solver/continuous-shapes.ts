@@ -349,7 +349,9 @@ export class ContinuousShapes {
     const px = bodies.x[i];
     const py = bodies.y[i];
     moving.fromStore(shapes, this.hitShape, px, py, rigid.c[i], rigid.s[i]);
-    collide(moving, hitOther, BOUNCE_REACH * slop, slop, manifold);
+    manifold.margin = BOUNCE_REACH * slop;
+    manifold.slop = slop;
+    collide(moving, hitOther, manifold);
     let n = 1;
     // The normal from the body towards the other thing, and each point's arm.
     let nx = this.hitNx;
