@@ -115,27 +115,36 @@ export class QueryTool {
         Math.max(this.by1, this.by2),
       );
     }
-    this.readout.textContent = this.describe();
+    this.readout.textContent = this.describe(world);
   }
 
-  private describe(): string {
+  private describe(world: World): string {
     if (this.tool === 'ray') {
       if (!this.hasRay) return 'Ray: drag across the bodies to cast a ray.';
       const n = this.hits.length;
       if (n === 0) return 'Ray: 0 hits';
       const first = this.hits[0];
-      return `Ray: ${n} hit${n === 1 ? '' : 's'} · first: body ${first.handle} at fraction ${first.fraction.toFixed(3)}`;
+      const what = world.hasBody(first.handle) ? 'body' : 'segment';
+      return `Ray: ${n} hit${n === 1 ? '' : 's'} · first: ${what} ${first.handle} at fraction ${first.fraction.toFixed(3)}`;
     }
     if (this.tool === 'point') {
       if (!this.hasPoint) return 'Point: hover over the bodies.';
       const n = this.under.length;
-      return `Point: ${n} bod${n === 1 ? 'y' : 'ies'} under the pointer${n > 0 ? ` (${this.under.slice(0, 6).join(', ')}${n > 6 ? ', …' : ''})` : ''}`;
+      return `Point: ${counted(world, this.under)} under the pointer${n > 0 ? ` (${this.under.slice(0, 6).join(', ')}${n > 6 ? ', …' : ''})` : ''}`;
     }
     if (this.tool === 'box') {
       if (!this.hasBox) return 'Box: drag to draw a box over the bodies.';
-      const n = this.inBox.length;
-      return `Box: ${n} bod${n === 1 ? 'y' : 'ies'}`;
+      return `Box: ${counted(world, this.inBox)}`;
     }
     return '';
   }
+}
+
+/** "3 bodies", or "3 bodies and 1 segment" where the queries found static segments too. */
+function counted(world: World, handles: number[]): string {
+  let bodies = 0;
+  for (const h of handles) if (world.hasBody(h)) bodies++;
+  const segments = handles.length - bodies;
+  const text = `${bodies} bod${bodies === 1 ? 'y' : 'ies'}`;
+  return segments === 0 ? text : `${text} and ${segments} segment${segments === 1 ? '' : 's'}`;
 }

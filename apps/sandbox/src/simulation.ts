@@ -437,7 +437,7 @@ export class Simulation {
   bodyAt(x: number, y: number): number {
     const v = this.world.views();
     if (this.shapes) {
-      const found = this.world.queryPoint(x, y).filter((h) => v.type[this.world.slotOfHandle(h)] !== BodyTypeCode.static);
+      const found = this.world.queryPoint(x, y).filter((h) => this.world.hasBody(h) && v.type[this.world.slotOfHandle(h)] !== BodyTypeCode.static);
       return found.length > 0 ? found[found.length - 1] : -1;
     }
     let found = -1;

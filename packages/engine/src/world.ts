@@ -110,7 +110,7 @@ export class World {
   private readonly resolved: ResolvedWorldOptions;
   /** The options as given, for World.restore to build a world of the same configuration. */
   private readonly creation: Record<string, unknown>;
-  private readonly queries = new Queries(this.bodies);
+  private readonly queries = new Queries(this.bodies, this.segments);
   private readonly disturbances = new Disturbances();
   private readonly shapes = new BodyShapes(this.bodies);
   private shapeRoute: ShapeRoute | null = null;
@@ -1492,8 +1492,9 @@ export class World {
   }
 
   /**
-   * Handles of the bodies with a shape (or circle) containing the point, boundary included,
-   * ascending. Pass `out` to reuse an array: it is emptied, filled and returned.
+   * Handles of the bodies with a shape (or circle) containing the point, and of the static
+   * segments that do, boundary included, ascending (a segment's handle is above every body's:
+   * `hasBody` tells them apart). Pass `out` to reuse an array: it is emptied, filled and returned.
    */
   queryPoint(x: number, y: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: number[]): number[] {
     const mask = queryMask(options);
@@ -1502,7 +1503,7 @@ export class World {
     return this.queries.point(this.geometryVersion, x, y, mask, queryOutput(out));
   }
 
-  /** Handles of the bodies with a shape (or circle) overlapping the box, touching included, ascending; `out` as in queryPoint. */
+  /** Handles of the bodies with a shape (or circle) overlapping the box, and of the static segments that do, touching included, ascending; `out` as in queryPoint. */
   queryAABB(minX: number, minY: number, maxX: number, maxY: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: number[]): number[] {
     const mask = queryMask(options);
     finiteNumber('minX', minX);
@@ -1514,8 +1515,9 @@ export class World {
   }
 
   /**
-   * The first body the segment from (x1, y1) to (x2, y2) enters, by its shapes (or circle), or
-   * null. Shapes containing (x1, y1) are ignored. Pass `out` to reuse a hit object: it is filled and returned.
+   * The first body (by its shapes, or circle) or static segment that the segment from (x1, y1) to
+   * (x2, y2) enters, or null. Shapes and segments containing (x1, y1) are ignored. Pass `out` to
+   * reuse a hit object: it is filled and returned.
    */
   rayCast(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: RayHit): RayHit | null {
     const mask = queryMask(options);
@@ -1524,7 +1526,7 @@ export class World {
   }
 
   /**
-   * Every body the segment enters, by its shapes (or circle), nearest first. Pass `out` to reuse an array: the hit objects
+   * Every body (by its shapes, or circle) and static segment the segment enters, nearest first. Pass `out` to reuse an array: the hit objects
    * it holds are overwritten in place, it is cut to the number of hits and returned.
    */
   rayCastAll(x1: number, y1: number, x2: number, y2: number, options: QueryOptions = NO_QUERY_OPTIONS, out?: RayHit[]): RayHit[] {

@@ -3,12 +3,15 @@ import { CellGrid } from '../broadphase/cell-grid.js';
 import { LiveExtent } from '../broadphase/live-extent.js';
 import { rayCircle, rayCircleEntry } from './ray-circle.js';
 import type { ShapeStore } from '../store/shape-store.js';
-import { rayNormal, rayPoint, rayShape, shapeContains, shapeOverlapsBox } from './shape-queries.js';
+import type { SegmentStore } from '../store/segment-store.js';
+import { StaticTree } from '../broadphase/static-tree.js';
+import { rayNormal, rayPoint, raySegment, rayShape, segmentContains, segmentOverlapsBox, shapeContains, shapeOverlapsBox } from './shape-queries.js';
 
-/** Where a ray enters a body: the point, the outward surface normal there, and the body's handle. */
+/** Where a ray enters a body or a static segment: the point, the outward surface normal there, and the body's or segment's handle. */
 export interface RayHit {
+  /** The body's handle, or the static segment's (`world.hasBody` tells them apart). */
   handle: number;
-  /** Where along the segment from (x1, y1) to (x2, y2) the ray enters the circle, in [0, 1]. */
+  /** Where along the segment from (x1, y1) to (x2, y2) the ray enters the body or static segment, in [0, 1]. */
   fraction: number;
   x: number;
   y: number;
@@ -53,6 +56,10 @@ const OVERSIZED = 8;
  * 200 m long under bodies of 0.5 m) would make every cell hold the whole crowd, and every query
  * scan it (500 sensors among 10,000 bodies took 77 ms a step over such a grid). Such bodies are
  * listed apart (`oversized`) and each query tests them one by one, before its grid search.
+ *
+ * The world's static segments are found too, by the public queries (point, box, rays), through
+ * a packed tree of their boxes rebuilt when they change; the engine's own searches inside a step
+ * (slotsInBox) look for bodies alone.
  */
 export class Queries {
   private readonly live = new LiveExtent();
@@ -88,7 +95,31 @@ export class Queries {
   /** A world's shapes once it has them: bodies are then tested shape by shape, their bounding circles only narrowing the search. */
   shapes: ShapeStore | null = null;
 
-  constructor(private readonly bodies: BodyStore) {}
+  /** The segments' boxes (ids are segment slots), built for the segments' version `segmentsBuilt`. */
+  private readonly segmentTree = new StaticTree();
+  private segmentsBuilt = -1;
+  /** The segment slot of the nearest ray hit so far, or -1 where that is a body (bestSlot). */
+  private bestSegment = -1;
+  /** The segment slot raySegments is testing, for aheadOfBest. */
+  private segmentAt = -1;
+
+  constructor(
+    private readonly bodies: BodyStore,
+    private readonly segments: SegmentStore,
+  ) {}
+
+  /** The live segments whose boxes meet the box, ascending, into segmentTree.found; returns how many. */
+  private segmentsNear(minX: number, minY: number, maxX: number, maxY: number): number {
+    const { segments, segmentTree: tree } = this;
+    if (segments.count === 0) return 0;
+    if (this.segmentsBuilt !== segments.version) {
+      tree.clear();
+      tree.addSegments(segments, 0, false);
+      tree.finish();
+      this.segmentsBuilt = segments.version;
+    }
+    return tree.query(minX, minY, maxX, maxY);
+  }
 
   /** Whether body `slot` contains the point: its circle, or one of its shapes. */
   private contains(slot: number, px: number, py: number): boolean {
@@ -181,7 +212,13 @@ export class Queries {
   point(version: number, px: number, py: number, mask: number, out: number[]): number[] {
     this.mask = mask | 0;
     this.examined = 0;
-    if (!this.prepare(version)) return out;
+    const { segments, segmentTree } = this;
+    const near = this.segmentsNear(px, py, px, py);
+    for (let k = 0; k < near; k++) {
+      const g = segmentTree.found[k];
+      if ((segments.category[g] & mask) !== 0 && segmentContains(segments, g, px, py)) out.push(segments.handleOf(g));
+    }
+    if (!this.prepare(version)) return out.sort(ascending);
     const { grid, bodies } = this;
     this.examined += this.oversizedCount;
     for (let k = 0; k < this.oversizedCount; k++) {
@@ -211,6 +248,12 @@ export class Queries {
     box[2] = maxX;
     box[3] = maxY;
     this.inBox(version, mask, out, null);
+    const { segments, segmentTree } = this;
+    const near = this.segmentsNear(minX, minY, maxX, maxY);
+    for (let k = 0; k < near; k++) {
+      const g = segmentTree.found[k];
+      if ((segments.category[g] & mask) !== 0 && segmentOverlapsBox(segments, g, box)) out.push(segments.handleOf(g));
+    }
     return out.sort(ascending);
   }
 
@@ -272,6 +315,9 @@ export class Queries {
    */
   rayFirst(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, into: RayHit | null): RayHit | null {
     this.bestFraction = Infinity;
+    this.bestSegment = -1;
+    // Segments first: the grid's walk stops at the nearest hit so far, a wall's included.
+    this.raySegments(x1, y1, x2, y2, mask, false);
     this.walk(version, x1, y1, x2, y2, mask, false);
     if (this.bestFraction === Infinity) return null;
     const t = this.bestFraction;
@@ -279,6 +325,7 @@ export class Queries {
     rayNormal.y = this.bestNormalY;
     rayPoint.x = this.bestPointX;
     rayPoint.y = this.bestPointY;
+    if (this.bestSegment >= 0) return writeSegmentHit(into ?? blankHit(), this.bestHandle, t);
     return this.write(into ?? blankHit(), this.bestSlot, t, x1, y1, x2 - x1, y2 - y1);
   }
 
@@ -291,6 +338,7 @@ export class Queries {
   rayAll(version: number, x1: number, y1: number, x2: number, y2: number, mask: number, out: RayHit[]): RayHit[] {
     this.hitCount = 0;
     this.hits = out;
+    this.raySegments(x1, y1, x2, y2, mask, true);
     this.walk(version, x1, y1, x2, y2, mask, true);
     this.hits = NO_HITS;
     for (let k = this.hitCount; k < out.length; k++) {
@@ -311,6 +359,50 @@ export class Queries {
   private bestNormalY = 0;
   private bestPointX = 0;
   private bestPointY = 0;
+
+  /**
+   * The ray against the segments whose boxes meet its own box: each hit noted (all), or kept where
+   * it is the nearest so far. A long diagonal ray's box holds segments far from it, which the
+   * test then rejects: rays across a terrain of many segments test those in their box.
+   */
+  private raySegments(x1: number, y1: number, x2: number, y2: number, mask: number, all: boolean): void {
+    const { segments, segmentTree } = this;
+    const near = this.segmentsNear(Math.min(x1, x2), Math.min(y1, y2), Math.max(x1, x2), Math.max(y1, y2));
+    const dx = x2 - x1;
+    const dy = y2 - y1;
+    for (let k = 0; k < near; k++) {
+      const g = segmentTree.found[k];
+      if ((segments.category[g] & mask) === 0) continue;
+      const t = raySegment(segments, g, x1, y1, dx, dy);
+      if (t < 0) continue;
+      const handle = segments.handleOf(g);
+      this.segmentAt = g;
+      if (all) writeSegmentHit(this.nextHit(), handle, t);
+      else if (t < this.bestFraction || (t === this.bestFraction && this.aheadOfBest(-1, x1, y1, dx, dy))) {
+        this.keepBest(-1, t);
+        this.bestSegment = g;
+        this.bestHandle = handle;
+      }
+    }
+  }
+
+  /** The next hit object of rayAll's output: one already there, a spare, or a new one. */
+  private nextHit(): RayHit {
+    const k = this.hitCount++;
+    const reused = this.hits[k];
+    return typeof reused === 'object' && reused !== null ? reused : (this.hits[k] = this.spareHits.pop() ?? blankHit());
+  }
+
+  /** Notes a hit at fraction t as the nearest so far: body `slot`'s (-1 for a segment's), at rayNormal and rayPoint. */
+  private keepBest(slot: number, t: number): void {
+    this.bestFraction = t;
+    this.bestSlot = slot;
+    this.bestSegment = -1;
+    this.bestNormalX = rayNormal.x;
+    this.bestNormalY = rayNormal.y;
+    this.bestPointX = rayPoint.x;
+    this.bestPointY = rayPoint.y;
+  }
 
   /** A hit on a circle (from its centre), or on a shape (at the entry, with rayShape's normal). */
   private write(hit: RayHit, slot: number, t: number, x1: number, y1: number, dx: number, dy: number): RayHit {
@@ -412,27 +504,19 @@ export class Queries {
     if ((bodies.category[slot] & mask) === 0) return;
     const t = this.rayBody(slot, x1, y1, dx, dy);
     if (t < 0) return;
-    if (all) {
-      const k = this.hitCount++;
-      const reused = this.hits[k];
-      const hit = typeof reused === 'object' && reused !== null ? reused : (this.hits[k] = this.spareHits.pop() ?? blankHit());
-      this.write(hit, slot, t, x1, y1, dx, dy);
-    } else if (t < this.bestFraction || (t === this.bestFraction && this.aheadOfBest(slot, x1, y1, dx, dy))) {
-      this.bestFraction = t;
-      this.bestSlot = slot;
+    if (all) this.write(this.nextHit(), slot, t, x1, y1, dx, dy);
+    else if (t < this.bestFraction || (t === this.bestFraction && this.aheadOfBest(slot, x1, y1, dx, dy))) {
+      this.keepBest(slot, t);
       this.bestHandle = bodies.handleOf(slot);
-      this.bestNormalX = rayNormal.x;
-      this.bestNormalY = rayNormal.y;
-      this.bestPointX = rayPoint.x;
-      this.bestPointY = rayPoint.y;
     }
   }
 
   /**
-   * For a hit at the best fraction so far: whether its point lies before the best one's along the
-   * ray, or at it with a lower handle. Fractions of a long ray tie for hits far apart (one 2e20
-   * long resolves no finer than 2e4), and the lower handle then won wherever it lay; the points,
-   * taken from the shapes, keep their order.
+   * For a hit at the best fraction so far, on body `slot` or (slot -1) on the segment whose point
+   * is in rayPoint: whether its point lies before the best one's along the ray, or at it with a
+   * lower handle. Fractions of a long ray tie for hits far apart (one 2e20 long resolves no finer
+   * than 2e4), and the lower handle then won wherever it lay; the points, taken from the shapes,
+   * keep their order. A circle's point is found from the circle (rayBody finds only its fraction).
    */
   private aheadOfBest(slot: number, x1: number, y1: number, dx: number, dy: number): boolean {
     const bodies = this.bodies;
@@ -440,17 +524,19 @@ export class Queries {
     let py = rayPoint.y;
     let bx = this.bestPointX;
     let by = this.bestPointY;
-    if (this.shapes === null) {
+    if (this.shapes === null && slot >= 0) {
       rayCircleEntry(x1, y1, dx, dy, bodies.x[slot], bodies.y[slot], bodies.radius[slot], entry);
       px = bodies.x[slot] + entry.x;
       py = bodies.y[slot] + entry.y;
-      const best = this.bestSlot;
+    }
+    const best = this.bestSlot;
+    if (this.shapes === null && best >= 0) {
       rayCircleEntry(x1, y1, dx, dy, bodies.x[best], bodies.y[best], bodies.radius[best], entry);
       bx = bodies.x[best] + entry.x;
       by = bodies.y[best] + entry.y;
     }
     const along = alongRay(px, py, bx, by, dx, dy);
-    return along < 0 || (along === 0 && bodies.handleOf(slot) < this.bestHandle);
+    return along < 0 || (along === 0 && (slot >= 0 ? bodies.handleOf(slot) : this.segments.handleOf(this.segmentAt)) < this.bestHandle);
   }
 
   private prepare(version: number): boolean {
@@ -532,6 +618,17 @@ function blankHit(): RayHit {
 }
 
 const entry = { x: 0, y: 0 };
+
+/** Fills `hit` for a static segment's `handle`, entered at fraction t, at rayPoint with rayNormal. */
+function writeSegmentHit(hit: RayHit, handle: number, t: number): RayHit {
+  hit.handle = handle;
+  hit.fraction = t;
+  hit.x = rayPoint.x;
+  hit.y = rayPoint.y;
+  hit.normalX = rayNormal.x;
+  hit.normalY = rayNormal.y;
+  return hit;
+}
 
 /** Fills `hit` for the circle in `slot`, entered at fraction t by the ray from (x1, y1) along (dx, dy). */
 function writeHit(hit: RayHit, bodies: BodyStore, slot: number, t: number, x1: number, y1: number, dx: number, dy: number): RayHit {

@@ -5,6 +5,7 @@ import { ShapeDistance } from '../narrowphase/distance.js';
 import { norm, rayCircle, rayCircleEntry } from './ray-circle.js';
 import { rayCapsule } from './ray-capsule.js';
 import { shapeBounds } from '../shapes/bounds.js';
+import type { SegmentStore } from '../store/segment-store.js';
 
 const placed = new WorldShape();
 const probe = new WorldShape();
@@ -49,7 +50,40 @@ export function shapeOverlapsBox(shapes: ShapeStore, slot: number, at: Float64Ar
  * union of its core and a capsule around each edge, and a ray from outside meets a capsule first.
  */
 export function rayShape(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, x1: number, y1: number, dx: number, dy: number): number {
-  const g = placed.fromStore(shapes, slot, px, py, c, s);
+  return rayPlaced(placed.fromStore(shapes, slot, px, py, c, s), px, py, x1, y1, dx, dy);
+}
+
+/** Whether static segment g (a capsule of its thickness) contains the point, boundary included. */
+export function segmentContains(segments: SegmentStore, g: number, qx: number, qy: number): boolean {
+  placed.segment(segments, g);
+  probe.circle(qx, qy, 0);
+  return distance.compute(placed, probe).distance <= placed.radius;
+}
+
+/** Whether static segment g overlaps the box `area`, touching included: shapeOverlapsBox's test. */
+export function segmentOverlapsBox(segments: SegmentStore, g: number, area: Float64Array): boolean {
+  const t = segments.thickness[g];
+  const minX = Math.min(segments.ax[g], segments.bx[g]) - t;
+  const minY = Math.min(segments.ay[g], segments.by[g]) - t;
+  const maxX = Math.max(segments.ax[g], segments.bx[g]) + t;
+  const maxY = Math.max(segments.ay[g], segments.by[g]) + t;
+  if (minX >= area[0] && maxX <= area[2] && minY >= area[1] && maxY <= area[3]) return true;
+  if (maxX < area[0] || minX > area[2] || maxY < area[1] || minY > area[3]) return false;
+  placed.segment(segments, g);
+  probe.rectangle(area);
+  return distance.compute(placed, probe).distance <= placed.radius;
+}
+
+/** rayShape for static segment g, a capsule of its thickness (a segment of thickness 0 is hit where the ray crosses it). */
+export function raySegment(segments: SegmentStore, g: number, x1: number, y1: number, dx: number, dy: number): number {
+  // Halves summed: the sum of two coordinates near the largest double overflows.
+  const mx = segments.ax[g] / 2 + segments.bx[g] / 2;
+  const my = segments.ay[g] / 2 + segments.by[g] / 2;
+  return rayPlaced(placed.segment(segments, g), mx, my, x1, y1, dx, dy);
+}
+
+/** rayShape for shape `g` once placed, (px, py) a point of it (its body's origin, a segment's midpoint). */
+function rayPlaced(g: WorldShape, px: number, py: number, x1: number, y1: number, dx: number, dy: number): number {
   const r = g.radius;
   if (g.kind === ShapeKind.circle) {
     const t = rayCircle(x1, y1, dx, dy, g.x[0], g.y[0], r);

@@ -62,7 +62,7 @@ transientFields(CellGrid, ['cellStart', 'sortedSlot', 'sortedX', 'sortedY', 'sor
 // What queries build to answer (a grid of the positions, remade after every change, and the
 // nearest hit of the last ray) is read by nothing else, so asking a question leaves a snapshot
 // as it was.
-transientFields(Queries, ['live', 'grid', 'builtVersion', 'stamp', 'epoch', 'reachMinX', 'reachMinY', 'reachMaxX', 'reachMaxY', 'examined', 'bestFraction', 'bestSlot', 'bestHandle', 'bestNormalX', 'bestNormalY', 'bestPointX', 'bestPointY', 'hits', 'hitCount', 'spareHits', 'mask', 'gridSlots', 'oversized', 'oversizedCount', 'queryBox', 'shapePose']);
+transientFields(Queries, ['live', 'grid', 'builtVersion', 'stamp', 'epoch', 'reachMinX', 'reachMinY', 'reachMaxX', 'reachMaxY', 'examined', 'bestFraction', 'bestSlot', 'bestHandle', 'bestNormalX', 'bestNormalY', 'bestPointX', 'bestPointY', 'hits', 'hitCount', 'spareHits', 'mask', 'gridSlots', 'oversized', 'oversizedCount', 'queryBox', 'shapePose', 'segmentTree', 'segmentsBuilt', 'bestSegment', 'segmentAt']);
 lazyPart('StaticTree', StaticTree);
 lazyPart('CellGrid', CellGrid);
 
