@@ -12,6 +12,7 @@ export { JOINT_KIND_NAMES } from './joints/joint-layout.js';
 export type { BodyOptions, BoxOptions, PolygonOptions, CapsuleOptions, ShapeOptions, MaterialOptions, OffsetOptions } from './shapes/shape-options.js';
 export { MAX_POLYGON_VERTICES, SHAPE_KIND_NAMES } from './shapes/geometry.js';
 export type { RayHit } from './query/queries.js';
+export type { BodyContact } from './query/body-contacts.js';
 export type { ContactEventsView } from './store/contact-events.js';
 export { BoxWall } from './solver/box-walls.js';
 export type { WorldOptions, CircleOptions, SegmentOptions, Vector } from './options.js';

@@ -15,7 +15,8 @@ import { ContactPoint, POINT_STRIDE } from './narrowphase/contact-list.js';
 import { Queries, type RayHit } from './query/queries.js';
 import { Disturbances } from './solver/disturbances.js';
 import { anyFaster, limitSpeeds } from './solver/speed-limit.js';
-import { NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments, rayHitOutput, rayHitsOutput } from './query/query-args.js';
+import { contactsOutput, NO_QUERY_OPTIONS, queryMask, queryOutput, rayArguments, rayHitOutput, rayHitsOutput } from './query/query-args.js';
+import { BodyContacts, type BodyContact, type ContactSources } from './query/body-contacts.js';
 import type { CircleState, BodyViews, BodyState, ContactPointViews, QueryOptions, ShapeState, ShapeViews } from './world-types.js';
 import { grow, grownCapacity } from './util/grow.js';
 import { BodyShapes } from './shapes/body-shapes.js';
@@ -111,6 +112,9 @@ export class World {
   /** The options as given, for World.restore to build a world of the same configuration. */
   private readonly creation: Record<string, unknown>;
   private readonly queries = new Queries(this.bodies, this.segments);
+  /** bodyContacts' search, and what it reads. */
+  private readonly contactIndex = new BodyContacts();
+  private readonly contactSources: ContactSources = { bodies: this.bodies, segments: this.segments, queries: this.queries, version: 0, shapes: null, world: null, joints: null, margin: 0, slop: 0, box: null, contactSlop: 0 };
   private readonly disturbances = new Disturbances();
   private readonly shapes = new BodyShapes(this.bodies);
   private shapeRoute: ShapeRoute | null = null;
@@ -1481,6 +1485,39 @@ export class World {
   }
 
   /**
+   * The contacts of body `handle` where it lies (see BodyContact): with other bodies, static
+   * segments and the box's walls, each with its normal from this body and its points, as Box2D
+   * v3's b2Body_GetContactData gives them. A body at rest on the ground has a contact there whose
+   * normal points down (+y). Found as the narrow-phase finds them, at the bodies' current poses:
+   * on the shape route each shape pair that may collide, within the soft step's speculative margin
+   * (0 under the elastic pass); in a world of circles, the circles, segments and walls it overlaps
+   * or touches (within `contactSlop`, or the rounding of touching). A sleeping body has its contacts. Pass `out` to reuse an array and its contact
+   * objects: it is filled, cut to the number of contacts and returned. Costs a box search and the
+   * pair functions of the shapes near the body.
+   */
+  bodyContacts(handle: number, out?: BodyContact[]): BodyContact[] {
+    const s = this.slot(handle);
+    const into = contactsOutput(out);
+    const from = this.contactSources;
+    from.version = this.geometryVersion;
+    const route = this.shapeRoute;
+    if (route !== null) {
+      from.shapes = this.shapes.store;
+      from.world = route.world;
+      from.joints = this.joints !== null ? this.joints.store : null;
+      from.margin = this.shapeSolver() === 'elastic' ? 0 : route.settings.margin;
+      from.slop = route.settings.slop;
+    } else {
+      from.shapes = null;
+      from.world = null;
+      from.joints = null;
+    }
+    from.box = this.bodies.box;
+    from.contactSlop = this.pipeline.settings.solver.contactSlop;
+    return this.contactIndex.read(s, from, into);
+  }
+
+  /**
    * Touch events of the last step, when the world was created with `contactEvents: true` (begin
    * and end) or a `hitEventThreshold` (hits), or holds a sensor (whose overlaps are reported here).
    * The object and its arrays are reused by every step.
@@ -2135,7 +2172,7 @@ export class World {
 // What reading calls fill (views, contact points, joint views, debug lines) is filled again by
 // each call, and workerStarts counts this object's thread starts: neither is the world's state,
 // and left out of snapshots, reading a world leaves its snapshot's bytes as they were.
-transientFields(World, ['viewsRecord', 'shapeViewsRecord', 'contactPointsRecord', 'jointViewsRecord', 'debugDraw', 'workerStarts']);
+transientFields(World, ['viewsRecord', 'shapeViewsRecord', 'contactPointsRecord', 'jointViewsRecord', 'debugDraw', 'workerStarts', 'contactIndex', 'contactSources']);
 
 /** Whether `value` is an object of callbacks alone: at least one, and nothing else. */
 function isCallbacks(value: object): boolean {

@@ -108,6 +108,15 @@ export class Queries {
     private readonly segments: SegmentStore,
   ) {}
 
+  /** For the engine's own searches (bodyContacts): segmentsNear for the box in `box` (min x, min y, max x, max y); segmentFound(k) reads them. */
+  segmentsInBox(box: Float64Array): number {
+    return this.segmentsNear(box[0], box[1], box[2], box[3]);
+  }
+
+  segmentFound(k: number): number {
+    return this.segmentTree.found[k];
+  }
+
   /** The live segments whose boxes meet the box, ascending, into segmentTree.found; returns how many. */
   private segmentsNear(minX: number, minY: number, maxX: number, maxY: number): number {
     const { segments, segmentTree: tree } = this;

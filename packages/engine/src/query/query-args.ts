@@ -1,5 +1,6 @@
 import type { QueryOptions } from '../world-types.js';
 import type { RayHit } from './queries.js';
+import type { BodyContact } from './body-contacts.js';
 import { describeValue, finiteNumber, knownKeys, plainObject } from '../util/validate.js';
 import { layerBits } from '../options.js';
 
@@ -30,6 +31,21 @@ export function queryOutput<T>(out: T[] | undefined): T[] {
   if (out === undefined) return [];
   writableArray(out);
   out.length = 0;
+  return out;
+}
+
+/** bodyContacts' `out`: an array of contact objects to reuse, each with its `points` array. */
+export function contactsOutput(out: BodyContact[] | undefined): BodyContact[] {
+  if (out === undefined) return [];
+  writableArray(out);
+  for (let k = 0; k < out.length; k++) {
+    const contact: unknown = out[k];
+    if (typeof contact !== 'object' || contact === null || Array.isArray(contact) || Object.isFrozen(contact)) {
+      throw new TypeError(`out[${k}] must be a writable contact object to reuse, got ${describeOut(contact)}`);
+    }
+    const points: unknown = (contact as BodyContact).points;
+    if (!Array.isArray(points) || Object.isFrozen(points)) throw new TypeError(`out[${k}].points must be a writable array, got ${describeOut(points)}`);
+  }
   return out;
 }
 
