@@ -1,4 +1,5 @@
 import { grownCapacity, grow } from '../util/grow.js';
+import { sortFew } from '../util/sort-by-key.js';
 import type { SegmentStore } from '../store/segment-store.js';
 import { paddedRadius } from './fat-bounds.js';
 
@@ -188,17 +189,7 @@ export class StaticTree {
         }
       }
     }
-    // Few results: insertion sort keeps them ascending without allocating.
-    const found = this.found;
-    for (let i = 1; i < this.foundCount; i++) {
-      const v = found[i];
-      let j = i - 1;
-      while (j >= 0 && found[j] > v) {
-        found[j + 1] = found[j];
-        j--;
-      }
-      found[j + 1] = v;
-    }
+    sortFew(this.found, this.foundCount);
     return this.foundCount;
   }
 

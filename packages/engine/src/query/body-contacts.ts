@@ -10,6 +10,7 @@ import { boxWall, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
 import { bodyBounds } from '../shapes/bounds.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
 import { SlotList, type Queries } from './queries.js';
+import { sortFew } from '../util/sort-by-key.js';
 
 /** One contact of a body (see World.bodyContacts). */
 export interface BodyContact {
@@ -110,7 +111,7 @@ export class BodyContacts {
     const dynamicI = type[i] === TypeCode.dynamic;
     // Other bodies, in ascending slot order.
     const found = queries.slotsInBox(from.version, box, this.found);
-    sortSlots(found);
+    sortFew(found.slots, found.count);
     for (let f = 0; f < found.count; f++) {
       const j = found.slots[f];
       if (j === i || (!dynamicI && type[j] !== TypeCode.dynamic) || (bodyCategory[i] & bodies.mask[j]) === 0 || (bodyCategory[j] & bodies.mask[i]) === 0) continue;
@@ -188,7 +189,7 @@ export class BodyContacts {
     box[3] = py + r;
     const dynamicI = type[i] === TypeCode.dynamic;
     const found = queries.slotsInBox(from.version, box, this.found);
-    sortSlots(found);
+    sortFew(found.slots, found.count);
     for (let f = 0; f < found.count; f++) {
       const j = found.slots[f];
       if (j === i || (!dynamicI && type[j] !== TypeCode.dynamic) || (category[i] & mask[j]) === 0 || (category[j] & mask[i]) === 0) continue;
@@ -249,18 +250,4 @@ function setPoint(contact: BodyContact, p: number, x: number, y: number, separat
   point.x = x;
   point.y = y;
   point.separation = separation;
-}
-
-/** The found slots ascending (few: insertion sort), so that contacts come in a fixed order. */
-function sortSlots(found: SlotList): void {
-  const slots = found.slots;
-  for (let k = 1; k < found.count; k++) {
-    const v = slots[k];
-    let j = k - 1;
-    while (j >= 0 && slots[j] > v) {
-      slots[j + 1] = slots[j];
-      j--;
-    }
-    slots[j + 1] = v;
-  }
 }

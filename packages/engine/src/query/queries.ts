@@ -334,7 +334,7 @@ export class Queries {
     rayNormal.y = this.bestNormalY;
     rayPoint.x = this.bestPointX;
     rayPoint.y = this.bestPointY;
-    if (this.bestSegment >= 0) return writeSegmentHit(into ?? blankHit(), this.bestHandle, t);
+    if (this.bestSegment >= 0) return writeSurfaceHit(into ?? blankHit(), this.bestHandle, t);
     return this.write(into ?? blankHit(), this.bestSlot, t, x1, y1, x2 - x1, y2 - y1);
   }
 
@@ -386,7 +386,7 @@ export class Queries {
       if (t < 0) continue;
       const handle = segments.handleOf(g);
       this.segmentAt = g;
-      if (all) writeSegmentHit(this.nextHit(), handle, t);
+      if (all) writeSurfaceHit(this.nextHit(), handle, t);
       else if (t < this.bestFraction || (t === this.bestFraction && this.aheadOfBest(-1, x1, y1, dx, dy))) {
         this.keepBest(-1, t);
         this.bestSegment = g;
@@ -416,13 +416,7 @@ export class Queries {
   /** A hit on a circle (from its centre), or on a shape (at the entry, with rayShape's normal). */
   private write(hit: RayHit, slot: number, t: number, x1: number, y1: number, dx: number, dy: number): RayHit {
     if (this.shapes === null) return writeHit(hit, this.bodies, slot, t, x1, y1, dx, dy);
-    hit.handle = this.bodies.handleOf(slot);
-    hit.fraction = t;
-    hit.x = rayPoint.x;
-    hit.y = rayPoint.y;
-    hit.normalX = rayNormal.x;
-    hit.normalY = rayNormal.y;
-    return hit;
+    return writeSurfaceHit(hit, this.bodies.handleOf(slot), t);
   }
 
   /**
@@ -628,8 +622,8 @@ function blankHit(): RayHit {
 
 const entry = { x: 0, y: 0 };
 
-/** Fills `hit` for a static segment's `handle`, entered at fraction t, at rayPoint with rayNormal. */
-function writeSegmentHit(hit: RayHit, handle: number, t: number): RayHit {
+/** Fills `hit` for the shape or static segment of `handle`, entered at fraction t, at rayPoint with rayNormal. */
+function writeSurfaceHit(hit: RayHit, handle: number, t: number): RayHit {
   hit.handle = handle;
   hit.fraction = t;
   hit.x = rayPoint.x;

@@ -1,5 +1,6 @@
 import { SEGMENT_HANDLES, SEGMENT_MAX_GENERATION, SHAPE_HANDLES, SLOT_SPACE } from './handles.js';
 import { grownCapacity, grow } from '../util/grow.js';
+import { sortFew } from '../util/sort-by-key.js';
 
 export interface NewSegment {
   ax: number;
@@ -198,16 +199,7 @@ export class SegmentGrid {
       }
     }
     // Cells list segments in slot order, but a query spans several cells: restore slot order.
-    const found = this.found;
-    for (let i = 1; i < this.foundCount; i++) {
-      const v = found[i];
-      let j = i - 1;
-      while (j >= 0 && found[j] > v) {
-        found[j + 1] = found[j];
-        j--;
-      }
-      found[j + 1] = v;
-    }
+    sortFew(this.found, this.foundCount);
     return this.foundCount;
   }
 

@@ -70,3 +70,16 @@ export function sortByKey(
     values.set(srcV.subarray(0, n));
   }
 }
+
+/** values[0, n) ascending, in place: an insertion sort, for the short lists a search finds (nearly in order, allocating nothing). */
+export function sortFew(values: Int32Array, n: number): void {
+  for (let i = 1; i < n; i++) {
+    const v = values[i];
+    let j = i - 1;
+    while (j >= 0 && values[j] > v) {
+      values[j + 1] = values[j];
+      j--;
+    }
+    values[j + 1] = v;
+  }
+}
