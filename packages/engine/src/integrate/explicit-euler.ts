@@ -3,7 +3,8 @@ import { TypeCode } from '../store/body-types.js';
 import { moveVelocity, needsGeneralMotion } from './motion.js';
 
 /** moveVelocity's answer. */
-const moved = new Float64Array(2);
+/** moveVelocity's velocity and speed limit. */
+const moved = new Float64Array(3);
 
 /**
  * The report's method (3.1.3, 5.6): position advances with the velocity from before the step,
@@ -40,12 +41,14 @@ export function integrateExplicitEuler(
 /** With per-body gravity scale, pending forces, damping, sleepers or a speed limit (see moveVelocity). */
 function general(bodies: BodyStore, gx: number, gy: number, dt: number, from: number, to: number): void {
   const { x, y, vx, vy, type, invMass, gravityScale, linearDamping, forceX, forceY, asleep } = bodies;
-  const maxSpeed = bodies.speedCap;
+  moved[2] = bodies.speedCap;
   for (let i = from; i < to; i++) {
     const t = type[i];
     if (t === TypeCode.dynamic) {
       if (asleep[i]) continue;
-      moveVelocity(vx[i], vy[i], maxSpeed, moved);
+      moved[0] = vx[i];
+      moved[1] = vy[i];
+      moveVelocity(moved);
       x[i] += moved[0] * dt;
       y[i] += moved[1] * dt;
       const damping = 1 / (1 + dt * linearDamping[i]);

@@ -15,20 +15,21 @@ export function needsGeneralMotion(bodies: BodyStore): boolean {
 const capped = new Float64Array(2);
 
 /**
- * The velocity (vx, vy) at most `maxSpeed` (capSpeed), into out: the velocity a body moves
- * with in the general loops, which keep the speed limit through a step as Box2D does (it caps
- * the velocity before moving a body): a velocity set between steps, or a force's change, would
- * otherwise carry it any distance before the step's last stage caps it. Its own bits within.
+ * The velocity (io[0], io[1]) brought within the speed io[2] (capSpeed), in place: the velocity a
+ * body moves with in the general loops, which keep the speed limit through a step as Box2D does
+ * (it caps the velocity before moving a body): a velocity set between steps, or a force's
+ * change, would otherwise carry it any distance before the step's last stage caps it. Its own
+ * bits within. The numbers travel in the array: wherever V8 does not inline this call, doubles
+ * passed to it would be boxed, once a body and step.
  */
-export function moveVelocity(vx: number, vy: number, maxSpeed: number, out: Float64Array): void {
-  if (vx * vx + vy * vy <= maxSpeed * maxSpeed) {
-    out[0] = vx;
-    out[1] = vy;
-    return;
-  }
+export function moveVelocity(io: Float64Array): void {
+  const vx = io[0];
+  const vy = io[1];
+  const maxSpeed = io[2];
+  if (vx * vx + vy * vy <= maxSpeed * maxSpeed) return;
   capSpeed(vx, vy, maxSpeed, capped);
-  out[0] = capped[0];
-  out[1] = capped[1];
+  io[0] = capped[0];
+  io[1] = capped[1];
 }
 
 /**

@@ -7,8 +7,8 @@ import type { IntegratorName } from './integrator.js';
 
 /** The turn of a step, for `turn` (see there). */
 const angle = new Float64Array(1);
-/** moveVelocity's answer. */
-const moved = new Float64Array(2);
+/** moveVelocity's velocity and speed limit. */
+const moved = new Float64Array(3);
 
 /**
  * Integration of bodies that turn, for the shape route's elastic pass (the soft step integrates
@@ -29,7 +29,8 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
   // Under forces constant over the step Runge-Kutta's four stages agree: the exact parabola,
   // x + (v + a dt / 2) dt, which is the mean of the two Euler methods' positions.
   const rk4 = integrator === 'rk4';
-  if (!needsGeneralMotion(bodies)) return integratePlain(bodies, gx, gy, dt, explicit, rk4, maxSpeed);
+  moved[2] = maxSpeed;
+  if (!needsGeneralMotion(bodies)) return integratePlain(bodies, gx, gy, dt, explicit, rk4);
   const { x, y, vx, vy, type, asleep, invMass, gravityScale, linearDamping, forceX, forceY, slotCount } = bodies;
   const rigid = bodies.rigid!;
   const { c, s, angularVelocity, invInertia, torque, angularDamping, flags } = rigid;
@@ -48,7 +49,9 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
       const alpha = invInertia[i] * torque[i];
       const spin = 1 / (1 + dt * angularDamping[i]);
       if (explicit || rk4) {
-        moveVelocity(rk4 ? vx[i] + 0.5 * ax * dt : vx[i], rk4 ? vy[i] + 0.5 * ay * dt : vy[i], maxSpeed, moved);
+        moved[0] = rk4 ? vx[i] + 0.5 * ax * dt : vx[i];
+        moved[1] = rk4 ? vy[i] + 0.5 * ay * dt : vy[i];
+        moveVelocity(moved);
         x[i] += moved[0] * dt;
         y[i] += moved[1] * dt;
         vx[i] = (vx[i] + ax * dt) * damping;
@@ -58,7 +61,9 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
         // Explicit Euler turns by the spin it had; Runge-Kutta by the mean over the step.
         if (rk4) w = fixed ? 0 : w + 0.5 * alpha * dt;
       } else {
-        moveVelocity((vx[i] + ax * dt) * damping, (vy[i] + ay * dt) * damping, maxSpeed, moved);
+        moved[0] = (vx[i] + ax * dt) * damping;
+        moved[1] = (vy[i] + ay * dt) * damping;
+        moveVelocity(moved);
         vx[i] = moved[0];
         vy[i] = moved[1];
         x[i] += vx[i] * dt;
@@ -79,7 +84,7 @@ export function integrateRigid(bodies: BodyStore, gx: number, gy: number, dt: nu
  * arithmetic less the factors that are 1 and the terms that are 0, from half the columns (at
  * 64,000 bodies the loop is bound by memory: it reads each column once).
  */
-function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, explicit: boolean, rk4: boolean, maxSpeed: number): void {
+function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, explicit: boolean, rk4: boolean): void {
   const { x, y, vx, vy, type, slotCount } = bodies;
   const rigid = bodies.rigid!;
   const { c, s, angularVelocity, flags } = rigid;
@@ -89,13 +94,17 @@ function integratePlain(bodies: BodyStore, gx: number, gy: number, dt: number, e
     const t = type[i];
     if (t === TypeCode.dynamic) {
       if (rk4 || explicit) {
-        moveVelocity(rk4 ? vx[i] + 0.5 * dvx : vx[i], rk4 ? vy[i] + 0.5 * dvy : vy[i], maxSpeed, moved);
+        moved[0] = rk4 ? vx[i] + 0.5 * dvx : vx[i];
+        moved[1] = rk4 ? vy[i] + 0.5 * dvy : vy[i];
+        moveVelocity(moved);
         x[i] += moved[0] * dt;
         y[i] += moved[1] * dt;
         vx[i] += dvx;
         vy[i] += dvy;
       } else {
-        moveVelocity(vx[i] + dvx, vy[i] + dvy, maxSpeed, moved);
+        moved[0] = vx[i] + dvx;
+        moved[1] = vy[i] + dvy;
+        moveVelocity(moved);
         vx[i] = moved[0];
         vy[i] = moved[1];
         x[i] += vx[i] * dt;

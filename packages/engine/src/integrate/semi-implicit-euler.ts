@@ -3,7 +3,8 @@ import { TypeCode } from '../store/body-types.js';
 import { moveVelocity, needsGeneralMotion } from './motion.js';
 
 /** moveVelocity's answer. */
-const moved = new Float64Array(2);
+/** moveVelocity's velocity and speed limit. */
+const moved = new Float64Array(3);
 
 /**
  * Symplectic (semi-implicit) Euler, as Box2D and Rapier use: velocity first, then position with
@@ -40,13 +41,15 @@ export function integrateSemiImplicitEuler(
 /** With per-body gravity scale, pending forces, damping, sleepers or a speed limit (see moveVelocity). */
 function general(bodies: BodyStore, gx: number, gy: number, dt: number, from: number, to: number): void {
   const { x, y, vx, vy, type, invMass, gravityScale, linearDamping, forceX, forceY, asleep } = bodies;
-  const maxSpeed = bodies.speedCap;
+  moved[2] = bodies.speedCap;
   for (let i = from; i < to; i++) {
     const t = type[i];
     if (t === TypeCode.dynamic) {
       if (asleep[i]) continue;
       const damping = 1 / (1 + dt * linearDamping[i]);
-      moveVelocity((vx[i] + (gx * gravityScale[i] + forceX[i] * invMass[i]) * dt) * damping, (vy[i] + (gy * gravityScale[i] + forceY[i] * invMass[i]) * dt) * damping, maxSpeed, moved);
+      moved[0] = (vx[i] + (gx * gravityScale[i] + forceX[i] * invMass[i]) * dt) * damping;
+      moved[1] = (vy[i] + (gy * gravityScale[i] + forceY[i] * invMass[i]) * dt) * damping;
+      moveVelocity(moved);
       vx[i] = moved[0];
       vy[i] = moved[1];
       x[i] += vx[i] * dt;

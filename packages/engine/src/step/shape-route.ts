@@ -252,8 +252,17 @@ export class ShapeRoute {
       pose[2] = rigid.c[i];
       pose[3] = rigid.s[i];
       bodyBounds(shapes, rigid.firstShape[i], pose, bounds);
-      x[i] = qx + containShift(bounds[0], bounds[2], width, a);
-      y[i] = qy + containShift(bounds[1], bounds[3], height, a);
+      // Each axis's shift written out here: a call V8 does not inline boxes the doubles passed
+      // to it and returned, and this runs for every body that reaches past a wall (a pile on the floor).
+      for (let k = 0; k < 2; k++) {
+        const lo = bounds[k];
+        const hi = bounds[k + 2];
+        const size = k === 0 ? width : height;
+        // Centred in [0, size] when wider than it; else moved to lie within [-a, size + a].
+        const shift = hi - lo > size ? size / 2 - (lo + hi) / 2 : lo < -a ? -a - lo : hi > size + a ? size + a - hi : 0;
+        if (k === 0) x[i] = qx + shift;
+        else y[i] = qy + shift;
+      }
     }
   }
 
@@ -272,12 +281,4 @@ export class ShapeRoute {
       vy[i] = 0;
     }
   }
-}
-
-/** How far to move [lo, hi] to lie within [-allowance, size + allowance]: centred in [0, size] when it is wider than that. */
-function containShift(lo: number, hi: number, size: number, allowance: number): number {
-  if (hi - lo > size) return size / 2 - (lo + hi) / 2;
-  if (lo < -allowance) return -allowance - lo;
-  if (hi > size + allowance) return size + allowance - hi;
-  return 0;
 }
