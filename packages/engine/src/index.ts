@@ -15,7 +15,7 @@ export type { RayHit } from './query/queries.js';
 export type { BodyContact } from './query/body-contacts.js';
 export type { ContactEventsView } from './store/contact-events.js';
 export { BoxWall } from './solver/box-walls.js';
-export type { WorldOptions, CircleOptions, SegmentOptions, Vector } from './options.js';
+export type { WorldOptions, CircleOptions, SegmentOptions, ChainOptions, Vector } from './options.js';
 export type { StepStats } from './step/stats.js';
 export type { WorldBackend, KernelUse } from './backend.js';
 export type { BodyType } from './store/body-types.js';

@@ -222,6 +222,21 @@ export interface SegmentOptions {
   mask?: number | undefined;
 }
 
+/**
+ * What createChain takes: static segments from each point to the next (and from the last back to
+ * the first with `loop`), joined smoothly (docs/engine.md, "Chains"); the material and layers as
+ * createSegment's, for every link.
+ */
+export interface ChainOptions {
+  points: { x: number; y: number }[];
+  loop?: boolean | undefined;
+  thickness?: number | undefined;
+  restitution?: number | undefined;
+  friction?: number | undefined;
+  category?: number | undefined;
+  mask?: number | undefined;
+}
+
 const WORLD_KEYS = [
   'bounds',
   'gravity',
@@ -432,6 +447,46 @@ export function resolveSegment(input: unknown, defaultRestitution: number, defau
     throw new RangeError(`a segment from (${segment.ax}, ${segment.ay}) to itself needs a thickness > 0`);
   }
   return segment;
+}
+
+/**
+ * A chain's links, each with its neighbours' far points (see NewSegment), from createChain's
+ * options; every point and option checked, and a link of no length refused, before any is made.
+ */
+export function resolveChain(input: unknown, defaultRestitution: number, defaultFriction: number): NewSegment[] {
+  const o = plainObject('chain options', input);
+  knownKeys('chain options', o, ['points', 'loop', 'thickness', 'restitution', 'friction', 'category', 'mask']);
+  if (!Array.isArray(o.points)) throw new TypeError(`points must be an array of { x, y }, got ${describeValue(o.points)}`);
+  const loop = o.loop === undefined ? false : o.loop;
+  if (typeof loop !== 'boolean') throw new TypeError(`loop must be a boolean, got ${describeValue(loop)}`);
+  const least = loop ? 3 : 2;
+  if (o.points.length < least) throw new RangeError(`a ${loop ? 'loop' : 'chain'} needs at least ${least} points, got ${o.points.length}`);
+  const points = o.points.map((p: unknown, k: number) => {
+    const q = plainObject(`points[${k}]`, p);
+    knownKeys(`points[${k}]`, q, ['x', 'y']);
+    return { x: boundedNumber(`points[${k}].x`, q.x), y: boundedNumber(`points[${k}].y`, q.y) };
+  });
+  const n = points.length;
+  const links = loop ? n : n - 1;
+  const material = { thickness: o.thickness, restitution: o.restitution, friction: o.friction, category: o.category, mask: o.mask };
+  const out: NewSegment[] = [];
+  for (let k = 0; k < links; k++) {
+    const a = points[k];
+    const b = points[(k + 1) % n];
+    if (a.x === b.x && a.y === b.y) throw new RangeError(`points[${k}] and points[${(k + 1) % n}] are the same point (${a.x}, ${a.y}): a chain's links need a length`);
+    const segment = resolveSegment({ x1: a.x, y1: a.y, x2: b.x, y2: b.y, ...definedOnly(material) }, defaultRestitution, defaultFriction);
+    segment.prev = loop || k > 0 ? points[(k + n - 1) % n] : null;
+    segment.next = loop || k + 2 < n ? points[(k + 2) % n] : null;
+    out.push(segment);
+  }
+  return out;
+}
+
+/** The keys of `o` whose values are not undefined. */
+function definedOnly(o: Record<string, unknown>): Record<string, unknown> {
+  const out: Record<string, unknown> = {};
+  for (const [key, value] of Object.entries(o)) if (value !== undefined) out[key] = value;
+  return out;
 }
 
 /** The step's settings from the world's validated options. */

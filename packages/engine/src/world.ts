@@ -66,11 +66,13 @@ import {
   integratorName,
   resolveCircle,
   resolveWorldOptions,
+  resolveChain,
   resolveSegment,
   shapeRouteSettings,
   stepSettings,
   type ResolvedWorldOptions,
   type SegmentOptions,
+  type ChainOptions,
   vector,
   type CircleOptions,
   type Vector,
@@ -550,6 +552,27 @@ export class World {
     const handle = this.segments.add(segment);
     this.noteSegment(this.segmentSlot(handle));
     return handle;
+  }
+
+  /**
+   * Static segments from each point to the next (and back to the first with `loop`), joined
+   * smoothly: a shape sliding or rolling across a join meets no seam there, as on Box2D's chain
+   * shapes (docs/engine.md, "Chains"). Returns the links' handles, in order; each is a segment
+   * (getSegment, destroySegment, queries, events). Every point and option is checked before any
+   * link is made.
+   */
+  createChain(options: ChainOptions): number[] {
+    const links = resolveChain(options, this.defaultRestitution, this.defaultFriction);
+    if (!this.segments.hasRoom(links.length)) throw new RangeError(`a world holds at most ${SLOT_SPACE} segments at once (handles encode the slot in 24 bits)`);
+    if (links.some((link) => link.friction > 0)) this.engage();
+    this.staticVersion++;
+    const handles: number[] = [];
+    for (const link of links) {
+      const handle = this.segments.add(link);
+      this.noteSegment(this.segmentSlot(handle));
+      handles.push(handle);
+    }
+    return handles;
   }
 
   /** Removes a static segment; a stale or unknown handle throws a RangeError. */

@@ -12,6 +12,7 @@ import { ContactList, ContactPoint, Pose, POINT_STRIDE, RECYCLE, Recycle, WORLD 
 import { Manifold } from './manifold.js';
 import { WorldShape } from './world-shape.js';
 import { collide } from './dispatch.js';
+import { smoothSegment } from './smooth-segment.js';
 import type { JointStore } from '../joints/joint-store.js';
 import { SlotList, type Queries } from '../query/queries.js';
 import { shapeBounds } from '../shapes/bounds.js';
@@ -591,6 +592,7 @@ export class ShapeNarrowPhase implements PairConsumer {
       const a = this.shapeA.fromPose(shapes, sa, pose, Pose.ax);
       const m = this.manifold;
       collide(a, b, m);
+      if (!isWall && segments.smooth[g] !== 0) smoothSegment(a, segments, g, m);
       if (m.pointCount === 0) continue;
       const friction = Math.sqrt(shapes.friction[sa] * otherFriction);
       const restitution = Math.max(shapes.restitution[sa], otherRestitution);

@@ -6,6 +6,7 @@ import { TypeCode } from '../store/body-types.js';
 import { WorldShape } from '../narrowphase/world-shape.js';
 import { Manifold } from '../narrowphase/manifold.js';
 import { collide } from '../narrowphase/dispatch.js';
+import { smoothSegment } from '../narrowphase/smooth-segment.js';
 import { boxWall, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
 import { bodyBounds } from '../shapes/bounds.js';
 import { closestOnSegment } from '../narrowphase/circle-segment.js';
@@ -136,6 +137,7 @@ export class BodyContacts {
         if (shapes.sensor[sa] === 1 || (shapes.category[sa] & segments.mask[g]) === 0 || (segments.category[g] & shapes.mask[sa]) === 0) continue;
         const a = this.placeShape(shapes, sa, x[i], y[i], c[i], s[i], this.shapeA);
         collide(a, this.shapeB.segment(segments, g), m);
+        if (segments.smooth[g] !== 0) smoothSegment(a, segments, g, m);
         if (m.pointCount > 0) this.put(out, segments.handleOf(g), -1, shapes.handleOf(sa), -1);
       }
     }

@@ -12,7 +12,17 @@ export interface NewSegment {
   friction: number;
   category: number;
   mask: number;
+  /**
+   * A chain's link (World.createChain): the point before its start and the point after its end
+   * along the chain, where it has them (Box2D's ghost vertices), for the smooth joins of
+   * smooth-segment.ts.
+   */
+  prev?: { x: number; y: number } | null;
+  next?: { x: number; y: number } | null;
 }
+
+/** Bits of SegmentStore.smooth: the link has a neighbour before its start, after its end. */
+export const SmoothJoin = { start: 1, end: 2 } as const;
 
 /**
  * Static line segments (walls at any angle, thick or not), stored apart from bodies: they never
@@ -34,6 +44,12 @@ export class SegmentStore {
   mask = new Uint32Array(0);
   live = new Uint8Array(0);
   generation = new Uint32Array(0);
+  /** Per segment, its SmoothJoin bits (0 for a loose segment), and its neighbours' far points there. */
+  smooth = new Uint8Array(0);
+  prevX = new Float64Array(0);
+  prevY = new Float64Array(0);
+  nextX = new Float64Array(0);
+  nextY = new Float64Array(0);
   /** Bumped on every add and remove, so the segment grid knows to rebuild. */
   version = 0;
   /** Live segments with friction or restitution below 1 (see World's solver 'auto'). */
@@ -56,6 +72,13 @@ export class SegmentStore {
     if (segment.friction > 0 || segment.restitution < 1) this.inelastic++;
     this.category[slot] = segment.category;
     this.mask[slot] = segment.mask;
+    const prev = segment.prev ?? null;
+    const next = segment.next ?? null;
+    this.smooth[slot] = (prev !== null ? SmoothJoin.start : 0) | (next !== null ? SmoothJoin.end : 0);
+    this.prevX[slot] = prev !== null ? prev.x : 0;
+    this.prevY[slot] = prev !== null ? prev.y : 0;
+    this.nextX[slot] = next !== null ? next.x : 0;
+    this.nextY[slot] = next !== null ? next.y : 0;
     this.live[slot] = 1;
     this.count++;
     this.version++;
@@ -77,9 +100,9 @@ export class SegmentStore {
     return SEGMENT_HANDLES + this.generation[slot] * SLOT_SPACE + slot;
   }
 
-  /** Whether `add` has a slot to give: a free one, or one below SLOT_SPACE. */
-  hasRoom(): boolean {
-    return this.freeSlots.length > 0 || this.slotCount < SLOT_SPACE;
+  /** Whether `add` has slots to give `n` times: free ones, or ones below SLOT_SPACE. */
+  hasRoom(n = 1): boolean {
+    return this.freeSlots.length + (SLOT_SPACE - this.slotCount) >= n;
   }
 
   remove(slot: number): void {
@@ -113,7 +136,7 @@ export class SegmentStore {
   }
 
   memoryBytes(): number {
-    return this.ax.byteLength * 7 + this.category.byteLength * 3 + this.live.byteLength;
+    return this.ax.byteLength * 11 + this.category.byteLength * 3 + this.live.byteLength * 2;
   }
 
   private grow(needed: number): void {
@@ -129,6 +152,11 @@ export class SegmentStore {
     this.mask = grow(this.mask, capacity);
     this.live = grow(this.live, capacity);
     this.generation = grow(this.generation, capacity);
+    this.smooth = grow(this.smooth, capacity);
+    this.prevX = grow(this.prevX, capacity);
+    this.prevY = grow(this.prevY, capacity);
+    this.nextX = grow(this.nextX, capacity);
+    this.nextY = grow(this.nextY, capacity);
   }
 }
 
