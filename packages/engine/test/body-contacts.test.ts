@@ -161,6 +161,26 @@ describe('bodyContacts: each contact of a body as the last step left it', () => 
     }
   });
 
+  it('circles: a gap within contactSlop touches in every direction, as does a centre on a segment', () => {
+    const world = new World({ bounds: { width: 100, height: 100 }, contactSlop: 0.01 });
+    const a = world.createCircle({ x: 10, y: 10, radius: 2 });
+    const alongX = world.createCircle({ x: 13.005, y: 10, radius: 1 });
+    const alongY = world.createCircle({ x: 10, y: 13.005, radius: 1 });
+    const apart = world.createCircle({ x: 6.98, y: 10, radius: 1 });
+    expect(world.bodyContacts(a).map((c) => c.other)).toEqual([alongX, alongY]);
+    expect(world.bodyContacts(apart)).toEqual([]);
+    const floor = world.createSegment({ x1: 40, y1: 50, x2: 60, y2: 50, thickness: 0.5 });
+    const above = world.createCircle({ x: 50, y: 48.495, radius: 1 });
+    const through = world.createCircle({ x: 45, y: 50, radius: 1 });
+    expect(world.bodyContacts(above).map((c) => [c.other, c.normalY])).toEqual([[floor, 1]]);
+    // A centre on the segment's line: the left normal pushes it, so the contact points the other way.
+    const [onLine] = world.bodyContacts(through);
+    expect(onLine.other).toBe(floor);
+    expect(onLine.normalX).toBeCloseTo(0, 12);
+    expect(onLine.normalY).toBe(-1);
+    expect(onLine.points[0].separation).toBe(-1.5);
+  });
+
   it('reuses the objects of `out`, and refuses what is not a live body handle or a writable array', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0 });
     const ground = world.createBox({ x: 0, y: 1, width: 20, height: 2, type: 'static' });
@@ -177,6 +197,11 @@ describe('bodyContacts: each contact of a body as the last step left it', () => 
     expect(() => world.bodyContacts(Number.NaN)).toThrow(/handle/);
     expect(() => world.bodyContacts(box, Object.freeze([]) as never)).toThrow(TypeError);
     expect(() => world.bodyContacts(box, [{ points: 3 }] as never)).toThrow(/out\[0\]\.points/);
+    expect(() => world.bodyContacts(box, [{ points: [3] }] as never)).toThrow(/out\[0\]\.points\[0\]/);
+    const twice = { points: [] };
+    expect(() => world.bodyContacts(box, [twice, twice] as never)).toThrow(/out\[1\] is the same object as out\[0\]/);
+    const shared: never[] = [];
+    expect(() => world.bodyContacts(box, [{ points: shared }, { points: shared }] as never)).toThrow(/out\[1\]\.points is out\[0\]\.points/);
     const gone = world.createBox({ x: 5, y: -0.5, width: 1, height: 1 });
     world.destroyBody(gone);
     expect(() => world.bodyContacts(gone)).toThrow(RangeError);

@@ -129,6 +129,32 @@ describe('queries find static segments as the capsules they collide as', () => {
     expect(restored.queryPoint(50, 50.5)).toEqual([s]);
   });
 
+  it('a terrain of thousands of segments, made in either order: a box over it all lists every one, ascending', () => {
+    for (const order of ['left to right', 'right to left']) {
+      const w = new World();
+      const n = 3000;
+      const made: number[] = [];
+      for (let k = 0; k < n; k++) {
+        const x = order === 'left to right' ? k : n - 1 - k;
+        made.push(w.createSegment({ x1: x, y1: Math.sin(x / 10), x2: x + 1, y2: Math.sin((x + 1) / 10) }));
+      }
+      const sorted = made.slice().sort((a, b) => a - b);
+      expect(w.queryAABB(-1, -2, n + 1, 2), order).toEqual(sorted);
+      // Along y = 0 the ray crosses the links whose ends lie either side of it (none ends on it but the first).
+      const crossing = made.filter((h) => {
+        const g = w.getSegment(h);
+        return Math.min(g.y1, g.y2) <= 0 && Math.max(g.y1, g.y2) >= 0;
+      });
+      expect(
+        w
+          .rayCastAll(-1, 0, n + 1, 0)
+          .map((hit) => hit.handle)
+          .sort((a, b) => a - b),
+        order,
+      ).toEqual(crossing.sort((a, b) => a - b));
+    }
+  });
+
   it('on random segments and rays, a ray hits exactly the segments it passes within their thickness of, each once, nearest first', () => {
     fc.assert(
       fc.property(

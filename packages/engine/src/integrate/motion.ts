@@ -11,9 +11,6 @@ export function needsGeneralMotion(bodies: BodyStore): boolean {
   return bodies.customMotionCount > 0 || bodies.forcesPending || bodies.sleepingCount > 0 || bodies.speedCap < MAX_MAGNITUDE;
 }
 
-/** capSpeed's answer. */
-const capped = new Float64Array(2);
-
 /**
  * The velocity (io[0], io[1]) brought within the speed io[2] (capSpeed), in place: the velocity a
  * body moves with in the general loops, which keep the speed limit through a step as Box2D does
@@ -27,9 +24,7 @@ export function moveVelocity(io: Float64Array): void {
   const vy = io[1];
   const maxSpeed = io[2];
   if (vx * vx + vy * vy <= maxSpeed * maxSpeed) return;
-  capSpeed(vx, vy, maxSpeed, capped);
-  io[0] = capped[0];
-  io[1] = capped[1];
+  capSpeed(io);
 }
 
 /**

@@ -9,7 +9,7 @@ import { collide } from '../narrowphase/dispatch.js';
 import { smoothSegment } from '../narrowphase/smooth-segment.js';
 import { boxWall, type WorldShapes } from '../narrowphase/shape-narrowphase.js';
 import { bodyBounds } from '../shapes/bounds.js';
-import { closestOnSegment } from '../narrowphase/circle-segment.js';
+import { closestOnSegment, segmentNormal } from '../narrowphase/circle-segment.js';
 import { SlotList, type Queries } from './queries.js';
 import { sortFew } from '../util/sort-by-key.js';
 
@@ -74,6 +74,7 @@ export class BodyContacts {
   private readonly shapeB = new WorldShape();
   private readonly manifold = new Manifold();
   private readonly closest = new Float64Array(2);
+  private readonly normal = new Float64Array(2);
   private count = 0;
 
   /** The contacts of the live body in `slot` into `out` (reusing its objects), cut to their number. */
@@ -184,11 +185,13 @@ export class BodyContacts {
     const px = x[i];
     const py = y[i];
     const r = radius[i];
+    // Widened past every gap that counts as touching (see touching), so that the search finds them all.
+    const search = r + from.contactSlop + 1e-6 * (r + bodies.maxRadius() + Math.abs(px) + Math.abs(py));
     const box = this.box;
-    box[0] = px - r;
-    box[1] = py - r;
-    box[2] = px + r;
-    box[3] = py + r;
+    box[0] = px - search;
+    box[1] = py - search;
+    box[2] = px + search;
+    box[3] = py + search;
     const dynamicI = type[i] === TypeCode.dynamic;
     const found = queries.slotsInBox(from.version, box, this.found);
     sortFew(found.slots, found.count);
@@ -214,8 +217,10 @@ export class BodyContacts {
       const dy = q[1] - py;
       const d = Math.sqrt(dx * dx + dy * dy);
       const gap = d - r - segments.thickness[g];
-      if (gap > touching(from.contactSlop, r + segments.thickness[g], px, py, q[0], q[1]) || d === 0) continue;
-      this.putRound(out, segments.handleOf(g), -1, dx / d, dy / d, px, py, r, gap);
+      if (gap > touching(from.contactSlop, r + segments.thickness[g], px, py, q[0], q[1])) continue;
+      // A centre on the segment itself: pushed along its left normal, as the circle engine pushes it.
+      segmentNormal(-dx, -dy, d, segments.ax[g], segments.ay[g], segments.bx[g], segments.by[g], this.normal);
+      this.putRound(out, segments.handleOf(g), -1, -this.normal[0], -this.normal[1], px, py, r, gap);
     }
     const walls = from.box;
     if (walls === null) return;

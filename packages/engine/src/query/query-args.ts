@@ -45,6 +45,17 @@ export function contactsOutput(out: BodyContact[] | undefined): BodyContact[] {
     }
     const points: unknown = (contact as BodyContact).points;
     if (!Array.isArray(points) || Object.isFrozen(points)) throw new TypeError(`out[${k}].points must be a writable array, got ${describeOut(points)}`);
+    for (let p = 0; p < points.length; p++) {
+      const point: unknown = points[p];
+      if (typeof point !== 'object' || point === null || Array.isArray(point) || Object.isFrozen(point)) {
+        throw new TypeError(`out[${k}].points[${p}] must be a writable point object to reuse, got ${describeOut(point)}`);
+      }
+    }
+    // One object twice would hold two contacts: the second written over the first.
+    for (let j = 0; j < k; j++) {
+      if (out[j] === contact) throw new TypeError(`out[${k}] is the same object as out[${j}]: each contact needs its own`);
+      if (out[j].points === points) throw new TypeError(`out[${k}].points is out[${j}].points: each contact needs its own`);
+    }
   }
   return out;
 }

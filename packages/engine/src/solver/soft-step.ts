@@ -36,8 +36,8 @@ export interface SoftSettings {
 // pairs, field by field, the two of a pair side by side (lane 0, lane 1), so that a SIMD kernel
 // loads a field of both with one instruction: field F of constraint i is at
 // (i >> 1) * PAIR + (i & 1) + F, which is why every field offset below is even.
-/** gatherBodies' capped velocity. */
-const capped = new Float64Array(2);
+/** gatherBodies' capped velocity and the limit (see capSpeed). */
+const capped = new Float64Array(3);
 
 const NX = 0;
 const NY = 2;
@@ -359,7 +359,10 @@ export class SoftStep {
       const x = vx[slot];
       const y = vy[slot];
       if (!(x * x + y * y <= maxSq) && type[slot] === TypeCode.dynamic) {
-        capSpeed(x, y, maxLinearSpeed, capped);
+        capped[0] = x;
+        capped[1] = y;
+        capped[2] = maxLinearSpeed;
+        capSpeed(capped);
         states[b + VX] = capped[0];
         states[b + VY] = capped[1];
       } else {

@@ -4,13 +4,19 @@ import { TypeCode } from '../store/body-types.js';
 /** limitSpeeds' square of the speed limit, passed to the kernel in an array rather than boxed. */
 const limit = new Float64Array(1);
 
-const capped = new Float64Array(2);
+/** capSpeed's velocity and limit. */
+const capped = new Float64Array(3);
 
 /**
- * The velocity (x, y), faster than `maxSpeed`, slowed to it in its direction, into out[0], out[1].
- * By the larger component first, so that a speed whose square would overflow scales too.
+ * The velocity (io[0], io[1]), faster than the limit io[2], slowed to it in its direction, in
+ * place. By the larger component first, so that a speed whose square would overflow scales too.
+ * The numbers travel in the array: callers run it for every body too fast, and V8 boxes each
+ * double passed to, or returned from, a call it does not inline.
  */
-export function capSpeed(x: number, y: number, maxSpeed: number, out: Float64Array): void {
+export function capSpeed(io: Float64Array): void {
+  let x = io[0];
+  let y = io[1];
+  const maxSpeed = io[2];
   const m = Math.max(Math.abs(x), Math.abs(y));
   x = (x / m) * maxSpeed;
   y = (y / m) * maxSpeed;
@@ -19,8 +25,8 @@ export function capSpeed(x: number, y: number, maxSpeed: number, out: Float64Arr
     x *= k;
     y *= k;
   }
-  out[0] = x;
-  out[1] = y;
+  io[0] = x;
+  io[1] = y;
 }
 
 /**
@@ -67,7 +73,10 @@ export function limitSpeeds(bodies: BodyStore, maxSpeed: number, maxSpin: number
     // The speed first, the body's type only for the rare one too fast: this runs over every body
     // of every step, and two reads a body are half the four.
     if (!(x * x + y * y <= maxSq) && type[i] === TypeCode.dynamic && !asleep[i]) {
-      capSpeed(x, y, maxSpeed, capped);
+      capped[0] = x;
+      capped[1] = y;
+      capped[2] = maxSpeed;
+      capSpeed(capped);
       vx[i] = capped[0];
       vy[i] = capped[1];
       slowed++;

@@ -71,8 +71,19 @@ export function sortByKey(
   }
 }
 
-/** values[0, n) ascending, in place: an insertion sort, for the short lists a search finds (nearly in order, allocating nothing). */
+/** Below this many values sortFew sorts by insertion; from it on, by heap sort. */
+const FEW = 32;
+
+/**
+ * values[0, n) ascending, in place, allocating nothing: by insertion for the few values a search
+ * usually finds, and by heap sort, O(n log n) whatever their order, for many (a box over a whole
+ * terrain of segments listed in the tree's order: insertion took 600 ms for 32,000 of them).
+ */
 export function sortFew(values: Int32Array, n: number): void {
+  if (n >= FEW) {
+    heapSort(values, n);
+    return;
+  }
   for (let i = 1; i < n; i++) {
     const v = values[i];
     let j = i - 1;
@@ -82,4 +93,29 @@ export function sortFew(values: Int32Array, n: number): void {
     }
     values[j + 1] = v;
   }
+}
+
+function heapSort(values: Int32Array, n: number): void {
+  for (let start = (n >> 1) - 1; start >= 0; start--) siftDown(values, start, n);
+  for (let end = n - 1; end > 0; end--) {
+    const top = values[0];
+    values[0] = values[end];
+    values[end] = top;
+    siftDown(values, 0, end);
+  }
+}
+
+/** Moves values[root] down the max-heap values[0, end) to its place. */
+function siftDown(values: Int32Array, root: number, end: number): void {
+  const v = values[root];
+  let parent = root;
+  for (;;) {
+    let child = 2 * parent + 1;
+    if (child >= end) break;
+    if (child + 1 < end && values[child + 1] > values[child]) child++;
+    if (values[child] <= v) break;
+    values[parent] = values[child];
+    parent = child;
+  }
+  values[parent] = v;
 }
