@@ -87,6 +87,20 @@ describe('bodyContacts: each contact of a body as the last step left it', () => 
     expect(contacts[1].normalY).toBeCloseTo(1, 9);
   });
 
+  it('lists only the points within the margin: a capsule standing on its end touches with its foot alone', () => {
+    const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0 });
+    const ground = world.createBox({ x: 0, y: 1, width: 20, height: 2, type: 'static' });
+    const capsule = world.createCapsule({ x: 0, y: -0.7, length: 1, radius: 0.2, angle: Math.PI / 2, fixedRotation: true });
+    run(world, 1);
+    const [contact, ...rest] = world.bodyContacts(capsule);
+    expect(rest).toEqual([]);
+    expect(contact.other).toBe(ground);
+    expect(contact.pointCount).toBe(1);
+    expect(contact.points.length).toBe(1);
+    expect(Math.abs(contact.points[0].separation)).toBeLessThan(SLOP);
+    expect(contact.points[0].x).toBeCloseTo(0, 6);
+  });
+
   it('a table on two legs: one contact per leg, each naming its leg', () => {
     const world = new World({ gravity: { x: 0, y: 10 }, friction: 0.6, restitution: 0 });
     world.createBox({ x: 0, y: 1, width: 20, height: 2, type: 'static' });

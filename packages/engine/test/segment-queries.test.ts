@@ -155,6 +155,22 @@ describe('queries find static segments as the capsules they collide as', () => {
     }
   });
 
+  it('a ray aimed exactly at a join of two segments of no thickness hits it, from any direction', () => {
+    const w = new World();
+    const points = Array.from({ length: 201 }, (_, k) => ({ x: k * 0.7, y: Math.sin(k * 1.3) + 0.01 * k }));
+    for (let k = 0; k < 200; k++) w.createSegment({ x1: points[k].x, y1: points[k].y, x2: points[k + 1].x, y2: points[k + 1].y });
+    let seed = 7;
+    const random = (): number => ((seed = (seed * 16807) % 2147483647) - 1) / 2147483646;
+    for (let n = 0; n < 2000; n++) {
+      const v = points[1 + Math.floor(random() * 199)];
+      const angle = (random() - 0.5) * 2.8;
+      const x1 = v.x + 5 * Math.sin(angle);
+      const y1 = v.y - 5 * Math.cos(angle);
+      // Through the vertex and on, twice as far.
+      expect(w.rayCast(x1, y1, 2 * v.x - x1, 2 * v.y - y1), `ray ${n} at (${v.x}, ${v.y})`).not.toBeNull();
+    }
+  });
+
   it('on random segments and rays, a ray hits exactly the segments it passes within their thickness of, each once, nearest first', () => {
     fc.assert(
       fc.property(

@@ -571,14 +571,14 @@ export class ShapeNarrowPhase implements PairConsumer {
     const otherRestitution = isWall ? this.wallRestitution : segments.restitution[g];
     const otherCategory = isWall ? 0xffffffff : segments.category[g];
     const otherMask = isWall ? 0xffffffff : segments.mask[g];
-    p = this.seek(i, WORLD, p);
+    p = this.seekEntry(i, entry, this.seek(i, WORLD, p));
     for (let sa = firstShape[i]; sa >= 0; sa = shapes.next[sa]) {
       if ((shapes.category[sa] & otherMask) === 0 || (otherCategory & shapes.mask[sa]) === 0) continue;
       if (shapes.sensor[sa]) continue;
       const pose = list.pose;
       pose[Pose.keyA] = shapes.record[sa * SHAPE_STRIDE + ShapeField.handle];
       pose[Pose.keyB] = keyB;
-      const q = this.find(p, i, WORLD);
+      const q = this.findWorld(p, i, entry);
       if (q >= 0 && this.recycleDistance > 0 && this.recycle(q, i, WORLD)) continue;
       this.shapePairs++;
       pose[Pose.ax] = x[i];
@@ -621,6 +621,38 @@ export class ShapeNarrowPhase implements PairConsumer {
       p++;
     }
     return p;
+  }
+
+  /**
+   * Advances p, at body i's first world contact of last step's order or beyond, past those with
+   * world entries below `entry`. A body's world pairs come in ascending entry order, in both steps'
+   * lists (gatherStatic lists the tree's entries ascending, then the walls), so each of its world
+   * pairs looks only at its own entry's contacts: a plank lying across 4,000 segments scanned all
+   * of its contacts for each, 50 ms a step.
+   */
+  private seekEntry(i: number, entry: number, p: number): number {
+    const list = this.current;
+    const { previousOrder, previousCount, bodyA, bodyB, shapeB } = list;
+    while (p < previousCount) {
+      const k = previousOrder[p];
+      if (bodyA[k] !== i || bodyB[k] !== WORLD || shapeB[k] >= entry) break;
+      p++;
+    }
+    return p;
+  }
+
+  /** find for body i's world pair with `entry`: the contacts of that entry alone, from p on (see seekEntry). */
+  private findWorld(p: number, i: number, entry: number): number {
+    const list = this.current;
+    const keyA = list.pose[Pose.keyA];
+    const keyB = list.pose[Pose.keyB];
+    const { previousOrder, previousCount, bodyA, bodyB, shapeB } = list;
+    for (let n = p; n < previousCount; n++) {
+      const k = previousOrder[n];
+      if (bodyA[k] !== i || bodyB[k] !== WORLD || shapeB[k] !== entry) break;
+      if (list.keyA[k] === keyA && list.keyB[k] === keyB) return k;
+    }
+    return -1;
   }
 
   /** The slot of last step's contact of the same two shapes (from p on in its order), or -1. */

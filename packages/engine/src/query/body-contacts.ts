@@ -32,8 +32,8 @@ export interface BodyContact {
   pointCount: number;
   /**
    * Each point midway between the surfaces, with the signed distance between them there
-   * (negative: overlapping; positive: a speculative point, within the soft step's margin). The
-   * objects are reused with the contact object.
+   * (negative: overlapping; positive: a speculative point, within the soft step's margin, or the
+   * slop under the elastic pass). The objects are reused with the contact object.
    */
   points: { x: number; y: number; separation: number }[];
 }
@@ -100,6 +100,8 @@ export class BodyContacts {
     const m = this.manifold;
     m.margin = from.margin;
     m.slop = from.slop;
+    // The points listed: within the margin, or the slop under the elastic pass (margin 0).
+    const within = Math.max(from.margin, from.slop);
     pose[0] = x[i];
     pose[1] = y[i];
     pose[2] = c[i];
@@ -125,7 +127,7 @@ export class BodyContacts {
           const a = this.placeShape(shapes, sa, x[i], y[i], c[i], s[i], this.shapeA);
           const b = this.placeShape(shapes, sb, x[j], y[j], c[j], s[j], this.shapeB);
           collide(a, b, m);
-          if (m.pointCount > 0) this.put(out, bodies.handleOf(j), -1, shapes.handleOf(sa), shapes.handleOf(sb));
+          if (m.pointCount > 0) this.put(out, bodies.handleOf(j), -1, shapes.handleOf(sa), shapes.handleOf(sb), within);
         }
       }
     }
@@ -139,7 +141,7 @@ export class BodyContacts {
         const a = this.placeShape(shapes, sa, x[i], y[i], c[i], s[i], this.shapeA);
         collide(a, this.shapeB.segment(segments, g), m);
         if (segments.smooth[g] !== 0) smoothSegment(a, segments, g, m);
-        if (m.pointCount > 0) this.put(out, segments.handleOf(g), -1, shapes.handleOf(sa), -1);
+        if (m.pointCount > 0) this.put(out, segments.handleOf(g), -1, shapes.handleOf(sa), -1, within);
       }
     }
     if (world === null || world.box === null) return;
@@ -148,7 +150,7 @@ export class BodyContacts {
         if (shapes.sensor[sa] === 1) continue;
         const a = this.placeShape(shapes, sa, x[i], y[i], c[i], s[i], this.shapeA);
         collide(a, boxWall(world, w, this.shapeB), m);
-        if (m.pointCount > 0) this.put(out, -1, w, shapes.handleOf(sa), -1);
+        if (m.pointCount > 0) this.put(out, -1, w, shapes.handleOf(sa), -1, within);
       }
     }
   }
@@ -157,9 +159,17 @@ export class BodyContacts {
     return into.fromStore(shapes, slot, px, py, c, s);
   }
 
-  /** The manifold as a contact of this body. */
-  private put(out: BodyContact[], other: number, wall: number, shape: number, otherShape: number): void {
+  /**
+   * The manifold as a contact of this body, its points within `within` of touching: a face's
+   * manifold keeps both clipped points for the solver, the far one even beyond the margin (a
+   * capsule standing on its end: its top, 0.8 m up), which is not a contact to a game. None
+   * within: no contact.
+   */
+  private put(out: BodyContact[], other: number, wall: number, shape: number, otherShape: number, within: number): void {
     const m = this.manifold;
+    let kept = 0;
+    for (let p = 0; p < m.pointCount; p++) if (m.separation[p] <= within) kept++;
+    if (kept === 0) return;
     const contact = this.next(out);
     contact.other = other;
     contact.wall = wall;
@@ -167,9 +177,10 @@ export class BodyContacts {
     contact.otherShape = otherShape;
     contact.normalX = m.normalX;
     contact.normalY = m.normalY;
-    contact.pointCount = m.pointCount;
-    for (let p = 0; p < m.pointCount; p++) setPoint(contact, p, m.x[p], m.y[p], m.separation[p]);
-    contact.points.length = m.pointCount;
+    contact.pointCount = kept;
+    let n = 0;
+    for (let p = 0; p < m.pointCount; p++) if (m.separation[p] <= within) setPoint(contact, n++, m.x[p], m.y[p], m.separation[p]);
+    contact.points.length = kept;
   }
 
   /**

@@ -227,14 +227,14 @@ export class Queries {
       const g = segmentTree.found[k];
       if ((segments.category[g] & mask) !== 0 && segmentContains(segments, g, px, py)) out.push(segments.handleOf(g));
     }
-    if (!this.prepare(version)) return out.sort(ascending);
+    if (!this.prepare(version)) return sortHandles(out);
     const { grid, bodies } = this;
     this.examined += this.oversizedCount;
     for (let k = 0; k < this.oversizedCount; k++) {
       const slot = this.oversized[k];
       if ((bodies.category[slot] & mask) !== 0 && this.contains(slot, px, py)) out.push(bodies.handleOf(slot));
     }
-    if (!this.reaches(px, py, px, py)) return out.sort(ascending);
+    if (!this.reaches(px, py, px, py)) return sortHandles(out);
     const column = grid.columnOf(px);
     const row = grid.rowOf(py);
     const c0 = clamp(column - 1, 0, grid.columns - 1);
@@ -247,7 +247,7 @@ export class Queries {
         if (this.contains(slot, px, py)) out.push(bodies.handleOf(slot));
       }
     }
-    return out.sort(ascending);
+    return sortHandles(out);
   }
 
   box(version: number, minX: number, minY: number, maxX: number, maxY: number, mask: number, out: number[]): number[] {
@@ -263,7 +263,7 @@ export class Queries {
       const g = segmentTree.found[k];
       if ((segments.category[g] & mask) !== 0 && segmentOverlapsBox(segments, g, box)) out.push(segments.handleOf(g));
     }
-    return out.sort(ascending);
+    return sortHandles(out);
   }
 
   /**
@@ -693,6 +693,25 @@ function sortNearestFirst(hits: RayHit[], dx: number, dy: number): RayHit[] {
     if (budget < 0) return hits.sort(nearestFirst);
   }
   return hits;
+}
+
+/**
+ * Query results ascending, in place: by insertion for the few a query usually finds, which
+ * Array.prototype.sort would not do without allocating (about 1 KB a call for two handles or
+ * more), and by it for many.
+ */
+function sortHandles(out: number[]): number[] {
+  if (out.length >= 32) return out.sort(ascending);
+  for (let k = 1; k < out.length; k++) {
+    const v = out[k];
+    let j = k - 1;
+    while (j >= 0 && out[j] > v) {
+      out[j + 1] = out[j];
+      j--;
+    }
+    out[j + 1] = v;
+  }
+  return out;
 }
 
 /** The handle order of query results; one function, not a closure per query. */

@@ -3,6 +3,9 @@ import { closestOnSegment } from '../narrowphase/circle-segment.js';
 
 const closest = new Float64Array(2);
 
+/** The rounding `along` may carry at a segment's ends (a few units in the last place of 1). */
+const ALONG_ROUNDING = 1e-12;
+
 /**
  * Where the segment p(t) = (x1, y1) + t (dx, dy), t in [0, 1], first enters the capsule of radius
  * r around segment (ax, ay)-(bx, by), or -1; a start inside the capsule is not a hit. The capsule
@@ -41,8 +44,12 @@ export function rayCapsule(
       if (t >= 0 && t <= 1 && t < best) {
         const hx = x1 + t * dx - ax;
         const hy = y1 + t * dy - ay;
+        // Within the ends, to the rounding of the entry point: a ray aimed at the join of two
+        // segments of no thickness, whose end caps have no width to catch it, passed between
+        // them where `along` rounded outside [0, 1] on both (19 % of rays aimed at a polyline's
+        // vertices).
         const along = (hx * ex + hy * ey) / (length * length);
-        if (along >= 0 && along <= 1) best = t;
+        if (along >= -ALONG_ROUNDING && along <= 1 + ALONG_ROUNDING) best = t;
       }
     }
   }
