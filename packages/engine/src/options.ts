@@ -474,18 +474,11 @@ export function resolveChain(input: unknown, defaultRestitution: number, default
     const a = points[k];
     const b = points[(k + 1) % n];
     if (a.x === b.x && a.y === b.y) throw new RangeError(`points[${k}] and points[${(k + 1) % n}] are the same point (${a.x}, ${a.y}): a chain's links need a length`);
-    const segment = resolveSegment({ x1: a.x, y1: a.y, x2: b.x, y2: b.y, ...definedOnly(material) }, defaultRestitution, defaultFriction);
+    const segment = resolveSegment({ x1: a.x, y1: a.y, x2: b.x, y2: b.y, ...material }, defaultRestitution, defaultFriction);
     segment.prev = loop || k > 0 ? points[(k + n - 1) % n] : null;
     segment.next = loop || k + 2 < n ? points[(k + 2) % n] : null;
     out.push(segment);
   }
-  return out;
-}
-
-/** The keys of `o` whose values are not undefined. */
-function definedOnly(o: Record<string, unknown>): Record<string, unknown> {
-  const out: Record<string, unknown> = {};
-  for (const [key, value] of Object.entries(o)) if (value !== undefined) out[key] = value;
   return out;
 }
 

@@ -69,7 +69,8 @@ export interface ContactSources {
 export class BodyContacts {
   private readonly found = new SlotList();
   private readonly box = new Float64Array(4);
-  private readonly pose = new Float64Array(4);
+  /** This body's pose (x, y, cosine, sine) at 0, the other body's at 4, for WorldShape.fromPose. */
+  private readonly pose = new Float64Array(8);
   private readonly shapeA = new WorldShape();
   private readonly shapeB = new WorldShape();
   private readonly manifold = new Manifold();
@@ -120,13 +121,16 @@ export class BodyContacts {
       const j = found.slots[f];
       if (j === i || (!dynamicI && type[j] !== TypeCode.dynamic) || (bodyCategory[i] & bodies.mask[j]) === 0 || (bodyCategory[j] & bodies.mask[i]) === 0) continue;
       if (joints !== null && joints.nonColliding > 0 && joints.joined(i, j)) continue;
+      pose[4] = x[j];
+      pose[5] = y[j];
+      pose[6] = c[j];
+      pose[7] = s[j];
       for (let sa = firstShape[i]; sa >= 0; sa = shapes.next[sa]) {
         if (shapes.sensor[sa] === 1) continue;
+        const a = this.shapeA.fromPose(shapes, sa, pose, 0);
         for (let sb = firstShape[j]; sb >= 0; sb = shapes.next[sb]) {
           if (shapes.sensor[sb] === 1 || (shapes.category[sa] & shapes.mask[sb]) === 0 || (shapes.category[sb] & shapes.mask[sa]) === 0) continue;
-          const a = this.placeShape(shapes, sa, x[i], y[i], c[i], s[i], this.shapeA);
-          const b = this.placeShape(shapes, sb, x[j], y[j], c[j], s[j], this.shapeB);
-          collide(a, b, m);
+          collide(a, this.shapeB.fromPose(shapes, sb, pose, 4), m);
           if (m.pointCount > 0) this.put(out, bodies.handleOf(j), -1, shapes.handleOf(sa), shapes.handleOf(sb), within);
         }
       }
@@ -138,7 +142,7 @@ export class BodyContacts {
       const g = queries.segmentFound(k);
       for (let sa = firstShape[i]; sa >= 0; sa = shapes.next[sa]) {
         if (shapes.sensor[sa] === 1 || (shapes.category[sa] & segments.mask[g]) === 0 || (segments.category[g] & shapes.mask[sa]) === 0) continue;
-        const a = this.placeShape(shapes, sa, x[i], y[i], c[i], s[i], this.shapeA);
+        const a = this.shapeA.fromPose(shapes, sa, pose, 0);
         collide(a, this.shapeB.segment(segments, g), m);
         if (segments.smooth[g] !== 0) smoothSegment(a, segments, g, m);
         if (m.pointCount > 0) this.put(out, segments.handleOf(g), -1, shapes.handleOf(sa), -1, within);
@@ -148,15 +152,10 @@ export class BodyContacts {
     for (let w = 0; w < 4; w++) {
       for (let sa = firstShape[i]; sa >= 0; sa = shapes.next[sa]) {
         if (shapes.sensor[sa] === 1) continue;
-        const a = this.placeShape(shapes, sa, x[i], y[i], c[i], s[i], this.shapeA);
-        collide(a, boxWall(world, w, this.shapeB), m);
+        collide(this.shapeA.fromPose(shapes, sa, pose, 0), boxWall(world, w, this.shapeB), m);
         if (m.pointCount > 0) this.put(out, -1, w, shapes.handleOf(sa), -1, within);
       }
     }
-  }
-
-  private placeShape(shapes: ShapeStore, slot: number, px: number, py: number, c: number, s: number, into: WorldShape): WorldShape {
-    return into.fromStore(shapes, slot, px, py, c, s);
   }
 
   /**
